@@ -1,0 +1,58 @@
+// Checks a formula's distance estimate against the seed's baseline marcher (3.1): fixed-step
+// ray marching with a membership test, refined by bisection. A DE must never exceed the
+// distance to the surface along any ray ("never overshoots", seed 3.2).
+#pragma once
+
+#include <cstdint>
+
+#include "core/camera.hpp"
+#include "core/formula.hpp"
+
+namespace fraktal {
+
+struct BaselineHit {
+    bool hit = false;
+    double t = 0.0;  // distance along the ray to the first point inside the fractal
+};
+
+// Marches [tStart, tEnd] in steps of `step`, testing membership; bisects the first crossing.
+BaselineHit baselineMarch(const Formula& f, const vec3& origin, const vec3& dir, double tStart, double tEnd,
+                          double step);
+
+// Ray / bound sphere intersection: the part of the ray inside the formula's bound.
+bool clipToBound(const Formula& f, const vec3& origin, const vec3& dir, double& tStart, double& tEnd);
+
+struct ConservativenessOptions {
+    int rays = 200;
+    int stepsAcrossBound = 4000;  // baseline step = 2 * boundRadius / stepsAcrossBound
+    uint64_t seed = 1;
+};
+
+struct ConservativenessReport {
+    int rays = 0;
+    int raysHit = 0;
+    long samples = 0;           // (point, true distance along the ray) pairs compared
+    double worstRatio = 0.0;    // max over samples of DE / distance-to-hit
+    vec3 worstPoint{0.0};
+    // Largest multiplier of the DE that keeps every sample at or under the true distance.
+    double safeStepMultiplier() const { return worstRatio > 1.0 ? 1.0 / worstRatio : 1.0; }
+    bool conservative(double tolerance = 0.01) const { return worstRatio <= 1.0 + tolerance; }
+};
+
+// Half the rays start at the camera through random pixels, half at random points on the bound
+// sphere aimed at random points inside it.
+ConservativenessReport checkConservativeness(const Formula& f, const Camera& camera,
+                                             const ConservativenessOptions& options = {});
+
+struct GridReport {
+    long points = 0;
+    long nonFinite = 0;
+    long inside = 0;
+    double minDistance = 0.0, maxDistance = 0.0;
+    double secondsPerEvaluation = 0.0;
+};
+
+// The DE on an n^3 grid over the bound's cube.
+GridReport evaluateGrid(const Formula& f, int n);
+
+}  // namespace fraktal

@@ -1,0 +1,68 @@
+#include "core/formula.hpp"
+
+#include <algorithm>
+
+namespace fraktal {
+
+std::string_view categoryName(Category c) {
+    switch (c) {
+        case Category::Fold: return "fold";
+        case Category::Transform: return "transform";
+        case Category::Power: return "power";
+        case Category::Estimator: return "estimator";
+    }
+    return "?";
+}
+
+int BlockDesc::paramIndex(std::string_view name) const {
+    for (size_t i = 0; i < params.size(); ++i)
+        if (params[i].name == name) return int(i);
+    return -1;
+}
+
+const BlockDesc* findBlock(std::string_view id) {
+    for (const BlockDesc& b : allBlocks())
+        if (b.id == id) return &b;
+    return nullptr;
+}
+
+Node Node::make(const BlockDesc& block) {
+    Node n;
+    n.block = &block;
+    for (const ParamDecl& p : block.params) n.values.push_back(p.defaultValue);
+    return n;
+}
+
+std::string Formula::structureKey() const {
+    std::string key;
+    for (const Node& n : nodes) {
+        key += std::string(n.block->id) + (n.enabled ? "" : "!") + "/" + std::to_string(n.period) + "/" +
+               std::to_string(n.phase) + ";";
+    }
+    key += "=>" + std::string(estimator.block ? estimator.block->id : "");
+    return key;
+}
+
+// Mirrors formulaDE() in shaders/formula.glsl: keep the two in step.
+Evaluation evaluate(const Formula& f, const vec3& pos) {
+    Evaluation e;
+    P4 p{pos, 1.0};
+    const vec3 c = pos;
+    const double bailout2 = f.bailout * f.bailout;
+    const int iterations = std::clamp(f.iterations, 0, kMaxIterations);
+    for (int i = 0; i < iterations; ++i) {
+        for (const Node& n : f.nodes)
+            if (n.enabled && n.runsOn(i)) n.block->apply(p, c, n.args());
+        e.trap.value = min(e.trap.value, vec4(abs(p.xyz), length(p.xyz)));
+        e.iterations = i + 1;
+        if (dot(p.xyz, p.xyz) > bailout2) {
+            e.escaped = true;
+            break;
+        }
+    }
+    e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
+    e.inside = f.estimator.block->membership == Membership::EscapeTime ? !e.escaped : e.distance <= 0.0;
+    return e;
+}
+
+}  // namespace fraktal

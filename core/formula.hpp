@@ -1,0 +1,64 @@
+// A formula: an ordered node list of blocks, run for N iterations with a bailout, closed by an
+// estimator. This file holds the data and the CPU (double precision) evaluation.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/block.hpp"
+
+namespace fraktal {
+
+struct Node {
+    const BlockDesc* block = nullptr;
+    std::vector<ParamValue> values;  // one per block->params, in declaration order
+    bool enabled = true;
+    // The node runs on iterations i with i % period == phase (period 1: every iteration). This
+    // is how hybrids alternate formulas, e.g. Mandelbox on even and Mandelbulb on odd iterations.
+    int period = 1;
+    int phase = 0;
+
+    static Node make(const BlockDesc& block);  // with default parameter values
+    Args args() const { return Args{values.data()}; }
+    bool runsOn(int iteration) const { return iteration % period == phase; }
+};
+
+// Limits that keep any formula bounded (no preset can hang the machine).
+inline constexpr int kMaxIterations = 1000;
+inline constexpr int kMaxNodes = 64;
+
+struct Formula {
+    // The loop body, in order; then the closing estimator.
+    std::vector<Node> nodes;
+    Node estimator;
+    int iterations = 12;
+    double bailout = 4.0;
+    // The fractal lies inside this sphere about the origin. Marchers clip rays to it, and the
+    // DE is only trusted inside it (escape-time estimates overshoot far away).
+    double boundRadius = 4.0;
+    // Multiplies the estimate: below 1 makes an overshooting hybrid safe (`fraktal check`).
+    double deFactor = 1.0;
+
+    // Structure: what needs a recompile when it changes (block ids, order, enable, period,
+    // phase). Parameter values, iterations, bailout, bound and factor are uniforms.
+    std::string structureKey() const;
+};
+
+// The seed's colouring: minimum distances of the orbit to the three coordinate planes (xyz) and
+// to the origin (w), accumulated after every iteration (seed 3.3).
+struct OrbitTrap {
+    vec4 value{1e20};
+};
+
+struct Evaluation {
+    double distance = 0.0;
+    OrbitTrap trap;
+    int iterations = 0;     // iterations run before escape (or all of them)
+    bool escaped = false;   // the orbit passed the bailout
+    bool inside = false;    // membership, per the estimator's Membership rule
+};
+
+Evaluation evaluate(const Formula& f, const vec3& pos);
+inline double distanceEstimate(const Formula& f, const vec3& pos) { return evaluate(f, pos).distance; }
+
+}  // namespace fraktal

@@ -1,0 +1,98 @@
+#include "core/gl/context.hpp"
+
+// EGL comes from <EGL/egl.h>, GL from epoxy: epoxy's own eglGetPlatformDisplay aborts on
+// EGL 1.4 displays (shared/PLATFORM.md), so the EXT entry point is loaded by hand.
+// epoxy first: it defines the Khronos types that <EGL/egl.h> would otherwise redeclare.
+#include <epoxy/gl.h>
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <stdexcept>
+
+namespace fraktal::gl {
+
+namespace {
+
+constexpr const char* kInstallHint =
+    "a headless OpenGL 4.5 context needs EGL and Mesa: apt-get install libegl1 libgl1-mesa-dri "
+    "(scripts/install-deps.sh installs everything)";
+
+std::string eglErrorText(EGLint e) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "EGL error 0x%04x", unsigned(e));
+    return buf;
+}
+
+EGLDisplay openDisplay(std::string& why) {
+    auto getPlatformDisplay =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (getPlatformDisplay) {
+        EGLDisplay d = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
+        why += "surfaceless platform: " + eglErrorText(eglGetError()) + "; ";
+        // An EGL device (a GPU driver's, or Mesa's software device).
+        auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        if (queryDevices) {
+            EGLDeviceEXT devices[8];
+            EGLint count = 0;
+            if (queryDevices(8, devices, &count)) {
+                for (EGLint i = 0; i < count; ++i) {
+                    d = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+                    if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
+                }
+            }
+            why += "EGL devices: none usable; ";
+        }
+    } else {
+        why += "eglGetPlatformDisplayEXT is missing; ";
+    }
+    EGLDisplay d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+    if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
+    why += "default display: " + eglErrorText(eglGetError());
+    return EGL_NO_DISPLAY;
+}
+
+}  // namespace
+
+std::unique_ptr<HeadlessContext> HeadlessContext::create() {
+    std::string why;
+    EGLDisplay display = openDisplay(why);
+    if (display == EGL_NO_DISPLAY)
+        throw std::runtime_error("cannot open an EGL display (" + why + "): " + kInstallHint);
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        eglTerminate(display);
+        throw std::runtime_error("EGL cannot bind the desktop OpenGL API: " + std::string(kInstallHint));
+    }
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (context == EGL_NO_CONTEXT) {
+        const EGLint e = eglGetError();
+        eglTerminate(display);
+        throw std::runtime_error("cannot create an OpenGL 4.5 core context (" + eglErrorText(e) + "): " + kInstallHint);
+    }
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        const EGLint e = eglGetError();
+        eglDestroyContext(display, context);
+        eglTerminate(display);
+        throw std::runtime_error("cannot make the OpenGL context current (" + eglErrorText(e) + ")");
+    }
+    std::unique_ptr<HeadlessContext> c(new HeadlessContext);
+    c->display_ = display;
+    c->context_ = context;
+    return c;
+}
+
+HeadlessContext::~HeadlessContext() {
+    auto display = static_cast<EGLDisplay>(display_);
+    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display, static_cast<EGLContext>(context_));
+    eglTerminate(display);
+}
+
+std::string HeadlessContext::renderer() const {
+    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return r ? r : "unknown";
+}
+
+}  // namespace fraktal::gl

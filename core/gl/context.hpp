@@ -1,0 +1,28 @@
+// A headless OpenGL 4.5 core context through EGL (Mesa's surfaceless platform, or an EGL
+// device), for the command line and the tests. The editor gets its context from GLFW instead;
+// the renderer code is the same for both.
+#pragma once
+
+#include <memory>
+#include <string>
+
+namespace fraktal::gl {
+
+class HeadlessContext {
+public:
+    // Creates and makes current a GL 4.5 core context. Throws std::runtime_error saying why it
+    // failed and what to install.
+    static std::unique_ptr<HeadlessContext> create();
+    ~HeadlessContext();
+    HeadlessContext(const HeadlessContext&) = delete;
+    HeadlessContext& operator=(const HeadlessContext&) = delete;
+
+    std::string renderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+
+private:
+    HeadlessContext() = default;
+    void* display_ = nullptr;
+    void* context_ = nullptr;
+};
+
+}  // namespace fraktal::gl

@@ -1,0 +1,37 @@
+// Evaluates a formula's generated GLSL at given points on the current GL context.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/formula.hpp"
+#include "core/gl/formula_uniforms.hpp"
+#include "core/gl/program.hpp"
+
+namespace fraktal::gl {
+
+struct GpuSample {
+    float distance;
+    int iterations;
+    glm::vec4 trap;
+};
+
+class DEProbe {
+public:
+    // Compiles the probe for the formula's structure; throws on a GLSL error (naming the node).
+    explicit DEProbe(const Formula& formula);
+    ~DEProbe();
+    DEProbe(const DEProbe&) = delete;
+    DEProbe& operator=(const DEProbe&) = delete;
+
+    // `formula` may differ from the constructor's in values only (same structureKey()).
+    std::vector<GpuSample> evaluate(const Formula& formula, std::span<const vec3> points);
+
+private:
+    std::string structure_;
+    Program program_;
+    FormulaUniforms uniforms_;
+    GLuint buffers_[2] = {0, 0};
+};
+
+}  // namespace fraktal::gl

@@ -1,0 +1,148 @@
+#include "core/glsl_gen.hpp"
+
+#include <algorithm>
+#include <regex>
+
+#include "core/shader_library.hpp"
+
+namespace fraktal {
+
+namespace {
+
+std::string glslType(ParamType t) { return t == ParamType::Float ? "float" : "vec3"; }
+
+int countLines(std::string_view s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+// Builds text while tracking the line number within the formula source (string 1), so that
+// after a node's #line block the numbering of the template can be restored.
+struct Emitter {
+    std::string out;
+    void line(std::string_view s) {
+        out += s;
+        out += '\n';
+    }
+    int nextLine() const { return countLines(out) + 1; }
+    void restoreFormulaLines() { line("#line " + std::to_string(nextLine() + 1) + " " + std::to_string(kSourceFormula)); }
+};
+
+std::string nodeFunctionName(int k) { return "fraktal_node" + std::to_string(k); }
+
+// One function per node: uniforms, then the block's body under the node's own source number.
+void emitNodeFunction(Emitter& e, int k, const Node& node, const std::string& name, bool estimator) {
+    const BlockDesc& b = *node.block;
+    e.line("// @node " + std::to_string(k) + " " + std::string(b.id) + ": " + name);
+    std::string signature = std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
+                            (estimator ? "(vec4 p, vec3 c" : "(inout vec4 p, vec3 c");
+    for (const ParamDecl& p : b.params) {
+        const std::string u = estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name);
+        e.line("uniform " + glslType(p.type) + " " + u + ";");
+        signature += ", " + glslType(p.type) + " " + std::string(p.name);
+    }
+    e.line(signature + ") {");
+    e.line("#line 1 " + std::to_string(kSourceFirstNode + k));
+    std::string_view body = b.glsl;
+    if (!body.empty() && body.front() == '\n') body.remove_prefix(1);
+    e.out += body;
+    if (!body.empty() && body.back() != '\n') e.out += '\n';
+    e.restoreFormulaLines();
+    e.line("}");
+}
+
+std::string nodeCall(int k, const Node& node, bool estimator) {
+    std::string call = nodeFunctionName(k) + "(p, c";
+    for (const ParamDecl& p : node.block->params)
+        call += ", " + (estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name));
+    return call + ")";
+}
+
+void replaceMarker(std::string& text, std::string_view marker, const std::string& with) {
+    const size_t at = text.find(marker);
+    if (at == std::string::npos) throw std::logic_error("formula template lacks marker " + std::string(marker));
+    size_t end = text.find('\n', at);
+    text.replace(at, (end == std::string::npos ? text.size() : end) - at, with);
+}
+
+}  // namespace
+
+std::string nodeUniformName(int nodeIndex, std::string_view param) {
+    return "u_n" + std::to_string(nodeIndex) + "_" + std::string(param);
+}
+std::string estimatorUniformName(std::string_view param) { return "u_est_" + std::string(param); }
+
+GeneratedFormula generateFormulaGLSL(const Formula& f) {
+    GeneratedFormula g;
+    const std::string tmpl(shaderTemplate("formula.glsl"));
+    const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
+    if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
+
+    // Text before the marker keeps its own line numbers; the node functions follow.
+    Emitter e;
+    e.out = tmpl.substr(0, nodesAt);
+    for (size_t k = 0; k < f.nodes.size(); ++k) {
+        g.nodeNames.push_back("node " + std::to_string(k) + " (" + std::string(f.nodes[k].block->id) + ")");
+        if (f.nodes[k].enabled) emitNodeFunction(e, int(k), f.nodes[k], g.nodeNames.back(), false);
+    }
+    const int est = int(f.nodes.size());
+    g.nodeNames.push_back("estimator (" + std::string(f.estimator.block->id) + ")");
+    emitNodeFunction(e, est, f.estimator, g.nodeNames.back(), true);
+
+    std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
+    std::string loop;
+    for (size_t k = 0; k < f.nodes.size(); ++k) {
+        const Node& n = f.nodes[k];
+        if (!n.enabled) continue;
+        const std::string call = nodeCall(int(k), n, false) + ";";
+        if (n.period > 1)
+            loop += "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") " + call + "\n";
+        else
+            loop += "        " + call + "\n";
+    }
+    if (!loop.empty()) loop.pop_back();
+    replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
+    replaceMarker(rest, "//@FRAKTAL_ESTIMATE", "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";");
+    e.restoreFormulaLines();
+    e.out += rest;
+    g.code = std::move(e.out);
+    return g;
+}
+
+ShaderSource assembleShader(const GeneratedFormula& formula, std::string_view programName,
+                            std::string_view programSource, std::string_view defines) {
+    ShaderSource s;
+    s.programName = programName;
+    s.nodeNames = formula.nodeNames;
+    s.text = "#version 450 core\n";
+    s.text += defines;
+    if (!defines.empty() && defines.back() != '\n') s.text += '\n';
+    s.text += "#line 1 " + std::to_string(kSourceFormula) + "\n";
+    s.text += formula.code;
+    s.text += "\n#line 1 " + std::to_string(kSourceProgram) + "\n";
+    s.text += programSource;
+    return s;
+}
+
+std::string ShaderSource::explainLog(std::string_view log) const {
+    // Mesa: "101:3(5): error: ..."; glslang: "ERROR: 101:3: ...".
+    static const std::regex where(R"((\d+):(\d+)(\(\d+\))?:)");
+    std::string out;
+    std::string text(log);
+    std::sregex_iterator it(text.begin(), text.end(), where), end;
+    size_t last = 0;
+    for (; it != end; ++it) {
+        const std::smatch& m = *it;
+        const int source = std::stoi(m[1]);
+        std::string name;
+        if (source == kSourceProgram) name = programName;
+        else if (source == kSourceFormula) name = "formula.glsl (generated)";
+        else if (source >= kSourceFirstNode && source - kSourceFirstNode < int(nodeNames.size()))
+            name = nodeNames[source - kSourceFirstNode] + ", GLSL";
+        else continue;
+        out += text.substr(last, m.position() - last);
+        out += name + " line " + m[2].str() + ":";
+        last = m.position() + m.length();
+    }
+    out += text.substr(last);
+    return out;
+}
+
+}  // namespace fraktal

@@ -1,0 +1,366 @@
+#include "core/preset.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace fraktal {
+
+using nlohmann::json;
+
+PresetError::PresetError(std::string file, std::string field, std::string reason)
+    : std::runtime_error(file + ": " + (field.empty() ? "" : field + ": ") + reason),
+      file_(std::move(file)),
+      field_(std::move(field)),
+      reason_(std::move(reason)) {}
+
+namespace {
+
+constexpr size_t kMaxPresetBytes = 4 << 20;
+constexpr int kMaxJsonDepth = 32;
+
+// Reads fields of one JSON object, with the path for error messages, and rejects fields it was
+// not asked about (a typo must not be silently ignored).
+class Reader {
+public:
+    Reader(const std::string& file, const json& j, std::string path) : file_(file), j_(j), path_(std::move(path)) {
+        if (!j_.is_object()) fail("expected an object, found " + typeName(j_));
+    }
+
+    [[noreturn]] void fail(const std::string& reason, const std::string& key = {}) const {
+        throw PresetError(file_, key.empty() ? path_ : child(key), reason);
+    }
+    std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+    bool has(const std::string& key) const { return j_.contains(key); }
+    const json& at(const std::string& key) {
+        seen_.insert(key);
+        if (!j_.contains(key)) fail("missing required field", key);
+        return j_.at(key);
+    }
+
+    double number(const std::string& key, double fallback, double lo, double hi, bool required = false) {
+        if (!has(key)) {
+            if (required) fail("missing required field", key);
+            return fallback;
+        }
+        return checkNumber(at(key), child(key), lo, hi);
+    }
+    int integer(const std::string& key, int fallback, int lo, int hi) {
+        if (!has(key)) return fallback;
+        const json& v = at(key);
+        const double d = checkNumber(v, child(key), lo, hi);
+        if (d != std::floor(d)) fail("expected a whole number, found " + v.dump(), key);
+        return int(d);
+    }
+    bool boolean(const std::string& key, bool fallback) {
+        if (!has(key)) return fallback;
+        const json& v = at(key);
+        if (!v.is_boolean()) fail("expected true or false, found " + typeName(v), key);
+        return v.get<bool>();
+    }
+    std::string string(const std::string& key, const std::string& fallback, size_t maxLength = 4096) {
+        if (!has(key)) return fallback;
+        const json& v = at(key);
+        if (!v.is_string()) fail("expected a string, found " + typeName(v), key);
+        std::string s = v.get<std::string>();
+        if (s.size() > maxLength) fail("string longer than " + std::to_string(maxLength) + " bytes", key);
+        return s;
+    }
+    vec3 vector3(const std::string& key, const vec3& fallback, double lo, double hi, bool required = false) {
+        if (!has(key)) {
+            if (required) fail("missing required field", key);
+            return fallback;
+        }
+        return checkVec3(at(key), child(key), lo, hi);
+    }
+
+    // Fields present but never read.
+    void rejectUnknown(const std::set<std::string>& alsoAllowed = {}) const {
+        for (const auto& [key, value] : j_.items())
+            if (!seen_.count(key) && !alsoAllowed.count(key)) fail("unknown field", key);
+    }
+
+    double checkNumber(const json& v, const std::string& path, double lo, double hi) const {
+        if (!v.is_number()) throw PresetError(file_, path, "expected a number, found " + typeName(v));
+        const double d = v.get<double>();
+        if (!std::isfinite(d)) throw PresetError(file_, path, "number is not finite");
+        if (d < lo || d > hi)
+            throw PresetError(file_, path, "value " + v.dump() + " is outside the range [" + fmt(lo) + ", " + fmt(hi) + "]");
+        return d;
+    }
+    vec3 checkVec3(const json& v, const std::string& path, double lo, double hi) const {
+        if (!v.is_array() || v.size() != 3)
+            throw PresetError(file_, path, "expected an array of 3 numbers, found " + typeName(v) +
+                                               (v.is_array() ? " of " + std::to_string(v.size()) : ""));
+        vec3 r;
+        for (int i = 0; i < 3; ++i) r[i] = checkNumber(v[i], path + "[" + std::to_string(i) + "]", lo, hi);
+        return r;
+    }
+
+    static std::string typeName(const json& v) {
+        if (v.is_number()) return "a number";
+        if (v.is_string()) return "a string";
+        if (v.is_array()) return "an array";
+        if (v.is_object()) return "an object";
+        if (v.is_boolean()) return "a boolean";
+        if (v.is_null()) return "null";
+        return v.type_name();
+    }
+    static std::string fmt(double d) {
+        std::ostringstream s;
+        s << d;
+        return s.str();
+    }
+
+private:
+    const std::string& file_;
+    const json& j_;
+    std::string path_;
+    std::set<std::string> seen_;
+};
+
+Node parseNode(const std::string& file, const json& j, const std::string& path) {
+    Reader r(file, j, path);
+    const json& id = r.at("block");
+    if (!id.is_string()) r.fail("expected a block id string, found " + Reader::typeName(id), "block");
+    const BlockDesc* block = findBlock(id.get<std::string>());
+    if (!block) {
+        std::string known;
+        for (const BlockDesc& b : allBlocks()) known += (known.empty() ? "" : ", ") + std::string(b.id);
+        r.fail("unknown block '" + id.get<std::string>() + "' (known blocks: " + known + ")", "block");
+    }
+    Node n = Node::make(*block);
+    n.enabled = r.boolean("enabled", true);
+    n.period = r.integer("period", 1, 1, 16);
+    n.phase = r.integer("phase", 0, 0, 15);
+    if (n.phase >= n.period) r.fail("phase must be smaller than period (" + std::to_string(n.period) + ")", "phase");
+    if (r.has("params")) {
+        Reader params(file, r.at("params"), r.child("params"));
+        for (size_t i = 0; i < block->params.size(); ++i) {
+            const ParamDecl& d = block->params[i];
+            const std::string key(d.name);
+            if (d.type == ParamType::Float) n.values[i].x = params.number(key, d.defaultValue.x, d.min, d.max);
+            else n.values[i] = params.vector3(key, d.defaultValue, d.min, d.max);
+            if (d.direction && length(n.values[i]) < 1e-9) params.fail("a direction must not be zero", key);
+        }
+        try {
+            params.rejectUnknown();
+        } catch (const PresetError& e) {
+            std::string known;
+            for (const ParamDecl& d : block->params) known += (known.empty() ? "" : ", ") + std::string(d.name);
+            throw PresetError(e.file(), e.field(),
+                              "unknown parameter of block '" + std::string(block->id) + "' (it has: " +
+                                  (known.empty() ? "none" : known) + ")");
+        }
+    }
+    r.rejectUnknown();
+    return n;
+}
+
+Formula parseFormula(const std::string& file, const json& j) {
+    Reader r(file, j, "formula");
+    Formula f;
+    f.iterations = r.integer("iterations", f.iterations, 0, kMaxIterations);
+    f.bailout = r.number("bailout", f.bailout, 1e-3, 1e10);
+    f.boundRadius = r.number("boundRadius", f.boundRadius, 1e-3, 1e4);
+    f.deFactor = r.number("deFactor", f.deFactor, 1e-3, 2.0);
+    const json& nodes = r.at("nodes");
+    const std::string path = r.child("nodes");
+    if (!nodes.is_array()) r.fail("expected an array of nodes, found " + Reader::typeName(nodes), "nodes");
+    if (nodes.empty()) r.fail("the node list is empty: a formula needs at least a closing estimator", "nodes");
+    if (nodes.size() > size_t(kMaxNodes))
+        r.fail("too many nodes (" + std::to_string(nodes.size()) + "; at most " + std::to_string(kMaxNodes) + ")", "nodes");
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        const std::string nodePath = path + "[" + std::to_string(i) + "]";
+        Node n = parseNode(file, nodes[i], nodePath);
+        const bool last = i + 1 == nodes.size();
+        if (n.block->isEstimator() && !last)
+            throw PresetError(file, nodePath, "estimator '" + std::string(n.block->id) + "' may only close the node list");
+        if (!n.block->isEstimator() && last)
+            throw PresetError(file, nodePath, "the node list must end with an estimator (box, sphere, tetrahedron, escape_log, escape_linear), found '" +
+                                                  std::string(n.block->id) + "'");
+        if (last) {
+            if (!n.enabled) throw PresetError(file, nodePath + ".enabled", "the estimator cannot be disabled");
+            if (n.period != 1) throw PresetError(file, nodePath + ".period", "the estimator runs once, after the loop");
+            f.estimator = std::move(n);
+        } else {
+            f.nodes.push_back(std::move(n));
+        }
+    }
+    r.rejectUnknown();
+    return f;
+}
+
+Camera parseCamera(const std::string& file, const json& j) {
+    Reader r(file, j, "camera");
+    Camera c;
+    c.position = r.vector3("position", c.position, -1e4, 1e4, true);
+    c.target = r.vector3("target", c.target, -1e4, 1e4, true);
+    c.up = r.vector3("up", c.up, -1e4, 1e4);
+    c.fovY = r.number("fovY", c.fovY, 1.0, 170.0);
+    if (length(c.target - c.position) < 1e-9) r.fail("position and target coincide");
+    if (length(glm::cross(normalize(c.target - c.position), c.up)) < 1e-6)
+        r.fail("up is zero or parallel to the viewing direction", "up");
+    r.rejectUnknown();
+    return c;
+}
+
+// Parses JSON, rejecting duplicate keys and nesting deeper than kMaxJsonDepth (nlohmann keeps
+// the last duplicate silently; a preset with two values for one field is ambiguous).
+json parseJson(std::string_view text, const std::string& file) {
+    std::vector<std::set<std::string>> keys;
+    std::string duplicate, tooDeep;
+    auto callback = [&](int depth, json::parse_event_t event, json& parsed) {
+        if (depth > kMaxJsonDepth && tooDeep.empty()) tooDeep = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
+        switch (event) {
+            case json::parse_event_t::object_start: keys.emplace_back(); break;
+            case json::parse_event_t::object_end:
+                if (!keys.empty()) keys.pop_back();
+                break;
+            case json::parse_event_t::key:
+                if (!keys.empty() && !keys.back().insert(parsed.get<std::string>()).second && duplicate.empty())
+                    duplicate = parsed.get<std::string>();
+                break;
+            default: break;
+        }
+        return tooDeep.empty();
+    };
+    json j;
+    try {
+        j = json::parse(text.begin(), text.end(), callback);
+    } catch (const json::parse_error& e) {
+        // Byte offset to line:column.
+        const size_t at = std::min(e.byte, text.size());
+        const size_t line = 1 + std::count(text.begin(), text.begin() + long(at ? at - 1 : 0), '\n');
+        std::string reason = e.what();
+        if (auto p = reason.find("parse error"); p != std::string::npos) reason = reason.substr(p);
+        if (!tooDeep.empty()) reason = tooDeep;
+        throw PresetError(file, "", "invalid JSON at line " + std::to_string(line) + ": " + reason);
+    }
+    if (!tooDeep.empty()) throw PresetError(file, "", "invalid preset: " + tooDeep);
+    if (!duplicate.empty()) throw PresetError(file, duplicate, "duplicated key");
+    return j;
+}
+
+}  // namespace
+
+Preset parsePreset(std::string_view text, const std::string& file) {
+    if (text.size() > kMaxPresetBytes)
+        throw PresetError(file, "", "file is larger than " + std::to_string(kMaxPresetBytes >> 20) + " MiB; not a preset");
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) throw PresetError(file, "", "file is empty");
+    const json j = parseJson(text, file);
+    Reader r(file, j, "");
+    const std::string format = r.string("format", "");
+    if (format != kPresetFormat) r.fail("expected \"" + std::string(kPresetFormat) + "\"", "format");
+    const int version = r.integer("version", 0, 1, 1000000);
+    if (!r.has("version")) r.fail("missing required field", "version");
+    if (version > kPresetVersion) {
+        // A newer file: read what we understand; unknown sections are kept.
+    }
+    Preset p;
+    p.name = r.string("name", "");
+    p.description = r.string("description", "", 65536);
+    p.formula = parseFormula(file, r.at("formula"));
+    p.camera = parseCamera(file, r.at("camera"));
+    for (const auto& [key, value] : j.items())
+        if (key != "format" && key != "version" && key != "name" && key != "description" && key != "formula" &&
+            key != "camera")
+            p.extra[key] = value;
+    return p;
+}
+
+Preset loadPreset(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw PresetError(file, "", "no such file");
+    if (std::filesystem::is_directory(status)) throw PresetError(file, "", "is a directory, not a preset file");
+    if (!std::filesystem::is_regular_file(status)) throw PresetError(file, "", "is not a regular file");
+    if (std::filesystem::file_size(path, ec) > kMaxPresetBytes)
+        throw PresetError(file, "", "file is larger than " + std::to_string(kMaxPresetBytes >> 20) + " MiB; not a preset");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw PresetError(file, "", "cannot be opened for reading");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parsePreset(ss.str(), file);
+}
+
+namespace {
+
+json vecJson(const vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+json nodeJson(const Node& n) {
+    json j;
+    j["block"] = n.block->id;
+    if (!n.enabled) j["enabled"] = false;
+    if (n.period != 1) j["period"] = n.period;
+    if (n.phase != 0) j["phase"] = n.phase;
+    json params = json::object();
+    for (size_t i = 0; i < n.block->params.size(); ++i) {
+        const ParamDecl& d = n.block->params[i];
+        if (d.type == ParamType::Float) {
+            if (n.values[i].x != d.defaultValue.x) params[std::string(d.name)] = n.values[i].x;
+        } else if (n.values[i] != d.defaultValue) {
+            params[std::string(d.name)] = vecJson(n.values[i]);
+        }
+    }
+    if (!params.empty()) j["params"] = params;
+    return j;
+}
+
+}  // namespace
+
+json presetToJson(const Preset& p) {
+    const Formula defaults;
+    const Camera camDefaults;
+    json j = json::object();
+    j["format"] = kPresetFormat;
+    j["version"] = kPresetVersion;
+    if (!p.name.empty()) j["name"] = p.name;
+    if (!p.description.empty()) j["description"] = p.description;
+    json f = json::object();
+    if (p.formula.iterations != defaults.iterations) f["iterations"] = p.formula.iterations;
+    if (p.formula.bailout != defaults.bailout) f["bailout"] = p.formula.bailout;
+    if (p.formula.boundRadius != defaults.boundRadius) f["boundRadius"] = p.formula.boundRadius;
+    if (p.formula.deFactor != defaults.deFactor) f["deFactor"] = p.formula.deFactor;
+    json nodes = json::array();
+    for (const Node& n : p.formula.nodes) nodes.push_back(nodeJson(n));
+    nodes.push_back(nodeJson(p.formula.estimator));
+    f["nodes"] = nodes;
+    j["formula"] = f;
+    json c = json::object();
+    c["position"] = vecJson(p.camera.position);
+    c["target"] = vecJson(p.camera.target);
+    if (p.camera.up != camDefaults.up) c["up"] = vecJson(p.camera.up);
+    if (p.camera.fovY != camDefaults.fovY) c["fovY"] = p.camera.fovY;
+    j["camera"] = c;
+    for (const auto& [key, value] : p.extra.items()) j[key] = value;
+    return j;
+}
+
+std::string serializePreset(const Preset& p) { return presetToJson(p).dump(2) + "\n"; }
+
+std::string describeFormula(const Formula& f) {
+    std::ostringstream s;
+    s << "iterations " << f.iterations << ", bailout " << f.bailout << ", bound radius " << f.boundRadius
+      << ", DE factor " << f.deFactor << "\n";
+    auto describeNode = [&](const Node& n, const std::string& prefix) {
+        s << prefix << n.block->id << " [" << categoryName(n.block->category) << "]";
+        if (!n.enabled) s << " (disabled)";
+        if (n.period > 1) s << " (iterations i % " << n.period << " == " << n.phase << ")";
+        for (size_t i = 0; i < n.values.size(); ++i) {
+            const ParamDecl& d = n.block->params[i];
+            s << (i == 0 ? ": " : ", ") << d.name << " = ";
+            if (d.type == ParamType::Float) s << n.values[i].x;
+            else s << "(" << n.values[i].x << ", " << n.values[i].y << ", " << n.values[i].z << ")";
+        }
+        s << "\n";
+    };
+    for (size_t k = 0; k < f.nodes.size(); ++k) describeNode(f.nodes[k], "  " + std::to_string(k) + ". ");
+    describeNode(f.estimator, "  => ");
+    return s.str();
+}
+
+}  // namespace fraktal

@@ -1,0 +1,112 @@
+// Closing estimators. IFS primitives divide the primitive's distance by the running scale (seed
+// 3.2: "return the distance to the reference cube divided by the total scale applied"); the
+// escape-time estimators use the running derivative (Hart et al. 1989; Syntopia part V).
+#pragma once
+#include "core/block.hpp"
+
+namespace fraktal::blocks {
+
+struct BoxEstimator {
+    static constexpr std::string_view id = "box";
+    static constexpr std::string_view label = "Box";
+    static constexpr std::string_view help = "Distance to a box of the given half-size, over the running scale.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::Distance;
+    static constexpr std::array params{
+        ParamDecl{"size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.001, 100.0, "Half-size of the box."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    vec3 q = abs(p.xyz) - size;
+    return (length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0)) / abs(p.w);
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const vec3 size = a.v3(0);
+        vec3 q = abs(p.xyz) - size;
+        return (length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0)) / abs(p.w);
+    }
+};
+
+struct SphereEstimator {
+    static constexpr std::string_view id = "sphere";
+    static constexpr std::string_view label = "Sphere";
+    static constexpr std::string_view help = "Distance to a sphere, over the running scale.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::Distance;
+    static constexpr std::array params{
+        ParamDecl{"radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 100.0, "Sphere radius."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    return (length(p.xyz) - radius) / abs(p.w);
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const double radius = a.f(0);
+        return (length(p.xyz) - radius) / abs(p.w);
+    }
+};
+
+// Regular tetrahedron with vertices (1,1,1), (1,-1,-1), (-1,1,-1), (-1,-1,1) times `size`:
+// the largest signed distance to its four face planes (a lower bound of the true distance).
+struct TetrahedronEstimator {
+    static constexpr std::string_view id = "tetrahedron";
+    static constexpr std::string_view label = "Tetrahedron";
+    static constexpr std::string_view help = "Distance to a regular tetrahedron, over the running scale.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::Distance;
+    static constexpr std::array params{
+        ParamDecl{"size", ParamType::Float, {1.0, 0.0, 0.0}, 0.001, 100.0, "Vertex coordinate of the tetrahedron."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float md = max(max(-p.x - p.y - p.z, -p.x + p.y + p.z), max(p.x - p.y + p.z, p.x + p.y - p.z));
+    return (md - size) / (sqrt(3.0) * abs(p.w));
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const double size = a.f(0);
+        const vec3 q = p.xyz;
+        double md = max(max(-q.x - q.y - q.z, -q.x + q.y + q.z), max(q.x - q.y + q.z, q.x + q.y - q.z));
+        return (md - size) / (std::sqrt(3.0) * abs(p.w));
+    }
+};
+
+// 0.5 log(r) r / dr: for power iterations (Mandelbulb), Hubbard-Douady potential.
+struct EscapeLogEstimator {
+    static constexpr std::string_view id = "escape_log";
+    static constexpr std::string_view label = "Escape time (log)";
+    static constexpr std::string_view help = "0.5 log(r) r / dr, for power iterations such as the Mandelbulb.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::EscapeTime;
+    static constexpr std::array<ParamDecl, 0> params{};
+
+    static constexpr std::string_view glsl = R"(
+    float r = length(p.xyz);
+    return 0.5 * log(r) * r / abs(p.w);
+)";
+    static double estimate(const P4& p, const vec3&, Args) {
+        double r = length(p.xyz);
+        return 0.5 * std::log(r) * r / abs(p.w);
+    }
+};
+
+// r / |dr|: for fold-and-scale escape-time formulas (Mandelbox; Lowe, Syntopia part VI).
+struct EscapeLinearEstimator {
+    static constexpr std::string_view id = "escape_linear";
+    static constexpr std::string_view label = "Escape time (linear)";
+    static constexpr std::string_view help = "r / |dr|, for Mandelbox-type fold-and-scale formulas.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::EscapeTime;
+    static constexpr std::array params{
+        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 10.0, "Subtracted from r (Mandelbulber's linear DE constant)."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    return (length(p.xyz) - offset) / abs(p.w);
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const double offset = a.f(0);
+        return (length(p.xyz) - offset) / abs(p.w);
+    }
+};
+
+}  // namespace fraktal::blocks

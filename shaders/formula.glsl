@@ -1,0 +1,35 @@
+// Distance estimator template. The generator (core/glsl_gen.cpp) replaces each //@ marker with
+// code built from the formula's node list; values are uniforms, so only a change of structure
+// (blocks, order, enable, period, phase) recompiles. Mirrors fraktal::evaluate() on the CPU.
+#define FRAKTAL_MAX_ITERATIONS 1000
+
+uniform int u_iterations;
+uniform float u_bailout;
+uniform float u_deFactor;
+uniform float u_boundRadius;
+
+//@FRAKTAL_NODES
+
+// Returns the distance estimate at pos; trap receives the orbit trap (min |x|, |y|, |z| and
+// min |p| over the iterations, seed 3.3); iterations the count before escape.
+float formulaDE(vec3 pos, out vec4 trap, out int iterations) {
+    vec4 p = vec4(pos, 1.0);
+    vec3 c = pos;
+    trap = vec4(1e20);
+    iterations = 0;
+    float bailout2 = u_bailout * u_bailout;
+    int n = clamp(u_iterations, 0, FRAKTAL_MAX_ITERATIONS);
+    for (int i = 0; i < n; ++i) {
+//@FRAKTAL_LOOP
+        trap = min(trap, vec4(abs(p.xyz), length(p.xyz)));
+        iterations = i + 1;
+        if (dot(p.xyz, p.xyz) > bailout2) break;
+    }
+//@FRAKTAL_ESTIMATE
+}
+
+float DE(vec3 pos) {
+    vec4 trap;
+    int iterations;
+    return formulaDE(pos, trap, iterations);
+}
