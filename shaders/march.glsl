@@ -1,0 +1,73 @@
+// shaders/march.glsl — needs DE() from the formula (shaders/formula.glsl, which also declares
+// u_boundRadius).
+//
+// Sphere tracing with over-relaxation and fallback (Keinert et al. 2014, "Enhanced Sphere Tracing",
+// section 3.1): step omega * d while consecutive unbounding spheres overlap; when they stop
+// overlapping the over-relaxed step may have jumped over surface, so step back to the plain
+// sphere-tracing step from the previous point and continue with omega = 1. Hit when
+// d < pixelAngle * t * u_detail (the detail level tied to the pixel footprint: a bigger image has a
+// smaller pixelAngle and so resolves finer detail); escaped when t > tEnd. deEvals counts DE calls.
+//
+// The state is resumable: a viewport may call marchRay a few steps per frame with the same state.
+// Start a ray with marchStart(tStart). A ray that is still MARCH_MARCHING after its step budget has
+// usually crawled along a grazing surface; callers decide (the still renderer treats it as a hit
+// when the last distance is within a few footprints).
+//
+// Uniforms (set from RenderSettings by core/render/shading_uniforms.cpp):
+//   float u_detail          hit threshold in pixel footprints (1 = one pixel; 0.5 = half a pixel)
+//   float u_overRelaxation  initial omega of over-relaxed sphere tracing, in [1, 2) (1 = plain)
+uniform float u_detail;
+uniform float u_overRelaxation;
+
+const int MARCH_MARCHING = 0, MARCH_HIT = 1, MARCH_ESCAPED = 2;
+struct MarchState {
+    float t;      // distance along the ray
+    float lastD;  // |DE| at the previous accepted point (0 before the first step)
+    float omega;  // current relaxation factor; drops to 1 at the first failure
+    int status;
+    int steps;    // DE evaluations made by this ray's marcher
+};
+
+MarchState marchStart(float tStart) { return MarchState(tStart, 0.0, max(u_overRelaxation, 1.0), MARCH_MARCHING, 0); }
+
+void marchRay(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
+    for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
+        float d = DE(ro + rd * s.t);
+        deEvals += 1.0;
+        s.steps += 1;
+        // While omega > 1 every step so far was omega * lastD, so the previous step length is known.
+        float previousStep = s.omega * s.lastD;
+        if (s.omega > 1.0 && abs(d) + s.lastD < previousStep) {
+            // The unbounding spheres of the last two points do not overlap: back to the edge of the
+            // previous point's sphere (a safe plain step) and never over-relax again on this ray.
+            s.t -= previousStep - s.lastD;
+            s.omega = 1.0;
+            continue;
+        }
+        if (d < pixelAngle * s.t * u_detail) {
+            s.status = MARCH_HIT;
+            break;
+        }
+        if (s.t > tEnd) {
+            s.status = MARCH_ESCAPED;
+            break;
+        }
+        s.lastD = abs(d);
+        s.t += s.omega * d;
+    }
+}
+
+// The part of the ray inside the bound sphere (radius u_boundRadius about the origin), where the
+// DE is trusted. False when the ray misses the sphere or it lies behind the origin of the ray.
+bool clipToBound(vec3 ro, vec3 rd, out float tStart, out float tEnd) {
+    float b = dot(ro, rd);
+    float c = dot(ro, ro) - u_boundRadius * u_boundRadius;
+    float h = b * b - c;
+    tStart = 0.0;
+    tEnd = -1.0;
+    if (h < 0.0) return false;
+    h = sqrt(h);
+    tStart = max(-b - h, 0.0);
+    tEnd = -b + h;
+    return tEnd > 0.0;
+}

@@ -1,0 +1,103 @@
+// shaders/still.frag — the offline still renderer: one tile of the image per draw. Needs the
+// formula, shaders/march.glsl and shaders/shade.glsl before it.
+//
+// Each pixel takes u_spp camera rays. Sample positions are importance-sampled from the
+// reconstruction filter (a separable Blackman-Harris window of radius u_filterRadius pixels,
+// its inverse CDF tabulated on the CPU, core/render/filter.cpp), so all samples weigh the same
+// (pbrt-v4's FilterSampler idea). The 2D points are Roberts' R2 low-discrepancy sequence with a
+// per-pixel random rotation (Cranley-Patterson), seeded by the pixel's image coordinates so that
+// tiles do not show. One sample per pixel goes through the pixel centre (the CPU reference does too).
+//
+// Framebuffer row j of a tile is image row u_tileOrigin.y + j, counted from the top, so a
+// glReadPixels of the tile gives the image's rows in file order.
+//
+// Uniforms:
+//   ivec2 u_imageSize, u_tileOrigin      full image size; this tile's top-left pixel
+//   vec3  u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward   orthonormal camera frame
+//   float u_tanHalfFovY                  tan(vertical field of view / 2)
+//   int   u_spp, u_maxSteps              samples per pixel; march steps per camera ray
+//   float u_filterRadius                 filter radius in pixels
+//   float u_filterInverseCdf[FILTER_TABLE_SIZE]   inverse CDF of the 1D filter over [0, 1]
+//   int   u_transparentBackground        1: background contributes nothing (premultiplied RGBA)
+#define FILTER_TABLE_SIZE 65
+uniform ivec2 u_imageSize;
+uniform ivec2 u_tileOrigin;
+uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
+uniform float u_tanHalfFovY;
+uniform int u_spp;
+uniform int u_maxSteps;
+uniform float u_filterRadius;
+uniform float u_filterInverseCdf[FILTER_TABLE_SIZE];
+uniform int u_transparentBackground;
+
+layout(location = 0) out vec4 outColor;       // scene-linear RGB, alpha = coverage
+layout(location = 1) out vec4 outNormalDepth; // world normal (coverage-weighted), depth: nearest hit
+layout(location = 2) out vec4 outAlbedoAO;    // orbit-trap albedo, ambient occlusion (coverage-weighted)
+layout(location = 3) out vec4 outStats;       // DE evaluations per sample, march steps per ray
+
+uint hashPixel(uvec2 p) {  // PCG-style integer hash (Jarzynski and Olano 2020)
+    uint v = p.x * 1664525u + p.y * 22695477u + 1013904223u;
+    v = v * 747796405u + 2891336453u;
+    uint word = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+float filterOffset(float u) {
+    float x = clamp(u, 0.0, 1.0) * float(FILTER_TABLE_SIZE - 1);
+    int i = min(int(x), FILTER_TABLE_SIZE - 2);
+    return mix(u_filterInverseCdf[i], u_filterInverseCdf[i + 1], x - float(i)) * u_filterRadius;
+}
+
+void main() {
+    ivec2 pixel = u_tileOrigin + ivec2(gl_FragCoord.xy);
+    if (pixel.x >= u_imageSize.x || pixel.y >= u_imageSize.y) discard;
+    float aspect = float(u_imageSize.x) / float(u_imageSize.y);
+    float pixelAngle = 2.0 * u_tanHalfFovY / float(u_imageSize.y);
+    uint h = hashPixel(uvec2(pixel));
+    vec2 rotation = vec2(float(h & 0xffffu), float(h >> 16u)) / 65536.0;
+
+    vec3 color = vec3(0.0), normal = vec3(0.0), albedo = vec3(0.0);
+    float coverage = 0.0, ao = 0.0, depth = 1e30, deEvals = 0.0, steps = 0.0;
+    int spp = max(u_spp, 1);
+    for (int k = 0; k < spp; ++k) {
+        vec2 offset = vec2(0.0);
+        if (spp > 1) {
+            vec2 u = fract(rotation + float(k) * vec2(0.7548776662466927, 0.5698402909980532));
+            offset = vec2(filterOffset(u.x), filterOffset(u.y));
+        }
+        vec2 imagePos = vec2(pixel) + 0.5 + offset;
+        float ndcX = 2.0 * imagePos.x / float(u_imageSize.x) - 1.0;
+        float ndcY = 1.0 - 2.0 * imagePos.y / float(u_imageSize.y);
+        vec3 rd = normalize(u_cameraForward + u_cameraRight * (ndcX * u_tanHalfFovY * aspect) +
+                            u_cameraUp * (ndcY * u_tanHalfFovY));
+        vec3 ro = u_cameraPosition;
+
+        float tStart, tEnd;
+        bool hit = false;
+        MarchState s = marchStart(0.0);
+        if (clipToBound(ro, rd, tStart, tEnd)) {
+            s = marchStart(tStart);
+            marchRay(ro, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
+            // Out of steps: a ray crawling along a grazing surface is a hit.
+            hit = s.status == MARCH_HIT ||
+                  (s.status == MARCH_MARCHING && s.lastD < 10.0 * pixelAngle * s.t * u_detail);
+            steps += float(s.steps);
+        }
+        if (hit) {
+            SurfaceSample surface = shadeSurface(ro + rd * s.t, rd, s.t, pixelAngle, deEvals);
+            color += surface.color;
+            normal += surface.normal;
+            albedo += surface.albedo;
+            ao += surface.ao;
+            coverage += 1.0;
+            depth = min(depth, s.t);
+        } else if (u_transparentBackground == 0) {
+            color += shadeBackground(rd);
+        }
+    }
+    float w = 1.0 / float(spp);
+    outColor = vec4(color * w, coverage * w);
+    outNormalDepth = vec4(normal * w, depth);
+    outAlbedoAO = vec4(albedo * w, ao * w);
+    outStats = vec4(deEvals * w, steps * w, 0.0, 0.0);
+}
