@@ -22,7 +22,7 @@ struct Emitter {
         out += '\n';
     }
     int nextLine() const { return countLines(out) + 1; }
-    void restoreFormulaLines() { line("#line " + std::to_string(nextLine() + 1) + " " + std::to_string(kSourceFormula)); }
+    void restoreFormulaLines() { line("#line " + std::to_string(kFormulaLineBase + nextLine() + 1)); }
 };
 
 std::string nodeFunctionName(int k) { return "fraktal_node" + std::to_string(k); }
@@ -39,7 +39,7 @@ void emitNodeFunction(Emitter& e, int k, const Node& node, const std::string& na
         signature += ", " + glslType(p.type) + " " + std::string(p.name);
     }
     e.line(signature + ") {");
-    e.line("#line 1 " + std::to_string(kSourceFirstNode + k));
+    e.line("#line " + std::to_string(kNodeLineStride * (k + 1) + 1));
     std::string_view body = b.glsl;
     if (!body.empty() && body.front() == '\n') body.remove_prefix(1);
     e.out += body;
@@ -114,9 +114,9 @@ ShaderSource assembleShader(const GeneratedFormula& formula, std::string_view pr
     s.text = "#version 450 core\n";
     s.text += defines;
     if (!defines.empty() && defines.back() != '\n') s.text += '\n';
-    s.text += "#line 1 " + std::to_string(kSourceFormula) + "\n";
+    s.text += "#line " + std::to_string(kFormulaLineBase + 1) + "\n";
     s.text += formula.code;
-    s.text += "\n#line 1 " + std::to_string(kSourceProgram) + "\n";
+    s.text += "\n#line 1\n";
     s.text += programSource;
     return s;
 }
@@ -130,15 +130,19 @@ std::string ShaderSource::explainLog(std::string_view log) const {
     size_t last = 0;
     for (; it != end; ++it) {
         const std::smatch& m = *it;
-        const int source = std::stoi(m[1]);
-        std::string name;
-        if (source == kSourceProgram) name = programName;
-        else if (source == kSourceFormula) name = "formula.glsl (generated)";
-        else if (source >= kSourceFirstNode && source - kSourceFirstNode < int(nodeNames.size()))
-            name = nodeNames[source - kSourceFirstNode] + ", GLSL";
-        else continue;
+        const int line = std::stoi(m[2]);
+        std::string where;
+        if (line < kFormulaLineBase) {
+            where = programName + " line " + std::to_string(line);
+        } else if (line < kNodeLineStride) {
+            where = "generated formula code line " + std::to_string(line - kFormulaLineBase);
+        } else {
+            const size_t node = size_t(line / kNodeLineStride - 1);
+            if (node >= nodeNames.size()) continue;
+            where = nodeNames[node] + ", GLSL line " + std::to_string(line % kNodeLineStride);
+        }
         out += text.substr(last, m.position() - last);
-        out += name + " line " + m[2].str() + ":";
+        out += where + ":";
         last = m.position() + m.length();
     }
     out += text.substr(last);

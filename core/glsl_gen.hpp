@@ -10,10 +10,13 @@
 
 namespace fraktal {
 
-// GLSL source-string numbers used by #line: the driver reports errors as "<source>:<line>".
-inline constexpr int kSourceProgram = 0;    // the program's own template (march, probe...)
-inline constexpr int kSourceFormula = 1;    // the formula template, shaders/formula.glsl
-inline constexpr int kSourceFirstNode = 100;  // 100 + k: node k (the estimator comes last)
+// Where a line of an assembled shader came from is encoded in its #line number, because Mesa
+// reports every error as source string 0 whatever #line says (glslang honours both):
+//   lines 1 .. 4999        the program's own template (march, probe...)
+//   5000 + n               line n of the generated formula code (shaders/formula.glsl)
+//   10000 * (k + 1) + n    line n of node k's GLSL (the estimator is the last node)
+inline constexpr int kFormulaLineBase = 5000;
+inline constexpr int kNodeLineStride = 10000;
 
 struct GeneratedFormula {
     std::string code;  // defines formulaDE(vec3, out vec4, out int) and DE(vec3)
@@ -32,8 +35,8 @@ struct ShaderSource {
     std::string text;
     std::string programName;
     std::vector<std::string> nodeNames;
-    // Rewrites a driver's or glslang's log so that "101:3(5): error" reads
-    // "node 1 (box_fold), line 3 of its GLSL: error".
+    // Rewrites a driver's or glslang's log so that "0:20003(5): error" reads
+    // "node 1 (box_fold), GLSL line 3: error".
     std::string explainLog(std::string_view log) const;
 };
 

@@ -1,0 +1,142 @@
+// The generated GLSL (float, on the GL driver; llvmpipe in CI) agrees with the CPU evaluation
+// (double) for every block and every shipped preset, on 10,000 points each.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/gl/de_probe.hpp"
+#include "test_support.hpp"
+
+using namespace fraktal;
+
+namespace {
+
+// Enough that at least 10,000 well-conditioned points are compared per formula.
+constexpr size_t kPoints = 10240;
+
+// Relative 1e-4, or absolute 1e-5 near zero (a hundred-thousandth of the scenes' unit size).
+double tolerance(double cpu) { return 1e-4 * std::max(std::abs(cpu), 0.1); }
+
+// A point is ill-conditioned when moving it by single-precision rounding (1e-6 relative) changes
+// the double-precision result by more than the tolerance: near the boundary of an escape-time
+// set, an orbit that passes the bailout one iteration earlier or later gives a different
+// estimate, and no float evaluation can be expected to follow double there. Such points are
+// counted and bounded, not compared.
+bool illConditioned(const Formula& f, const vec3& p, double cpu) {
+    const double delta = 1e-6 * std::max(length(p), 1.0);
+    for (int axis = 0; axis < 3; ++axis)
+        for (double sign : {-1.0, 1.0}) {
+            vec3 q = p;
+            q[axis] += sign * delta;
+            if (!(std::abs(distanceEstimate(f, q) - cpu) <= 0.5 * tolerance(cpu))) return true;
+        }
+    return false;
+}
+
+struct Agreement {
+    size_t compared = 0, mismatched = 0, illConditioned = 0;
+    double worstExcess = 0.0;  // max |gpu - cpu| / tolerance
+    vec3 worstPoint{0.0};
+};
+
+Agreement compare(const Formula& f, const std::vector<vec3>& points) {
+    test::glContext();
+    gl::DEProbe probe(f);
+    const std::vector<gl::GpuSample> gpu = probe.evaluate(f, points);
+    Agreement a;
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Evaluation cpu = evaluate(f, points[i]);
+        const double excess = std::abs(double(gpu[i].distance) - cpu.distance) / tolerance(cpu.distance);
+        if (excess > 1.0 && illConditioned(f, points[i], cpu.distance)) {
+            ++a.illConditioned;
+            continue;
+        }
+        ++a.compared;
+        if (!(excess <= 1.0)) ++a.mismatched;
+        if (!(excess <= a.worstExcess)) {
+            a.worstExcess = excess;
+            a.worstPoint = points[i];
+        }
+    }
+    return a;
+}
+
+// A formula that exercises one block: the block repeated a few times, closed by a sphere; or,
+// for an estimator, a rotation and a scale closed by it.
+Formula formulaFor(const BlockDesc& block, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    Node node = Node::make(block);
+    // Values a quarter of the way from the default towards a random point of the range, so
+    // identity defaults (angle 0, offset 0) are exercised too.
+    for (size_t i = 0; i < block.params.size(); ++i) {
+        const ParamDecl& d = block.params[i];
+        std::uniform_real_distribution<double> u(d.min, d.max);
+        const vec3 target(u(rng), u(rng), u(rng));
+        vec3 v = d.defaultValue + 0.25 * (target - d.defaultValue);
+        if (d.type == ParamType::Float) v = vec3(v.x, 0.0, 0.0);
+        node.values[i] = v;
+    }
+    Formula f;
+    f.iterations = 3;
+    f.bailout = 100.0;
+    if (block.isEstimator()) {
+        Node rotate = Node::make(*findBlock("rotate"));
+        rotate.values[1].x = 30.0;
+        Node scale = Node::make(*findBlock("scale"));
+        scale.values[0].x = 1.5;
+        f.nodes = {rotate, scale};
+        f.estimator = node;
+    } else {
+        // add_c keeps power iterations from collapsing to 0 (float underflow, not a block error).
+        f.nodes = {node, Node::make(*findBlock("add_c"))};
+        f.estimator = Node::make(*findBlock("sphere"));
+    }
+    return f;
+}
+
+}  // namespace
+
+TEST(GpuCpuAgreement, EveryBlock) {
+    for (const BlockDesc& block : allBlocks()) {
+        const Formula f = formulaFor(block, 7);
+        const Agreement a = compare(f, test::randomPoints(kPoints, 2.0, 11));
+        EXPECT_EQ(a.mismatched, 0u) << "block " << block.id << ": worst error " << a.worstExcess
+                                    << "x the tolerance at (" << a.worstPoint.x << ", " << a.worstPoint.y << ", "
+                                    << a.worstPoint.z << ")";
+        EXPECT_LE(a.illConditioned, kPoints / 100) << "block " << block.id;
+        EXPECT_GE(a.compared, 10000u) << "block " << block.id;
+    }
+}
+
+TEST(GpuCpuAgreement, EveryShippedPreset) {
+    const auto presets = test::shippedPresets();
+    ASSERT_GE(presets.size(), 5u);
+    for (const auto& path : presets) {
+        const Preset p = loadPreset(path);
+        const Agreement a = compare(p.formula, test::randomPoints(kPoints, p.formula.boundRadius, 13));
+        EXPECT_EQ(a.mismatched, 0u) << path.filename() << ": worst error " << a.worstExcess << "x the tolerance at ("
+                                    << a.worstPoint.x << ", " << a.worstPoint.y << ", " << a.worstPoint.z << ")";
+        EXPECT_LE(a.illConditioned, kPoints / 100) << path.filename();
+        EXPECT_GE(a.compared, 10000u) << path.filename();
+        std::printf("%s: %zu points agree, %zu ill-conditioned skipped\n", path.filename().c_str(), a.compared,
+                    a.illConditioned);
+    }
+}
+
+// Changing a value must not need a new program: the same probe, new values, still agrees.
+TEST(GpuCpuAgreement, ValuesAreUniforms) {
+    Preset p = loadPreset(test::sourceDir() / "presets/mandelbox.json");
+    test::glContext();
+    gl::DEProbe probe(p.formula);
+    const auto points = test::randomPoints(2000, 4.0, 5);
+    for (double scale : {2.0, -1.5, 2.5}) {
+        p.formula.nodes[2].values[0].x = scale;
+        const auto gpu = probe.evaluate(p.formula, points);
+        size_t bad = 0;
+        for (size_t i = 0; i < points.size(); ++i) {
+            const double cpu = distanceEstimate(p.formula, points[i]);
+            bad += !(std::abs(gpu[i].distance - cpu) <= tolerance(cpu));
+        }
+        EXPECT_EQ(bad, 0u) << "scale " << scale;
+    }
+}

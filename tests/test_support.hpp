@@ -1,0 +1,40 @@
+// Helpers shared by the tests: the shipped presets, a GL context, random points.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/gl/context.hpp"
+#include "core/preset.hpp"
+
+namespace fraktal::test {
+
+inline std::filesystem::path sourceDir() { return FRAKTAL_SOURCE_DIR; }
+
+// Every preset shipped in presets/, by file name.
+inline std::vector<std::filesystem::path> shippedPresets() {
+    std::vector<std::filesystem::path> out;
+    for (const auto& e : std::filesystem::directory_iterator(sourceDir() / "presets"))
+        if (e.path().extension() == ".json") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+inline std::vector<vec3> randomPoints(size_t n, double halfSize, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-halfSize, halfSize);
+    std::vector<vec3> points(n);
+    for (vec3& p : points) p = vec3(u(rng), u(rng), u(rng));
+    return points;
+}
+
+// One headless GL context for a whole test program (made on first use).
+inline gl::HeadlessContext& glContext() {
+    static std::unique_ptr<gl::HeadlessContext> context = gl::HeadlessContext::create();
+    return *context;
+}
+
+}  // namespace fraktal::test
