@@ -1,0 +1,17 @@
+// Progressive anti-aliasing: accumulation and the next sample (shaders/viewport_accumulate.comp).
+#include "core/viewport/passes.hpp"
+
+namespace fraktal::viewport {
+
+void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
+    const GLuint program = p.accumulate.id();
+    glUseProgram(program);
+    setViewUniforms(program, c.camera, s.width(), s.height());
+    setInt(program, "u_atRest", c.atRest ? 1 : 0);
+    setInt(program, "u_maxSamples", c.options.maxSamples);
+    setFloat(program, "u_initialOmega", float(std::max(c.shading.overRelaxation, 1.0)));
+    dispatchPixels(s.width(), s.height());
+    imageBarrier();
+}
+
+}  // namespace fraktal::viewport

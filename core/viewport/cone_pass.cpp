@@ -1,0 +1,17 @@
+// The optional low-resolution cone pre-pass (shaders/viewport_cone.comp).
+#include "core/viewport/passes.hpp"
+
+namespace fraktal::viewport {
+
+void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
+    const GLuint program = p.cone.program.id();
+    p.cone.use(c.formula, c.shading);
+    setViewUniforms(program, c.camera, s.width(), s.height());
+    setInt(program, "u_coneTile", c.options.coneTile);
+    setInt(program, "u_coneSteps", c.options.coneSteps);
+    const int tile = c.options.coneTile;
+    dispatchPixels((s.width() + tile - 1) / tile, (s.height() + tile - 1) / tile);
+    imageBarrier();
+}
+
+}  // namespace fraktal::viewport

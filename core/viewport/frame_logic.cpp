@@ -1,0 +1,103 @@
+#include "core/viewport/frame_logic.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace fraktal::viewport {
+
+const char* toString(FrameAction a) {
+    switch (a) {
+        case FrameAction::Reset: return "reset";
+        case FrameAction::Reproject: return "reproject";
+        case FrameAction::Continue: return "continue";
+    }
+    return "?";
+}
+
+namespace {
+
+void appendNumber(std::string& s, double v) {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.17g,", v);
+    s += buffer;
+}
+
+}  // namespace
+
+std::string formulaValuesKey(const Formula& f) {
+    std::string key;
+    appendNumber(key, f.iterations);
+    appendNumber(key, f.bailout);
+    appendNumber(key, f.boundRadius);
+    appendNumber(key, f.deFactor);
+    for (size_t k = 0; k <= f.nodes.size(); ++k) {
+        const Node& n = k == f.nodes.size() ? f.estimator : f.nodes[k];
+        key += '|';
+        for (const ParamValue& v : n.values) {
+            appendNumber(key, v.x);
+            appendNumber(key, v.y);
+            appendNumber(key, v.z);
+        }
+    }
+    return key;
+}
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.target == b.target && a.up == b.up && a.fovY == b.fovY;
+}
+
+FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool reprojectEnabled,
+                        FrameAction previousAction) {
+    if (!previous) return FrameAction::Reset;
+    if (previous->width != current.width || previous->height != current.height) return FrameAction::Reset;
+    if (previous->structure != current.structure || previous->values != current.values) return FrameAction::Reset;
+    if (!(previous->shading.s == current.shading.s) || previous->shading.detail != current.shading.detail ||
+        previous->shading.overRelaxation != current.shading.overRelaxation || previous->maxSteps != current.maxSteps)
+        return FrameAction::Reset;
+    if (sameCamera(previous->camera, current.camera))
+        return previousAction == FrameAction::Reproject ? FrameAction::Reset : FrameAction::Continue;
+    return reprojectEnabled ? FrameAction::Reproject : FrameAction::Reset;
+}
+
+glm::dvec2 aaJitter(int sampleIndex) {
+    if (sampleIndex <= 0) return glm::dvec2(0.0);
+    // R2: the plastic number g solves g^3 = g + 1; alpha = (1/g, 1/g^2).
+    const double g = 1.32471795724474602596;
+    const glm::dvec2 alpha(1.0 / g, 1.0 / (g * g));
+    const glm::dvec2 u = glm::fract(0.5 + alpha * double(sampleIndex));
+    return u - 0.5;
+}
+
+int AASchedule::next(int finishedSample, bool cameraAtRest) const {
+    if (!cameraAtRest) return -1;
+    const int following = finishedSample + 1;
+    return following < maxSamples ? following : -1;
+}
+
+double extendConeCoverage(double covered, double t, double d, double tanHalfAngle) {
+    if (tanHalfAngle >= 1.0 || d <= 0.0) return covered;
+    const double nearEnd = (t - d) / (1.0 - tanHalfAngle);
+    const double farEnd = (t + d) / (1.0 + tanHalfAngle);
+    if (nearEnd > covered || farEnd <= covered) return covered;
+    return farEnd;
+}
+
+double reprojectionMargin(double t, double pixelAngle, double detail) {
+    return 4.0 * pixelAngle * t * std::max(detail, 1.0);
+}
+
+FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction action) {
+    FrameStats s;
+    s.action = action;
+    s.width = width;
+    s.height = height;
+    const double pixels = std::max(1.0, double(width) * double(height));
+    s.deEvalsPerPixel = double(c.deEvals) / pixels;
+    s.shareReprojected = double(c.reprojected) / pixels;
+    s.shareRestarted = double(c.restarted) / pixels;
+    s.shareConverged = double(c.converged) / pixels;
+    s.shareShaded = double(c.shaded) / pixels;
+    return s;
+}
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,105 @@
+// The viewport's GPU-free decisions (seed chapter 4): what a frame does with the stored march
+// state (reset, reproject or continue), the progressive anti-aliasing schedule, the conservative
+// stop distance of a coarse ray, and the per-frame statistics. Everything here is pure and
+// unit-tested without a GL context (tests/viewport_logic_test.cpp); the GLSL passes mirror the
+// functions marked "mirrored in shaders/viewport_common.glsl".
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/camera.hpp"
+#include "core/formula.hpp"
+#include "core/render/shading_params.hpp"
+
+namespace fraktal::viewport {
+
+// What the stored march state is worth for the next frame.
+enum class FrameAction {
+    Reset,      // nothing usable (first frame, new size, parameter or setting edit): every ray restarts
+    Reproject,  // the camera moved: carry the rays' distances over to the new view (seed 4.2)
+    Continue,   // nothing changed: keep marching unfinished rays, then raise the AA level (seed 4.1)
+};
+
+const char* toString(FrameAction a);
+
+// Everything a frame's image depends on, reduced to what the decision needs.
+struct FrameKey {
+    int width = 0, height = 0;
+    std::string structure;  // Formula::structureKey(): a change recompiles
+    std::string values;     // formulaValuesKey(): the parameter values (uniforms)
+    ShadingParams shading;  // shading, detail and over-relaxation: any change re-marches
+    int maxSteps = 0;
+    Camera camera;
+};
+
+// `values` of a formula: every uniform the generated GLSL reads (parameters, iterations, bailout,
+// bound, factor), printed exactly, so that any edit changes the string.
+std::string formulaValuesKey(const Formula& f);
+
+bool sameCamera(const Camera& a, const Camera& b);
+
+// `previous` is null before the first frame. A camera move reprojects only when reprojection is
+// enabled; otherwise it resets like an edit does. An edit and a move in the same frame reset
+// (the carried distances belong to the old fractal). The first frame at rest after a reprojected
+// one also resets: a ray's hit is only defined up to the hit threshold, so a ray that resumed from
+// a reprojected start ends somewhere else in that band than a fresh ray, and on orbit-trap
+// textures with sub-pixel detail that alone costs ~20 dB against a fresh render (measured: 22 dB
+// on mandelbox). Re-marching the still view from the camera makes the settled image exactly the
+// fresh one; the reprojected image stays on screen until each pixel's new sample replaces it.
+FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool reprojectEnabled,
+                        FrameAction previousAction = FrameAction::Continue);
+
+// Progressive anti-aliasing: sample 0 is the pixel centre, the others are spread over the pixel
+// by the R2 low-discrepancy sequence (Roberts 2018, "The unreasonable effectiveness of
+// quasirandom sequences"), so any prefix of the schedule covers the pixel evenly. Offsets are in
+// pixels, in [-0.5, 0.5). Mirrored in shaders/viewport_common.glsl.
+glm::dvec2 aaJitter(int sampleIndex);
+
+// The AA level rises one sample per pixel at a time while the camera rests, up to the cap.
+struct AASchedule {
+    int maxSamples = 16;
+    // The sample a pixel marches next once `finishedSample` has been shaded and accumulated, or -1
+    // when the pixel is done (cap reached, or the camera moves: under motion only sample 0 runs).
+    int next(int finishedSample, bool cameraAtRest) const;
+};
+
+// The seed's conservative stop (4.1), as cone coverage: a coarse ray carries the cone of half
+// angle `tanHalfAngle` about it that contains the finer rays around it (AA samples within a
+// pixel, or the full-resolution pixels of a cone pre-pass tile). A sphere-tracing point at
+// distance t with distance estimate d proves the ball of radius d about it empty; the cone's
+// cross-sections at axial distances s with |s - t| + s * tanHalfAngle <= d lie inside that ball,
+// i.e. s in [(t - d) / (1 - tanHalfAngle), (t + d) / (1 + tanHalfAngle)]. If that interval
+// reaches back to the distance already covered, the coverage extends to its far end. Every finer
+// ray inside the cone is free of surface up to the returned distance, so it may start there and
+// still meets its own first hit. Mirrored in shaders/viewport_common.glsl.
+double extendConeCoverage(double covered, double t, double d, double tanHalfAngle);
+
+// Reprojected starts are backed off toward the camera by this distance before the DE verifies
+// them: the hit test accepts points up to `detail` pixel footprints in front of the surface, and
+// the reprojected mesh interpolates between pixels, so a few footprints cover both.
+// Mirrored in shaders/viewport_common.glsl.
+double reprojectionMargin(double t, double pixelAngle, double detail);
+
+// Raw counters the GPU passes add to during one frame (one uint each, see viewport_common.glsl).
+struct FrameCounters {
+    uint64_t deEvals = 0;      // every DE call: march, verification, cone pre-pass and shading
+    uint64_t reprojected = 0;  // pixels whose ray start came from the previous frame
+    uint64_t restarted = 0;    // pixels whose ray restarted from the camera (or the cone pre-pass)
+    uint64_t converged = 0;    // pixels whose current sample is finished after this frame's march
+    uint64_t shaded = 0;       // pixels shaded this frame (a shading cache miss)
+};
+
+struct FrameStats {
+    FrameAction action = FrameAction::Reset;
+    int width = 0, height = 0;
+    double deEvalsPerPixel = 0.0;
+    double shareReprojected = 0.0, shareRestarted = 0.0, shareConverged = 0.0, shareShaded = 0.0;
+    int samplesAtRest = 0;      // the AA sample index the frame worked on (0 under motion)
+    bool settled = false;       // every pixel is finished at the AA cap: further frames cost nothing
+    double milliseconds = 0.0;  // wall time incl. glFinish; filled in by whoever times the frame
+};
+
+FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction action);
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,16 @@
+// Progressive marching (shaders/viewport_march.comp).
+#include "core/viewport/passes.hpp"
+
+namespace fraktal::viewport {
+
+void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
+    const GLuint program = p.march.program.id();
+    p.march.use(c.formula, c.shading);
+    setViewUniforms(program, c.camera, s.width(), s.height());
+    setInt(program, "u_stepsPerFrame", c.options.stepsPerFrame);
+    setInt(program, "u_maxSteps", c.maxSteps);
+    dispatchPixels(s.width(), s.height());
+    imageBarrier();
+}
+
+}  // namespace fraktal::viewport

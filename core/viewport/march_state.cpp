@@ -1,0 +1,63 @@
+#include "core/viewport/march_state.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+namespace fraktal::viewport {
+
+namespace {
+
+GLuint makeTexture(GLenum format, int width, int height) {
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, format, width, height);
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+}  // namespace
+
+MarchState::MarchState(int width, int height, int coneTile) : width_(width), height_(height) {
+    rayState = makeTexture(GL_RGBA32F, width, height);
+    rayInfo = makeTexture(GL_RGBA32I, width, height);
+    sampleColor = makeTexture(GL_RGBA32F, width, height);
+    accum = makeTexture(GL_RGBA32F, width, height);
+    image = makeTexture(GL_RGBA32F, width, height);
+    centre = makeTexture(GL_RGBA32F, width, height);
+    const int tile = std::max(coneTile, 1);
+    cone = makeTexture(GL_R32F, (width + tile - 1) / tile, (height + tile - 1) / tile);
+    const float black[4] = {0, 0, 0, 1};
+    glClearTexImage(image, 0, GL_RGBA, GL_FLOAT, black);
+
+    reprojDistance = makeTexture(GL_RGBA32F, width, height);
+    reprojColor = makeTexture(GL_RGBA32F, width, height);
+    reprojDepth = makeTexture(GL_DEPTH_COMPONENT32F, width, height);
+    glCreateFramebuffers(1, &reprojFramebuffer);
+    glNamedFramebufferTexture(reprojFramebuffer, GL_COLOR_ATTACHMENT0, reprojDistance, 0);
+    glNamedFramebufferTexture(reprojFramebuffer, GL_COLOR_ATTACHMENT1, reprojColor, 0);
+    glNamedFramebufferTexture(reprojFramebuffer, GL_DEPTH_ATTACHMENT, reprojDepth, 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(reprojFramebuffer, 2, buffers);
+}
+
+MarchState::~MarchState() {
+    glDeleteFramebuffers(1, &reprojFramebuffer);
+    const GLuint textures[] = {rayState, rayInfo, sampleColor,    accum,       image,
+                               centre,   cone,    reprojDistance, reprojColor, reprojDepth};
+    glDeleteTextures(GLsizei(std::size(textures)), textures);
+}
+
+void MarchState::bindImages() const {
+    glBindImageTexture(0, rayState, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(1, rayInfo, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32I);
+    glBindImageTexture(2, sampleColor, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(3, accum, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(4, image, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(5, centre, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(6, cone, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+}
+
+}  // namespace fraktal::viewport

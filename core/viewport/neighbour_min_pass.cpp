@@ -1,0 +1,19 @@
+// Ray starts for a new view: the seed's second erosion fix after reprojection, or a full reset
+// (shaders/viewport_neighbour_min.comp).
+#include "core/viewport/passes.hpp"
+
+namespace fraktal::viewport {
+
+void runNeighbourMinPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, bool resetAll) {
+    const GLuint program = p.neighbourMin.program.id();
+    p.neighbourMin.use(c.formula, c.shading);
+    setViewUniforms(program, c.camera, s.width(), s.height());
+    setInt(program, "u_resetAll", resetAll ? 1 : 0);
+    setInt(program, "u_coneTile", c.options.coneTile);
+    glBindTextureUnit(0, s.reprojDistance);
+    glBindTextureUnit(1, s.reprojColor);
+    dispatchPixels(s.width(), s.height());
+    imageBarrier();
+}
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,57 @@
+// The viewport's GL passes, one file each (seed chapter 4). All run on the current context with
+// the march state's images bound (MarchState::bindImages) and the counters bound.
+#pragma once
+
+#include "core/camera.hpp"
+#include "core/formula.hpp"
+#include "core/render/shading_params.hpp"
+#include "core/viewport/march_state.hpp"
+#include "core/viewport/viewport_options.hpp"
+#include "core/viewport/viewport_programs.hpp"
+
+namespace fraktal::viewport {
+
+// What every pass of one frame reads.
+struct FrameContext {
+    const Formula& formula;
+    const Camera& camera;
+    const ShadingParams& shading;
+    const ViewportOptions& options;
+    int maxSteps;
+    bool atRest;  // FrameAction::Continue: the AA level may rise
+};
+
+// Reprojection (reproject_pass.cpp): rasterises the previous frame's grid into the reprojection
+// target. Owns the grid's index buffer (rebuilt when the size changes).
+class ReprojectPass {
+   public:
+    ReprojectPass();
+    ~ReprojectPass();
+    ReprojectPass(const ReprojectPass&) = delete;
+    ReprojectPass& operator=(const ReprojectPass&) = delete;
+    void run(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current,
+             double boundRadius);
+
+   private:
+    GLuint vertexArray_ = 0, indices_ = 0;
+    int width_ = 0, height_ = 0;
+    GLsizei indexCount_ = 0;
+};
+
+void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
+// Starts the rays of a new view: resetAll restarts every pixel, otherwise from the reprojection.
+void runNeighbourMinPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, bool resetAll);
+void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
+void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
+void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
+
+// Exposure and the sRGB curve, from the scene-linear image into the bound framebuffer.
+void runDisplayPass(const ViewportPrograms& p, const MarchState& s, float exposure, bool flipY, GLuint vertexArray);
+
+// Between passes that write images and passes that read them.
+inline void imageBarrier() {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                    GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+}  // namespace fraktal::viewport

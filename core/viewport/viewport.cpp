@@ -1,0 +1,105 @@
+#include "core/viewport/viewport.hpp"
+
+namespace fraktal::viewport {
+
+Viewport::Viewport(ViewportOptions options) : options_(options) {
+    reproject_ = std::make_unique<ReprojectPass>();
+    counters_ = std::make_unique<GpuCounters>();
+    glCreateVertexArrays(1, &displayVertexArray_);
+}
+
+Viewport::~Viewport() {
+    glDeleteFramebuffers(1, &displayFramebuffer_);
+    glDeleteTextures(1, &displayTexture_);
+    glDeleteVertexArrays(1, &displayVertexArray_);
+}
+
+void Viewport::setOptions(const ViewportOptions& options) {
+    if (options.coneTile != options_.coneTile) {
+        state_.reset();  // the cone image's size depends on the tile
+        forceReset_ = true;
+    }
+    if (options.overRelaxation != options_.overRelaxation) forceReset_ = true;
+    options_ = options;
+}
+
+FrameStats Viewport::render(const Formula& formula, const Camera& camera, const RenderSettings& render,
+                            const ShadingSettings& shading, int width, int height) {
+    if (width < 2 || height < 2) throw std::runtime_error("viewport: size must be at least 2x2");
+    RenderSettings effective = render;
+    if (!options_.overRelaxation) effective.overRelaxation = 1.0;
+    const ShadingParams params = resolveShading(shading, effective, formula);
+
+    FrameKey key{width, height, formula.structureKey(), formulaValuesKey(formula), params, render.maxSteps, camera};
+    // Compile first: if it fails, the old programs and image stay.
+    if (!programs_ || programs_->structure != key.structure) programs_ = std::make_unique<ViewportPrograms>(formula);
+    if (!state_ || state_->width() != width || state_->height() != height)
+        state_ = std::make_unique<MarchState>(width, height, options_.coneTile);
+
+    FrameAction action = decideFrame(previous_ ? &*previous_ : nullptr, key, options_.reproject, previousAction_);
+    if (forceReset_) action = FrameAction::Reset;
+    forceReset_ = false;
+    if (action == FrameAction::Continue && settled_) {
+        FrameStats idle = summarize(FrameCounters{0, 0, 0, uint64_t(width) * height, 0}, width, height, action);
+        idle.settled = true;
+        return idle;
+    }
+
+    const FrameContext context{formula, camera, params, options_, render.maxSteps, action == FrameAction::Continue};
+    counters_->clearAndBind();
+    state_->bindImages();
+    if (action == FrameAction::Reproject)
+        reproject_->run(*programs_, *state_, previous_->camera, camera, formula.boundRadius);
+    if (action != FrameAction::Continue) {
+        if (options_.coneTile > 0) runConePass(*programs_, *state_, context);
+        runNeighbourMinPass(*programs_, *state_, context, action == FrameAction::Reset);
+    }
+    runMarchPass(*programs_, *state_, context);
+    runShadePass(*programs_, *state_, context);
+    runAccumulatePass(*programs_, *state_, context);
+
+    FrameStats stats = summarize(counters_->read(), width, height, action);
+    settled_ = action == FrameAction::Continue && counters_->busyPixels() == 0;
+    stats.settled = settled_;
+    previous_ = std::move(key);
+    previousAction_ = action;
+    return stats;
+}
+
+void Viewport::drawDisplay(float exposure) {
+    if (!state_) return;
+    runDisplayPass(*programs_, *state_, exposure, true, displayVertexArray_);
+}
+
+std::vector<float> Viewport::readImage() const {
+    if (!state_) return {};
+    std::vector<float> pixels(size_t(state_->width()) * state_->height() * 4);
+    glGetTextureImage(state_->image, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+    return pixels;
+}
+
+std::vector<uint8_t> Viewport::readDisplay(float exposure) {
+    if (!state_) return {};
+    const int w = state_->width(), h = state_->height();
+    if (w != displayWidth_ || h != displayHeight_) {
+        glDeleteFramebuffers(1, &displayFramebuffer_);
+        glDeleteTextures(1, &displayTexture_);
+        glCreateTextures(GL_TEXTURE_2D, 1, &displayTexture_);
+        glTextureStorage2D(displayTexture_, 1, GL_RGBA8, w, h);
+        glCreateFramebuffers(1, &displayFramebuffer_);
+        glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, displayTexture_, 0);
+        displayWidth_ = w;
+        displayHeight_ = h;
+    }
+    GLint previousFramebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
+    glViewport(0, 0, w, h);
+    runDisplayPass(*programs_, *state_, exposure, false, displayVertexArray_);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFramebuffer));
+    std::vector<uint8_t> pixels(size_t(w) * h * 4);
+    glGetTextureImage(displayTexture_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+    return pixels;
+}
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,76 @@
+// The real-time viewport (seed chapter 4): progressive marching, progressive anti-aliasing and
+// reprojection of march distances. Owns its GL resources; call render() once per displayed frame
+// with the current formula, camera and settings, then show imageTexture() (scene-linear RGBA32F)
+// through drawDisplay() or read it back. Needs a current GL 4.5 context (the editor's window or
+// gl::HeadlessContext).
+//
+// Frame: decideFrame() picks reset / reproject / continue; reproject_pass + neighbour_min_pass
+// (or a reset) start the rays of a new view; march_pass advances unfinished rays by
+// options.stepsPerFrame steps; shade_pass shades only samples that finished; accumulate_pass adds
+// them to the AA mean and starts the next jittered sample while the camera rests. A structure
+// change recompiles before anything else happens, and every reset keeps the old image on screen
+// per pixel until that pixel's new sample is shaded.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/formula.hpp"
+#include "core/render/settings.hpp"
+#include "core/viewport/frame_logic.hpp"
+#include "core/viewport/gpu_counters.hpp"
+#include "core/viewport/march_state.hpp"
+#include "core/viewport/passes.hpp"
+#include "core/viewport/viewport_options.hpp"
+#include "core/viewport/viewport_programs.hpp"
+
+namespace fraktal::viewport {
+
+class Viewport {
+   public:
+    explicit Viewport(ViewportOptions options = {});
+    ~Viewport();
+    Viewport(const Viewport&) = delete;
+    Viewport& operator=(const Viewport&) = delete;
+
+    // Renders one frame. Uses render.maxSteps, detail, overRelaxation (and exposure only in the
+    // display pass); width/height are the viewport's, not render.width/height. Throws
+    // std::runtime_error naming the node if a new structure does not compile (the previous
+    // programs and image stay).
+    FrameStats render(const Formula& formula, const Camera& camera, const RenderSettings& render,
+                      const ShadingSettings& shading, int width, int height);
+
+    // Changing options takes effect on the next frame (a cone tile change resets).
+    void setOptions(const ViewportOptions& options);
+    const ViewportOptions& options() const { return options_; }
+
+    // Every pixel has all its samples: further frames of this view cost nothing.
+    bool settled() const { return settled_; }
+    GLuint imageTexture() const { return state_ ? state_->image : 0; }
+    int width() const { return state_ ? state_->width() : 0; }
+    int height() const { return state_ ? state_->height() : 0; }
+
+    // Exposure + sRGB into the bound framebuffer at the current glViewport (rows bottom-up).
+    void drawDisplay(float exposure);
+    // The scene-linear image, RGBA floats, rows from the top.
+    std::vector<float> readImage() const;
+    // The display-referred image, RGBA8, rows from the top.
+    std::vector<uint8_t> readDisplay(float exposure);
+
+   private:
+    ViewportOptions options_;
+    std::unique_ptr<ViewportPrograms> programs_;
+    std::unique_ptr<MarchState> state_;
+    std::unique_ptr<ReprojectPass> reproject_;
+    std::unique_ptr<GpuCounters> counters_;
+    std::optional<FrameKey> previous_;
+    FrameAction previousAction_ = FrameAction::Reset;
+    bool settled_ = false;
+    bool forceReset_ = false;
+    GLuint displayVertexArray_ = 0, displayTexture_ = 0, displayFramebuffer_ = 0;
+    int displayWidth_ = 0, displayHeight_ = 0;
+};
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,17 @@
+// How the viewport renders (the editor's viewport panel and `fraktal bench viewport` set these).
+#pragma once
+
+#include "core/render/settings.hpp"
+
+namespace fraktal::viewport {
+
+struct ViewportOptions {
+    int stepsPerFrame = 30;      // march steps per ray per frame (the seed's 30)
+    int maxSamples = 16;         // progressive AA cap, samples per pixel
+    bool reproject = true;       // carry distances over on camera motion (seed 4.2); off: restart
+    bool overRelaxation = true;  // over-relaxed sphere tracing (RenderSettings::overRelaxation); off: omega = 1
+    int coneTile = 0;            // low-resolution cone pre-pass tile in pixels (0: off; 8 is typical)
+    int coneSteps = 64;          // DE steps of a pre-pass cone
+};
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,78 @@
+#include "core/viewport/viewport_programs.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/shader_library.hpp"
+
+namespace fraktal::viewport {
+
+namespace {
+
+std::string concat(std::initializer_list<const char*> names) {
+    std::string text;
+    for (const char* n : names) {
+        text += shaderTemplate(n);
+        text += '\n';
+    }
+    return text;
+}
+
+FormulaProgram compileFormulaPass(const Formula& f, const GeneratedFormula& g, const char* name,
+                                  std::initializer_list<const char*> sources) {
+    FormulaProgram p;
+    p.program = gl::compileCompute(assembleShader(g, name, concat(sources)));
+    p.formula = gl::FormulaUniforms(p.program.id(), f);
+    p.shading = gl::ShadingUniforms(p.program.id());
+    return p;
+}
+
+}  // namespace
+
+void FormulaProgram::use(const Formula& f, const ShadingParams& params) const {
+    glUseProgram(program.id());
+    formula.upload(f);
+    shading.upload(params);
+}
+
+ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey()) {
+    const GeneratedFormula g = generateFormulaGLSL(f);
+    march =
+        compileFormulaPass(f, g, "viewport_march.comp", {"march.glsl", "viewport_common.glsl", "viewport_march.comp"});
+    shade = compileFormulaPass(f, g, "viewport_shade.comp",
+                               {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_shade.comp"});
+    neighbourMin = compileFormulaPass(f, g, "viewport_neighbour_min.comp",
+                                      {"march.glsl", "viewport_common.glsl", "viewport_neighbour_min.comp"});
+    cone = compileFormulaPass(f, g, "viewport_cone.comp", {"march.glsl", "viewport_common.glsl", "viewport_cone.comp"});
+    const GeneratedFormula none;
+    accumulate = gl::compileCompute(
+        assembleShader(none, "viewport_accumulate.comp", concat({"viewport_common.glsl", "viewport_accumulate.comp"})));
+    reproject = gl::compileGraphics(
+        assembleShader(none, "viewport_reproject.vert", concat({"viewport_common.glsl", "viewport_reproject.vert"})),
+        assembleShader(none, "viewport_reproject.frag", concat({"viewport_reproject.frag"})));
+    display = gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
+                                  assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"})));
+}
+
+void setInt(GLuint program, const char* name, int value) { glUniform1i(glGetUniformLocation(program, name), value); }
+void setFloat(GLuint program, const char* name, float value) {
+    glUniform1f(glGetUniformLocation(program, name), value);
+}
+
+void setViewUniforms(GLuint program, const Camera& camera, int width, int height) {
+    const vec3 forward = normalize(camera.target - camera.position);
+    const vec3 right = normalize(glm::cross(forward, camera.up));
+    const vec3 up = glm::cross(right, forward);
+    const double tanHalf = std::tan(glm::radians(camera.fovY) * 0.5);
+    auto set3 = [&](const char* name, const vec3& v) {
+        glUniform3f(glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
+    };
+    glUniform2i(glGetUniformLocation(program, "u_size"), width, height);
+    set3("u_cameraPosition", camera.position);
+    set3("u_cameraRight", right);
+    set3("u_cameraUp", up);
+    set3("u_cameraForward", forward);
+    setFloat(program, "u_tanHalfFovY", float(tanHalf));
+    setFloat(program, "u_pixelAngle", float(2.0 * tanHalf / height));
+}
+
+}  // namespace fraktal::viewport

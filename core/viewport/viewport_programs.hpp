@@ -1,0 +1,42 @@
+// The GL programs of the viewport passes. The passes that call the DE are compiled per formula
+// structure; the others once. Each pass's dispatch lives in its own file (*_pass.cpp).
+#pragma once
+
+#include <string>
+
+#include "core/camera.hpp"
+#include "core/formula.hpp"
+#include "core/gl/formula_uniforms.hpp"
+#include "core/gl/program.hpp"
+#include "core/render/shading_params.hpp"
+#include "core/render/shading_uniforms.hpp"
+
+namespace fraktal::viewport {
+
+// A program that evaluates the formula, with its uniform uploaders.
+struct FormulaProgram {
+    gl::Program program;
+    gl::FormulaUniforms formula;
+    gl::ShadingUniforms shading;
+    // Binds the program and uploads the formula's values and the shading parameters.
+    void use(const Formula& f, const ShadingParams& p) const;
+};
+
+struct ViewportPrograms {
+    explicit ViewportPrograms(const Formula& formula);  // throws naming the node on a GLSL error
+    std::string structure;
+    FormulaProgram march, shade, neighbourMin, cone;
+    gl::Program accumulate, reproject, display;
+};
+
+// Sets viewport_common.glsl's camera uniforms on the bound program.
+void setViewUniforms(GLuint program, const Camera& camera, int width, int height);
+void setInt(GLuint program, const char* name, int value);
+void setFloat(GLuint program, const char* name, float value);
+
+// Work groups of the 8x8 compute passes for an image.
+inline void dispatchPixels(int width, int height) {
+    glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+}
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,43 @@
+// shaders/viewport_accumulate.comp — progressive anti-aliasing (seed 4.1): adds each newly shaded
+// sample to the pixel's running mean and, while the camera rests, starts the pixel's next jittered
+// sample. The new ray starts at the centre ray's cone coverage (the conservative stop): every
+// ray inside the pixel is free of surface up to there, so it still finds its own first hit and
+// silhouettes get truly anti-aliased. Writes the scene-linear image. Needs viewport_common.glsl.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform image2D u_rayState;
+layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
+layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
+layout(rgba32f, binding = 3) uniform image2D u_accum;
+layout(rgba32f, binding = 4) uniform image2D u_image;
+layout(rgba32f, binding = 5) uniform image2D u_centre;
+uniform int u_atRest;
+uniform int u_maxSamples;
+uniform float u_initialOmega;
+
+void main() {
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(px, u_size))) return;
+    ivec4 info = imageLoad(u_rayInfo, px);
+    vec4 accum = imageLoad(u_accum, px);
+    bool changed = false;
+    if ((info.w & FLAG_SHADED_NOW) != 0) {
+        vec3 color = imageLoad(u_sampleColor, px).rgb;
+        // Sample 0 replaces: it is the first sample, or the exact shade of a reused colour.
+        accum = info.z == 0 ? vec4(color, 1.0) : accum + vec4(color, 1.0);
+        info.w &= ~FLAG_SHADED_NOW;
+        imageStore(u_accum, px, accum);
+        imageStore(u_image, px, vec4(accum.rgb / accum.a, 1.0));
+        changed = true;
+    }
+    bool idle = info.x != STATUS_MARCHING && (info.w & (FLAG_NEEDS_SHADE | FLAG_REUSED)) == 0;
+    if (u_atRest != 0 && idle && info.z + 1 < u_maxSamples) {  // AASchedule::next
+        float start = imageLoad(u_rayState, px).w;
+        imageStore(u_rayState, px, vec4(start, 0.0, u_initialOmega, start));
+        info = ivec4(STATUS_MARCHING, 0, info.z + 1, info.w);
+        changed = true;
+        idle = false;
+    }
+    if (changed) imageStore(u_rayInfo, px, info);
+    if (imageLoad(u_centre, px).y != float(STATUS_MARCHING)) atomicAdd(c_converged, 1u);
+    if (!idle) atomicAdd(c_busy, 1u);
+}

@@ -1,0 +1,59 @@
+// shaders/viewport_common.glsl — shared by the viewport passes (core/viewport/*): the per-pixel
+// march state layout, the camera rays, and the GLSL mirrors of core/viewport/frame_logic.cpp.
+// Image rows count from the top (row 0 = first row of a PNG), like shaders/still.frag.
+//
+// Per-pixel state (all images u_size):
+//   rayState    rgba32f  t, lastD, omega of the current sample's ray (march.glsl's MarchState);
+//                        w: cone coverage of the centre ray (start distance of the AA samples)
+//   rayInfo     rgba32i  status (MARCH_*), steps, AA sample index, FLAG_* bits
+//   sampleColor rgba32f  rgb: the current sample's colour (or the colour carried by reprojection);
+//                        a: distance of the carried hit along the new ray (-1: none)
+//   accum       rgba32f  rgb: sum of the finished samples' colours; a: their count
+//   image       rgba32f  the scene-linear result shown (accum mean, carried colour, or the old image)
+//   centre      rgba32f  x: t of the sample-0 (pixel centre) ray; y: its status. Reprojection reads it.
+uniform ivec2 u_size;
+uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
+uniform float u_tanHalfFovY;
+uniform float u_pixelAngle;  // 2 tan(fovY / 2) / height: a pixel's footprint per unit distance
+
+const int STATUS_MARCHING = 0, STATUS_HIT = 1, STATUS_ESCAPED = 2;  // march.glsl's MARCH_*
+const int FLAG_NEEDS_SHADE = 1;  // the sample finished marching and has no colour yet
+const int FLAG_CARRIED = 2;      // sampleColor holds the colour of a reprojected hit (tCarried in .a)
+const int FLAG_REUSED = 4;       // the sample's colour is the carried one, not shaded for this view
+const int FLAG_SHADED_NOW = 8;   // shaded this frame, not yet accumulated
+
+// Frame statistics (core/viewport/gpu_counters.cpp reads them back).
+layout(std430, binding = 0) buffer ViewportCounters {
+    uint c_deEvals, c_reprojected, c_restarted, c_converged, c_shaded, c_busy;
+};
+
+// Mirror of fraktal::viewport::aaJitter (R2 sequence, Roberts 2018).
+vec2 aaJitter(int sampleIndex) {
+    if (sampleIndex <= 0) return vec2(0.0);
+    const float g = 1.32471795724474602596;
+    return fract(0.5 + vec2(1.0 / g, 1.0 / (g * g)) * float(sampleIndex)) - 0.5;
+}
+
+// The ray through an image position in pixels from the top-left corner (as Camera::rayDirection).
+vec3 cameraRay(vec2 imagePos) {
+    float aspect = float(u_size.x) / float(u_size.y);
+    float ndcX = 2.0 * imagePos.x / float(u_size.x) - 1.0;
+    float ndcY = 1.0 - 2.0 * imagePos.y / float(u_size.y);
+    return normalize(u_cameraForward + u_cameraRight * (ndcX * u_tanHalfFovY * aspect) +
+                     u_cameraUp * (ndcY * u_tanHalfFovY));
+}
+
+// Mirror of fraktal::viewport::extendConeCoverage (the seed's conservative stop, 4.1).
+float extendConeCoverage(float covered, float t, float d, float tanHalfAngle) {
+    if (tanHalfAngle >= 1.0 || d <= 0.0) return covered;
+    float nearEnd = (t - d) / (1.0 - tanHalfAngle);
+    float farEnd = (t + d) / (1.0 + tanHalfAngle);
+    if (nearEnd > covered || farEnd <= covered) return covered;
+    return farEnd;
+}
+
+// Mirror of fraktal::viewport::reprojectionMargin.
+float reprojectionMargin(float t, float pixelAngle, float detail) { return 4.0 * pixelAngle * t * max(detail, 1.0); }
+
+// Half the diagonal of a pixel, as an angle: every AA sample of a pixel lies in this cone.
+const float HALF_DIAGONAL = 0.70710678;

@@ -1,0 +1,53 @@
+// shaders/viewport_march.comp — progressive marching (seed 4.1): advances every unfinished ray
+// by at most u_stepsPerFrame steps of march.glsl's marcher, resuming from the stored state.
+// Needs the formula, march.glsl and viewport_common.glsl before it.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform image2D u_rayState;
+layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
+layout(rgba32f, binding = 5) uniform image2D u_centre;
+uniform int u_stepsPerFrame;
+uniform int u_maxSteps;
+
+void main() {
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(px, u_size))) return;
+    ivec4 info = imageLoad(u_rayInfo, px);
+    if (info.x != STATUS_MARCHING) return;
+    vec4 state = imageLoad(u_rayState, px);
+    int sampleIndex = info.z;
+    vec3 ro = u_cameraPosition;
+    vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(sampleIndex));
+    MarchState s = MarchState(state.x, state.y, state.z, MARCH_MARCHING, info.y);
+    float covered = state.w;
+    float deEvals = 0.0;
+    float tStart, tEnd;
+    if (!clipToBound(ro, rd, tStart, tEnd)) {
+        // Misses the bound sphere: nothing anywhere along it. Park it beyond the sphere so that
+        // reprojection's neighbourhood minimum is not pulled toward the camera.
+        s.status = MARCH_ESCAPED;
+        s.t = length(ro) + u_boundRadius;
+    } else {
+        s.t = max(s.t, tStart);
+        covered = max(covered, tStart);
+        float tanHalf = HALF_DIAGONAL * u_pixelAngle;
+        int budget = min(u_stepsPerFrame, u_maxSteps - s.steps);
+        for (int i = 0; i < budget && s.status == MARCH_MARCHING; ++i) {
+            float t0 = s.t;
+            marchRay(ro, rd, tEnd, u_pixelAngle, 1, s, deEvals);
+            // An accepted step stored the DE at t0 in lastD (a fallback step moves t backward).
+            if (sampleIndex == 0 && s.status == MARCH_MARCHING && s.t > t0)
+                covered = extendConeCoverage(covered, t0, s.lastD, tanHalf);
+        }
+        // Out of steps: as the still renderer (still.frag), a ray crawling along a grazing surface
+        // is a hit; anything else is background.
+        if (s.status == MARCH_MARCHING && s.steps >= u_maxSteps)
+            s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
+    }
+    atomicAdd(c_deEvals, uint(deEvals));
+    if (s.status != MARCH_MARCHING) info.w |= FLAG_NEEDS_SHADE;
+    info.x = s.status;
+    info.y = s.steps;
+    imageStore(u_rayState, px, vec4(s.t, s.lastD, s.omega, covered));
+    imageStore(u_rayInfo, px, info);
+    if (sampleIndex == 0) imageStore(u_centre, px, vec4(s.t, float(s.status), 0.0, 0.0));
+}

@@ -1,0 +1,70 @@
+// shaders/viewport_neighbour_min.comp — starts every pixel's ray for a new view. After a
+// reprojection (u_resetAll = 0) it is the seed's second erosion fix (4.2): the start is the
+// minimum reprojected distance over the 3x3 neighbourhood, backed off by a margin and verified
+// with the DE (a start within the hit threshold of a surface may lie behind a thin shell: such a
+// ray restarts). Pixels nothing was reprojected onto (disoccluded, off-screen) restart from the
+// camera, or from the cone pre-pass distance. A reset (u_resetAll = 1) restarts every pixel and
+// keeps the old image until the new samples replace it. Needs the formula, march.glsl and
+// viewport_common.glsl.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform image2D u_rayState;
+layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
+layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
+layout(rgba32f, binding = 3) uniform image2D u_accum;
+layout(rgba32f, binding = 4) uniform image2D u_image;
+layout(rgba32f, binding = 5) uniform image2D u_centre;
+layout(r32f, binding = 6) uniform readonly image2D u_cone;
+layout(binding = 0) uniform sampler2D u_reprojDistance;  // x: t (<= 0: nothing), y: hit weight, z: t of the carried hit
+layout(binding = 1) uniform sampler2D u_reprojColor;
+uniform int u_resetAll;
+uniform int u_coneTile;  // 0: no cone pre-pass
+
+void main() {
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(px, u_size))) return;
+    vec3 ro = u_cameraPosition;
+    vec3 rd = cameraRay(vec2(px) + 0.5);
+    float tStart, tEnd;
+    bool inBound = clipToBound(ro, rd, tStart, tEnd);
+    float restartAt = tStart;
+    if (u_coneTile > 0) restartAt = max(tStart, imageLoad(u_cone, px / u_coneTile).x);
+
+    float t = restartAt;
+    bool reprojected = false;
+    int flags = 0;
+    vec4 carried = vec4(0.0, 0.0, 0.0, -1.0);
+    float deEvals = 0.0;
+    vec4 r = u_resetAll != 0 ? vec4(-1.0) : texelFetch(u_reprojDistance, px, 0);
+    if (r.x > 0.0) {
+        carried.rgb = texelFetch(u_reprojColor, px, 0).rgb;
+        imageStore(u_image, px, vec4(carried.rgb, 1.0));
+        if (r.y > 0.999) {
+            carried.a = r.z;
+            flags |= FLAG_CARRIED;
+        }
+        float tMin = r.x;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                float n = texelFetch(u_reprojDistance, clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1), 0).x;
+                if (n > 0.0) tMin = min(tMin, n);
+            }
+        float candidate = tMin - reprojectionMargin(tMin, u_pixelAngle, u_detail);
+        if (inBound && candidate > restartAt) {
+            float d = DE(ro + rd * candidate);
+            deEvals += 1.0;
+            if (d >= u_pixelAngle * candidate * u_detail) {
+                t = candidate;
+                reprojected = true;
+            }
+        }
+    }
+    float omega = max(u_overRelaxation, 1.0);
+    imageStore(u_rayState, px, vec4(t, 0.0, omega, t));
+    imageStore(u_rayInfo, px, ivec4(STATUS_MARCHING, 0, 0, flags));
+    imageStore(u_sampleColor, px, carried);
+    imageStore(u_accum, px, vec4(0.0));
+    imageStore(u_centre, px, vec4(t, float(STATUS_MARCHING), 0.0, 0.0));
+    atomicAdd(c_deEvals, uint(deEvals));
+    if (reprojected) atomicAdd(c_reprojected, 1u);
+    else atomicAdd(c_restarted, 1u);
+}

@@ -1,0 +1,46 @@
+// shaders/viewport_shade.comp — shades only the samples whose ray finished this frame (the
+// per-pixel shading cache: a finished sample is never shaded again). Under camera motion a
+// reprojected ray that lands where its carried colour came from keeps that colour (diffuse, AO,
+// shadow and albedo of a surface point do not depend on the view; only the specular highlight
+// does), so motion costs march steps, not shading. When the camera stops, reused colours are
+// shaded exactly once. Needs the formula, march.glsl, shade.glsl and viewport_common.glsl.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform image2D u_rayState;
+layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
+layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
+uniform int u_atRest;
+
+void main() {
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(px, u_size))) return;
+    ivec4 info = imageLoad(u_rayInfo, px);
+    if (info.x == STATUS_MARCHING) return;
+    bool finished = (info.w & FLAG_NEEDS_SHADE) != 0;
+    bool makeExact = u_atRest != 0 && (info.w & FLAG_REUSED) != 0;
+    if (!finished && !makeExact) return;
+
+    float t = imageLoad(u_rayState, px).x;
+    vec4 carried = imageLoad(u_sampleColor, px);
+    vec3 ro = u_cameraPosition;
+    vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(info.z));
+    float deEvals = 0.0;
+    vec3 color;
+    info.w &= ~FLAG_REUSED;
+    if (info.x == STATUS_HIT) {
+        bool sameHit = (info.w & FLAG_CARRIED) != 0 && info.z == 0 &&
+                       abs(t - carried.a) <= reprojectionMargin(carried.a, u_pixelAngle, u_detail);
+        if (u_atRest == 0 && sameHit) {
+            color = carried.rgb;
+            info.w |= FLAG_REUSED;
+        } else {
+            color = shadeSurface(ro + rd * t, rd, t, u_pixelAngle, deEvals).color;
+            atomicAdd(c_shaded, 1u);
+        }
+    } else {
+        color = shadeBackground(rd);
+    }
+    atomicAdd(c_deEvals, uint(deEvals));
+    info.w = (info.w & ~FLAG_NEEDS_SHADE) | FLAG_SHADED_NOW;
+    imageStore(u_rayInfo, px, info);
+    imageStore(u_sampleColor, px, vec4(color, carried.a));
+}
