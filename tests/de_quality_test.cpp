@@ -1,0 +1,133 @@
+// The distance estimators against geometry: the seed's "never overshoots" on random rays, exact
+// distances where they are known in closed form, and the known bounding radii.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/de_check.hpp"
+#include "test_support.hpp"
+
+using namespace fraktal;
+
+namespace {
+
+Preset shipped(const std::string& name) { return loadPreset(test::sourceDir() / "presets" / name); }
+
+double boxDistance(const vec3& p, const vec3& halfSize) {
+    const vec3 q = abs(p) - halfSize;
+    return length(max(q, 0.0)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0);
+}
+
+ConservativenessOptions testRays() {
+    ConservativenessOptions o;
+    o.rays = 80;
+    o.stepsAcrossBound = 8000;
+    o.seed = 2024;
+    return o;
+}
+
+}  // namespace
+
+TEST(DEQuality, EveryShippedFormulaIsConservative) {
+    for (const auto& path : test::shippedPresets()) {
+        const Preset p = loadPreset(path);
+        const ConservativenessReport r = checkConservativeness(p.formula, p.camera, testRays());
+        EXPECT_GE(r.raysHit, r.rays / 10) << path.filename() << ": too few rays hit to judge";
+        EXPECT_GT(r.samples, 1000) << path.filename();
+        EXPECT_LE(r.worstRatio, 1.01) << path.filename() << ": DE exceeds the true distance along a ray at ("
+                                      << r.worstPoint.x << ", " << r.worstPoint.y << ", " << r.worstPoint.z << ")";
+        std::printf("%s: %d/%d rays hit, worst DE / distance %.4f\n", path.filename().c_str(), r.raysHit, r.rays,
+                    r.worstRatio);
+    }
+}
+
+// The checker must catch an overshooting DE: scale a sound one up and it has to say so, with a
+// step multiplier that undoes the scaling.
+TEST(DEQuality, CheckerCatchesAnOvershootingEstimate) {
+    Preset p = shipped("menger.json");
+    p.formula.deFactor = 1.5;
+    const ConservativenessReport r = checkConservativeness(p.formula, p.camera, testRays());
+    EXPECT_FALSE(r.conservative());
+    EXPECT_GT(r.worstRatio, 1.3);
+    EXPECT_LT(r.safeStepMultiplier(), 1.0 / 1.3);
+}
+
+TEST(DEQuality, MengerWithNoIterationsIsTheExactBox) {
+    Formula f = shipped("menger.json").formula;
+    f.iterations = 0;
+    for (const vec3& p : test::randomPoints(5000, 2.0, 3))
+        ASSERT_NEAR(distanceEstimate(f, p), boxDistance(p, vec3(1.0)), 1e-12);
+}
+
+// The sponge keeps its eight corners at every level, so from a point whose nearest point on the
+// cube is a corner, the distance to the sponge is exactly the distance to the cube.
+TEST(DEQuality, MengerEqualsTheBoxDistanceWhereThatIsExact) {
+    const Formula f = shipped("menger.json").formula;
+    int checked = 0;
+    for (const vec3& p : test::randomPoints(20000, f.boundRadius, 5)) {
+        if (std::min({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= 1.0) continue;
+        ASSERT_NEAR(distanceEstimate(f, p), boxDistance(p, vec3(1.0)), 1e-9) << p.x << " " << p.y << " " << p.z;
+        ++checked;
+    }
+    EXPECT_GT(checked, 500);
+    // In front of a face-centre tunnel the sponge is farther than the cube: the DE lies between
+    // the box distance and the distance to the tunnel's rim.
+    const vec3 front(0.0, 0.0, 1.5);
+    EXPECT_GE(distanceEstimate(f, front), 0.5 - 1e-12);
+    EXPECT_LE(distanceEstimate(f, front), std::sqrt(0.25 + 1.0 / 9.0) + 1e-12);
+}
+
+// |z^8 + c| >= |z|^8 - |c| > |z| once |z| = |c| > 2^(1/7): every orbit from there escapes.
+TEST(DEQuality, MandelbulbInsideItsBoundingRadius) {
+    const Formula f = shipped("mandelbulb.json").formula;
+    const double radius = std::pow(2.0, 1.0 / 7.0);
+    long outside = 0;
+    double farthestInside = 0.0;
+    for (const vec3& p : test::randomPoints(40000, f.boundRadius, 7)) {
+        const Evaluation e = evaluate(f, p);
+        if (e.inside) farthestInside = std::max(farthestInside, length(p));
+        else if (length(p) > radius) ++outside;
+    }
+    EXPECT_LE(farthestInside, radius);
+    EXPECT_GT(farthestInside, 0.9);  // and the bulb really reaches out there
+    EXPECT_GT(outside, 1000);
+}
+
+// For scale 2 the Mandelbox lies in the cube |x|, |y|, |z| <= 2 (s + 1) / (s - 1) = 6.
+TEST(DEQuality, MandelboxInsideItsBoundingBox) {
+    const Formula f = shipped("mandelbox.json").formula;
+    double farthestInside = 0.0;
+    for (const vec3& p : test::randomPoints(40000, 8.0, 9)) {
+        if (evaluate(f, p).inside) farthestInside = std::max(farthestInside, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+    }
+    EXPECT_LE(farthestInside, 6.0 * 1.02);
+    EXPECT_GT(farthestInside, 4.0);
+    EXPECT_LE(6.0 * std::sqrt(3.0), f.boundRadius);  // the preset's bound holds the whole box
+}
+
+// Away from the bulb the estimate is close to the true distance, which is measured to a dense
+// sample of the surface found by the baseline marcher.
+TEST(DEQuality, MandelbulbDistanceIsCloseAwayFromTheSurface) {
+    const Formula f = shipped("mandelbulb.json").formula;
+    std::vector<vec3> surface;
+    for (const vec3& d : test::randomPoints(6000, 1.0, 21)) {
+        if (length(d) < 0.1 || length(d) > 1.0) continue;
+        const vec3 origin = normalize(d) * f.boundRadius;
+        const BaselineHit hit = baselineMarch(f, origin, -normalize(d), 0.0, f.boundRadius, f.boundRadius / 2000);
+        if (hit.hit) surface.push_back(origin - normalize(d) * hit.t);
+    }
+    ASSERT_GT(surface.size(), 2000u);
+    double lowest = 1e9, highest = 0.0;
+    for (const vec3& d : test::randomPoints(300, 1.0, 23)) {
+        if (length(d) < 0.1 || length(d) > 1.0) continue;
+        const vec3 p = normalize(d) * 1.45;
+        double nearest = 1e9;
+        for (const vec3& s : surface) nearest = std::min(nearest, length(p - s));
+        const double ratio = distanceEstimate(f, p) / nearest;
+        lowest = std::min(lowest, ratio);
+        highest = std::max(highest, ratio);
+    }
+    std::printf("Mandelbulb at |p| = 1.45: DE / true distance in [%.3f, %.3f]\n", lowest, highest);
+    EXPECT_LE(highest, 1.01);
+    EXPECT_GE(lowest, 0.5);
+}
