@@ -1,7 +1,6 @@
 // Preset I/O: exact round trips of every shipped preset, and a clear error (file, field,
 // reason), a non-zero exit and no crash for each malformed preset in tests/bad_presets/.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <fstream>
 #include <sstream>
@@ -24,21 +23,6 @@ void expectSameFormula(const Formula& a, const Formula& b, const std::string& wh
         const Node& nb = k < b.nodes.size() ? b.nodes[k] : b.estimator;
         EXPECT_EQ(na.values, nb.values) << what << " node " << k;
     }
-}
-
-struct CliRun {
-    int exitCode;  // -1 when the process did not exit normally (a crash)
-    std::string output;
-};
-
-CliRun runCli(const std::string& args) {
-    const std::string command = std::string(FRAKTAL_CLI) + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    while (fgets(buf, sizeof buf, pipe)) out += buf;
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
 }  // namespace
@@ -143,22 +127,22 @@ TEST(Preset, EveryMalformedPresetGivesAClearError) {
 TEST(Preset, CheckCommandExitsNonZeroWithTheMessage) {
     for (const BadPreset& b : kBadPresets) {
         const std::string path = (test::sourceDir() / "tests/bad_presets" / b.file).string();
-        const CliRun r = runCli("check " + path);
+        const test::CliRun r = test::runCli("check " + path);
         EXPECT_EQ(r.exitCode, 2) << b.file << ":\n" << r.output;
         EXPECT_NE(r.output.find(path + ": " + (std::string(b.field).empty() ? "" : std::string(b.field) + ": ")),
                   std::string::npos)
             << b.file << ":\n" << r.output;
     }
-    const CliRun missing = runCli("check /nonexistent/preset.json");
+    const test::CliRun missing = test::runCli("check /nonexistent/preset.json");
     EXPECT_EQ(missing.exitCode, 2);
     EXPECT_NE(missing.output.find("/nonexistent/preset.json: no such file"), std::string::npos) << missing.output;
-    const CliRun directory = runCli("check " + (test::sourceDir() / "presets").string());
+    const test::CliRun directory = test::runCli("check " + (test::sourceDir() / "presets").string());
     EXPECT_EQ(directory.exitCode, 2);
     EXPECT_NE(directory.output.find("is a directory"), std::string::npos) << directory.output;
 }
 
 TEST(Preset, CheckCommandReportsASoundPreset) {
-    const CliRun r = runCli("check --rays 40 " + (test::sourceDir() / "presets/menger.json").string());
+    const test::CliRun r = test::runCli("check --rays 40 " + (test::sourceDir() / "presets/menger.json").string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("abs_fold"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("worst DE / true distance"), std::string::npos) << r.output;
@@ -170,7 +154,7 @@ TEST(Preset, CheckCommandFlagsAnUnsafeFormula) {
     p.formula.deFactor = 1.6;
     const auto file = std::filesystem::temp_directory_path() / "fraktal_unsafe_menger.json";
     std::ofstream(file) << serializePreset(p);
-    const CliRun r = runCli("check --rays 40 " + file.string());
+    const test::CliRun r = test::runCli("check --rays 40 " + file.string());
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("multiply formula.deFactor by"), std::string::npos) << r.output;
 }

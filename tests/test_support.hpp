@@ -1,6 +1,9 @@
 // Helpers shared by the tests: the shipped presets, a GL context, random points.
 #pragma once
 
+#include <sys/wait.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <random>
@@ -35,6 +38,23 @@ inline std::vector<vec3> randomPoints(size_t n, double halfSize, uint64_t seed) 
 inline gl::HeadlessContext& glContext() {
     static std::unique_ptr<gl::HeadlessContext> context = gl::HeadlessContext::create();
     return *context;
+}
+
+struct CliRun {
+    int exitCode;  // -1 when the process did not exit normally (a crash)
+    std::string output;
+};
+
+// Runs the fraktal command line with `args` (shell syntax; environment assignments may come
+// first in `env`), capturing stdout and stderr together.
+inline CliRun runCli(const std::string& args, const std::string& env = "") {
+    const std::string command = env + " " + std::string(FRAKTAL_CLI) + " " + args + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    while (fgets(buf, sizeof buf, pipe)) out += buf;
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
 }  // namespace fraktal::test
