@@ -11,15 +11,16 @@ int main(int argc, char** argv) {
     app.require_subcommand(0, 1);
     fraktal::cli::Action action;
     fraktal::cli::addCheckCommand(app, action);
+    fraktal::cli::addEditCommand(app, action);
+    fraktal::cli::addRenderCommand(app, action);
+    fraktal::cli::addInfoCommand(app, action);
+    fraktal::cli::addBenchViewportCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
-    if (!action) {
-        std::fputs(app.help().c_str(), stdout);
-        return 0;
-    }
+    if (!action) action = fraktal::cli::defaultEditorAction();
     try {
         return action();
     } catch (const fraktal::PresetError& e) {

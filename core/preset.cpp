@@ -207,6 +207,65 @@ Camera parseCamera(const std::string& file, const json& j) {
     return c;
 }
 
+RenderSettings parseRender(const std::string& file, const json& j) {
+    Reader r(file, j, "render");
+    RenderSettings s;
+    s.width = r.integer("width", s.width, 1, kMaxImageSide);
+    s.height = r.integer("height", s.height, 1, kMaxImageSide);
+    s.spp = r.integer("spp", s.spp, 1, kMaxSpp);
+    s.maxSteps = r.integer("maxSteps", s.maxSteps, 1, kMaxMarchSteps);
+    s.detail = r.number("detail", s.detail, 1e-3, 100.0);
+    s.overRelaxation = r.number("overRelaxation", s.overRelaxation, 1.0, 1.95);
+    s.filterRadius = r.number("filterRadius", s.filterRadius, 0.5, 4.0);
+    s.transparentBackground = r.boolean("transparentBackground", s.transparentBackground);
+    s.workingSpace = r.string("workingSpace", s.workingSpace, 256);
+    s.display = r.string("display", s.display, 256);
+    s.view = r.string("view", s.view, 256);
+    s.exposure = r.number("exposure", s.exposure, -20.0, 20.0);
+    r.rejectUnknown();
+    return s;
+}
+
+vec4 readVec4(Reader& r, const std::string& key, const vec4& fallback, double lo, double hi) {
+    if (!r.has(key)) return fallback;
+    const json& v = r.at(key);
+    if (!v.is_array() || v.size() != 4) r.fail("expected an array of 4 numbers, found " + Reader::typeName(v), key);
+    vec4 out;
+    for (int i = 0; i < 4; ++i) out[i] = r.checkNumber(v[i], r.child(key) + "[" + std::to_string(i) + "]", lo, hi);
+    return out;
+}
+
+ShadingSettings parseShading(const std::string& file, const json& j) {
+    Reader r(file, j, "shading");
+    ShadingSettings s;
+    s.lightDirection = r.vector3("lightDirection", s.lightDirection, -1e3, 1e3);
+    if (length(s.lightDirection) < 1e-9) r.fail("a direction must not be zero", "lightDirection");
+    s.lightColor = r.vector3("lightColor", s.lightColor, 0.0, 1e4);
+    s.fillColor = r.vector3("fillColor", s.fillColor, 0.0, 1e4);
+    s.specular = r.number("specular", s.specular, 0.0, 100.0);
+    s.shininess = r.number("shininess", s.shininess, 1.0, 10000.0);
+    s.shadowSteps = r.integer("shadowSteps", s.shadowSteps, 0, kMaxMarchSteps);
+    s.shadowSoftness = r.number("shadowSoftness", s.shadowSoftness, 0.1, 1000.0);
+    s.aoSteps = r.integer("aoSteps", s.aoSteps, 0, 64);
+    s.aoDistance = r.number("aoDistance", s.aoDistance, 1e-6, 10.0);
+    s.aoStrength = r.number("aoStrength", s.aoStrength, 0.0, 1.0);
+    s.trapWeights = readVec4(r, "trapWeights", s.trapWeights, -1e3, 1e3);
+    s.trapScale = r.number("trapScale", s.trapScale, -1e4, 1e4);
+    s.trapOffset = r.number("trapOffset", s.trapOffset, -1e4, 1e4);
+    s.paletteA = r.vector3("paletteA", s.paletteA, -10.0, 10.0);
+    s.paletteB = r.vector3("paletteB", s.paletteB, -10.0, 10.0);
+    s.paletteC = r.vector3("paletteC", s.paletteC, -100.0, 100.0);
+    s.paletteD = r.vector3("paletteD", s.paletteD, -100.0, 100.0);
+    s.fogColor = r.vector3("fogColor", s.fogColor, 0.0, 1e4);
+    s.fogDensity = r.number("fogDensity", s.fogDensity, 0.0, 1e3);
+    s.reflection = r.number("reflection", s.reflection, 0.0, 1.0);
+    s.reflectionSteps = r.integer("reflectionSteps", s.reflectionSteps, 1, kMaxMarchSteps);
+    s.backgroundTop = r.vector3("backgroundTop", s.backgroundTop, 0.0, 1e4);
+    s.backgroundBottom = r.vector3("backgroundBottom", s.backgroundBottom, 0.0, 1e4);
+    r.rejectUnknown();
+    return s;
+}
+
 // Parses JSON, rejecting duplicate keys and nesting deeper than kMaxJsonDepth (nlohmann keeps
 // the last duplicate silently; a preset with two values for one field is ambiguous).
 json parseJson(std::string_view text, const std::string& file) {
@@ -238,6 +297,10 @@ json parseJson(std::string_view text, const std::string& file) {
         if (auto p = reason.find("parse error"); p != std::string::npos) reason = reason.substr(p);
         if (!tooDeep.empty()) reason = tooDeep;
         throw PresetError(file, "", "invalid JSON at line " + std::to_string(line) + ": " + reason);
+    } catch (const json::exception& e) {  // e.g. out_of_range 406: a number too large for a double
+        std::string reason = e.what();
+        if (auto p = reason.find("] "); p != std::string::npos) reason = reason.substr(p + 2);
+        throw PresetError(file, "", "invalid JSON: " + reason);
     }
     if (!tooDeep.empty()) throw PresetError(file, "", "invalid preset: " + tooDeep);
     if (!duplicate.empty()) throw PresetError(file, duplicate, "duplicated key");
@@ -264,9 +327,11 @@ Preset parsePreset(std::string_view text, const std::string& file) {
     p.description = r.string("description", "", 65536);
     p.formula = parseFormula(file, r.at("formula"));
     p.camera = parseCamera(file, r.at("camera"));
+    if (r.has("render")) p.render = parseRender(file, r.at("render"));
+    if (r.has("shading")) p.shading = parseShading(file, r.at("shading"));
     for (const auto& [key, value] : j.items())
         if (key != "format" && key != "version" && key != "name" && key != "description" && key != "formula" &&
-            key != "camera")
+            key != "camera" && key != "render" && key != "shading")
             p.extra[key] = value;
     return p;
 }
@@ -290,6 +355,64 @@ Preset loadPreset(const std::filesystem::path& path) {
 namespace {
 
 json vecJson(const vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+// Only the fields that differ from the defaults.
+json renderJson(const RenderSettings& s) {
+    const RenderSettings d;
+    json j = json::object();
+    auto put = [&](const char* key, const auto& value, const auto& fallback) {
+        if (value != fallback) j[key] = value;
+    };
+    put("width", s.width, d.width);
+    put("height", s.height, d.height);
+    put("spp", s.spp, d.spp);
+    put("maxSteps", s.maxSteps, d.maxSteps);
+    put("detail", s.detail, d.detail);
+    put("overRelaxation", s.overRelaxation, d.overRelaxation);
+    put("filterRadius", s.filterRadius, d.filterRadius);
+    put("transparentBackground", s.transparentBackground, d.transparentBackground);
+    put("workingSpace", s.workingSpace, d.workingSpace);
+    put("display", s.display, d.display);
+    put("view", s.view, d.view);
+    put("exposure", s.exposure, d.exposure);
+    return j;
+}
+
+json shadingJson(const ShadingSettings& s) {
+    const ShadingSettings d;
+    json j = json::object();
+    auto put = [&](const char* key, const auto& value, const auto& fallback) {
+        if (value != fallback) j[key] = value;
+    };
+    auto putVec = [&](const char* key, const vec3& value, const vec3& fallback) {
+        if (value != fallback) j[key] = vecJson(value);
+    };
+    putVec("lightDirection", s.lightDirection, d.lightDirection);
+    putVec("lightColor", s.lightColor, d.lightColor);
+    putVec("fillColor", s.fillColor, d.fillColor);
+    put("specular", s.specular, d.specular);
+    put("shininess", s.shininess, d.shininess);
+    put("shadowSteps", s.shadowSteps, d.shadowSteps);
+    put("shadowSoftness", s.shadowSoftness, d.shadowSoftness);
+    put("aoSteps", s.aoSteps, d.aoSteps);
+    put("aoDistance", s.aoDistance, d.aoDistance);
+    put("aoStrength", s.aoStrength, d.aoStrength);
+    if (s.trapWeights != d.trapWeights)
+        j["trapWeights"] = json::array({s.trapWeights.x, s.trapWeights.y, s.trapWeights.z, s.trapWeights.w});
+    put("trapScale", s.trapScale, d.trapScale);
+    put("trapOffset", s.trapOffset, d.trapOffset);
+    putVec("paletteA", s.paletteA, d.paletteA);
+    putVec("paletteB", s.paletteB, d.paletteB);
+    putVec("paletteC", s.paletteC, d.paletteC);
+    putVec("paletteD", s.paletteD, d.paletteD);
+    putVec("fogColor", s.fogColor, d.fogColor);
+    put("fogDensity", s.fogDensity, d.fogDensity);
+    put("reflection", s.reflection, d.reflection);
+    put("reflectionSteps", s.reflectionSteps, d.reflectionSteps);
+    putVec("backgroundTop", s.backgroundTop, d.backgroundTop);
+    putVec("backgroundBottom", s.backgroundBottom, d.backgroundBottom);
+    return j;
+}
 
 json nodeJson(const Node& n) {
     json j;
@@ -336,6 +459,8 @@ json presetToJson(const Preset& p) {
     if (p.camera.up != camDefaults.up) c["up"] = vecJson(p.camera.up);
     if (p.camera.fovY != camDefaults.fovY) c["fovY"] = p.camera.fovY;
     j["camera"] = c;
+    if (json r = renderJson(p.render); !r.empty()) j["render"] = r;
+    if (json s = shadingJson(p.shading); !s.empty()) j["shading"] = s;
     for (const auto& [key, value] : p.extra.items()) j[key] = value;
     return j;
 }

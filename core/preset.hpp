@@ -10,6 +10,7 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/render/settings.hpp"
 
 namespace fraktal {
 
@@ -34,6 +35,8 @@ struct Preset {
     std::string description;
     Formula formula;
     Camera camera;
+    RenderSettings render;    // "render" section (optional)
+    ShadingSettings shading;  // "shading" section (optional)
     // Top-level sections this version does not know (from a newer fraktal), kept on save.
     nlohmann::json extra = nlohmann::json::object();
 };

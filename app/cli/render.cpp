@@ -1,0 +1,169 @@
+// `fraktal render PRESET -o OUT.exr [--png OUT.png] ...`: a print-quality still, headless.
+// PRESET may also be an EXR written by fraktal: its embedded preset is rendered again.
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <regex>
+
+#include "cli/commands.hpp"
+#include "core/color/color_pipeline.hpp"
+#include "core/gl/context.hpp"
+#include "core/image/exr_writer.hpp"
+#include "core/preset.hpp"
+#include "core/render/still_job.hpp"
+
+namespace fraktal::cli {
+
+namespace {
+
+// Set by SIGINT/SIGTERM, polled between tiles. A signal handler can only reach global state.
+std::atomic<bool> gCancelRequested{false};
+extern "C" void requestCancel(int) { gCancelRequested.store(true); }
+
+struct RenderOptions {
+    std::string input;
+    std::string output;
+    std::string png;
+    std::string size;
+    int spp = 0;
+    int maxSteps = 0;
+    double detail = 0.0;
+    std::optional<double> exposure;
+    std::string view, display, workingSpace;
+    bool fullFloat = false;
+    int threads = 0;
+    int tile = 256;
+    bool quiet = false;
+};
+
+Preset loadInput(const std::string& input) {
+    std::string ext = std::filesystem::path(input).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".exr") {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(input, ec)) throw PresetError(input, "", "no such file");
+        return parsePreset(readExrPreset(input), input + " (embedded preset)");
+    }
+    return loadPreset(input);
+}
+
+void parseSize(const std::string& text, RenderSettings& r) {
+    std::smatch m;
+    static_assert(kMaxImageSide < 1000000);
+    if (!std::regex_match(text, m, std::regex(R"((-?\d{1,9})[xX](-?\d{1,9}))")))
+        throw std::runtime_error("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1920x1080");
+    const long long w = std::stoll(m[1]), h = std::stoll(m[2]);
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        throw std::runtime_error("--size '" + text + "': each side must be within 1.." + std::to_string(kMaxImageSide));
+    r.width = int(w);
+    r.height = int(h);
+}
+
+std::string formatSeconds(double s) {
+    char buf[32];
+    if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
+    else std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
+    return buf;
+}
+
+// A bar with ETA on a terminal; plain lines at every 10% otherwise (logs, CI).
+struct ProgressPrinter {
+    bool tty = ::isatty(STDERR_FILENO) != 0;
+    int lastDecile = -1;
+    void operator()(const StillProgress& p) {
+        const double f = double(p.tilesDone) / double(std::max(1, p.tilesTotal));
+        const double eta = p.tilesDone > 0 ? p.secondsElapsed * (1.0 - f) / f : 0.0;
+        if (tty) {
+            constexpr int width = 30;
+            std::string bar(size_t(f * width), '#');
+            bar.resize(width, ' ');
+            std::fprintf(stderr, "\r[%s] %3d%%  tile %d/%d  %s elapsed  ETA %s   ", bar.c_str(), int(f * 100),
+                         p.tilesDone, p.tilesTotal, formatSeconds(p.secondsElapsed).c_str(), formatSeconds(eta).c_str());
+            if (p.tilesDone == p.tilesTotal) std::fputc('\n', stderr);
+        } else if (int decile = int(f * 10); decile != lastDecile) {
+            lastDecile = decile;
+            std::fprintf(stderr, "progress: %d/%d tiles (%d%%), %s elapsed, ETA %s\n", p.tilesDone, p.tilesTotal,
+                         int(f * 100), formatSeconds(p.secondsElapsed).c_str(), formatSeconds(eta).c_str());
+        }
+        std::fflush(stderr);
+    }
+};
+
+int runRender(const RenderOptions& o) {
+    StillJob job;
+    job.preset = loadInput(o.input);
+    RenderSettings& r = job.preset.render;
+    if (!o.size.empty()) parseSize(o.size, r);
+    if (o.spp) r.spp = o.spp;
+    if (o.maxSteps) r.maxSteps = o.maxSteps;
+    if (o.detail > 0) r.detail = o.detail;
+    if (o.exposure) r.exposure = *o.exposure;
+    if (!o.view.empty()) r.view = o.view;
+    if (!o.display.empty()) r.display = o.display;
+    if (!o.workingSpace.empty()) r.workingSpace = o.workingSpace;
+    job.exr = o.output;
+    if (!o.png.empty()) job.png = std::filesystem::path(o.png);
+    job.fullFloat = o.fullFloat;
+    job.tileSize = o.tile;
+
+    const ColorPipeline color = ColorPipeline::fromEnvironment();
+    validateStillJob(job, color);  // before the (slow) GL start-up: bad input fails fast
+
+    // llvmpipe reads its thread count when the context is made.
+    if (o.threads > 0) ::setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
+    auto context = gl::HeadlessContext::create();
+
+    ProgressPrinter printer;
+    if (!o.quiet) job.onProgress = [&printer](const StillProgress& p) { printer(p); };
+    gCancelRequested = false;
+    job.cancel = &gCancelRequested;
+    std::signal(SIGINT, requestCancel);
+    std::signal(SIGTERM, requestCancel);
+    if (!o.quiet)
+        std::fprintf(stderr, "rendering %s: %dx%d, %d spp, %s, OCIO config %s\n", o.input.c_str(), r.width, r.height,
+                     r.spp, context->renderer().c_str(), color.configPath().c_str());
+    try {
+        renderStillJob(job, color);
+    } catch (const RenderCancelled&) {
+        std::fprintf(stderr, "\nfraktal: render cancelled; no file written\n");
+        return 130;
+    }
+    if (!o.quiet) {
+        std::fprintf(stderr, "wrote %s", job.exr.c_str());
+        if (job.png) std::fprintf(stderr, " and %s", job.png->c_str());
+        std::fprintf(stderr, "\n");
+    }
+    return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, Action& action) {
+    auto o = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand("render", "Render a print-quality still to EXR (and a PNG preview)");
+    cmd->add_option("preset", o->input, "Preset (JSON), or an EXR written by fraktal (its embedded preset)")->required();
+    cmd->add_option("-o,--output", o->output, "Output EXR (scene-linear, with AOVs)")->required();
+    cmd->add_option("--png", o->png, "Also write a PNG through the OCIO display/view transform");
+    cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default: the preset's, else 1280x720)");
+    cmd->add_option("--spp", o->spp, "Samples per pixel")->check(CLI::Range(1, kMaxSpp));
+    cmd->add_option("--max-steps", o->maxSteps, "March steps per camera ray")->check(CLI::Range(1, kMaxMarchSteps));
+    cmd->add_option("--detail", o->detail, "Hit threshold in pixel footprints (smaller: finer)")
+        ->check(CLI::Range(1e-3, 100.0));
+    cmd->add_option("--exposure", o->exposure, "Exposure of the PNG preview, in stops")->check(CLI::Range(-20.0, 20.0));
+    cmd->add_option("--view", o->view, "OCIO view of the PNG preview (shipped config: Standard, ACES, Raw)");
+    cmd->add_option("--display", o->display, "OCIO display of the PNG preview (default sRGB)");
+    cmd->add_option("--working-space", o->workingSpace,
+                    "Scene-linear working space: an OCIO colour space or role (shipped: scene_linear = Linear "
+                    "Rec.709 (sRGB), ACEScg)");
+    cmd->add_flag("--float", o->fullFloat, "32-bit float EXR channels (default: half)");
+    cmd->add_option("--threads", o->threads, "Rendering threads (llvmpipe; default: all cores)")->check(CLI::Range(1, 1024));
+    cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
+    cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
+    cmd->callback([&action, o] { action = [o] { return runRender(*o); }; });
+}
+
+}  // namespace fraktal::cli

@@ -1,0 +1,168 @@
+#include "core/cpu_render/cpu_shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fraktal::cpu {
+
+double Scene::de(const vec3& p, double& deEvals) const {
+    deEvals += 1.0;
+    return distanceEstimate(formula, p);
+}
+
+MarchState marchStart(const Scene& scene, double tStart) {
+    MarchState s;
+    s.t = tStart;
+    s.omega = std::max(scene.params.overRelaxation, 1.0);
+    return s;
+}
+
+void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
+              MarchState& s, double& deEvals) {
+    for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
+        const double d = scene.de(ro + rd * s.t, deEvals);
+        s.steps += 1;
+        const double previousStep = s.omega * s.lastD;
+        if (s.omega > 1.0 && std::abs(d) + s.lastD < previousStep) {
+            s.t -= previousStep - s.lastD;
+            s.omega = 1.0;
+            continue;
+        }
+        if (d < pixelAngle * s.t * scene.params.detail) {
+            s.status = MarchStatus::Hit;
+            break;
+        }
+        if (s.t > tEnd) {
+            s.status = MarchStatus::Escaped;
+            break;
+        }
+        s.lastD = std::abs(d);
+        s.t += s.omega * d;
+    }
+}
+
+bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd) {
+    const double r = scene.formula.boundRadius;
+    const double b = dot(ro, rd);
+    const double c = dot(ro, ro) - r * r;
+    double h = b * b - c;
+    tStart = 0.0;
+    tEnd = -1.0;
+    if (h < 0.0) return false;
+    h = std::sqrt(h);
+    tStart = std::max(-b - h, 0.0);
+    tEnd = -b + h;
+    return tEnd > 0.0;
+}
+
+namespace {
+
+double surfaceEpsilon(const Scene& scene, double t, double pixelAngle) {
+    return std::max(0.5 * pixelAngle * t, 2e-5 * scene.formula.boundRadius);
+}
+
+vec3 surfaceNormal(const Scene& scene, const vec3& pos, const vec3& rd, double eps, double& deEvals) {
+    const vec3 n(scene.de(pos + vec3(eps, 0, 0), deEvals) - scene.de(pos - vec3(eps, 0, 0), deEvals),
+                 scene.de(pos + vec3(0, eps, 0), deEvals) - scene.de(pos - vec3(0, eps, 0), deEvals),
+                 scene.de(pos + vec3(0, 0, eps), deEvals) - scene.de(pos - vec3(0, 0, eps), deEvals));
+    const double len = length(n);
+    return len > 1e-20 ? n / len : -rd;
+}
+
+vec3 trapAlbedo(const Scene& scene, const vec3& pos, double& deEvals) {
+    const ShadingSettings& s = scene.params.s;
+    const Evaluation e = evaluate(scene.formula, pos);
+    deEvals += 1.0;
+    const double x = s.trapOffset + s.trapScale * dot(s.trapWeights, e.trap.value);
+    const vec3 display = clamp(s.paletteA + s.paletteB * glm::cos(6.28318530718 * (s.paletteC * x + s.paletteD)), 0.0, 1.0);
+    return glm::pow(display, vec3(2.2));
+}
+
+double ambientOcclusion(const Scene& scene, const vec3& pos, const vec3& n, double& deEvals) {
+    const ShadingSettings& s = scene.params.s;
+    if (s.aoSteps <= 0) return 1.0;
+    double occlusion = 0.0;
+    for (int i = 1; i <= s.aoSteps; ++i) {
+        const double h = s.aoDistance * double(i) / double(s.aoSteps);
+        const double d = scene.de(pos + n * h, deEvals);
+        occlusion += std::clamp((h - d) / h, 0.0, 1.0);
+    }
+    return std::clamp(1.0 - s.aoStrength * occlusion / double(s.aoSteps), 0.0, 1.0);
+}
+
+double softShadow(const Scene& scene, const vec3& ro, const vec3& L, double eps, double& deEvals) {
+    const ShadingSettings& s = scene.params.s;
+    if (s.shadowSteps <= 0) return 1.0;
+    double tStart, tEnd;
+    if (!clipToBound(scene, ro, L, tStart, tEnd)) return 1.0;
+    double result = 1.0;
+    double t = std::max(tStart, 2.0 * eps);
+    for (int i = 0; i < s.shadowSteps && t < tEnd; ++i) {
+        const double d = scene.de(ro + L * t, deEvals);
+        result = std::min(result, s.shadowSoftness * d / t);
+        if (result < 1e-3) return 0.0;
+        t += std::clamp(d, eps, 0.1 * scene.formula.boundRadius);
+    }
+    result = std::clamp(result, 0.0, 1.0);
+    return result * result * (3.0 - 2.0 * result);
+}
+
+vec3 lightSurface(const Scene& scene, const vec3& n, const vec3& rd, const vec3& albedo, double ao, double shadow) {
+    const ShadingSettings& s = scene.params.s;
+    const vec3 L = s.lightDirection;
+    const double diffuse = std::max(dot(n, L), 0.0);
+    const vec3 h = normalize(L - rd);
+    const double specular = diffuse > 0.0 ? s.specular * std::pow(std::max(dot(n, h), 0.0), s.shininess) : 0.0;
+    const double sky = 0.5 + 0.5 * n.y;
+    return albedo * (s.lightColor * (diffuse * shadow) + s.fillColor * (sky * ao)) + s.lightColor * (specular * shadow);
+}
+
+vec3 applyFog(const Scene& scene, const vec3& color, double t) {
+    return glm::mix(scene.params.s.fogColor, color, std::exp(-scene.params.s.fogDensity * t));
+}
+
+vec3 reflectedColor(const Scene& scene, const vec3& pos, const vec3& n, const vec3& rd, double t, double pixelAngle,
+                    double eps, double& deEvals) {
+    const vec3 rr = glm::reflect(rd, n);
+    const vec3 ro = pos + n * (2.0 * eps);
+    double tStart, tEnd;
+    if (!clipToBound(scene, ro, rr, tStart, tEnd)) return shadeBackground(scene, rr);
+    MarchState s = marchStart(scene, tStart);
+    marchRay(scene, ro, rr, tEnd, pixelAngle, scene.params.s.reflectionSteps, s, deEvals);
+    if (s.status != MarchStatus::Hit) return shadeBackground(scene, rr);
+    const vec3 p2 = ro + rr * s.t;
+    const double eps2 = surfaceEpsilon(scene, t + s.t, pixelAngle);
+    const vec3 n2 = surfaceNormal(scene, p2, rr, eps2, deEvals);
+    const vec3 albedo2 = trapAlbedo(scene, p2, deEvals);
+    return applyFog(scene, lightSurface(scene, n2, rr, albedo2, 1.0, 1.0), s.t);
+}
+
+}  // namespace
+
+vec3 shadeBackground(const Scene& scene, const vec3& rd) {
+    return glm::mix(scene.params.s.backgroundBottom, scene.params.s.backgroundTop, 0.5 + 0.5 * rd.y);
+}
+
+SurfaceSample shadeSurface(const Scene& scene, const vec3& pos, const vec3& rd, double t, double pixelAngle,
+                           double& deEvals) {
+    const ShadingSettings& s = scene.params.s;
+    SurfaceSample result;
+    const double eps = surfaceEpsilon(scene, t, pixelAngle);
+    const vec3 n = surfaceNormal(scene, pos, rd, eps, deEvals);
+    const vec3 albedo = trapAlbedo(scene, pos, deEvals);
+    const double ao = ambientOcclusion(scene, pos, n, deEvals);
+    const double shadow = softShadow(scene, pos + n * (2.0 * eps), s.lightDirection, eps, deEvals);
+    vec3 color = lightSurface(scene, n, rd, albedo, ao, shadow);
+    if (s.reflection > 0.0) {
+        const double cosine = std::clamp(-dot(rd, n), 0.0, 1.0);
+        const double fresnel = s.reflection + (1.0 - s.reflection) * std::pow(1.0 - cosine, 5.0);
+        color = glm::mix(color, reflectedColor(scene, pos, n, rd, t, pixelAngle, eps, deEvals), fresnel);
+    }
+    result.color = applyFog(scene, color, t);
+    result.normal = n;
+    result.albedo = albedo;
+    result.ao = ao;
+    return result;
+}
+
+}  // namespace fraktal::cpu

@@ -1,0 +1,38 @@
+// Line-for-line C++ mirrors of shaders/march.glsl and shaders/shade.glsl in double precision.
+// Change both together.
+#pragma once
+
+#include "core/formula.hpp"
+#include "core/render/shading_params.hpp"
+
+namespace fraktal::cpu {
+
+enum class MarchStatus { Marching, Hit, Escaped };
+
+struct MarchState {
+    double t = 0.0, lastD = 0.0, omega = 1.0;
+    MarchStatus status = MarchStatus::Marching;
+    int steps = 0;
+};
+
+struct SurfaceSample {
+    vec3 color{0.0}, normal{0.0}, albedo{0.0};
+    double ao = 1.0;
+};
+
+// The scene a ray is traced in: the formula and the resolved shading.
+struct Scene {
+    const Formula& formula;
+    const ShadingParams& params;
+    double de(const vec3& p, double& deEvals) const;
+};
+
+MarchState marchStart(const Scene& scene, double tStart);
+void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
+              MarchState& s, double& deEvals);
+bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd);
+SurfaceSample shadeSurface(const Scene& scene, const vec3& pos, const vec3& rd, double t, double pixelAngle,
+                           double& deEvals);
+vec3 shadeBackground(const Scene& scene, const vec3& rd);
+
+}  // namespace fraktal::cpu

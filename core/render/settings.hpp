@@ -1,0 +1,68 @@
+// What a still (and the viewport) is rendered with: the preset's `render` and `shading` sections
+// (parsed in core/preset.cpp; saved only where they differ from these defaults). Plain data.
+#pragma once
+
+#include <string>
+
+#include "core/vec.hpp"
+
+namespace fraktal {
+
+// Limits that keep a render bounded (bad input gets an error, not an out-of-memory).
+inline constexpr int kMaxImageSide = 65536;
+inline constexpr int kMaxSpp = 4096;
+inline constexpr int kMaxMarchSteps = 10000;
+
+struct RenderSettings {
+    int width = 1280;
+    int height = 720;
+    int spp = 4;                   // samples per pixel
+    int maxSteps = 256;            // march steps per camera ray
+    double detail = 0.5;           // hit threshold, in pixel footprints (smaller = finer)
+    double overRelaxation = 1.3;   // initial omega of the over-relaxed marcher (1 = plain)
+    double filterRadius = 2.0;     // Blackman-Harris reconstruction filter radius, pixels
+    bool transparentBackground = false;
+    // Colour: the working (scene-linear) space is an OCIO colour space name or the role
+    // "scene_linear"; the PNG preview goes through display/view with exposure (stops).
+    std::string workingSpace = "scene_linear";
+    std::string display = "sRGB";
+    std::string view = "Standard";
+    double exposure = 0.0;
+
+    bool operator==(const RenderSettings&) const = default;
+};
+
+// Colours are linear Rec.709 as written in the preset; the renderer converts them to the working
+// space. Lengths marked "x bound" are fractions of formula.boundRadius so that one shading setup
+// suits fractals of any size.
+struct ShadingSettings {
+    vec3 lightDirection{0.55, 0.75, 0.35};  // toward the key light (normalised on use)
+    vec3 lightColor{2.6, 2.45, 2.2};
+    vec3 fillColor{0.32, 0.38, 0.48};  // sky/fill hemisphere
+    double specular = 0.35;
+    double shininess = 40.0;
+    int shadowSteps = 96;  // 0: no shadows
+    double shadowSoftness = 12.0;
+    int aoSteps = 5;  // 0: no ambient occlusion
+    double aoDistance = 0.08;  // x bound
+    double aoStrength = 0.85;
+    // Orbit-trap palette: index = offset + scale * dot(weights, trap), trap = (min|x|, min|y|,
+    // min|z|, min|p|) over the orbit (seed 3.3); colour = a + b cos(2 pi (c index + d)).
+    vec4 trapWeights{0.6, 0.2, 0.4, 0.8};
+    double trapScale = 1.0;
+    double trapOffset = 0.0;
+    vec3 paletteA{0.62, 0.55, 0.48};
+    vec3 paletteB{0.32, 0.28, 0.26};
+    vec3 paletteC{1.0, 1.0, 1.0};
+    vec3 paletteD{0.0, 0.12, 0.25};
+    vec3 fogColor{0.55, 0.6, 0.7};
+    double fogDensity = 0.0;  // per bound radius travelled
+    double reflection = 0.0;  // Fresnel F0 (0: no reflections)
+    int reflectionSteps = 96;
+    vec3 backgroundTop{0.18, 0.24, 0.36};
+    vec3 backgroundBottom{0.02, 0.02, 0.03};
+
+    bool operator==(const ShadingSettings&) const = default;
+};
+
+}  // namespace fraktal

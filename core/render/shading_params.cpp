@@ -1,0 +1,21 @@
+#include "core/render/shading_params.hpp"
+
+namespace fraktal {
+
+ShadingParams resolveShading(const ShadingSettings& shading, const RenderSettings& render, const Formula& formula,
+                             const std::function<vec3(const vec3&)>& toWorking) {
+    ShadingParams p;
+    p.s = shading;
+    p.s.lightDirection = normalize(shading.lightDirection);
+    p.s.aoDistance = shading.aoDistance * formula.boundRadius;
+    p.s.fogDensity = shading.fogDensity / formula.boundRadius;
+    if (toWorking) {
+        for (vec3* c : {&p.s.lightColor, &p.s.fillColor, &p.s.fogColor, &p.s.backgroundTop, &p.s.backgroundBottom})
+            *c = toWorking(*c);
+    }
+    p.detail = render.detail;
+    p.overRelaxation = render.overRelaxation;
+    return p;
+}
+
+}  // namespace fraktal

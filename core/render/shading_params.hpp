@@ -1,0 +1,23 @@
+// ShadingSettings resolved for one formula: lengths in world units, the light direction
+// normalised, colours in the working space. The GL uniforms (shading_uniforms.hpp) and the CPU
+// reference renderer both take this, so they shade from identical numbers.
+#pragma once
+
+#include <functional>
+
+#include "core/formula.hpp"
+#include "core/render/settings.hpp"
+
+namespace fraktal {
+
+struct ShadingParams {
+    ShadingSettings s;  // with aoDistance and fogDensity in world units, colours converted
+    double detail = 0.5;
+    double overRelaxation = 1.3;
+};
+
+// `toWorking` converts a linear Rec.709 colour into the working space (identity by default).
+ShadingParams resolveShading(const ShadingSettings& shading, const RenderSettings& render, const Formula& formula,
+                             const std::function<vec3(const vec3&)>& toWorking = {});
+
+}  // namespace fraktal

@@ -1,0 +1,22 @@
+// Uploads ShadingParams to the uniforms that shaders/march.glsl and shaders/shade.glsl declare.
+// Locations are looked up once per program; a uniform the compiler removed is skipped (-1).
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include "core/render/shading_params.hpp"
+
+namespace fraktal::gl {
+
+class ShadingUniforms {
+public:
+    ShadingUniforms() = default;
+    explicit ShadingUniforms(GLuint program);
+    // Sets the values on the currently bound program.
+    void upload(const ShadingParams& params) const;
+
+private:
+    GLuint program_ = 0;
+};
+
+}  // namespace fraktal::gl

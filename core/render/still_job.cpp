@@ -1,0 +1,105 @@
+#include "core/render/still_job.hpp"
+
+#include <chrono>
+#include <vector>
+
+#include "core/image/atomic_file.hpp"
+#include "core/image/exr_writer.hpp"
+#include "core/image/png_writer.hpp"
+#include "core/render/still_renderer.hpp"
+#include "core/render/tiles.hpp"
+
+namespace fraktal {
+
+namespace {
+
+bool hasExtension(const std::filesystem::path& p, const char* ext) {
+    std::string e = p.extension().string();
+    for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return e == ext;
+}
+
+}  // namespace
+
+void validateStillJob(const StillJob& job, const ColorPipeline& color) {
+    const RenderSettings& r = job.preset.render;
+    if (r.width < 1 || r.height < 1 || r.width > kMaxImageSide || r.height > kMaxImageSide)
+        throw std::runtime_error("image size " + std::to_string(r.width) + "x" + std::to_string(r.height) +
+                                 " is outside 1.." + std::to_string(kMaxImageSide) + " per side");
+    if ((long long)r.width * r.height > kMaxImagePixels)
+        throw std::runtime_error("image of " + std::to_string((long long)r.width * r.height) + " pixels is too big");
+    if (r.spp < 1 || r.spp > kMaxSpp)
+        throw std::runtime_error("samples per pixel " + std::to_string(r.spp) + " is outside 1.." + std::to_string(kMaxSpp));
+    if (job.tileSize < 16 || job.tileSize > 4096) throw std::runtime_error("tile size must be within 16..4096");
+    if (!hasExtension(job.exr, ".exr"))
+        throw std::runtime_error(job.exr.string() + ": unknown output extension '" + job.exr.extension().string() +
+                                 "' (expected .exr; use --png for a preview)");
+    AtomicFile checkExr(job.exr);  // throws when the folder is missing or not writable
+    if (job.png) {
+        if (!hasExtension(*job.png, ".png"))
+            throw std::runtime_error(job.png->string() + ": unknown preview extension '" + job.png->extension().string() +
+                                     "' (expected .png)");
+        if ((long long)r.width * r.height > kMaxPngPixels)
+            throw std::runtime_error("a PNG preview is limited to " + std::to_string(kMaxPngPixels) +
+                                     " pixels; render the EXR alone at this size");
+        AtomicFile checkPng(*job.png);
+        if (std::filesystem::absolute(*job.png) == std::filesystem::absolute(job.exr))
+            throw std::runtime_error("the EXR and the PNG must be different files");
+    }
+    color.resolveSpace(r.workingSpace);
+    color.checkDisplayView(r.display, r.view);
+}
+
+void renderStillJob(const StillJob& job, const ColorPipeline& color) {
+    validateStillJob(job, color);
+    const Preset& preset = job.preset;
+    const RenderSettings& r = preset.render;
+    const std::string workingSpace = color.resolveSpace(r.workingSpace);
+    const ShadingParams shading = resolveShading(preset.shading, r, preset.formula, [&](const vec3& c) {
+        return color.fromLinearRec709(c, workingSpace);
+    });
+    const DisplayTransform display(color, workingSpace, r.display, r.view, r.exposure);
+
+    const int tileSize = std::min(job.tileSize, std::max(r.width, r.height));
+    gl::StillRenderer renderer(preset.formula, tileSize);
+    renderer.setScene(preset.formula, preset.camera, r, shading);
+
+    AtomicFile exrFile(job.exr);
+    ExrMetadata meta;
+    meta.presetJson = serializePreset(preset);
+    meta.camera = preset.camera;
+    meta.spp = r.spp;
+    meta.workingSpace = workingSpace;
+    meta.chromaticities = color.chromaticities(workingSpace);
+    ExrStripWriter exr(exrFile.tempPath(), r.width, r.height, job.fullFloat, meta);
+    std::vector<uint8_t> preview;
+    if (job.png) preview.resize(size_t(r.width) * size_t(r.height) * 3);
+
+    // About 2 Mpixel per strip (16 floats each, ~128 MiB) whatever the width: bounded memory.
+    const int stripRows = std::clamp((1 << 21) / r.width, 16, tileSize);
+    const std::vector<TileRect> strips = stripsOf(r.width, r.height, stripRows);
+    StillProgress progress;
+    for (const TileRect& s : strips) progress.tilesTotal += int(tilesOf(s, tileSize).size());
+    const auto start = std::chrono::steady_clock::now();
+    ImageStrip strip;
+    for (const TileRect& s : strips) {
+        strip.resize(r.width, s.y, s.height);
+        for (const TileRect& tile : tilesOf(s, tileSize)) {
+            if (job.cancel && job.cancel->load()) throw RenderCancelled();
+            renderer.renderTile(tile, strip);
+            ++progress.tilesDone;
+            progress.secondsElapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (job.onProgress) job.onProgress(progress);
+        }
+        exr.write(strip);
+        if (job.png)
+            display.toDisplay8(strip.rgba, std::span(preview).subspan(size_t(s.y) * size_t(r.width) * 3,
+                                                                      size_t(s.height) * size_t(r.width) * 3));
+    }
+    if (job.cancel && job.cancel->load()) throw RenderCancelled();
+    exr.close();
+    if (job.png) writePngAtomic(*job.png, r.width, r.height, preview);
+    exrFile.commit();
+}
+
+}  // namespace fraktal

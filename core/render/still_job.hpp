@@ -1,0 +1,51 @@
+// A whole still: strips of tiles through the GL renderer into the EXR (and the PNG preview),
+// with progress and cancellation. Memory is bounded by one strip plus the 8-bit preview.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+
+#include "core/color/color_pipeline.hpp"
+#include "core/preset.hpp"
+
+namespace fraktal {
+
+class RenderCancelled : public std::runtime_error {
+public:
+    RenderCancelled() : std::runtime_error("render cancelled") {}
+};
+
+struct StillProgress {
+    int tilesDone = 0;
+    int tilesTotal = 0;
+    double secondsElapsed = 0.0;
+};
+
+// Biggest preview the PNG path takes (it holds 3 bytes per pixel in memory).
+inline constexpr long long kMaxPngPixels = 1LL << 28;
+// Biggest image at all (EXR rows are streamed; this keeps the strip of a pathological aspect sane).
+inline constexpr long long kMaxImagePixels = 1LL << 32;
+
+struct StillJob {
+    Preset preset;  // preset.render holds the size, spp and colour settings actually used
+    std::filesystem::path exr;
+    std::optional<std::filesystem::path> png;
+    bool fullFloat = false;
+    int tileSize = 256;
+    std::function<void(const StillProgress&)> onProgress;  // after every tile
+    const std::atomic<bool>* cancel = nullptr;              // polled between tiles
+};
+
+// Checks sizes, outputs and colour settings before any rendering, so that bad input fails fast
+// and nothing is touched; throws std::runtime_error saying what is wrong.
+void validateStillJob(const StillJob& job, const ColorPipeline& color);
+
+// Renders and writes the files atomically (an existing file is replaced only at the very end,
+// by a complete one). Needs a current GL context. Throws RenderCancelled when `cancel` was set:
+// then nothing is written.
+void renderStillJob(const StillJob& job, const ColorPipeline& color);
+
+}  // namespace fraktal

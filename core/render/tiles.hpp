@@ -1,0 +1,18 @@
+// How a still is cut up: strips of full-width rows (what is held in memory and written to the
+// EXR at once), each cut into square-ish tiles (what one GL draw renders). Pure, no GL.
+#pragma once
+
+#include <vector>
+
+namespace fraktal {
+
+struct TileRect {
+    int x = 0, y = 0, width = 0, height = 0;  // pixels; y counted from the top of the image
+};
+
+// Rows [y, y + height) of the image: strips of `stripRows` rows (the last may be shorter).
+std::vector<TileRect> stripsOf(int imageWidth, int imageHeight, int stripRows);
+// A strip cut into tiles of at most tileSize x tileSize, left to right.
+std::vector<TileRect> tilesOf(const TileRect& strip, int tileSize);
+
+}  // namespace fraktal
