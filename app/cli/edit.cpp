@@ -1,0 +1,62 @@
+// `fraktal edit PRESET [--frames N --screenshot OUT.png]`: the editor. `fraktal` alone opens it
+// with presets/mandelbulb.json. With no display it says so and points to `fraktal render`.
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.hpp"
+
+#ifdef FRAKTAL_HAVE_EDITOR
+#include "editor/editor.hpp"
+#endif
+
+namespace fraktal::cli {
+
+namespace {
+
+struct EditOptions {
+    std::string preset;
+    int frames = 0;
+    std::string screenshot;
+    int width = 1280, height = 800;
+};
+
+int runEdit(const EditOptions& o) {
+#ifdef FRAKTAL_HAVE_EDITOR
+    editor::EditorOptions e;
+    e.preset = o.preset;
+    e.frames = o.frames;
+    e.screenshot = o.screenshot;
+    e.width = o.width;
+    e.height = o.height;
+    // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
+    e.useIniFile = o.frames == 0;
+    return editor::runEditor(e);
+#else
+    std::fputs("fraktal: this build has no editor (FRAKTAL_BUILD_EDITOR=OFF); use `fraktal render`.\n", stderr);
+    return 3;
+#endif
+}
+
+}  // namespace
+
+void addEditCommand(CLI::App& app, Action& action) {
+    auto o = std::make_shared<EditOptions>();
+    CLI::App* cmd = app.add_subcommand("edit", "Open the editor (needs a display; see `fraktal render` for headless)");
+    cmd->add_option("preset", o->preset, "Preset file (JSON) or exported EXR to open")->check(CLI::ExistingFile);
+    cmd->add_option("--frames", o->frames, "Draw this many frames, then exit")->check(CLI::Range(1, 100000));
+    cmd->add_option("--screenshot", o->screenshot, "With --frames: save a PNG of the whole window at the end")
+        ->needs("--frames");
+    cmd->add_option("--width", o->width, "Window width")->check(CLI::Range(320, 16384));
+    cmd->add_option("--height", o->height, "Window height")->check(CLI::Range(240, 16384));
+    cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });
+}
+
+Action defaultEditorAction() {
+    return [] {
+        EditOptions o;
+        o.preset = std::string(FRAKTAL_SOURCE_DIR) + "/presets/mandelbulb.json";
+        return runEdit(o);
+    };
+}
+
+}  // namespace fraktal::cli

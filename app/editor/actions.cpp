@@ -1,0 +1,151 @@
+#include "app/editor/actions.hpp"
+
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfStringAttribute.h>
+
+#include "app/editor/preset_files.hpp"
+
+namespace fraktal::editor {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void clampSelection(EditorState& s) {
+    s.selectedNode = std::clamp(s.selectedNode, 0, int(s.doc.preset.formula.nodes.size()));
+}
+
+void adoptDocument(EditorState& s, Document d, const fs::path& path) {
+    s.doc = std::move(d);
+    s.history.reset(s.doc);
+    s.file.path = path;
+    s.file.savedFingerprint = fingerprint(s.doc);
+    s.selectedNode = 0;
+    clampSelection(s);
+}
+
+void rememberRecent(EditorState& s, const fs::path& file) {
+    pushRecent(s.file.recent, file);
+    if (s.file.recentListFile.empty()) return;
+    try {
+        saveRecentList(s.file.recentListFile, s.file.recent);
+    } catch (const std::exception&) {
+        // The recent list is a convenience: failing to persist it must not fail the save.
+    }
+}
+
+}  // namespace
+
+void setStatus(EditorState& s, std::string text, bool error) {
+    s.status.text = std::move(text);
+    s.status.error = error;
+    s.status.until = s.now + (error ? 8.0 : 4.0);
+}
+
+bool isDirty(const EditorState& s) { return fingerprint(s.doc) != s.file.savedFingerprint; }
+
+std::string windowTitle(const EditorState& s) {
+    const std::string name = s.file.path.empty() ? "untitled" : s.file.path.filename().string();
+    return (isDirty(s) ? "* " : "") + name + " - fraktal";
+}
+
+void newDocument(EditorState& s) {
+    Document d;
+    const fs::path shipped = fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "mandelbulb.json";
+    try {
+        d.preset = loadPreset(shipped);
+        d.preset.name = "Untitled";
+    } catch (const std::exception&) {
+        d.preset.formula.nodes.push_back(Node::make(*findBlock("mandelbulb")));
+        d.preset.formula.nodes.push_back(Node::make(*findBlock("add_c")));
+        d.preset.formula.estimator = Node::make(*findBlock("escape_log"));
+    }
+    adoptDocument(s, std::move(d), {});
+    setStatus(s, "New document");
+}
+
+Preset presetFromExr(const fs::path& file) {
+    Imf::InputFile in(file.c_str());
+    for (auto it = in.header().begin(); it != in.header().end(); ++it) {
+        const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute());
+        if (!text || text->value().find(kPresetFormat) == std::string::npos) continue;
+        return parsePreset(text->value(), file.string() + " [" + it.name() + "]");
+    }
+    throw PresetError(file.string(), "", "this EXR carries no fraktal preset in its header");
+}
+
+bool openDocument(EditorState& s, const fs::path& file) {
+    try {
+        Document d;
+        std::string ext = file.extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+        const bool exr = ext == ".exr";
+        d.preset = exr ? presetFromExr(file) : loadPreset(file);
+        loadEditorSection(d);
+        // An EXR is an image, not a scene file: "Save" must ask where to put the preset.
+        adoptDocument(s, std::move(d), exr ? fs::path() : file);
+        if (!exr) rememberRecent(s, file);
+        setStatus(s, "Opened " + file.string());
+        return true;
+    } catch (const std::exception& e) {
+        setStatus(s, e.what(), true);
+        return false;
+    }
+}
+
+bool saveDocumentAs(EditorState& s, const fs::path& file) {
+    try {
+        Document d = s.doc;
+        storeEditorSection(d);
+        savePresetFile(file, d.preset);
+        s.file.path = file;
+        s.file.savedFingerprint = fingerprint(s.doc);
+        rememberRecent(s, file);
+        setStatus(s, "Saved " + file.string());
+        return true;
+    } catch (const std::exception& e) {
+        setStatus(s, e.what(), true);
+        return false;
+    }
+}
+
+bool saveDocument(EditorState& s) {
+    if (s.file.path.empty()) {
+        s.dialogs.saveAs = true;
+        return false;
+    }
+    return saveDocumentAs(s, s.file.path);
+}
+
+void undo(EditorState& s) {
+    if (s.history.undo(s.doc)) setStatus(s, "Undo");
+    clampSelection(s);
+}
+
+void redo(EditorState& s) {
+    if (s.history.redo(s.doc)) setStatus(s, "Redo");
+    clampSelection(s);
+}
+
+void requestAction(EditorState& s, PendingAction action) {
+    s.dialogs.pending = std::move(action);
+    if (isDirty(s)) {
+        s.dialogs.unsaved = true;
+        return;
+    }
+    runPending(s);
+}
+
+void runPending(EditorState& s) {
+    PendingAction a = std::move(s.dialogs.pending);
+    s.dialogs.pending = {};
+    switch (a.kind) {
+        case PendingKind::New: newDocument(s); break;
+        case PendingKind::Open: openDocument(s, a.path); break;
+        case PendingKind::Quit: s.quit = true; break;
+        case PendingKind::None: break;
+    }
+}
+
+}  // namespace fraktal::editor

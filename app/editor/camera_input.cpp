@@ -1,0 +1,52 @@
+#include "app/editor/camera_input.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace fraktal::editor {
+
+bool gatherCameraInput(const EditorState& s, CameraInput& in) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const Layout& l = s.layout;
+    const bool overViewport = io.MousePos.x >= l.viewportX && io.MousePos.x < l.viewportX + l.viewportW &&
+                              io.MousePos.y >= l.viewportY && io.MousePos.y < l.viewportY + l.viewportH;
+    // A drag belongs to the viewport when it started there and no ImGui window took it.
+    const bool mouseFree = !io.WantCaptureMouse;
+    in.dt = io.DeltaTime;
+    in.viewportHeight = l.viewportH;
+    bool gesture = false;
+    if (mouseFree) {
+        const vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) in.rotateDrag = delta, gesture = true;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
+            in.panDrag = delta, gesture = true;
+        if (overViewport) in.scroll = io.MouseWheel;
+    }
+    if (s.cameraControls.mode == CameraMode::Fly && !io.WantTextInput && !io.KeyCtrl) {
+        auto down = [](int key) { return ImGui::IsKeyDown(key) ? 1.0 : 0.0; };
+        in.move = vec3(down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
+                       down(GLFW_KEY_W) - down(GLFW_KEY_S));
+        in.boost = io.KeyShift;
+        if (in.move != vec3(0.0)) gesture = true;
+    }
+    return gesture;
+}
+
+void updateCamera(EditorState& s) {
+    CameraInput in;
+    s.cameraGesture = gatherCameraInput(s, in);
+    Camera& cam = s.doc.preset.camera;
+    if (s.cameraControls.mode == CameraMode::Orbit) {
+        orbitCamera(cam, in, s.cameraControls);
+    } else {
+        // In fly mode the left drag looks around; pan and wheel still work as in orbit.
+        flyCamera(cam, s.doc.preset.formula, in, s.cameraControls);
+        CameraInput rest;
+        rest.panDrag = in.panDrag;
+        rest.scroll = in.scroll;
+        rest.viewportHeight = in.viewportHeight;
+        orbitCamera(cam, rest, s.cameraControls);
+    }
+}
+
+}  // namespace fraktal::editor

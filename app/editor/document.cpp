@@ -1,0 +1,96 @@
+#include "app/editor/document.hpp"
+
+#include <algorithm>
+
+namespace fraktal::editor {
+
+using nlohmann::json;
+
+namespace {
+
+json vecJson(const vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+vec3 vecFrom(const json& j, const vec3& fallback) {
+    if (!j.is_array() || j.size() != 3) return fallback;
+    for (const json& e : j)
+        if (!e.is_number()) return fallback;
+    return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
+
+json cameraJson(const Camera& c) {
+    return {{"position", vecJson(c.position)}, {"target", vecJson(c.target)}, {"up", vecJson(c.up)}, {"fovY", c.fovY}};
+}
+
+Camera cameraFrom(const json& j) {
+    Camera c;
+    c.position = vecFrom(j.value("position", json()), c.position);
+    c.target = vecFrom(j.value("target", json()), c.target);
+    c.up = vecFrom(j.value("up", json()), c.up);
+    if (j.contains("fovY") && j["fovY"].is_number()) c.fovY = std::clamp(j["fovY"].get<double>(), 1.0, 170.0);
+    return c;
+}
+
+json editorSection(const Document& d) {
+    json slots = json::array();
+    for (const auto& slot : d.viewSlots) slots.push_back(slot ? cameraJson(*slot) : json());
+    return {{"view", viewSettingsToJson(d.view)}, {"viewSlots", slots}};
+}
+
+}  // namespace
+
+json viewSettingsToJson(const ViewSettings& s) {
+    return {{"maxSteps", s.maxSteps},
+            {"renderScale", s.renderScale},
+            {"reprojection", s.reprojection},
+            {"aaCap", s.aaCap},
+            {"lightDirection", vecJson(s.lightDirection)},
+            {"shadows", s.shadows},
+            {"ambientOcclusion", s.ambientOcclusion},
+            {"fog", s.fog},
+            {"palette", s.palette},
+            {"exposure", s.exposure}};
+}
+
+ViewSettings viewSettingsFromJson(const json& j) {
+    ViewSettings s;
+    if (!j.is_object()) return s;
+    auto number = [&](const char* key, double fallback, double lo, double hi) {
+        const json& v = j.value(key, json());
+        return v.is_number() ? std::clamp(v.get<double>(), lo, hi) : fallback;
+    };
+    auto boolean = [&](const char* key, bool fallback) {
+        const json& v = j.value(key, json());
+        return v.is_boolean() ? v.get<bool>() : fallback;
+    };
+    s.maxSteps = int(number("maxSteps", s.maxSteps, 8, 2000));
+    s.renderScale = number("renderScale", s.renderScale, 0.1, 1.0);
+    s.reprojection = boolean("reprojection", s.reprojection);
+    s.aaCap = int(number("aaCap", s.aaCap, 1, 256));
+    s.lightDirection = vecFrom(j.value("lightDirection", json()), s.lightDirection);
+    s.shadows = boolean("shadows", s.shadows);
+    s.ambientOcclusion = boolean("ambientOcclusion", s.ambientOcclusion);
+    s.fog = number("fog", s.fog, 0.0, 10.0);
+    s.palette = int(number("palette", s.palette, 0, kPaletteCount - 1));
+    s.exposure = number("exposure", s.exposure, -20.0, 20.0);
+    return s;
+}
+
+std::string fingerprint(const Document& d) {
+    json j = presetToJson(d.preset);
+    j["editor"] = editorSection(d);
+    return j.dump();
+}
+
+void storeEditorSection(Document& d) { d.preset.extra["editor"] = editorSection(d); }
+
+void loadEditorSection(Document& d) {
+    const json& e = d.preset.extra.value("editor", json());
+    if (!e.is_object()) return;
+    d.view = viewSettingsFromJson(e.value("view", json()));
+    const json& slots = e.value("viewSlots", json());
+    if (!slots.is_array()) return;
+    for (size_t i = 0; i < slots.size() && i < d.viewSlots.size(); ++i)
+        d.viewSlots[i] = slots[i].is_object() ? std::optional<Camera>(cameraFrom(slots[i])) : std::nullopt;
+}
+
+}  // namespace fraktal::editor

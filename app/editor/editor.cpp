@@ -1,0 +1,221 @@
+// The editor's main loop: GLFW window and GL 4.5 context, Dear ImGui panels, the viewport
+// behind them, undo commits between gestures, and the --frames/--screenshot path for tests.
+#include "app/editor/editor.hpp"
+
+#include <epoxy/gl.h>
+// epoxy first: GLFW must not pull in the system GL header.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "app/editor/actions.hpp"
+#include "app/editor/camera_input.hpp"
+#include "app/editor/panel_ini.hpp"
+#include "app/editor/panels.hpp"
+#include "app/editor/preset_files.hpp"
+#include "app/editor/screenshot.hpp"
+#include "app/editor/thumbnails.hpp"
+
+namespace fraktal::editor {
+
+namespace fs = std::filesystem;
+
+bool displayAvailable() {
+    const char* x = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x && *x) || (wayland && *wayland);
+}
+
+namespace {
+
+constexpr const char* kNoDisplay =
+    "fraktal: no display: the editor needs an X11 or Wayland session ($DISPLAY is not set).\n"
+    "  For headless use, render a still:   fraktal render PRESET -o OUT.exr\n"
+    "  Or run the editor under Xvfb:        xvfb-run -a fraktal edit PRESET\n";
+
+EditorState* stateOf(GLFWwindow* w) { return static_cast<EditorState*>(glfwGetWindowUserPointer(w)); }
+
+void onDrop(GLFWwindow* w, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) stateOf(w)->dropped.emplace_back(paths[i]);
+}
+
+// Closing the window with unsaved changes asks first (the prompt's answer quits).
+void onClose(GLFWwindow* w) {
+    EditorState& s = *stateOf(w);
+    if (!isDirty(s)) return;
+    glfwSetWindowShouldClose(w, GLFW_FALSE);
+    requestAction(s, {PendingKind::Quit, {}});
+}
+
+void onGlfwError(int code, const char* text) { std::fprintf(stderr, "fraktal: GLFW error %d: %s\n", code, text); }
+
+// The part of the window the panels leave to the viewport.
+void layoutViewport(EditorState& s, float windowW, float windowH) {
+    Layout& l = s.layout;
+    const float left = s.panels.formula ? l.leftWidth : 0.0f;
+    const float right = s.panels.sidebar ? l.rightWidth : 0.0f;
+    l.viewportX = left;
+    l.viewportY = l.menuHeight;
+    l.viewportW = std::max(windowW - left - right, 16.0f);
+    l.viewportH = std::max(windowH - l.menuHeight, 16.0f);
+}
+
+void drawViewportImage(const EditorState& s, const ViewportView& v) {
+    const Layout& l = s.layout;
+    ImDrawList* bg = ImGui::GetBackgroundDrawList();
+    const ImVec2 a(l.viewportX, l.viewportY), b(l.viewportX + l.viewportW, l.viewportY + l.viewportH);
+    bg->AddRectFilled(ImVec2(0, 0), ImGui::GetIO().DisplaySize, IM_COL32(12, 13, 15, 255));
+    if (v.displayTexture())
+        bg->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(v.displayTexture())), a, b, ImVec2(0, 1),
+                     ImVec2(1, 0));
+}
+
+}  // namespace
+
+int runEditor(const EditorOptions& o) {
+    if (!displayAvailable()) {
+        std::fputs(kNoDisplay, stderr);
+        return 3;
+    }
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        std::fputs(kNoDisplay, stderr);
+        return 3;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(o.width, o.height, "fraktal", nullptr, nullptr);
+    if (!window) {
+        std::fputs("fraktal: cannot create an OpenGL 4.5 core window on this display.\n"
+                   "  For headless use: fraktal render PRESET -o OUT.exr\n",
+                   stderr);
+        glfwTerminate();
+        return 3;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(o.frames > 0 ? 0 : 1);
+
+    EditorState s;
+    glfwSetWindowUserPointer(window, &s);
+    glfwSetDropCallback(window, onDrop);
+    glfwSetWindowCloseCallback(window, onClose);
+
+    const fs::path config = configFolder();
+    std::error_code ec;
+    fs::create_directories(config, ec);
+    s.file.recentListFile = config / "recent.json";
+    s.file.recent = loadRecentList(s.file.recentListFile);
+    s.browser.folders = {fs::path(FRAKTAL_SOURCE_DIR) / "presets", userPresetFolder()};
+    fs::create_directories(userPresetFolder(), ec);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    const std::string iniFile = (config / "editor.ini").string();
+    io.IniFilename = o.useIniFile ? iniFile.c_str() : nullptr;
+    registerPanelIniHandler(s.panels);
+    float xscale = 1.0f, yscale = 1.0f;
+    glfwGetWindowContentScale(window, &xscale, &yscale);
+    applyEditorStyle(xscale);
+    io.FontGlobalScale = xscale;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+
+    int status = 0;
+    {
+        std::unique_ptr<ViewportView> viewport = makeViewportView();
+        ThumbnailRenderer thumbnails;
+        newDocument(s);
+        if (!o.preset.empty() && !openDocument(s, o.preset)) {
+            std::fprintf(stderr, "fraktal: %s\n", s.status.text.c_str());
+            if (o.frames > 0) status = 2;  // a scripted run must not pass with the wrong scene
+        }
+        std::string title;
+        int frame = 0;
+        while (!s.quit && !glfwWindowShouldClose(window)) {
+            // Idle when the image is converged and nothing happens: no busy loop on a laptop.
+            const bool busy = o.frames > 0 || viewport->stats().samples < viewport->stats().aaCap ||
+                              s.exportJob.status == ExportStatus::Running || ImGui::IsAnyMouseDown();
+            if (busy) glfwPollEvents();
+            else glfwWaitEventsTimeout(0.25);
+            s.now = glfwGetTime();
+            if (!s.dropped.empty()) {
+                requestAction(s, {PendingKind::Open, s.dropped.front()});
+                s.dropped.clear();
+            }
+            s.browser.visible = false;
+
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            handleShortcuts(s);
+            drawMenuBar(s);
+            drawFormulaPanel(s, *viewport);
+            drawSidebar(s);
+            layoutViewport(s, io.DisplaySize.x, io.DisplaySize.y);
+            updateCamera(s);
+
+            const Layout& l = s.layout;
+            const double scale = s.doc.view.renderScale * io.DisplayFramebufferScale.x;
+            viewport->render(s.doc.preset.formula, s.doc.preset.camera, s.doc.view, int(l.viewportW * scale),
+                             int(l.viewportH * scale));
+            drawViewportImage(s, *viewport);
+            drawStatsOverlay(s, *viewport);
+            drawStatusLine(s);
+            drawExportDialog(s);
+            drawFileDialogs(s);
+            if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);
+            if (s.browser.visible) renderNextThumbnail(thumbnails, s.browser);
+
+            ImGui::Render();
+            int fbW = 0, fbH = 0;
+            glfwGetFramebufferSize(window, &fbW, &fbH);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, fbW, fbH);
+            glClearColor(0.05f, 0.05f, 0.06f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+            if (o.frames > 0 && ++frame >= o.frames) {
+                if (!o.screenshot.empty()) {
+                    try {
+                        saveWindowScreenshot(o.screenshot, fbW, fbH);
+                        std::printf("fraktal: wrote %s (%d x %d, %d frames)\n", o.screenshot.c_str(), fbW, fbH, frame);
+                    } catch (const std::exception& e) {
+                        std::fprintf(stderr, "fraktal: error: %s\n", e.what());
+                        status = 2;
+                    }
+                }
+                if (!viewport->compileError().empty()) {
+                    std::fprintf(stderr, "fraktal: %s\n", viewport->compileError().c_str());
+                    status = 2;
+                }
+                break;
+            }
+            glfwSwapBuffers(window);
+
+            // One undo step per finished gesture: commit only when nothing is being dragged.
+            if (!ImGui::IsAnyItemActive() && !s.cameraGesture) s.history.commit(s.doc);
+            if (const std::string t = windowTitle(s); t != title) {
+                title = t;
+                glfwSetWindowTitle(window, title.c_str());
+            }
+        }
+        cancelExport(s.exportJob);
+        releaseThumbnails(s.browser);
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return status;
+}
+
+}  // namespace fraktal::editor

@@ -1,0 +1,24 @@
+// The editor's entry point: a GLFW window with Dear ImGui panels around the viewport.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace fraktal::editor {
+
+struct EditorOptions {
+    std::filesystem::path preset;      // opened at start (empty: a new document)
+    int frames = 0;                    // > 0: draw this many frames, then exit
+    std::filesystem::path screenshot;  // with frames: a PNG of the whole window after the last
+    int width = 1280, height = 800;
+    bool useIniFile = true;            // false for reproducible screenshots
+};
+
+// Returns the process exit status. With no display it prints why and points to
+// `fraktal render` (exit 3); a bad preset is reported in the window's status line.
+int runEditor(const EditorOptions& options);
+
+// Whether a display server is reachable ($DISPLAY or $WAYLAND_DISPLAY set).
+bool displayAvailable();
+
+}  // namespace fraktal::editor

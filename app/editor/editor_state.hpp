@@ -1,0 +1,96 @@
+// Everything the editor knows, in plain structs owned by runEditor() and passed to the panels
+// by reference. Nothing lives in function statics, so two editors (or a test) never share state.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/editor/camera_controller.hpp"
+#include "app/editor/document.hpp"
+#include "app/editor/export_job.hpp"
+#include "app/editor/undo_history.hpp"
+
+namespace fraktal::editor {
+
+struct FileState {
+    std::filesystem::path path;    // empty for a new, never saved document
+    std::string savedFingerprint;  // fingerprint(doc) when last opened or saved
+    std::vector<std::string> recent;
+    std::filesystem::path recentListFile;  // where `recent` persists (empty: not persisted)
+};
+
+struct PanelVisibility {
+    bool formula = true;
+    bool sidebar = true;  // camera, render, presets
+    bool stats = true;
+    bool demo = false;    // ImGui's own metrics, for bug reports
+};
+
+// Laid out by the panels each frame; the viewport gets what they leave.
+struct Layout {
+    float menuHeight = 0.0f;
+    float leftWidth = 360.0f;
+    float rightWidth = 330.0f;
+    float viewportX = 0, viewportY = 0, viewportW = 1, viewportH = 1;  // in window coordinates
+};
+
+// What to do once the user answered the unsaved-changes question.
+enum class PendingKind { None, New, Open, Quit };
+struct PendingAction {
+    PendingKind kind = PendingKind::None;
+    std::filesystem::path path;  // for Open
+};
+
+struct Dialogs {
+    bool openPath = false;      // "Open..." path prompt
+    bool saveAs = false;        // "Save as..." path prompt
+    bool unsaved = false;       // "Save changes?" prompt
+    bool exportStill = false;   // F12
+    std::string pathInput;
+    PendingAction pending;
+};
+
+struct Thumbnail {
+    std::filesystem::path file;
+    std::string name;
+    unsigned texture = 0;  // GL texture, 0 until rendered
+    bool failed = false;
+};
+
+struct PresetBrowser {
+    std::vector<Thumbnail> entries;
+    bool scanned = false;
+    bool visible = false;  // the tab was drawn this frame: thumbnails render only then
+    std::vector<std::filesystem::path> folders;  // shipped presets/, then the user's folder
+};
+
+struct StatusLine {
+    std::string text;
+    bool error = false;
+    double until = 0.0;  // glfwGetTime() at which it fades
+};
+
+struct EditorState {
+    Document doc;
+    UndoHistory history;
+    FileState file;
+    PanelVisibility panels;
+    Layout layout;
+    CameraControls cameraControls;
+    Dialogs dialogs;
+    PresetBrowser browser;
+    ExportJob exportJob;
+    StatusLine status;
+    int selectedNode = 0;        // formula.nodes.size() selects the estimator
+    bool cameraGesture = false;  // a drag or fly key is held: do not commit undo mid-gesture
+    bool quit = false;
+    double now = 0.0;            // seconds, for status fades and frame time
+    std::vector<std::filesystem::path> dropped;  // files dropped on the window this frame
+};
+
+bool isDirty(const EditorState& s);
+std::string windowTitle(const EditorState& s);
+
+}  // namespace fraktal::editor

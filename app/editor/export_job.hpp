@@ -1,0 +1,62 @@
+// The export dialog's job: a still rendered by `fraktal render` (core/render) in a child
+// process, so the editor stays responsive, a cancel is a signal, and a crash in a huge render
+// cannot take the unsaved document with it. Progress is read from the child's output ("NN%").
+#pragma once
+
+#include <sys/types.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/preset.hpp"
+
+namespace fraktal::editor {
+
+struct ExportSize {
+    const char* label;
+    int width, height;  // 0: the window's viewport size
+};
+
+// A3 and A2 landscape at 300 dpi (ISO 216: 420x297 mm and 594x420 mm).
+inline constexpr ExportSize kExportSizes[] = {
+    {"Viewport size", 0, 0},          {"HD 1920 x 1080", 1920, 1080}, {"4K UHD 3840 x 2160", 3840, 2160},
+    {"A3 300 dpi 4961 x 3508", 4961, 3508}, {"A2 300 dpi 7016 x 4961", 7016, 4961}, {"Custom", -1, -1},
+};
+
+struct ExportOptions {
+    int sizeIndex = 1;
+    int width = 1920, height = 1080;
+    int spp = 16;
+    bool exr = true;          // write OUT.exr (linear, with the preset embedded)
+    bool pngPreview = true;   // and OUT.png through the display transform
+    bool halfFloat = true;    // EXR channels as half
+    std::string output = "fraktal_still";  // path without extension
+};
+
+enum class ExportStatus { Idle, Running, Done, Failed, Cancelled };
+
+struct ExportJob {
+    ExportOptions options;
+    ExportStatus status = ExportStatus::Idle;
+    pid_t pid = -1;
+    int outputFd = -1;
+    std::string log;          // the child's output so far
+    double progress = -1.0;   // 0..1, or < 0 when the child has not said
+    double startedAt = 0.0;
+    std::filesystem::path presetFile;  // the temp preset handed to the child
+};
+
+// The command line for the still renderer (`fraktal render`), for the dialog to show.
+std::vector<std::string> exportCommand(const std::filesystem::path& fraktalExe, const std::filesystem::path& preset,
+                                       const ExportOptions& o);
+// The last "NN%" or "NN.N%" in `log` as 0..1, or -1.
+double parseProgress(const std::string& log);
+
+// Writes the preset next to the output and starts the child; false with job.log saying why.
+bool startExport(ExportJob& job, const Preset& preset, double now);
+// Reads the child's output without blocking and notices when it ended.
+void pollExport(ExportJob& job);
+void cancelExport(ExportJob& job);
+
+}  // namespace fraktal::editor

@@ -1,0 +1,46 @@
+// Edits of a formula's node list, as the formula panel performs them. Pure functions on the
+// data, so the panel stays thin and the rules are unit-tested. Which edits need a recompile is
+// decided by Formula::structureKey() alone (see ProgramTracker).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/formula.hpp"
+
+namespace fraktal::editor {
+
+// All block ids of one category, in registry order (for the categorised "Add block" menu).
+std::vector<const BlockDesc*> blocksIn(Category category);
+
+// Each returns false (and leaves the formula alone) when the edit is not possible, e.g. an
+// index out of range or kMaxNodes reached.
+bool addNode(Formula& f, const BlockDesc& block, int insertAt = -1);  // -1: at the end
+bool removeNode(Formula& f, int index);
+bool duplicateNode(Formula& f, int index);  // the copy goes right after the original
+bool moveNode(Formula& f, int from, int to);  // `to` is the index the node ends at
+bool setNodeEnabled(Formula& f, int index, bool enabled);
+bool setEstimator(Formula& f, const BlockDesc& estimator);  // keeps nothing of the old one
+// Sets parameter `param` of node `index` (nodes.size() means the estimator), clamped to the
+// declared range.
+bool setParam(Formula& f, int index, int param, const ParamValue& value);
+void resetParam(Formula& f, int index, int param);
+
+// Remembers which structure the current program was built for. A value edit keeps the key;
+// a block added, removed, moved, enabled/disabled or re-phased changes it.
+struct ProgramTracker {
+    std::string compiledKey;
+    bool hasProgram = false;
+
+    bool needsRecompile(const Formula& f) const { return !hasProgram || f.structureKey() != compiledKey; }
+    void compiled(const Formula& f) {
+        compiledKey = f.structureKey();
+        hasProgram = true;
+    }
+};
+
+// The node a compile-error log talks about ("node 3 (box_fold)..." as ShaderSource::explainLog
+// writes it), or -1 when it names none. The estimator is index nodes.size().
+int nodeNamedInLog(const std::string& log, int nodeCount);
+
+}  // namespace fraktal::editor

@@ -1,0 +1,58 @@
+// The main menu, with every shortcut shown next to its command (shortcuts.cpp handles them).
+#include <imgui.h>
+
+#include "app/editor/actions.hpp"
+#include "app/editor/panels.hpp"
+
+namespace fraktal::editor {
+
+void drawMenuBar(EditorState& s) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("New", "Ctrl+N")) requestAction(s, {PendingKind::New, {}});
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) s.dialogs.openPath = true;
+        if (ImGui::BeginMenu("Open recent", !s.file.recent.empty())) {
+            for (const std::string& r : s.file.recent)
+                if (ImGui::MenuItem(r.c_str())) requestAction(s, {PendingKind::Open, r});
+            ImGui::EndMenu();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Save", "Ctrl+S")) saveDocument(s);
+        if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) {
+            s.dialogs.pathInput = s.file.path.string();
+            s.dialogs.saveAs = true;
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Export still...", "F12")) s.dialogs.exportStill = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestAction(s, {PendingKind::Quit, {}});
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, s.history.canUndo())) undo(s);
+        if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, s.history.canRedo())) redo(s);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        ImGui::MenuItem("Formula panel", "F2", &s.panels.formula);
+        ImGui::MenuItem("Scene panel", "F3", &s.panels.sidebar);
+        ImGui::MenuItem("Stats overlay", "F4", &s.panels.stats);
+        ImGui::Separator();
+        bool fly = s.cameraControls.mode == CameraMode::Fly;
+        if (ImGui::MenuItem("Fly camera", "Tab", &fly)) s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
+        if (ImGui::MenuItem("Reset view", "Home"))
+            s.doc.preset.camera = defaultViewFor(s.doc.preset.formula, s.doc.preset.camera);
+        ImGui::Separator();
+        ImGui::MenuItem("ImGui metrics", nullptr, &s.panels.demo);
+        ImGui::EndMenu();
+    }
+    // The document's name and unsaved mark, right-aligned.
+    const std::string title = (isDirty(s) ? "* " : "") +
+                              (s.file.path.empty() ? std::string("untitled") : s.file.path.filename().string());
+    ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(title.c_str()).x - 16);
+    ImGui::TextDisabled("%s", title.c_str());
+    s.layout.menuHeight = ImGui::GetWindowHeight();
+    ImGui::EndMainMenuBar();
+}
+
+}  // namespace fraktal::editor

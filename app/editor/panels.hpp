@@ -1,0 +1,24 @@
+// The editor's panels: one function per panel, each in its own file, drawing from and into the
+// EditorState it is given. They hold no state of their own.
+#pragma once
+
+#include "app/editor/editor_state.hpp"
+#include "app/editor/viewport_view.hpp"
+
+namespace fraktal::editor {
+
+void handleShortcuts(EditorState& s);                     // shortcuts.cpp
+void drawMenuBar(EditorState& s);                         // menu_bar.cpp
+void drawFormulaPanel(EditorState& s, const ViewportView& v);  // formula_panel.cpp
+void drawSidebar(EditorState& s);                         // sidebar.cpp: the tabs below
+void drawCameraTab(EditorState& s);                       // camera_panel.cpp
+void drawRenderTab(EditorState& s);                       // render_panel.cpp
+void drawPresetsTab(EditorState& s);                      // preset_browser.cpp
+void drawStatsOverlay(EditorState& s, const ViewportView& v);  // stats_overlay.cpp
+void drawExportDialog(EditorState& s);                    // export_dialog.cpp
+void drawFileDialogs(EditorState& s);                     // file_dialogs.cpp
+void drawStatusLine(EditorState& s);                      // stats_overlay.cpp
+
+void applyEditorStyle(float scale);                       // style.cpp
+
+}  // namespace fraktal::editor

@@ -1,0 +1,91 @@
+#include "app/editor/param_widgets.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace fraktal::editor {
+
+namespace {
+
+void tooltip(const ParamDecl& d) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+    ImGui::TextUnformatted(std::string(d.help).c_str());
+    ImGui::TextDisabled("range %.4g .. %.4g, default %s", d.min, d.max,
+                        d.type == ParamType::Float ? std::to_string(d.defaultValue.x).c_str()
+                                                   : (std::to_string(d.defaultValue.x) + ", " +
+                                                      std::to_string(d.defaultValue.y) + ", " +
+                                                      std::to_string(d.defaultValue.z))
+                                                         .c_str());
+    ImGui::TextDisabled("Ctrl+click to type a value");
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+}  // namespace
+
+void helpMarker(const char* help) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+        ImGui::TextUnformatted(help);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+}
+
+void sectionHeader(const char* title) {
+    ImGui::Spacing();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextUnformatted(title);
+    ImGui::PopStyleColor();
+    ImGui::Separator();
+}
+
+bool paramWidget(const ParamDecl& d, ParamValue& value) {
+    const std::string name(d.name);
+    ImGui::PushID(name.c_str());
+    bool changed = false;
+    const double lo = d.min, hi = d.max;
+    // About 400 pixels of drag across the range; fine control with Alt (ImGui's slow modifier).
+    const float speed = float(std::max((hi - lo) / 400.0, 1e-6));
+    const float resetWidth = ImGui::GetFrameHeight();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - resetWidth - ImGui::GetStyle().ItemInnerSpacing.x -
+                            ImGui::CalcTextSize(name.c_str()).x - ImGui::GetStyle().ItemInnerSpacing.x);
+    const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+    if (d.type == ParamType::Float) {
+        changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &value.x, speed, &lo, &hi, "%.4g", flags);
+    } else {
+        double v[3] = {value.x, value.y, value.z};
+        changed = ImGui::DragScalarN("##v", ImGuiDataType_Double, v, 3, speed, &lo, &hi, "%.3g", flags);
+        if (changed) {
+            const vec3 next(v[0], v[1], v[2]);
+            // A direction may not be zero: refuse the edit that would make it so.
+            if (d.direction && length(next) == 0.0) changed = false;
+            else value = next;
+        }
+    }
+    tooltip(d);
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    const bool isDefault = value == d.defaultValue;
+    ImGui::BeginDisabled(isDefault);
+    if (ImGui::Button("<", ImVec2(resetWidth, 0))) {
+        value = d.defaultValue;
+        changed = true;
+    }
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Reset to default");
+    ImGui::EndDisabled();
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted(name.c_str());
+    tooltip(d);
+    ImGui::PopID();
+    return changed;
+}
+
+}  // namespace fraktal::editor

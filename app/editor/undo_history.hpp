@@ -1,0 +1,43 @@
+// Undo/redo by whole-document snapshots. The editor commits after each finished edit (a drag
+// released, a checkbox clicked, a camera move ended), so one Ctrl+Z undoes one gesture. A
+// document is a few kilobytes, so snapshots are simpler and safer than inverse operations:
+// restoring a snapshot restores every field exactly.
+#pragma once
+
+#include <deque>
+#include <string>
+
+#include "app/editor/document.hpp"
+
+namespace fraktal::editor {
+
+class UndoHistory {
+public:
+    explicit UndoHistory(size_t capacity = 512) : capacity_(capacity) {}
+
+    // Forgets all history; `d` becomes the present state (after open / new).
+    void reset(const Document& d);
+    // Records `d` as a new state if it differs from the present one; drops the redo branch.
+    // Returns whether a state was recorded.
+    bool commit(const Document& d);
+
+    bool canUndo() const { return !past_.empty(); }
+    bool canRedo() const { return !future_.empty(); }
+    // Replace `d` with the previous / next state. `d` should equal the present state; any
+    // uncommitted change in it is committed first so that it can be redone.
+    bool undo(Document& d);
+    bool redo(Document& d);
+
+    const Document& present() const { return present_; }
+    size_t undoDepth() const { return past_.size(); }
+    size_t redoDepth() const { return future_.size(); }
+
+private:
+    size_t capacity_;
+    std::deque<Document> past_;
+    std::deque<Document> future_;
+    Document present_;
+    std::string presentKey_;
+};
+
+}  // namespace fraktal::editor
