@@ -12,7 +12,6 @@ int main(int argc, char** argv) {
     fraktal::cli::Action action;
     fraktal::cli::addCheckCommand(app, action);
     fraktal::cli::addEditCommand(app, action);
-    fraktal::cli::addEditCommand(app, action);
     fraktal::cli::addRenderCommand(app, action);
     fraktal::cli::addInfoCommand(app, action);
     fraktal::cli::addBenchViewportCommand(app, action);

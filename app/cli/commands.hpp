@@ -13,9 +13,6 @@ void addCheckCommand(CLI::App& app, Action& action);
 void addEditCommand(CLI::App& app, Action& action);
 // What `fraktal` with no subcommand does: open the editor on presets/mandelbulb.json.
 Action defaultEditorAction();
-void addEditCommand(CLI::App& app, Action& action);
-// What `fraktal` with no subcommand does: open the editor on presets/mandelbulb.json.
-Action defaultEditorAction();
 void addRenderCommand(CLI::App& app, Action& action);
 void addInfoCommand(CLI::App& app, Action& action);
 void addBenchViewportCommand(CLI::App& app, Action& action);
