@@ -1,0 +1,151 @@
+// `fraktal bench viewport PRESET [--path orbit|dolly|pan] [--frames N] [--size WxH]
+// [--no-reproject] [--json]`: flies a scripted camera path headlessly through the real-time
+// viewport (core/viewport) and prints per-frame work (DE evaluations per pixel), pixel shares
+// (reprojected / restarted / converged), frame time and each frame's error against a converged
+// render of the same view, then what happens after the camera stops. bench/README.md has the
+// table this produces.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "core/gl/context.hpp"
+#include "core/preset.hpp"
+#include "core/viewport/flight.hpp"
+
+namespace fraktal::cli {
+
+namespace {
+
+struct BenchViewportArgs {
+    std::string preset;
+    std::string path = "orbit";
+    std::string size = "640x360";
+    int frames = 30;
+    int steps = 30;
+    int samples = 16;
+    int coneTile = 0;
+    double degrees = 0.5;
+    bool noReproject = false, noOverRelaxation = false, noError = false, json = false;
+};
+
+std::pair<int, int> parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 2 || h < 2 ||
+        w > kMaxImageSide || h > kMaxImageSide)
+        throw std::runtime_error("--size: expected WxH (e.g. 640x360), got '" + text + "'");
+    return {w, h};
+}
+
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+int run(const BenchViewportArgs& a) {
+    const Preset preset = loadPreset(a.preset);
+    const auto path = viewport::parseCameraPath(a.path);
+    if (!path) throw std::runtime_error("--path: expected orbit, dolly or pan, got '" + a.path + "'");
+    viewport::FlightSettings fs;
+    fs.path = *path;
+    fs.frames = a.frames;
+    fs.degreesPerFrame = a.degrees;
+    std::tie(fs.width, fs.height) = parseSize(a.size);
+    fs.options.stepsPerFrame = a.steps;
+    fs.options.maxSamples = a.samples;
+    fs.options.reproject = !a.noReproject;
+    fs.options.overRelaxation = !a.noOverRelaxation;
+    fs.options.coneTile = a.coneTile;
+    fs.measureError = !a.noError;
+
+    auto context = gl::HeadlessContext::create();
+    const viewport::FlightResult r = viewport::fly(preset, fs);
+
+    if (a.json) {
+        nlohmann::json out;
+        out["preset"] = a.preset;
+        out["renderer"] = context->renderer();
+        out["path"] = a.path;
+        out["width"] = fs.width;
+        out["height"] = fs.height;
+        out["steps_per_frame"] = a.steps;
+        out["reproject"] = fs.options.reproject;
+        out["over_relaxation"] = fs.options.overRelaxation;
+        out["cone_tile"] = fs.options.coneTile;
+        out["frames"] = fs.frames;
+        out["mean_de_evals_per_pixel_per_frame"] = r.meanDeEvalsPerPixel;
+        out["mean_ms_per_frame"] = r.meanMilliseconds;
+        out["mean_psnr_db"] = number(r.meanPsnrDb);
+        out["final_psnr_db"] = number(r.frames.empty() ? NAN : r.frames.back().psnrDb);
+        out["rest_frames_to_40db"] = r.restFramesToThreshold;
+        out["rest_frames_to_settle"] = r.restFramesToSettle;
+        out["settled_de_evals_per_pixel"] = r.settledDeEvalsPerPixel;
+        nlohmann::json frames = nlohmann::json::array();
+        for (size_t i = 0; i < r.frames.size(); ++i) {
+            const auto& f = r.frames[i];
+            frames.push_back({{"frame", i},
+                              {"action", viewport::toString(f.stats.action)},
+                              {"ms", f.stats.milliseconds},
+                              {"de_evals_per_pixel", f.stats.deEvalsPerPixel},
+                              {"reprojected", f.stats.shareReprojected},
+                              {"restarted", f.stats.shareRestarted},
+                              {"converged", f.stats.shareConverged},
+                              {"shaded", f.stats.shareShaded},
+                              {"psnr_db", number(f.psnrDb)}});
+        }
+        out["per_frame"] = frames;
+        std::printf("%s\n", out.dump(2).c_str());
+        return 0;
+    }
+    std::printf("%s, %s path, %dx%d, %d steps/frame, reprojection %s (%s)\n", a.preset.c_str(), a.path.c_str(),
+                fs.width, fs.height, a.steps, fs.options.reproject ? "on" : "off", context->renderer().c_str());
+    std::printf("frame  action     ms      DE/px  reproj  restart  conv   shaded  PSNR dB\n");
+    for (size_t i = 0; i < r.frames.size(); ++i) {
+        const auto& s = r.frames[i].stats;
+        std::printf("%5zu  %-9s %7.1f %8.2f  %5.2f  %6.2f  %5.2f  %6.2f  %6.1f\n", i, viewport::toString(s.action),
+                    s.milliseconds, s.deEvalsPerPixel, s.shareReprojected, s.shareRestarted, s.shareConverged,
+                    s.shareShaded, r.frames[i].psnrDb);
+    }
+    std::printf("mean: %.1f ms/frame, %.2f DE evals/pixel/frame, %.1f dB\n", r.meanMilliseconds, r.meanDeEvalsPerPixel,
+                r.meanPsnrDb);
+    std::printf(
+        "after the stop: %d frames to within 40 dB of the settled image, %d to settle; settled frame %.3f "
+        "DE evals/pixel\n",
+        r.restFramesToThreshold, r.restFramesToSettle, r.settledDeEvalsPerPixel);
+    return 0;
+}
+
+}  // namespace
+
+void addBenchViewportCommand(CLI::App& app, Action& action) {
+    CLI::App* bench = nullptr;
+    try {
+        bench = app.get_subcommand("bench");
+    } catch (const CLI::OptionNotFound&) {
+        bench = app.add_subcommand("bench", "benchmarks");
+        bench->require_subcommand(1);
+    }
+    auto args = std::make_shared<BenchViewportArgs>();
+    CLI::App* cmd =
+        bench->add_subcommand("viewport", "fly a camera path through the real-time viewport and measure it");
+    cmd->add_option("preset", args->preset, "preset file")->required();
+    cmd->add_option("--path", args->path, "camera path: orbit, dolly or pan")->capture_default_str();
+    cmd->add_option("--frames", args->frames, "moving frames")->capture_default_str()->check(CLI::Range(1, 100000));
+    cmd->add_option("--size", args->size, "viewport size WxH")->capture_default_str();
+    cmd->add_option("--steps", args->steps, "march steps per ray per frame")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 10000));
+    cmd->add_option("--samples", args->samples, "AA cap, samples per pixel")
+        ->capture_default_str()
+        ->check(CLI::Range(1, kMaxSpp));
+    cmd->add_option("--cone-tile", args->coneTile, "cone pre-pass tile in pixels (0: off)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 64));
+    cmd->add_option("--degrees", args->degrees, "camera turn per frame, degrees")->capture_default_str();
+    cmd->add_flag("--no-reproject", args->noReproject, "restart every ray on camera motion");
+    cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");
+    cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");
+    cmd->add_flag("--json", args->json, "one JSON object on stdout");
+    cmd->callback([args, &action] { action = [args] { return run(*args); }; });
+}
+
+}  // namespace fraktal::cli

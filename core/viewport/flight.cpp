@@ -1,0 +1,70 @@
+#include "core/viewport/flight.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/viewport/converge.hpp"
+#include "core/viewport/image_error.hpp"
+
+namespace fraktal::viewport {
+
+namespace {
+
+// Renders one frame and waits for the GPU, so the wall time is the frame's.
+FrameStats timedFrame(Viewport& v, const Preset& p, const Camera& camera, int w, int h) {
+    const auto start = std::chrono::steady_clock::now();
+    FrameStats s = v.render(p.formula, camera, p.render, p.shading, w, h);
+    glFinish();
+    s.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return s;
+}
+
+}  // namespace
+
+FlightResult fly(const Preset& preset, const FlightSettings& fs) {
+    FlightResult result;
+    Viewport viewport(fs.options);
+    ViewportOptions referenceOptions = fs.options;
+    referenceOptions.maxSamples = 1;  // under motion only sample 0 runs
+    referenceOptions.reproject = false;
+    Camera camera = preset.camera;
+    double psnrSum = 0.0;
+    for (int f = 0; f < fs.frames; ++f) {
+        camera = cameraOnPath(preset.camera, fs.path, f, fs.degreesPerFrame);
+        FlightFrame frame;
+        frame.stats = timedFrame(viewport, preset, camera, fs.width, fs.height);
+        frame.psnrDb = NAN;
+        if (fs.measureError) {
+            const std::vector<float> image = viewport.readImage();
+            Viewport reference(referenceOptions);
+            const Converged c = renderUntilSettled(reference, preset.formula, camera, preset.render, preset.shading,
+                                                   fs.width, fs.height, fs.maxRestFrames);
+            frame.psnrDb = std::min(displayPsnr(image, c.image), 99.0);
+            psnrSum += frame.psnrDb;
+        }
+        result.meanDeEvalsPerPixel += frame.stats.deEvalsPerPixel / fs.frames;
+        result.meanMilliseconds += frame.stats.milliseconds / fs.frames;
+        result.frames.push_back(frame);
+    }
+    result.meanPsnrDb = fs.measureError ? psnrSum / fs.frames : NAN;
+
+    // The camera stops: record every image until settled, then compare them with the settled one.
+    std::vector<std::vector<float>> rest;
+    for (int f = 0; f < fs.maxRestFrames && !viewport.settled(); ++f) {
+        timedFrame(viewport, preset, camera, fs.width, fs.height);
+        if (fs.measureError) rest.push_back(viewport.readImage());
+        result.restFramesToSettle = f + 1;
+    }
+    if (viewport.settled()) {
+        result.settledDeEvalsPerPixel = timedFrame(viewport, preset, camera, fs.width, fs.height).deEvalsPerPixel;
+        const std::vector<float> settledImage = viewport.readImage();
+        for (size_t i = 0; i < rest.size(); ++i)
+            if (displayPsnr(rest[i], settledImage) >= fs.restThresholdDb) {
+                result.restFramesToThreshold = int(i) + 1;
+                break;
+            }
+    }
+    return result;
+}
+
+}  // namespace fraktal::viewport

@@ -1,0 +1,41 @@
+// Flies a scripted camera path through a viewport and records per-frame statistics and the error
+// of each frame against a converged render of the same view: the engine of `fraktal bench
+// viewport` and of the viewport's work tests.
+#pragma once
+
+#include <vector>
+
+#include "core/preset.hpp"
+#include "core/viewport/camera_path.hpp"
+#include "core/viewport/viewport.hpp"
+
+namespace fraktal::viewport {
+
+struct FlightSettings {
+    CameraPath path = CameraPath::Orbit;
+    int frames = 30;  // moving frames
+    double degreesPerFrame = 0.5;
+    int width = 640, height = 360;
+    ViewportOptions options;
+    bool measureError = true;  // per-frame PSNR against a converged sample-0 render of the view
+    int maxRestFrames = 400;   // after the path: frames at rest until settled
+    double restThresholdDb = 40.0;
+};
+
+struct FlightFrame {
+    FrameStats stats;
+    double psnrDb = 0.0;  // vs the converged single-sample render of this view (NaN when not measured)
+};
+
+struct FlightResult {
+    std::vector<FlightFrame> frames;  // the moving frames
+    double meanDeEvalsPerPixel = 0.0, meanMilliseconds = 0.0, meanPsnrDb = 0.0;
+    // After the camera stops: frames until the image is within restThresholdDb of the settled
+    // image, frames until settled, and the DE cost of a frame once settled.
+    int restFramesToThreshold = -1, restFramesToSettle = -1;
+    double settledDeEvalsPerPixel = 0.0;
+};
+
+FlightResult fly(const Preset& preset, const FlightSettings& settings);
+
+}  // namespace fraktal::viewport
