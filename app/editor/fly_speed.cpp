@@ -26,7 +26,11 @@ vec3 flyStep(const Formula& f, const vec3& eye, const vec3& direction, double dt
     const double d = safeDistance(f, eye);
     double step = flySpeed(f, eye, rule) * dt * boost;
     if (d > 0.0) step = std::min(step, rule.maxStepFraction * d);
-    return direction / len * step;
+    const vec3 move = direction / len * step;
+    const double standoff = rule.standoff * f.boundRadius;
+    // Near the surface: only steps that keep the standoff or move away from the surface.
+    if (d > 0.0 && safeDistance(f, eye + move) < std::min(standoff, d)) return vec3(0.0);
+    return move;
 }
 
 }  // namespace fraktal::editor

@@ -13,6 +13,9 @@ struct FlyRule {
     double speedPerDistance = 1.0;   // units per second per unit of distance to the surface
     double maxStepFraction = 0.5;    // a step covers at most this share of the distance
     double escapeSpeed = 1e-3;       // units per second when the eye is inside the fractal
+    // Closest approach, as a share of formula.boundRadius: below it double precision can no
+    // longer tell the eye from the surface, so only steps that move away are taken.
+    double standoff = 1e-9;
 };
 
 // A lower bound of the distance from `eye` to the fractal. Inside formula.boundRadius it is

@@ -1,0 +1,272 @@
+// The editor's UI-independent rules: undo/redo restores every state exactly, value edits do
+// not recompile while structure edits do, and the fly-speed rule.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "app/editor/actions.hpp"
+#include "app/editor/camera_controller.hpp"
+#include "app/editor/document.hpp"
+#include "app/editor/fly_speed.hpp"
+#include "app/editor/formula_edits.hpp"
+#include "app/editor/preset_files.hpp"
+#include "app/editor/undo_history.hpp"
+
+namespace fraktal::editor {
+namespace {
+
+namespace fs = std::filesystem;
+
+Preset shipped(const char* name) { return loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / name); }
+
+Document documentFrom(const char* name) {
+    Document d;
+    d.preset = shipped(name);
+    return d;
+}
+
+// A scripted sequence of edits of every kind the editor makes.
+std::vector<std::function<void(Document&)>> scriptedEdits() {
+    return {
+        [](Document& d) { setParam(d.preset.formula, 0, 0, vec3(7.25, 0, 0)); },  // mandelbulb power
+        [](Document& d) { d.preset.formula.iterations = 9; },
+        [](Document& d) { addNode(d.preset.formula, *findBlock("box_fold"), 0); },
+        [](Document& d) { duplicateNode(d.preset.formula, 0); },
+        [](Document& d) { moveNode(d.preset.formula, 0, 2); },
+        [](Document& d) { setNodeEnabled(d.preset.formula, 1, false); },
+        [](Document& d) { d.preset.formula.nodes[1].period = 2; },
+        [](Document& d) { setEstimator(d.preset.formula, *findBlock("escape_linear")); },
+        [](Document& d) { removeNode(d.preset.formula, 3); },
+        [](Document& d) { d.preset.camera.position = vec3(0.3, 2.5, 1.0 / 3.0); },
+        [](Document& d) { d.preset.camera.fovY = 61.5; },
+        [](Document& d) { d.viewSlots[2] = d.preset.camera; },
+        [](Document& d) { d.view.exposure = -1.25; },
+        [](Document& d) { d.view.palette = 3; },
+        [](Document& d) { d.preset.formula.bailout = 1.0 / 7.0; },
+    };
+}
+
+TEST(EditorUndo, ScriptedSequenceUndoesAndRedoesToEveryStateExactly) {
+    Document doc = documentFrom("mandelbulb.json");
+    UndoHistory history;
+    history.reset(doc);
+    std::vector<std::string> states{fingerprint(doc)};
+    for (const auto& edit : scriptedEdits()) {
+        edit(doc);
+        ASSERT_TRUE(history.commit(doc)) << "each scripted edit changes the document";
+        states.push_back(fingerprint(doc));
+    }
+    // Every state differs from the one before it, so the comparison below can fail.
+    for (size_t i = 1; i < states.size(); ++i) ASSERT_NE(states[i], states[i - 1]);
+
+    for (size_t i = states.size() - 1; i-- > 0;) {
+        ASSERT_TRUE(history.undo(doc));
+        EXPECT_EQ(fingerprint(doc), states[i]) << "after undo back to state " << i;
+    }
+    EXPECT_FALSE(history.undo(doc));
+    EXPECT_EQ(fingerprint(doc), states.front());
+    // The first state is also structurally the loaded preset (same doubles, same blocks).
+    EXPECT_EQ(doc.preset.formula.structureKey(), shipped("mandelbulb.json").formula.structureKey());
+    EXPECT_EQ(doc.preset.formula.nodes[0].values[0].x, 8.0);
+
+    for (size_t i = 1; i < states.size(); ++i) {
+        ASSERT_TRUE(history.redo(doc));
+        EXPECT_EQ(fingerprint(doc), states[i]) << "after redo to state " << i;
+    }
+    EXPECT_FALSE(history.redo(doc));
+    // Exact doubles, not just a matching text form.
+    EXPECT_EQ(doc.preset.formula.bailout, 1.0 / 7.0);
+    EXPECT_EQ(doc.preset.camera.position.z, 1.0 / 3.0);
+}
+
+TEST(EditorUndo, NewEditAfterUndoDropsTheRedoBranch) {
+    Document doc = documentFrom("menger.json");
+    UndoHistory history;
+    history.reset(doc);
+    doc.preset.formula.iterations = 3;
+    history.commit(doc);
+    history.undo(doc);
+    ASSERT_TRUE(history.canRedo());
+    doc.view.fog = 2.0;
+    EXPECT_TRUE(history.commit(doc));
+    EXPECT_FALSE(history.canRedo());
+    EXPECT_FALSE(history.commit(doc)) << "an unchanged document records nothing";
+}
+
+TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
+    Document doc = documentFrom("mandelbox.json");
+    doc.view.aaCap = 5;
+    doc.view.lightDirection = vec3(0.1, 0.2, 0.3);
+    doc.viewSlots[1] = doc.preset.camera;
+    const fs::path dir = fs::temp_directory_path() / ("fraktal_editor_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "scene.json";
+    Document stored = doc;
+    storeEditorSection(stored);
+    savePresetFile(file, stored.preset);
+    savePresetFile(file, stored.preset);  // second save keeps a .bak of the first
+    EXPECT_TRUE(fs::exists(fs::path(file.string() + ".bak")));
+    Document back;
+    back.preset = loadPreset(file);
+    loadEditorSection(back);
+    EXPECT_EQ(fingerprint(back), fingerprint(doc));
+    fs::remove_all(dir);
+}
+
+TEST(EditorRecompile, ValueEditsKeepTheProgramStructureEditsRecompile) {
+    Formula f = shipped("hybrid_menger_octahedral.json").formula;
+    ProgramTracker tracker;
+    EXPECT_TRUE(tracker.needsRecompile(f)) << "no program yet";
+    tracker.compiled(f);
+
+    // Values: parameters, iterations, bailout, bound, factor, estimator parameters.
+    setParam(f, 2, 0, vec3(2.5, 0, 0));
+    setParam(f, int(f.nodes.size()), 0, vec3(0.9, 1.1, 1.0));
+    f.iterations = 7;
+    f.bailout = 50.0;
+    f.boundRadius = 3.0;
+    f.deFactor = 0.8;
+    EXPECT_FALSE(tracker.needsRecompile(f));
+
+    // Each structure edit on its own needs a new program.
+    const Formula base = f;
+    const std::vector<std::pair<const char*, std::function<void(Formula&)>>> structural{
+        {"add", [](Formula& g) { addNode(g, *findBlock("sphere_fold")); }},
+        {"remove", [](Formula& g) { removeNode(g, 0); }},
+        {"duplicate", [](Formula& g) { duplicateNode(g, 1); }},
+        {"reorder", [](Formula& g) { moveNode(g, 0, 3); }},
+        {"disable", [](Formula& g) { setNodeEnabled(g, 4, false); }},
+        {"period", [](Formula& g) { g.nodes[0].period = 3; }},
+        {"estimator", [](Formula& g) { setEstimator(g, *findBlock("sphere")); }},
+    };
+    for (const auto& [name, edit] : structural) {
+        Formula g = base;
+        edit(g);
+        EXPECT_TRUE(tracker.needsRecompile(g)) << name;
+        ProgramTracker t2 = tracker;
+        t2.compiled(g);
+        EXPECT_FALSE(t2.needsRecompile(g)) << name << ": compiled once, no second compile";
+    }
+}
+
+TEST(EditorFormulaEdits, ParametersAreClampedToTheDeclaredRange) {
+    Formula f = shipped("mandelbulb.json").formula;
+    const ParamDecl& power = f.nodes[0].block->params[0];
+    setParam(f, 0, 0, vec3(1e9, 0, 0));
+    EXPECT_EQ(f.nodes[0].values[0].x, power.max);
+    resetParam(f, 0, 0);
+    EXPECT_EQ(f.nodes[0].values[0], power.defaultValue);
+    EXPECT_FALSE(removeNode(f, 99));
+    EXPECT_FALSE(moveNode(f, 0, 99));
+}
+
+TEST(EditorFormulaEdits, CompileErrorNamesTheNode) {
+    EXPECT_EQ(nodeNamedInLog("GLSL compile error in x:\nnode 3 (box_fold), GLSL line 2: error: ...", 5), 3);
+    EXPECT_EQ(nodeNamedInLog("estimator (box), GLSL line 1: error", 5), 5);
+    EXPECT_EQ(nodeNamedInLog("link error", 5), -1);
+}
+
+TEST(EditorFlySpeed, SpeedIsProportionalToTheDistanceToTheSurface) {
+    // A sphere of radius 1: the DE is exact, so the rule can be checked against the truth.
+    Formula f;
+    f.iterations = 0;
+    f.boundRadius = 2.0;
+    f.estimator = Node::make(*findBlock("sphere"));
+    FlyRule rule;
+    rule.speedPerDistance = 2.0;
+    for (double r : {1.05, 1.2, 1.5, 1.9}) {
+        const vec3 eye(0.0, r, 0.0);
+        EXPECT_NEAR(safeDistance(f, eye), r - 1.0, 1e-12);
+        EXPECT_NEAR(flySpeed(f, eye, rule), 2.0 * (r - 1.0), 1e-12);
+    }
+    EXPECT_LT(flySpeed(f, vec3(1.01, 0, 0), rule), flySpeed(f, vec3(1.5, 0, 0), rule));
+}
+
+TEST(EditorFlySpeed, OutsideTheBoundTheDistanceIsStillALowerBound) {
+    Formula f;
+    f.iterations = 0;
+    f.boundRadius = 2.0;
+    f.estimator = Node::make(*findBlock("sphere"));
+    for (double r : {2.5, 4.0, 10.0}) {
+        const double d = safeDistance(f, vec3(r, 0, 0));
+        EXPECT_LE(d, r - 1.0 + 1e-12) << "never more than the true distance";
+        EXPECT_GT(d, r - 2.0) << "and more than the distance to the bound sphere";
+    }
+}
+
+TEST(EditorFlySpeed, NoFrameStepCrossesTheSurfaceEvenWithALongFrame) {
+    // Fly straight at a Menger sponge with absurdly long frames: the eye must never get inside.
+    const Preset menger = shipped("menger.json");
+    const Formula& f = menger.formula;
+    vec3 eye(0.5, 0.5, 3.0);  // in front of a solid corner column of the sponge
+    const vec3 towards(0.0, 0.0, -1.0);
+    double lastDistance = 0.0;
+    for (int frame = 0; frame < 200; ++frame) {
+        const vec3 step = flyStep(f, eye, towards, /*dt=*/5.0, /*boost=*/4.0);
+        EXPECT_LE(length(step), 0.5 * safeDistance(f, eye) + 1e-15);
+        eye += step;
+        const double d = safeDistance(f, eye);
+        ASSERT_GT(d, 0.0) << "frame " << frame << ": the eye went through the surface";
+        ASSERT_FALSE(evaluate(f, eye).inside) << "frame " << frame;
+        lastDistance = d;
+    }
+    EXPECT_LT(lastDistance, 1e-3) << "and it did get close: the rule slows down, it does not stop early";
+}
+
+TEST(EditorCamera, OrbitKeepsTheDistanceAndFlyKeepsTheLookDistance) {
+    Camera cam;
+    cam.position = vec3(0, 0, 4);
+    CameraControls controls;
+    CameraInput in;
+    in.rotateDrag = vec2(120, -40);
+    ASSERT_TRUE(orbitCamera(cam, in, controls));
+    EXPECT_NEAR(length(cam.position - cam.target), 4.0, 1e-9);
+    EXPECT_GT(std::abs(cam.position.x), 0.5);
+
+    const Formula f = shipped("mandelbulb.json").formula;
+    const double look = length(cam.target - cam.position);
+    CameraInput fly;
+    fly.move = vec3(0, 0, 1);
+    fly.dt = 0.1;
+    const vec3 before = cam.position;
+    ASSERT_TRUE(flyCamera(cam, f, fly, controls));
+    EXPECT_NEAR(length(cam.target - cam.position), look, 1e-9);
+    EXPECT_NEAR(length(cam.position - before), std::min(0.1 * safeDistance(f, before), 0.5 * safeDistance(f, before)),
+                1e-9);
+}
+
+TEST(EditorFiles, RecentListIsMostRecentFirstWithoutDuplicates) {
+    std::vector<std::string> recent;
+    pushRecent(recent, "/tmp/a.json");
+    pushRecent(recent, "/tmp/b.json");
+    pushRecent(recent, "/tmp/./a.json");
+    ASSERT_EQ(recent.size(), 2u);
+    EXPECT_EQ(recent[0], "/tmp/a.json");
+    for (int i = 0; i < 20; ++i) pushRecent(recent, "/tmp/x" + std::to_string(i) + ".json", 10);
+    EXPECT_EQ(recent.size(), 10u);
+}
+
+TEST(EditorFiles, UnsavedMarkFollowsEditsAndSaves) {
+    EditorState s;
+    const fs::path dir = fs::temp_directory_path() / ("fraktal_editor_dirty_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    ASSERT_TRUE(openDocument(s, fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "menger.json"));
+    EXPECT_FALSE(isDirty(s));
+    s.doc.preset.formula.iterations = 2;
+    EXPECT_TRUE(isDirty(s));
+    ASSERT_TRUE(saveDocumentAs(s, dir / "m.json"));
+    EXPECT_FALSE(isDirty(s));
+    EXPECT_FALSE(openDocument(s, dir / "missing.json"));
+    EXPECT_TRUE(s.status.error);
+    EXPECT_NE(s.status.text.find("missing.json"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fraktal::editor
