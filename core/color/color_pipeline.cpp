@@ -66,6 +66,17 @@ vec3 ColorPipeline::fromLinearRec709(const vec3& rgb, const std::string& working
 }
 
 std::optional<Chromaticities> ColorPipeline::chromaticities(const std::string& space) const {
+    // Spaces with published primaries and white (ITU-R BT.709; SMPTE ST 2065-1 and S-2014-004 for
+    // AP0/AP1 with the ACES white). Measuring through the config's XYZ D65 role would give the
+    // chromatically adapted (D65) values instead of the native white.
+    const std::string name = resolveSpace(space);
+    const vec2 d65(0.3127, 0.3290), aces(0.32168, 0.33767);
+    if (name == "Linear Rec.709 (sRGB)" || name == "lin_rec709" || name == "lin_srgb")
+        return Chromaticities{{vec2(0.64, 0.33), vec2(0.30, 0.60), vec2(0.15, 0.06), d65}};
+    if (name == "ACEScg")
+        return Chromaticities{{vec2(0.713, 0.293), vec2(0.165, 0.830), vec2(0.128, 0.044), aces}};
+    if (name == "ACES2065-1")
+        return Chromaticities{{vec2(0.7347, 0.2653), vec2(0.0, 1.0), vec2(0.0001, -0.077), aces}};
     const char* xyz = config_->getColorSpace("cie_xyz_d65_interchange") ? "cie_xyz_d65_interchange" : nullptr;
     if (!xyz) return std::nullopt;
     const std::string source = resolveSpace(space);

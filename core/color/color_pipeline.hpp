@@ -40,7 +40,8 @@ public:
     // Linear Rec.709 (the preset's colour convention) into `workingSpace`. When the config has no
     // linear Rec.709 space to convert from, colours pass through unchanged.
     vec3 fromLinearRec709(const vec3& rgb, const std::string& workingSpace) const;
-    // The primaries and white of a space, measured through the config's CIE XYZ D65 role; empty
+    // The primaries and white of a space: published values for the shipped spaces, else measured
+    // through the config's CIE XYZ D65 role (then the white is D65-adapted); empty
     // when the config does not define that role.
     std::optional<Chromaticities> chromaticities(const std::string& space) const;
     // Checks display and view exist; throws listing the ones that do.

@@ -37,24 +37,24 @@ struct RenderSettings {
 // suits fractals of any size.
 struct ShadingSettings {
     vec3 lightDirection{0.55, 0.75, 0.35};  // toward the key light (normalised on use)
-    vec3 lightColor{2.6, 2.45, 2.2};
-    vec3 fillColor{0.32, 0.38, 0.48};  // sky/fill hemisphere
-    double specular = 0.35;
+    vec3 lightColor{1.7, 1.6, 1.45};
+    vec3 fillColor{0.22, 0.27, 0.36};  // sky/fill hemisphere
+    double specular = 0.25;
     double shininess = 40.0;
     int shadowSteps = 96;  // 0: no shadows
     double shadowSoftness = 12.0;
     int aoSteps = 5;  // 0: no ambient occlusion
-    double aoDistance = 0.08;  // x bound
-    double aoStrength = 0.85;
+    double aoDistance = 0.1;  // x bound
+    double aoStrength = 1.0;
     // Orbit-trap palette: index = offset + scale * dot(weights, trap), trap = (min|x|, min|y|,
     // min|z|, min|p|) over the orbit (seed 3.3); colour = a + b cos(2 pi (c index + d)).
     vec4 trapWeights{0.6, 0.2, 0.4, 0.8};
     double trapScale = 1.0;
     double trapOffset = 0.0;
-    vec3 paletteA{0.62, 0.55, 0.48};
-    vec3 paletteB{0.32, 0.28, 0.26};
-    vec3 paletteC{1.0, 1.0, 1.0};
-    vec3 paletteD{0.0, 0.12, 0.25};
+    vec3 paletteA{0.6, 0.5, 0.44};
+    vec3 paletteB{0.32, 0.26, 0.24};
+    vec3 paletteC{0.8, 0.8, 0.8};
+    vec3 paletteD{0.0, 0.15, 0.3};
     vec3 fogColor{0.55, 0.6, 0.7};
     double fogDensity = 0.0;  // per bound radius travelled
     double reflection = 0.0;  // Fresnel F0 (0: no reflections)

@@ -1,0 +1,112 @@
+// Golden tests of the still path: the GL renderer (float GLSL) against the CPU reference (double
+// DE, the same marcher and shading) on every shipped preset, at 96x64, one sample per pixel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/color/color_pipeline.hpp"
+#include "core/cpu_render/cpu_renderer.hpp"
+#include "core/render/still_renderer.hpp"
+#include "test_support.hpp"
+
+namespace fraktal {
+namespace {
+
+struct DisplayImage {
+    std::vector<float> rgb;  // display-encoded, clamped to [0, 1]
+    double coverage = 0.0;   // share of pixels that hit the fractal
+};
+
+DisplayImage toDisplay(const ImageStrip& image, const DisplayTransform& display) {
+    DisplayImage out;
+    const size_t pixels = size_t(image.width) * size_t(image.rows);
+    out.rgb.resize(pixels * 3);
+    for (size_t i = 0; i < pixels; ++i) {
+        for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = image.rgba[4 * i + c];
+        out.coverage += image.rgba[4 * i + 3];
+    }
+    out.coverage /= double(pixels);
+    display.apply(out.rgb);
+    for (float& v : out.rgb) v = std::clamp(v, 0.0f, 1.0f);
+    return out;
+}
+
+double psnr(const std::vector<float>& a, const std::vector<float>& b) {
+    double sum = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) sum += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
+    const double mse = sum / double(a.size());
+    return mse > 0 ? 10.0 * std::log10(1.0 / mse) : 200.0;
+}
+
+double standardDeviation(const std::vector<float>& v) {
+    double mean = 0.0, sq = 0.0;
+    for (float x : v) mean += x;
+    mean /= double(v.size());
+    for (float x : v) sq += (x - mean) * (x - mean);
+    return std::sqrt(sq / double(v.size()));
+}
+
+ImageStrip renderGL(const Preset& preset, const RenderSettings& r, const ShadingParams& shading) {
+    test::glContext();
+    gl::StillRenderer renderer(preset.formula, 128);
+    renderer.setScene(preset.formula, preset.camera, r, shading);
+    ImageStrip image;
+    image.resize(r.width, 0, r.height);
+    for (const TileRect& tile : tilesOf({0, 0, r.width, r.height}, 128)) renderer.renderTile(tile, image);
+    return image;
+}
+
+class GoldenTest : public ::testing::TestWithParam<std::filesystem::path> {};
+
+TEST_P(GoldenTest, GlMatchesCpuReference) {
+    const Preset preset = loadPreset(GetParam());
+    RenderSettings r = preset.render;
+    r.width = 96;
+    r.height = 64;
+    r.spp = 1;
+    const ShadingParams shading = resolveShading(preset.shading, r, preset.formula);
+    const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
+    const DisplayTransform display(color, "scene_linear", "sRGB", "Standard", 0.0);
+
+    const DisplayImage gpu = toDisplay(renderGL(preset, r, shading), display);
+    const DisplayImage cpu = toDisplay(renderReference(preset.formula, preset.camera, r, shading), display);
+
+    const double p = psnr(gpu.rgb, cpu.rgb);
+    std::printf("%s: PSNR %.1f dB, coverage GL %.3f CPU %.3f\n", GetParam().filename().c_str(), p, gpu.coverage,
+                cpu.coverage);
+    EXPECT_GE(p, 35.0);
+    // Non-trivial: the fractal covers a sensible share of the frame and the image is not flat.
+    EXPECT_GT(cpu.coverage, 0.05);
+    EXPECT_LT(cpu.coverage, 0.98);
+    EXPECT_NEAR(gpu.coverage, cpu.coverage, 0.03);
+    EXPECT_GT(standardDeviation(gpu.rgb), 0.05);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedPresets, GoldenTest, ::testing::ValuesIn(test::shippedPresets()),
+                         [](const auto& info) { return info.param.stem().string(); });
+
+// The reference really depends on the shading: turning shadows off changes the image (so the
+// golden comparison above compares shading, not only silhouettes).
+TEST(CpuReference, ShadowsAndOcclusionChangeTheImage) {
+    const Preset preset = loadPreset(test::sourceDir() / "presets" / "menger.json");
+    RenderSettings r;
+    r.width = 48;
+    r.height = 32;
+    ShadingSettings plain = preset.shading;
+    plain.shadowSteps = 0;
+    plain.aoSteps = 0;
+    const ImageStrip a = renderReference(preset.formula, preset.camera, r, resolveShading(preset.shading, r, preset.formula));
+    const ImageStrip b = renderReference(preset.formula, preset.camera, r, resolveShading(plain, r, preset.formula));
+    double difference = 0.0;
+    int covered = 0;
+    for (size_t i = 0; i < a.rgba.size(); i += 4) {
+        if (a.rgba[i + 3] == 0.0f) continue;
+        ++covered;
+        for (int c = 0; c < 3; ++c) difference += std::abs(a.rgba[i + c] - b.rgba[i + c]) / 3.0;
+    }
+    ASSERT_GT(covered, 100);
+    EXPECT_GT(difference / covered, 0.005);  // mean change of a covered pixel's colour
+}
+
+}  // namespace
+}  // namespace fraktal
