@@ -62,6 +62,7 @@ struct BlockDesc {
     ApplyFn apply = nullptr;        // non-estimators
     EstimateFn estimate = nullptr;  // estimators
     Membership membership = Membership::Distance;
+    bool custom = false;  // a user's GLSL block (core/custom_block.hpp): no CPU body
 
     bool isEstimator() const { return category == Category::Estimator; }
     int paramIndex(std::string_view name) const;

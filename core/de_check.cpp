@@ -8,6 +8,20 @@
 
 namespace fraktal {
 
+namespace {
+
+constexpr size_t kBatch = 512;         // baseline samples evaluated together
+constexpr int kBisectionPoints = 31;   // interior points per refinement round
+constexpr int kBisectionRounds = 8;    // 32^8: a step refined to ~1e-12 of itself
+
+std::vector<Evaluation> evaluateAll(FormulaSampler& s, const std::vector<vec3>& points) {
+    std::vector<Evaluation> out(points.size());
+    s.evaluate(points, out);
+    return out;
+}
+
+}  // namespace
+
 bool clipToBound(const Formula& f, const vec3& origin, const vec3& dir, double& tStart, double& tEnd) {
     const double b = dot(origin, dir);
     const double c = dot(origin, origin) - f.boundRadius * f.boundRadius;
@@ -19,27 +33,59 @@ bool clipToBound(const Formula& f, const vec3& origin, const vec3& dir, double& 
     return tEnd > tStart;
 }
 
-BaselineHit baselineMarch(const Formula& f, const vec3& origin, const vec3& dir, double tStart, double tEnd,
+BaselineHit baselineMarch(FormulaSampler& sampler, const vec3& origin, const vec3& dir, double tStart, double tEnd,
                           double step) {
-    double previous = tStart;
-    if (evaluate(f, origin + dir * tStart).inside) return {true, tStart};
-    for (double t = tStart + step; t <= tEnd + step; t += step) {
-        if (!evaluate(f, origin + dir * t).inside) {
-            previous = t;
-            continue;
+    // Fixed steps, a batch at a time, up to the first sample inside.
+    double lo = tStart, hi = -1.0;
+    std::vector<vec3> points;
+    for (long first = 0; hi < 0.0; first += long(kBatch)) {
+        points.clear();
+        for (size_t i = 0; i < kBatch; ++i) {
+            const double t = tStart + double(first + long(i)) * step;
+            if (t > tEnd + step) break;
+            points.push_back(origin + dir * t);
         }
-        double lo = previous, hi = t;
-        for (int i = 0; i < 48; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            (evaluate(f, origin + dir * mid).inside ? hi : lo) = mid;
+        if (points.empty()) return {};
+        const auto e = evaluateAll(sampler, points);
+        for (size_t i = 0; i < e.size(); ++i) {
+            const double t = tStart + double(first + long(i)) * step;
+            if (e[i].inside) {
+                if (t == tStart) return {true, tStart};
+                hi = t;
+                break;
+            }
+            lo = t;
         }
-        return {true, hi};
     }
-    return {};
+    // Refine the crossing in [lo, hi]: lo is outside, hi inside.
+    for (int round = 0; round < kBisectionRounds; ++round) {
+        points.clear();
+        for (int k = 1; k <= kBisectionPoints; ++k) points.push_back(origin + dir * (lo + (hi - lo) * k / (kBisectionPoints + 1)));
+        const auto e = evaluateAll(sampler, points);
+        double newHi = hi;
+        for (int k = 0; k < kBisectionPoints; ++k) {
+            const double t = lo + (hi - lo) * (k + 1) / (kBisectionPoints + 1);
+            if (e[size_t(k)].inside) {
+                newHi = t;
+                break;
+            }
+        }
+        const double width = (hi - lo) / (kBisectionPoints + 1);
+        hi = newHi;
+        lo = std::max(lo, newHi - width);
+    }
+    return {true, hi};
 }
 
-ConservativenessReport checkConservativeness(const Formula& f, const Camera& camera,
+BaselineHit baselineMarch(const Formula& f, const vec3& origin, const vec3& dir, double tStart, double tEnd,
+                          double step) {
+    CpuSampler s(f);
+    return baselineMarch(s, origin, dir, tStart, tEnd, step);
+}
+
+ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Camera& camera,
                                              const ConservativenessOptions& options) {
+    const Formula& f = sampler.formula();
     ConservativenessReport report;
     std::mt19937_64 rng(options.seed);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -64,45 +110,65 @@ ConservativenessReport checkConservativeness(const Formula& f, const Camera& cam
         double t0, t1;
         ++report.rays;
         if (!clipToBound(f, origin, dir, t0, t1)) continue;
-        const BaselineHit hit = baselineMarch(f, origin, dir, t0, t1, step);
+        const BaselineHit hit = baselineMarch(sampler, origin, dir, t0, t1, step);
         if (!hit.hit) continue;
         ++report.raysHit;
         // Compare the DE with the distance to the hit at points spread along the ray before it.
+        std::vector<vec3> points;
+        std::vector<double> ts;
         for (double t = t0; t < hit.t - minGap; t += std::max(step, (hit.t - t0) / 400.0)) {
-            const vec3 p = origin + dir * t;
-            const double ratio = distanceEstimate(f, p) / (hit.t - t);
+            points.push_back(origin + dir * t);
+            ts.push_back(t);
+        }
+        const auto e = evaluateAll(sampler, points);
+        for (size_t i = 0; i < points.size(); ++i) {
+            const double ratio = e[i].distance / (hit.t - ts[i]);
             ++report.samples;
             if (!(ratio <= report.worstRatio)) {
                 report.worstRatio = std::isfinite(ratio) ? ratio : std::numeric_limits<double>::infinity();
-                report.worstPoint = p;
+                report.worstPoint = points[i];
             }
         }
     }
     return report;
 }
 
-GridReport evaluateGrid(const Formula& f, int n) {
+ConservativenessReport checkConservativeness(const Formula& f, const Camera& camera,
+                                             const ConservativenessOptions& options) {
+    CpuSampler s(f);
+    return checkConservativeness(s, camera, options);
+}
+
+GridReport evaluateGrid(FormulaSampler& sampler, int n) {
+    const Formula& f = sampler.formula();
     GridReport g;
     g.minDistance = std::numeric_limits<double>::infinity();
     g.maxDistance = -g.minDistance;
     const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < n; ++i)
+    std::vector<vec3> slice;
+    for (int i = 0; i < n; ++i) {
+        slice.clear();
         for (int j = 0; j < n; ++j)
-            for (int k = 0; k < n; ++k) {
-                const vec3 p = (vec3(i, j, k) + 0.5) / double(n) * 2.0 - 1.0;
-                const Evaluation e = evaluate(f, p * f.boundRadius);
-                ++g.points;
-                if (!std::isfinite(e.distance)) {
-                    ++g.nonFinite;
-                    continue;
-                }
-                g.inside += e.inside;
-                g.minDistance = std::min(g.minDistance, e.distance);
-                g.maxDistance = std::max(g.maxDistance, e.distance);
+            for (int k = 0; k < n; ++k) slice.push_back(((vec3(i, j, k) + 0.5) / double(n) * 2.0 - 1.0) * f.boundRadius);
+        for (const Evaluation& e : evaluateAll(sampler, slice)) {
+            ++g.points;
+            if (!std::isfinite(e.distance)) {
+                ++g.nonFinite;
+                continue;
             }
+            g.inside += e.inside;
+            g.minDistance = std::min(g.minDistance, e.distance);
+            g.maxDistance = std::max(g.maxDistance, e.distance);
+        }
+    }
     g.secondsPerEvaluation =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / double(std::max(1L, g.points));
     return g;
+}
+
+GridReport evaluateGrid(const Formula& f, int n) {
+    CpuSampler s(f);
+    return evaluateGrid(s, n);
 }
 
 }  // namespace fraktal

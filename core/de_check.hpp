@@ -4,11 +4,33 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
 
 namespace fraktal {
+
+// Evaluates a formula at many points at once. The CPU one is exact (double); the GL one
+// (gl::GpuSampler, core/gl/de_probe.hpp) serves formulas with custom GLSL blocks.
+class FormulaSampler {
+public:
+    virtual ~FormulaSampler() = default;
+    virtual const Formula& formula() const = 0;
+    virtual void evaluate(std::span<const vec3> points, std::span<Evaluation> out) = 0;
+};
+
+class CpuSampler final : public FormulaSampler {
+public:
+    explicit CpuSampler(const Formula& f) : formula_(f) {}
+    const Formula& formula() const override { return formula_; }
+    void evaluate(std::span<const vec3> points, std::span<Evaluation> out) override {
+        for (size_t i = 0; i < points.size(); ++i) out[i] = fraktal::evaluate(formula_, points[i]);
+    }
+
+private:
+    const Formula& formula_;
+};
 
 struct BaselineHit {
     bool hit = false;
@@ -16,6 +38,8 @@ struct BaselineHit {
 };
 
 // Marches [tStart, tEnd] in steps of `step`, testing membership; bisects the first crossing.
+BaselineHit baselineMarch(FormulaSampler& sampler, const vec3& origin, const vec3& dir, double tStart, double tEnd,
+                          double step);
 BaselineHit baselineMarch(const Formula& f, const vec3& origin, const vec3& dir, double tStart, double tEnd,
                           double step);
 
@@ -41,6 +65,8 @@ struct ConservativenessReport {
 
 // Half the rays start at the camera through random pixels, half at random points on the bound
 // sphere aimed at random points inside it.
+ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Camera& camera,
+                                             const ConservativenessOptions& options = {});
 ConservativenessReport checkConservativeness(const Formula& f, const Camera& camera,
                                              const ConservativenessOptions& options = {});
 
@@ -53,6 +79,7 @@ struct GridReport {
 };
 
 // The DE on an n^3 grid over the bound's cube.
+GridReport evaluateGrid(FormulaSampler& sampler, int n);
 GridReport evaluateGrid(const Formula& f, int n);
 
 }  // namespace fraktal

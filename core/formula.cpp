@@ -1,6 +1,7 @@
 #include "core/formula.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace fraktal {
 
@@ -43,8 +44,16 @@ std::string Formula::structureKey() const {
     return key;
 }
 
+bool Formula::cpuEvaluable() const {
+    for (const Node& n : nodes)
+        if (n.block->custom) return false;
+    return !estimator.block->custom;
+}
+
 // Mirrors formulaDE() in shaders/formula.glsl: keep the two in step.
 Evaluation evaluate(const Formula& f, const vec3& pos) {
+    if (f.estimator.block->custom)
+        throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation; use gl::DEProbe");
     Evaluation e;
     P4 p{pos, 1.0};
     const vec3 c = pos;
@@ -52,7 +61,10 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
     const int iterations = std::clamp(f.iterations, 0, kMaxIterations);
     for (int i = 0; i < iterations; ++i) {
         for (const Node& n : f.nodes)
-            if (n.enabled && n.runsOn(i)) n.block->apply(p, c, n.args());
+            if (n.enabled && n.runsOn(i)) {
+                if (!n.block->apply) throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation");
+                n.block->apply(p, c, n.args());
+            }
         e.trap.value = min(e.trap.value, vec4(abs(p.xyz), length(p.xyz)));
         e.iterations = i + 1;
         if (dot(p.xyz, p.xyz) > bailout2) {
@@ -61,7 +73,7 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
         }
     }
     e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
-    e.inside = f.estimator.block->membership == Membership::EscapeTime ? !e.escaped : e.distance <= 0.0;
+    e.inside = isInside(*f.estimator.block, e.distance, e.escaped);
     return e;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/block.hpp"
+#include "core/custom_block.hpp"
 
 namespace fraktal {
 
@@ -38,6 +39,11 @@ struct Formula {
     double boundRadius = 4.0;
     // Multiplies the estimate: below 1 makes an overshooting hybrid safe (`fraktal check`).
     double deFactor = 1.0;
+    // Keeps the user's GLSL blocks that nodes point to alive (shared, so copies stay valid).
+    CustomBlocks customBlocks;
+
+    // False when a node is a custom GLSL block: evaluate it with gl::DEProbe instead.
+    bool cpuEvaluable() const;
 
     // Structure: what needs a recompile when it changes (block ids, order, enable, period,
     // phase). Parameter values, iterations, bailout, bound and factor are uniforms.
@@ -58,6 +64,13 @@ struct Evaluation {
     bool inside = false;    // membership, per the estimator's Membership rule
 };
 
+// Membership by the estimator's rule: escape-time formulas are inside where the orbit stayed
+// bounded; IFS-type ones where the estimate is <= 0.
+inline bool isInside(const BlockDesc& estimator, double distance, bool escaped) {
+    return estimator.membership == Membership::EscapeTime ? !escaped : distance <= 0.0;
+}
+
+// Throws std::logic_error for a formula that is not cpuEvaluable().
 Evaluation evaluate(const Formula& f, const vec3& pos);
 inline double distanceEstimate(const Formula& f, const vec3& pos) { return evaluate(f, pos).distance; }
 

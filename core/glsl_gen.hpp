@@ -19,7 +19,7 @@ inline constexpr int kFormulaLineBase = 5000;
 inline constexpr int kNodeLineStride = 10000;
 
 struct GeneratedFormula {
-    std::string code;  // defines formulaDE(vec3, out vec4, out int) and DE(vec3)
+    std::string code;  // defines formulaEval(vec3, out vec4, out int, out bool), formulaDE(vec3, out vec4, out int), DE(vec3)
     std::vector<std::string> nodeNames;  // index k: "node 3 (box_fold)"
 };
 

@@ -121,14 +121,22 @@ private:
     std::set<std::string> seen_;
 };
 
-Node parseNode(const std::string& file, const json& j, const std::string& path) {
+// Custom blocks first (a preset may not redefine a built-in id; CustomBlock::validate refuses).
+const BlockDesc* lookUpBlock(const std::string& id, const CustomBlocks& custom) {
+    for (const auto& b : custom)
+        if (b->desc().id == id) return &b->desc();
+    return findBlock(id);
+}
+
+Node parseNode(const std::string& file, const json& j, const std::string& path, const CustomBlocks& custom) {
     Reader r(file, j, path);
     const json& id = r.at("block");
     if (!id.is_string()) r.fail("expected a block id string, found " + Reader::typeName(id), "block");
-    const BlockDesc* block = findBlock(id.get<std::string>());
+    const BlockDesc* block = lookUpBlock(id.get<std::string>(), custom);
     if (!block) {
         std::string known;
         for (const BlockDesc& b : allBlocks()) known += (known.empty() ? "" : ", ") + std::string(b.id);
+        for (const auto& b : custom) known += ", " + std::string(b->desc().id);
         r.fail("unknown block '" + id.get<std::string>() + "' (known blocks: " + known + ")", "block");
     }
     Node n = Node::make(*block);
@@ -166,6 +174,19 @@ Formula parseFormula(const std::string& file, const json& j) {
     f.bailout = r.number("bailout", f.bailout, 1e-3, 1e10);
     f.boundRadius = r.number("boundRadius", f.boundRadius, 1e-3, 1e4);
     f.deFactor = r.number("deFactor", f.deFactor, 1e-3, 2.0);
+    if (r.has("customBlocks")) {
+        const json& blocks = r.at("customBlocks");
+        if (!blocks.is_array()) r.fail("expected an array of custom blocks", "customBlocks");
+        if (blocks.size() > size_t(kMaxCustomBlocks))
+            r.fail("more than " + std::to_string(kMaxCustomBlocks) + " custom blocks", "customBlocks");
+        for (size_t i = 0; i < blocks.size(); ++i) {
+            const std::string where = r.child("customBlocks") + "[" + std::to_string(i) + "]";
+            auto block = parseCustomBlock(blocks[i], file, where);
+            if (lookUpBlock(block->definition().id, f.customBlocks))
+                throw PresetError(file, where + ".id", "'" + block->definition().id + "' is defined twice");
+            f.customBlocks.push_back(std::move(block));
+        }
+    }
     const json& nodes = r.at("nodes");
     const std::string path = r.child("nodes");
     if (!nodes.is_array()) r.fail("expected an array of nodes, found " + Reader::typeName(nodes), "nodes");
@@ -174,7 +195,7 @@ Formula parseFormula(const std::string& file, const json& j) {
         r.fail("too many nodes (" + std::to_string(nodes.size()) + "; at most " + std::to_string(kMaxNodes) + ")", "nodes");
     for (size_t i = 0; i < nodes.size(); ++i) {
         const std::string nodePath = path + "[" + std::to_string(i) + "]";
-        Node n = parseNode(file, nodes[i], nodePath);
+        Node n = parseNode(file, nodes[i], nodePath, f.customBlocks);
         const bool last = i + 1 == nodes.size();
         if (n.block->isEstimator() && !last)
             throw PresetError(file, nodePath, "estimator '" + std::string(n.block->id) + "' may only close the node list");
@@ -448,6 +469,10 @@ json presetToJson(const Preset& p) {
     if (p.formula.bailout != defaults.bailout) f["bailout"] = p.formula.bailout;
     if (p.formula.boundRadius != defaults.boundRadius) f["boundRadius"] = p.formula.boundRadius;
     if (p.formula.deFactor != defaults.deFactor) f["deFactor"] = p.formula.deFactor;
+    if (!p.formula.customBlocks.empty()) {
+        f["customBlocks"] = json::array();
+        for (const auto& b : p.formula.customBlocks) f["customBlocks"].push_back(customBlockToJson(*b));
+    }
     json nodes = json::array();
     for (const Node& n : p.formula.nodes) nodes.push_back(nodeJson(n));
     nodes.push_back(nodeJson(p.formula.estimator));

@@ -11,21 +11,31 @@ uniform float u_boundRadius;
 //@FRAKTAL_NODES
 
 // Returns the distance estimate at pos; trap receives the orbit trap (min |x|, |y|, |z| and
-// min |p| over the iterations, seed 3.3); iterations the count before escape.
-float formulaDE(vec3 pos, out vec4 trap, out int iterations) {
+// min |p| over the iterations, seed 3.3); iterations the count before escape; escaped whether
+// the orbit passed the bailout (membership for escape-time formulas).
+float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped) {
     vec4 p = vec4(pos, 1.0);
     vec3 c = pos;
     trap = vec4(1e20);
     iterations = 0;
+    escaped = false;
     float bailout2 = u_bailout * u_bailout;
     int n = clamp(u_iterations, 0, FRAKTAL_MAX_ITERATIONS);
     for (int i = 0; i < n; ++i) {
 //@FRAKTAL_LOOP
         trap = min(trap, vec4(abs(p.xyz), length(p.xyz)));
         iterations = i + 1;
-        if (dot(p.xyz, p.xyz) > bailout2) break;
+        if (dot(p.xyz, p.xyz) > bailout2) {
+            escaped = true;
+            break;
+        }
     }
 //@FRAKTAL_ESTIMATE
+}
+
+float formulaDE(vec3 pos, out vec4 trap, out int iterations) {
+    bool escaped;
+    return formulaEval(pos, trap, iterations, escaped);
 }
 
 float DE(vec3 pos) {

@@ -101,6 +101,16 @@ const BadPreset kBadPresets[] = {
     {"too_many_nodes.json", "formula.nodes", "too many nodes (201; at most 64)"},
     {"unknown_node_field.json", "formula.nodes[0].parms", "unknown field"},
     {"estimator_disabled.json", "formula.nodes[0].enabled", "the estimator cannot be disabled"},
+    {"custom_glsl_unbounded_loop.json", "formula.customBlocks[0].glsl", "line 1: loops ('while') are not allowed"},
+    {"custom_glsl_preprocessor.json", "formula.customBlocks[0].glsl", "preprocessor directives are not allowed"},
+    {"custom_block_builtin_id.json", "formula.customBlocks[0].id", "'box_fold' is a built-in block"},
+    {"custom_block_reserved_param.json", "formula.customBlocks[0].params[0].name", "'p' is reserved"},
+    {"custom_block_defined_twice.json", "formula.customBlocks[1].id", "'spin' is defined twice"},
+    {"custom_block_forbidden_word.json", "formula.customBlocks[0].glsl", "'gl_WorkGroupID' is not allowed"},
+    {"custom_estimator_without_return.json", "formula.customBlocks[0].glsl", "must return the distance"},
+    {"custom_block_unknown_category.json", "formula.customBlocks[0].category", "expected fold, transform"},
+    {"custom_block_default_out_of_range.json", "formula.customBlocks[0].params[0].default", "outside [min, max]"},
+    {"a_directory.json", "", "is a directory, not a preset file"},
 };
 
 TEST(Preset, EveryMalformedPresetGivesAClearError) {

@@ -1,8 +1,9 @@
-// `fraktal check PRESET`: load a preset, print its formula, evaluate the DE on a grid and
-// against the seed's baseline marcher, and say whether marching it is safe.
+// `fraktal check PRESET`: load a preset, print its formula, compile its GLSL, evaluate the DE on
+// a grid and against the seed's baseline marcher, and say whether marching it is safe.
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <random>
 
 #include "cli/commands.hpp"
 #include "core/de_check.hpp"
@@ -21,47 +22,56 @@ struct CheckOptions {
     uint64_t seed = 1;
 };
 
-// Compiles the formula's GLSL on the GL driver and compares it with the CPU at random points.
-// Returns false on a compile error; a missing GL context is reported but is not the preset's fault.
-bool checkGlsl(const Formula& f, uint64_t seed) {
-    std::unique_ptr<gl::HeadlessContext> context;
-    try {
-        context = gl::HeadlessContext::create();
-    } catch (const std::exception& e) {
-        std::printf("GLSL: not checked (%s)\n", e.what());
-        return true;
+// GPU (float) against CPU (double) at random points in the bound; the count that agree.
+void compareGpuWithCpu(const Formula& f, gl::DEProbe& probe, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-f.boundRadius, f.boundRadius);
+    std::vector<vec3> points(2000);
+    for (vec3& p : points) p = vec3(u(rng), u(rng), u(rng));
+    const auto gpu = probe.evaluate(f, points);
+    size_t agree = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+        const double cpu = distanceEstimate(f, points[i]);
+        agree += std::abs(gpu[i].distance - cpu) <= 1e-4 * std::max(std::abs(cpu), 0.1);
     }
-    try {
-        gl::DEProbe probe(f);
-        std::vector<vec3> points(2000);
-        uint64_t state = seed * 6364136223846793005ull + 1442695040888963407ull;
-        auto next = [&] {
-            state = state * 6364136223846793005ull + 1442695040888963407ull;
-            return double(state >> 11) / double(1ull << 53) * 2.0 - 1.0;
-        };
-        for (vec3& p : points) p = vec3(next(), next(), next()) * f.boundRadius;
-        const auto gpu = probe.evaluate(f, points);
-        size_t agree = 0;
-        for (size_t i = 0; i < points.size(); ++i) {
-            const double cpu = distanceEstimate(f, points[i]);
-            agree += std::abs(gpu[i].distance - cpu) <= 1e-4 * std::max(std::abs(cpu), 0.1);
-        }
-        // Points that disagree sit where the orbit's escape iteration flips under rounding.
-        std::printf("GLSL: compiles on %s; GPU (float) and CPU (double) agree within 1e-4 at %zu of %zu points\n",
-                    context->renderer().c_str(), agree, points.size());
-        return true;
-    } catch (const std::exception& e) {
-        std::printf("PROBLEM: %s\n", e.what());
-        return false;
-    }
+    // Points that disagree sit where the orbit's escape iteration flips under rounding.
+    std::printf("GPU (float) and CPU (double) agree within 1e-4 at %zu of %zu points\n", agree, points.size());
 }
 
 int runCheck(const CheckOptions& o) {
     const Preset preset = loadPreset(o.preset);
+    const Formula& f = preset.formula;
     std::printf("%s: %s\n", o.preset.c_str(), preset.name.empty() ? "(unnamed)" : preset.name.c_str());
-    std::printf("formula: %s", describeFormula(preset.formula).c_str());
+    std::printf("formula: %s", describeFormula(f).c_str());
 
-    const GridReport g = evaluateGrid(preset.formula, o.grid);
+    int status = 0;
+    std::unique_ptr<gl::HeadlessContext> context;
+    try {
+        context = gl::HeadlessContext::create();
+    } catch (const std::exception& e) {
+        if (!f.cpuEvaluable()) throw std::runtime_error(std::string("custom GLSL blocks need OpenGL: ") + e.what());
+        std::printf("GLSL: not checked (%s)\n", e.what());
+    }
+    std::unique_ptr<FormulaSampler> sampler;
+    if (context) {
+        try {
+            if (f.cpuEvaluable()) {
+                gl::DEProbe probe(f);
+                std::printf("GLSL: compiles on %s\n", context->renderer().c_str());
+                compareGpuWithCpu(f, probe, o.seed);
+            } else {
+                sampler = std::make_unique<gl::GpuSampler>(f);
+                std::printf("GLSL: compiles on %s; custom blocks are evaluated there (single precision)\n",
+                            context->renderer().c_str());
+            }
+        } catch (const std::runtime_error& e) {
+            std::printf("PROBLEM: %s\nNOT SOUND\n", e.what());
+            return 1;
+        }
+    }
+    if (!sampler) sampler = std::make_unique<CpuSampler>(f);
+
+    const GridReport g = evaluateGrid(*sampler, o.grid);
     std::printf("grid %d^3 over the bound: DE in [%.6g, %.6g], %.1f%% inside, %ld non-finite, %.2f us per DE\n", o.grid,
                 g.minDistance, g.maxDistance, 100.0 * double(g.inside) / double(g.points), g.nonFinite,
                 g.secondsPerEvaluation * 1e6);
@@ -69,11 +79,10 @@ int runCheck(const CheckOptions& o) {
     ConservativenessOptions co;
     co.rays = o.rays;
     co.seed = o.seed;
-    const ConservativenessReport c = checkConservativeness(preset.formula, preset.camera, co);
+    const ConservativenessReport c = checkConservativeness(*sampler, preset.camera, co);
     std::printf("baseline marcher: %d rays, %d hit, %ld samples; worst DE / true distance = %.4f at (%.4f, %.4f, %.4f)\n",
                 c.rays, c.raysHit, c.samples, c.worstRatio, c.worstPoint.x, c.worstPoint.y, c.worstPoint.z);
 
-    int status = checkGlsl(preset.formula, o.seed) ? 0 : 1;
     if (g.nonFinite > 0) {
         std::printf("PROBLEM: the DE is not finite at %ld grid points\n", g.nonFinite);
         status = 1;

@@ -33,8 +33,20 @@ std::vector<GpuSample> DEProbe::evaluate(const Formula& formula, std::span<const
     glGetNamedBufferSubData(buffers_[1], 0, GLsizeiptr(out.size() * sizeof(glm::vec4)), out.data());
     std::vector<GpuSample> samples(points.size());
     for (size_t i = 0; i < points.size(); ++i)
-        samples[i] = {out[2 * i].x, int(out[2 * i].y), out[2 * i + 1]};
+        samples[i] = {out[2 * i].x, int(out[2 * i].y), out[2 * i].z > 0.5f, out[2 * i + 1]};
     return samples;
+}
+
+void GpuSampler::evaluate(std::span<const vec3> points, std::span<Evaluation> out) {
+    const std::vector<GpuSample> samples = probe_.evaluate(formula_, points);
+    for (size_t i = 0; i < samples.size(); ++i) {
+        Evaluation& e = out[i];
+        e.distance = samples[i].distance;
+        e.iterations = samples[i].iterations;
+        e.escaped = samples[i].escaped;
+        e.trap.value = vec4(samples[i].trap);
+        e.inside = isInside(*formula_.estimator.block, e.distance, e.escaped);
+    }
 }
 
 }  // namespace fraktal::gl

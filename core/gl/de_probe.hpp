@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "core/de_check.hpp"
 #include "core/formula.hpp"
 #include "core/gl/formula_uniforms.hpp"
 #include "core/gl/program.hpp"
@@ -13,6 +14,7 @@ namespace fraktal::gl {
 struct GpuSample {
     float distance;
     int iterations;
+    bool escaped;
     glm::vec4 trap;
 };
 
@@ -32,6 +34,19 @@ private:
     Program program_;
     FormulaUniforms uniforms_;
     GLuint buffers_[2] = {0, 0};
+};
+
+// The formula's samples taken on the GL context: how checks and tools evaluate formulas with
+// custom GLSL blocks, which have no CPU body. Single precision.
+class GpuSampler final : public FormulaSampler {
+public:
+    explicit GpuSampler(const Formula& f) : formula_(f), probe_(f) {}
+    const Formula& formula() const override { return formula_; }
+    void evaluate(std::span<const vec3> points, std::span<Evaluation> out) override;
+
+private:
+    const Formula& formula_;
+    DEProbe probe_;
 };
 
 }  // namespace fraktal::gl
