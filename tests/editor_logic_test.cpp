@@ -46,8 +46,11 @@ std::vector<std::function<void(Document&)>> scriptedEdits() {
         [](Document& d) { d.preset.camera.position = vec3(0.3, 2.5, 1.0 / 3.0); },
         [](Document& d) { d.preset.camera.fovY = 61.5; },
         [](Document& d) { d.viewSlots[2] = d.preset.camera; },
-        [](Document& d) { d.view.exposure = -1.25; },
-        [](Document& d) { d.view.palette = 3; },
+        [](Document& d) { d.preset.render.exposure = -1.25; },
+        [](Document& d) { d.preset.render.view = "ACES"; },
+        [](Document& d) { d.preset.shading.paletteD = vec3(0.0, 0.33, 0.67); },
+        [](Document& d) { d.preset.shading.shadowSteps = 0; },
+        [](Document& d) { d.view.stepsPerFrame = 12; },
         [](Document& d) { d.preset.formula.bailout = 1.0 / 7.0; },
     };
 }
@@ -93,7 +96,7 @@ TEST(EditorUndo, NewEditAfterUndoDropsTheRedoBranch) {
     history.commit(doc);
     history.undo(doc);
     ASSERT_TRUE(history.canRedo());
-    doc.view.fog = 2.0;
+    doc.preset.shading.fogDensity = 2.0;
     EXPECT_TRUE(history.commit(doc));
     EXPECT_FALSE(history.canRedo());
     EXPECT_FALSE(history.commit(doc)) << "an unchanged document records nothing";
@@ -102,7 +105,11 @@ TEST(EditorUndo, NewEditAfterUndoDropsTheRedoBranch) {
 TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
     Document doc = documentFrom("mandelbox.json");
     doc.view.aaCap = 5;
-    doc.view.lightDirection = vec3(0.1, 0.2, 0.3);
+    doc.view.reprojection = false;
+    // The Render and Shading tabs edit the preset's own sections: a saved preset carries them.
+    doc.preset.shading.lightDirection = vec3(0.1, 0.2, 0.3);
+    doc.preset.render.view = "ACES";
+    doc.preset.render.exposure = 0.75;
     doc.viewSlots[1] = doc.preset.camera;
     const fs::path dir = fs::temp_directory_path() / ("fraktal_editor_test_" + std::to_string(::getpid()));
     fs::create_directories(dir);
@@ -116,6 +123,9 @@ TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
     back.preset = loadPreset(file);
     loadEditorSection(back);
     EXPECT_EQ(fingerprint(back), fingerprint(doc));
+    EXPECT_EQ(back.preset.shading, doc.preset.shading);
+    EXPECT_EQ(back.preset.render, doc.preset.render);
+    EXPECT_EQ(back.view, doc.view);
     fs::remove_all(dir);
 }
 

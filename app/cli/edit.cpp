@@ -30,6 +30,8 @@ int runEdit(const EditOptions& o) {
     e.height = o.height;
     // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
     e.useIniFile = o.frames == 0;
+    // Nor autosave or a restore prompt: a scripted run is not a session to recover.
+    e.sessionRecovery = o.frames == 0;
     return editor::runEditor(e);
 #else
     std::fputs("fraktal: this build has no editor (FRAKTAL_BUILD_EDITOR=OFF); use `fraktal render`.\n", stderr);

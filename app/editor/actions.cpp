@@ -5,6 +5,7 @@
 #include <ImfStringAttribute.h>
 
 #include "app/editor/preset_files.hpp"
+#include "core/preset.hpp"
 
 namespace fraktal::editor {
 
@@ -92,6 +93,12 @@ bool openDocument(EditorState& s, const fs::path& file) {
         setStatus(s, e.what(), true);
         return false;
     }
+}
+
+void restoreDocument(EditorState& s, RecoveryOffer offer) {
+    adoptDocument(s, std::move(offer.doc), offer.originalFile);
+    s.file.savedFingerprint.clear();  // unsaved until the user saves it
+    setStatus(s, "Restored the autosaved document: save it to keep it");
 }
 
 bool saveDocumentAs(EditorState& s, const fs::path& file) {

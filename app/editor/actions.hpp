@@ -12,6 +12,9 @@ namespace fraktal::editor {
 void newDocument(EditorState& s);
 // Loads a preset (.json) or the preset embedded in an exported EXR. False on error (shown).
 bool openDocument(EditorState& s, const std::filesystem::path& file);
+// Adopts an autosaved document after a crash: it keeps its original file (if any) and counts
+// as unsaved until the user saves it.
+void restoreDocument(EditorState& s, RecoveryOffer offer);
 bool saveDocument(EditorState& s);  // to s.file.path; false when there is none (use Save As)
 bool saveDocumentAs(EditorState& s, const std::filesystem::path& file);
 void undo(EditorState& s);

@@ -39,16 +39,11 @@ json editorSection(const Document& d) {
 }  // namespace
 
 json viewSettingsToJson(const ViewSettings& s) {
-    return {{"maxSteps", s.maxSteps},
+    return {{"stepsPerFrame", s.stepsPerFrame},
             {"renderScale", s.renderScale},
             {"reprojection", s.reprojection},
             {"aaCap", s.aaCap},
-            {"lightDirection", vecJson(s.lightDirection)},
-            {"shadows", s.shadows},
-            {"ambientOcclusion", s.ambientOcclusion},
-            {"fog", s.fog},
-            {"palette", s.palette},
-            {"exposure", s.exposure}};
+            {"coneTile", s.coneTile}};
 }
 
 ViewSettings viewSettingsFromJson(const json& j) {
@@ -58,20 +53,12 @@ ViewSettings viewSettingsFromJson(const json& j) {
         const json& v = j.value(key, json());
         return v.is_number() ? std::clamp(v.get<double>(), lo, hi) : fallback;
     };
-    auto boolean = [&](const char* key, bool fallback) {
-        const json& v = j.value(key, json());
-        return v.is_boolean() ? v.get<bool>() : fallback;
-    };
-    s.maxSteps = int(number("maxSteps", s.maxSteps, 8, 2000));
+    const json& reprojection = j.value("reprojection", json());
+    s.stepsPerFrame = int(number("stepsPerFrame", s.stepsPerFrame, 1, 1000));
     s.renderScale = number("renderScale", s.renderScale, 0.1, 1.0);
-    s.reprojection = boolean("reprojection", s.reprojection);
+    if (reprojection.is_boolean()) s.reprojection = reprojection.get<bool>();
     s.aaCap = int(number("aaCap", s.aaCap, 1, 256));
-    s.lightDirection = vecFrom(j.value("lightDirection", json()), s.lightDirection);
-    s.shadows = boolean("shadows", s.shadows);
-    s.ambientOcclusion = boolean("ambientOcclusion", s.ambientOcclusion);
-    s.fog = number("fog", s.fog, 0.0, 10.0);
-    s.palette = int(number("palette", s.palette, 0, kPaletteCount - 1));
-    s.exposure = number("exposure", s.exposure, -20.0, 20.0);
+    s.coneTile = int(number("coneTile", s.coneTile, 0, 64));
     return s;
 }
 

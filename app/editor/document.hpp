@@ -1,5 +1,6 @@
-// The document the editor edits: the preset (formula + camera), the view settings and the saved
-// view slots. Everything in here is undoable and is what "unsaved changes" compares.
+// The document the editor edits: the preset (formula, camera, render and shading settings), the
+// viewport's view settings and the saved view slots. Everything in here is undoable and is what
+// "unsaved changes" compares.
 #pragma once
 
 #include <array>

@@ -1,5 +1,6 @@
 // The editor's main loop: GLFW window and GL 4.5 context, Dear ImGui panels, the viewport
-// behind them, undo commits between gestures, and the --frames/--screenshot path for tests.
+// behind them, undo commits between gestures, autosave, and the --frames/--screenshot path for
+// tests.
 #include "app/editor/editor.hpp"
 
 #include <epoxy/gl.h>
@@ -64,14 +65,33 @@ void layoutViewport(EditorState& s, float windowW, float windowH) {
     l.viewportH = std::max(windowH - l.menuHeight, 16.0f);
 }
 
+// The display texture's rows are top first, as ImGui's image coordinates are.
 void drawViewportImage(const EditorState& s, const ViewportView& v) {
     const Layout& l = s.layout;
     ImDrawList* bg = ImGui::GetBackgroundDrawList();
     const ImVec2 a(l.viewportX, l.viewportY), b(l.viewportX + l.viewportW, l.viewportY + l.viewportH);
     bg->AddRectFilled(ImVec2(0, 0), ImGui::GetIO().DisplaySize, IM_COL32(12, 13, 15, 255));
     if (v.displayTexture())
-        bg->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(v.displayTexture())), a, b, ImVec2(0, 1),
-                     ImVec2(1, 0));
+        bg->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(v.displayTexture())), a, b, ImVec2(0, 0),
+                     ImVec2(1, 1));
+}
+
+// $OCIO when set, else the shipped config; a broken $OCIO falls back to the shipped one (said in
+// the status line) so the editor still opens.
+bool loadColorPipeline(EditorState& s) {
+    try {
+        s.color = ColorPipeline::fromEnvironment();
+        return true;
+    } catch (const std::exception& e) {
+        setStatus(s, std::string(e.what()) + "; using the shipped config", true);
+    }
+    try {
+        s.color = ColorPipeline::fromFile(shippedOcioConfigPath());
+        return true;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "fraktal: %s\n", e.what());
+        return false;
+    }
 }
 
 }  // namespace
@@ -128,20 +148,22 @@ int runEditor(const EditorOptions& o) {
     ImGui_ImplOpenGL3_Init("#version 450 core");
 
     int status = 0;
-    {
-        std::unique_ptr<ViewportView> viewport = makeViewportView();
+    if (!loadColorPipeline(s)) status = 2;
+    if (status == 0) {
+        std::unique_ptr<ViewportView> viewport = makeViewportView(*s.color);
         ThumbnailRenderer thumbnails;
         newDocument(s);
         if (!o.preset.empty() && !openDocument(s, o.preset)) {
             std::fprintf(stderr, "fraktal: %s\n", s.status.text.c_str());
             if (o.frames > 0) status = 2;  // a scripted run must not pass with the wrong scene
         }
+        if (o.sessionRecovery && !beginSession(s.autosave, config, glfwGetTime())) setStatus(s, s.autosave.error, true);
         std::string title;
         int frame = 0;
         while (!s.quit && !glfwWindowShouldClose(window)) {
             // Idle when the image is converged and nothing happens: no busy loop on a laptop.
-            const bool busy = o.frames > 0 || viewport->stats().samples < viewport->stats().aaCap ||
-                              s.exportJob.status == ExportStatus::Running || ImGui::IsAnyMouseDown();
+            const bool busy = o.frames > 0 || !viewport->stats().settled || exportActive(s.exportJob) ||
+                              ImGui::IsAnyMouseDown();
             if (busy) glfwPollEvents();
             else glfwWaitEventsTimeout(0.25);
             s.now = glfwGetTime();
@@ -163,15 +185,15 @@ int runEditor(const EditorOptions& o) {
 
             const Layout& l = s.layout;
             const double scale = s.doc.view.renderScale * io.DisplayFramebufferScale.x;
-            viewport->render(s.doc.preset.formula, s.doc.preset.camera, s.doc.view, int(l.viewportW * scale),
-                             int(l.viewportH * scale));
+            viewport->render(s.doc.preset, s.doc.view, int(l.viewportW * scale), int(l.viewportH * scale));
             drawViewportImage(s, *viewport);
             drawStatsOverlay(s, *viewport);
             drawStatusLine(s);
             drawExportDialog(s);
             drawFileDialogs(s);
+            drawRecoveryDialog(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);
-            if (s.browser.visible) renderNextThumbnail(thumbnails, s.browser);
+            if (s.browser.visible) renderNextThumbnail(thumbnails, s.browser, *s.color);
 
             ImGui::Render();
             int fbW = 0, fbH = 0;
@@ -202,13 +224,19 @@ int runEditor(const EditorOptions& o) {
 
             // One undo step per finished gesture: commit only when nothing is being dragged.
             if (!ImGui::IsAnyItemActive() && !s.cameraGesture) s.history.commit(s.doc);
+            autosaveTick(s.autosave, s.doc, s.file.path, isDirty(s), s.now);
+            if (!s.autosave.error.empty()) {
+                setStatus(s, s.autosave.error, true);
+                s.autosave.error.clear();
+            }
             if (const std::string t = windowTitle(s); t != title) {
                 title = t;
                 glfwSetWindowTitle(window, title.c_str());
             }
         }
-        cancelExport(s.exportJob);
+        finishExport(s.exportJob);
         releaseThumbnails(s.browser);
+        endSession(s.autosave);
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();

@@ -11,6 +11,8 @@
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
 #include "app/editor/undo_history.hpp"
+#include "app/editor/autosave.hpp"
+#include "core/color/color_pipeline.hpp"
 
 namespace fraktal::editor {
 
@@ -74,6 +76,10 @@ struct StatusLine {
 
 struct EditorState {
     Document doc;
+    // The OCIO config ($OCIO, else the shipped one) the viewport displays through and the Render
+    // tab lists displays and views from; empty only when no config can be read.
+    std::optional<ColorPipeline> color;
+    AutosaveState autosave;
     UndoHistory history;
     FileState file;
     PanelVisibility panels;

@@ -33,7 +33,7 @@ void drawExportDialog(EditorState& s) {
         return;
     }
     ExportOptions& o = job.options;
-    const bool running = job.status == ExportStatus::Running;
+    const bool running = exportActive(job);
     ImGui::BeginDisabled(running);
     if (ImGui::BeginCombo("Size", kExportSizes[o.sizeIndex].label)) {
         for (int i = 0; i < int(std::size(kExportSizes)); ++i)
@@ -55,12 +55,11 @@ void drawExportDialog(EditorState& s) {
     ImGui::DragInt("Samples per pixel", &o.spp, 0.25f, 1, 4096, "%d", ImGuiSliderFlags_AlwaysClamp);
     sectionHeader("Output");
     ImGui::InputText("File (no extension)", &o.output);
-    ImGui::Checkbox("OpenEXR (linear, preset embedded)", &o.exr);
-    ImGui::BeginDisabled(!o.exr);
+    ImGui::TextDisabled("OpenEXR (scene-linear, AOVs, the preset embedded) is always written.");
     ImGui::Checkbox("Half float", &o.halfFloat);
     ImGui::SameLine();
     ImGui::Checkbox("PNG preview", &o.pngPreview);
-    ImGui::EndDisabled();
+    helpMarker("Through the Render tab's OCIO view and exposure, as the viewport shows it.");
     ImGui::EndDisabled();
     ImGui::TextDisabled("%.1f megapixels, %.1f MB as half EXR", o.width * double(o.height) / 1e6,
                         o.width * double(o.height) * 8.0 / 1e6);
@@ -73,7 +72,9 @@ void drawExportDialog(EditorState& s) {
             startExport(job, d.preset, s.now);
         }
     } else {
+        ImGui::BeginDisabled(job.status == ExportStatus::Cancelling);
         if (ImGui::Button("Cancel", ImVec2(120, 0))) cancelExport(job);
+        ImGui::EndDisabled();
     }
     ImGui::SameLine();
     const double elapsed = running ? s.now - job.startedAt : 0.0;
@@ -87,7 +88,11 @@ void drawExportDialog(EditorState& s) {
                 ImGui::ProgressBar(float(std::fmod(elapsed, 2.0) / 2.0), ImVec2(-1, 0), text.c_str());
             }
             break;
-        case ExportStatus::Done: ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "Done."); break;
+        case ExportStatus::Cancelling: ImGui::TextDisabled("Cancelling after the current tile..."); break;
+        case ExportStatus::Done:
+            ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "Done: %s.exr%s", o.output.c_str(),
+                               o.pngPreview ? " and .png" : "");
+            break;
         case ExportStatus::Failed: ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "Failed (see log)."); break;
         case ExportStatus::Cancelled: ImGui::TextDisabled("Cancelled."); break;
         case ExportStatus::Idle: ImGui::TextDisabled("The UI stays usable while it renders."); break;

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <regex>
 
-#include "app/editor/preset_files.hpp"
+#include "core/image/atomic_file.hpp"
 
 extern char** environ;
 
@@ -20,14 +20,17 @@ namespace fraktal::editor {
 namespace fs = std::filesystem;
 
 std::vector<std::string> exportCommand(const fs::path& fraktalExe, const fs::path& preset, const ExportOptions& o) {
-    // TODO(core/render): keep in step with `fraktal render --help` once it lands.
-    std::vector<std::string> cmd{fraktalExe.string(),     "render", preset.string(),
-                                 "--width",               std::to_string(o.width),
-                                 "--height",              std::to_string(o.height),
-                                 "--spp",                 std::to_string(o.spp),
-                                 "-o",                    o.output + (o.exr ? ".exr" : ".png")};
-    if (o.exr && o.pngPreview) cmd.push_back("--png-preview");
-    if (o.exr && !o.halfFloat) cmd.push_back("--float");
+    // The flags of `fraktal render --help` (app/cli/render.cpp). Exposure, OCIO display/view and
+    // working space travel in the preset's render section.
+    std::vector<std::string> cmd{fraktalExe.string(), "render",  preset.string(),
+                                 "-o",                o.output + ".exr",
+                                 "--size",            std::to_string(o.width) + "x" + std::to_string(o.height),
+                                 "--spp",             std::to_string(o.spp)};
+    if (o.pngPreview) {
+        cmd.push_back("--png");
+        cmd.push_back(o.output + ".png");
+    }
+    if (!o.halfFloat) cmd.push_back("--float");
     return cmd;
 }
 
@@ -82,8 +85,24 @@ bool startExport(ExportJob& job, const Preset& preset, double now) {
     return true;
 }
 
-void pollExport(ExportJob& job) {
-    if (job.status != ExportStatus::Running) return;
+bool exportActive(const ExportJob& job) {
+    return job.status == ExportStatus::Running || job.status == ExportStatus::Cancelling;
+}
+
+namespace {
+
+// The child is gone: close the pipe, remove the temporary preset, settle the status.
+void reap(ExportJob& job, int wstatus) {
+    ::close(job.outputFd);
+    job.outputFd = -1;
+    job.pid = -1;
+    std::error_code ec;
+    fs::remove(job.presetFile, ec);
+    if (job.status == ExportStatus::Cancelling) job.status = ExportStatus::Cancelled;
+    else job.status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 ? ExportStatus::Done : ExportStatus::Failed;
+}
+
+void drain(ExportJob& job) {
     char buffer[4096];
     for (;;) {
         const ssize_t n = ::read(job.outputFd, buffer, sizeof buffer);
@@ -91,29 +110,34 @@ void pollExport(ExportJob& job) {
         job.log.append(buffer, size_t(n));
     }
     if (job.log.size() > (1u << 20)) job.log.erase(0, job.log.size() - (1u << 19));
+}
+
+}  // namespace
+
+void pollExport(ExportJob& job) {
+    if (!exportActive(job)) return;
+    drain(job);
     job.progress = parseProgress(job.log);
     int wstatus = 0;
     if (::waitpid(job.pid, &wstatus, WNOHANG) != job.pid) return;
-    ::close(job.outputFd);
-    job.outputFd = -1;
-    job.pid = -1;
-    std::error_code ec;
-    fs::remove(job.presetFile, ec);
-    if (job.status == ExportStatus::Running)
-        job.status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 ? ExportStatus::Done : ExportStatus::Failed;
+    drain(job);
+    reap(job, wstatus);
 }
 
 void cancelExport(ExportJob& job) {
     if (job.status != ExportStatus::Running || job.pid <= 0) return;
+    // The renderer stops between tiles on SIGTERM and writes nothing (app/cli/render.cpp).
     ::kill(job.pid, SIGTERM);
+    job.status = ExportStatus::Cancelling;
+}
+
+void finishExport(ExportJob& job) {
+    if (!exportActive(job)) return;
+    cancelExport(job);
     int wstatus = 0;
     ::waitpid(job.pid, &wstatus, 0);
-    if (job.outputFd >= 0) ::close(job.outputFd);
-    job.outputFd = -1;
-    job.pid = -1;
-    std::error_code ec;
-    fs::remove(job.presetFile, ec);
-    job.status = ExportStatus::Cancelled;
+    drain(job);
+    reap(job, wstatus);
 }
 
 }  // namespace fraktal::editor

@@ -1,6 +1,7 @@
 // The export dialog's job: a still rendered by `fraktal render` (core/render) in a child
 // process, so the editor stays responsive, a cancel is a signal, and a crash in a huge render
-// cannot take the unsaved document with it. Progress is read from the child's output ("NN%").
+// cannot take the unsaved document with it. Progress is read from the child's output ("NN%":
+// `fraktal render` prints "progress: 3/10 tiles (30%)" lines when its stderr is not a terminal).
 #pragma once
 
 #include <sys/types.h>
@@ -28,13 +29,16 @@ struct ExportOptions {
     int sizeIndex = 1;
     int width = 1920, height = 1080;
     int spp = 16;
-    bool exr = true;          // write OUT.exr (linear, with the preset embedded)
-    bool pngPreview = true;   // and OUT.png through the display transform
-    bool halfFloat = true;    // EXR channels as half
+    // OUT.exr is always written (scene-linear, with AOVs and the preset in its `fraktal.preset`
+    // header attribute): it is the master. OUT.png goes through the preset's OCIO display/view
+    // and exposure, as the viewport shows it.
+    bool pngPreview = true;
+    bool halfFloat = true;  // EXR channels as half (else 32-bit float)
     std::string output = "fraktal_still";  // path without extension
 };
 
-enum class ExportStatus { Idle, Running, Done, Failed, Cancelled };
+// Cancelling: the renderer got SIGTERM and stops after its current tile (it writes nothing).
+enum class ExportStatus { Idle, Running, Cancelling, Done, Failed, Cancelled };
 
 struct ExportJob {
     ExportOptions options;
@@ -57,6 +61,10 @@ double parseProgress(const std::string& log);
 bool startExport(ExportJob& job, const Preset& preset, double now);
 // Reads the child's output without blocking and notices when it ended.
 void pollExport(ExportJob& job);
+// Asks the renderer to stop (SIGTERM) and returns at once; pollExport sees it end.
 void cancelExport(ExportJob& job);
+// Cancels and waits for the renderer to exit (when the editor quits).
+void finishExport(ExportJob& job);
+bool exportActive(const ExportJob& job);  // Running or Cancelling
 
 }  // namespace fraktal::editor

@@ -13,11 +13,13 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v);  // formula_panel.
 void drawSidebar(EditorState& s);                         // sidebar.cpp: the tabs below
 void drawCameraTab(EditorState& s);                       // camera_panel.cpp
 void drawRenderTab(EditorState& s);                       // render_panel.cpp
+void drawShadingTab(EditorState& s);                      // shading_panel.cpp
 void drawPresetsTab(EditorState& s);                      // preset_browser.cpp
 void drawStatsOverlay(EditorState& s, const ViewportView& v);  // stats_overlay.cpp
 void drawExportDialog(EditorState& s);                    // export_dialog.cpp
 void drawFileDialogs(EditorState& s);                     // file_dialogs.cpp
 void drawStatusLine(EditorState& s);                      // stats_overlay.cpp
+void drawRecoveryDialog(EditorState& s);                  // recovery_dialog.cpp
 
 void applyEditorStyle(float scale);                       // style.cpp
 

@@ -1,55 +1,13 @@
 #include "app/editor/preset_files.hpp"
 
-#include <cerrno>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
-#include <stdexcept>
 
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 namespace fraktal::editor {
 
 namespace fs = std::filesystem;
-
-void writeFileAtomically(const fs::path& path, const std::string& text, bool keepBackup) {
-    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    std::string tempName = ".";
-    tempName += path.filename().string();
-    tempName += ".tmp" + std::to_string(::getpid());
-    const fs::path temp = folder / tempName;
-    {
-        FILE* out = std::fopen(temp.c_str(), "wb");
-        if (!out) throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
-        const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size() && std::fflush(out) == 0 &&
-                        ::fsync(::fileno(out)) == 0;
-        const int err = errno;
-        std::fclose(out);
-        if (!ok) {
-            fs::remove(temp);
-            throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(err));
-        }
-    }
-    std::error_code ec;
-    if (keepBackup && fs::exists(path)) {
-        fs::copy_file(path, fs::path(path.string() + ".bak"), fs::copy_options::overwrite_existing, ec);
-        if (ec) {
-            fs::remove(temp);
-            throw std::runtime_error(path.string() + ".bak: cannot keep a backup: " + ec.message());
-        }
-    }
-    fs::rename(temp, path, ec);
-    if (ec) {
-        fs::remove(temp);
-        throw std::runtime_error(path.string() + ": cannot replace: " + ec.message());
-    }
-}
-
-void savePresetFile(const fs::path& path, const Preset& preset) {
-    writeFileAtomically(path, presetToJson(preset).dump(2) + "\n");
-}
 
 void pushRecent(std::vector<std::string>& recent, const fs::path& file, size_t limit) {
     std::error_code ec;

@@ -1,20 +1,15 @@
-// Saving presets safely and remembering recent files.
+// Remembering recent files, and where the editor keeps its own files. (Presets are saved with
+// core's fraktal::savePresetFile, other files with fraktal::writeFileAtomically.)
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "core/image/atomic_file.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::editor {
-
-// Writes `text` to `path` atomically: a temp file in the same folder, flushed, then renamed
-// over the target, so a crash never leaves a half-written file. An existing file is first
-// copied to "<path>.bak". Throws std::runtime_error naming the file and the reason.
-void writeFileAtomically(const std::filesystem::path& path, const std::string& text, bool keepBackup = true);
-
-void savePresetFile(const std::filesystem::path& path, const Preset& preset);
 
 // Most recent first, no duplicates (compared as absolute, normalised paths), at most `limit`.
 void pushRecent(std::vector<std::string>& recent, const std::filesystem::path& file, size_t limit = 10);

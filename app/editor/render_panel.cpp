@@ -1,45 +1,111 @@
-// The render tab: the viewport's march budget, progressive AA, shading and display exposure.
+// The Render tab: the viewport's budget (the document's ViewSettings), the march settings of the
+// preset's `render` section, and its colour settings: working space, OCIO display and view and
+// exposure. The viewport and the still export read the same preset fields, so what the viewport
+// shows is what the export writes.
 #include <imgui.h>
+
+#include <string>
+#include <vector>
 
 #include "app/editor/panels.hpp"
 #include "app/editor/param_widgets.hpp"
+#include "app/editor/setting_widgets.hpp"
 
 namespace fraktal::editor {
 
-void drawRenderTab(EditorState& s) {
-    ViewSettings& v = s.doc.view;
+namespace {
+
+// A combo over `names` editing `value`; true when the user picked another one.
+bool nameCombo(const char* label, std::string& value, const std::vector<std::string>& names) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, value.c_str())) {
+        for (const std::string& n : names)
+            if (ImGui::Selectable(n.c_str(), n == value) && n != value) {
+                value = n;
+                changed = true;
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+std::vector<std::string> displaysOf(const OCIO::ConstConfigRcPtr& c) {
+    std::vector<std::string> out;
+    for (int i = 0; i < c->getNumDisplays(); ++i) out.emplace_back(c->getDisplay(i));
+    return out;
+}
+
+std::vector<std::string> viewsOf(const OCIO::ConstConfigRcPtr& c, const std::string& display) {
+    std::vector<std::string> out;
+    for (int i = 0; i < c->getNumViews(display.c_str()); ++i) out.emplace_back(c->getView(display.c_str(), i));
+    return out;
+}
+
+// Scene-linear candidates: the role and every non-data colour space of the scene family.
+std::vector<std::string> workingSpacesOf(const OCIO::ConstConfigRcPtr& c) {
+    std::vector<std::string> out{"scene_linear"};
+    for (int i = 0; i < c->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_SCENE, OCIO::COLORSPACE_ACTIVE); ++i) {
+        const char* name = c->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_SCENE, OCIO::COLORSPACE_ACTIVE, i);
+        OCIO::ConstColorSpaceRcPtr cs = c->getColorSpace(name);
+        if (cs && !cs->isData() && cs->getEncoding() != std::string("sdr-video")) out.emplace_back(name);
+    }
+    return out;
+}
+
+void drawViewportSection(ViewSettings& v) {
     sectionHeader("Viewport");
-    ImGui::DragInt("Steps per ray", &v.maxSteps, 1.0f, 8, 2000, "%d", ImGuiSliderFlags_AlwaysClamp);
-    helpMarker("Sphere-tracing steps per pixel per frame. On a CPU renderer every step shows in the frame time.");
-    const double scaleLo = 0.1, scaleHi = 1.0;
-    ImGui::DragScalar("Resolution", ImGuiDataType_Double, &v.renderScale, 0.005f, &scaleLo, &scaleHi, "%.2f x",
-                      ImGuiSliderFlags_AlwaysClamp);
-    helpMarker("Share of the window's pixels the viewport renders (upscaled for display).");
-    ImGui::Checkbox("Accumulate / reproject", &v.reprojection);
-    helpMarker("Keep refining the image while nothing changes. Off: every frame starts again.");
-    ImGui::BeginDisabled(!v.reprojection);
-    ImGui::DragInt("AA cap (spp)", &v.aaCap, 0.1f, 1, 256, "%d", ImGuiSliderFlags_AlwaysClamp);
-    ImGui::EndDisabled();
-    helpMarker("Samples per pixel after which the viewport stops rendering (converged).");
+    dragInt("Steps per frame", v.stepsPerFrame, 1, 1000, 0.5f,
+            "March steps per ray per frame. Unfinished rays go on next frame: a smaller budget keeps the UI "
+            "responsive on a CPU renderer.");
+    dragDouble("Resolution", v.renderScale, 0.1, 1.0, 0.005f, "%.2f x",
+               "Share of the window's pixels the viewport renders (upscaled for display).");
+    ImGui::Checkbox("Reprojection", &v.reprojection);
+    helpMarker("Carry march distances over when the camera moves (seed 4.2). Off: every move restarts the rays.");
+    dragInt("AA cap (spp)", v.aaCap, 1, 256, 0.1f,
+            "Jittered samples per pixel accumulated while the camera rests; then the viewport idles.");
+    dragInt("Cone pre-pass tile", v.coneTile, 0, 32, 0.1f,
+            "A low-resolution cone march in tiles of this many pixels finds where full-resolution rays may start "
+            "(0: off).");
+}
 
-    sectionHeader("Shading");
-    ImGui::DragScalarN("Light direction", ImGuiDataType_Double, &v.lightDirection.x, 3, 0.01f, nullptr, nullptr,
-                       "%.2f");
-    ImGui::Checkbox("Shadows", &v.shadows);
-    ImGui::SameLine();
-    ImGui::Checkbox("Ambient occlusion", &v.ambientOcclusion);
-    const double fogLo = 0.0, fogHi = 10.0;
-    ImGui::DragScalar("Fog", ImGuiDataType_Double, &v.fog, 0.01f, &fogLo, &fogHi, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-    helpMarker("Density of the distance fog, per bound radius travelled.");
-    ImGui::Combo("Palette", &v.palette, kPaletteNames, kPaletteCount);
-    helpMarker("Orbit-trap colouring (seed 3.3): the orbit's closest approach to the origin and the planes.");
+void drawMarchSection(RenderSettings& r) {
+    sectionHeader("Marching (viewport and export)");
+    dragInt("Max steps per ray", r.maxSteps, 8, kMaxMarchSteps, 1.0f, "Sphere-tracing steps before a ray gives up.");
+    dragDouble("Detail", r.detail, 0.01, 10.0, 0.005f, "%.3f px",
+               "Hit threshold in pixel footprints: smaller is finer and slower.");
+    dragDouble("Over-relaxation", r.overRelaxation, 1.0, 1.9, 0.005f, "%.2f",
+               "Initial step factor of the over-relaxed marcher (1: plain sphere tracing).");
+}
 
-    sectionHeader("Display");
-    const double expLo = -10.0, expHi = 10.0;
-    ImGui::DragScalar("Exposure", ImGuiDataType_Double, &v.exposure, 0.02f, &expLo, &expHi, "%+.2f EV",
-                      ImGuiSliderFlags_AlwaysClamp);
-    helpMarker("Applied at display only: the rendered data stays linear.");
-    ImGui::TextDisabled("View: sRGB (OCIO display/view follows with core/color)");
+void drawColourSection(EditorState& s) {
+    RenderSettings& r = s.doc.preset.render;
+    sectionHeader("Colour (OCIO)");
+    if (!s.color) {
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "No OCIO config.");
+        return;
+    }
+    const OCIO::ConstConfigRcPtr config = s.color->config();
+    nameCombo("Working space", r.workingSpace, workingSpacesOf(config));
+    helpMarker("Scene-linear space the image is rendered in (the EXR's space).");
+    if (nameCombo("Display", r.display, displaysOf(config))) {
+        const std::vector<std::string> views = viewsOf(config, r.display);
+        if (!views.empty()) r.view = views.front();
+    }
+    nameCombo("View", r.view, viewsOf(config, r.display));
+    helpMarker("The OCIO view: the viewport and the export's PNG go through the same display/view transform.");
+    dragDouble("Exposure", r.exposure, -20.0, 20.0, 0.02f, "%+.2f EV",
+               "Applied at display only, before the view transform: the rendered data stays linear.");
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("Config: %s", s.color->configPath().c_str());
+    ImGui::PopTextWrapPos();
+}
+
+}  // namespace
+
+void drawRenderTab(EditorState& s) {
+    drawViewportSection(s.doc.view);
+    drawMarchSection(s.doc.preset.render);
+    drawColourSection(s);
 }
 
 }  // namespace fraktal::editor

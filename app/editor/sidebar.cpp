@@ -1,4 +1,4 @@
-// The right-hand panel: camera, render settings and the preset browser as tabs (ImGui 1.86 has
+// The right-hand panel: camera, render and shading settings and the preset browser as tabs (ImGui 1.86 has
 // no docking, so panels are fixed columns whose widths the ini file remembers).
 #include <imgui.h>
 
@@ -23,6 +23,10 @@ void drawSidebar(EditorState& s) {
         }
         if (ImGui::BeginTabItem("Render")) {
             drawRenderTab(s);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("Shading")) {
+            drawShadingTab(s);
             ImGui::EndTabItem();
         }
         if (ImGui::BeginTabItem("Presets")) {

@@ -1,5 +1,6 @@
-// Renders the preset browser's thumbnails with a viewport of their own, one per frame, so
-// opening the browser never stalls the UI for long.
+// Renders the preset browser's thumbnails with a viewport of their own (the same renderer and
+// display transform as the main one), one per frame, so opening the browser never stalls the UI
+// for long.
 #pragma once
 
 #include <memory>
@@ -14,8 +15,9 @@ struct ThumbnailRenderer {
     int width = 272, height = 170;
 };
 
-// Renders the next missing thumbnail of `b`, if any. Returns whether it did work.
-bool renderNextThumbnail(ThumbnailRenderer& r, PresetBrowser& b);
+// Renders the next missing thumbnail of `b`, if any, to one anti-aliasing sample. Returns
+// whether it did work.
+bool renderNextThumbnail(ThumbnailRenderer& r, PresetBrowser& b, const ColorPipeline& color);
 void releaseThumbnails(PresetBrowser& b);
 
 }  // namespace fraktal::editor

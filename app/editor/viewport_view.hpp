@@ -1,6 +1,7 @@
-// What the editor needs from a viewport renderer, kept small so the renderer behind it can be
-// swapped: today the interim PreviewViewport (preview_viewport.cpp); core/viewport's
-// progressive, reprojecting Viewport once it lands (TODO: wire it in makeViewportView()).
+// What the editor needs from its viewport renderer, kept small so panels and the main loop do not
+// depend on the renderer's internals. The one implementation (viewport_adapter.cpp) is
+// core/viewport's progressive, reprojecting fraktal::viewport::Viewport with the OCIO display
+// pass (ocio_display_pass.hpp) behind it.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -9,38 +10,45 @@
 #include <string>
 
 #include "app/editor/view_settings.hpp"
-#include "core/camera.hpp"
-#include "core/formula.hpp"
+#include "core/color/color_pipeline.hpp"
+#include "core/preset.hpp"
 
 namespace fraktal::editor {
 
+// The viewport's own per-frame statistics (viewport::FrameStats) as the overlay shows them.
 struct ViewportStats {
-    double renderMs = 0.0;          // GPU work of the last frame (0 when converged and idle)
+    double renderMs = 0.0;  // wall time of the last frame's viewport work (0 when settled and idle)
     double deEvaluationsPerPixel = 0.0;
-    double hitShare = 0.0;          // share of pixels whose ray hit the fractal
-    double convergedShare = 0.0;    // share of pixels at the AA cap
-    double reprojectedShare = 0.0;  // share of pixels whose samples were kept from earlier frames
-    int samples = 0;                // samples per pixel accumulated so far
+    double reprojectedShare = 0.0;  // pixels whose ray start came from the previous frame
+    double convergedShare = 0.0;    // pixels whose current sample is finished
+    const char* action = "reset";   // what the last frame did: reset, reproject or continue
+    int aaLevel = 0;                // samples per pixel being worked on (the cap once settled)
     int aaCap = 1;
+    bool settled = false;           // every pixel has all its samples: frames cost nothing now
     int width = 0, height = 0;      // render resolution
-    int compiles = 0;               // programs built so far (a value edit must not add one)
+    int compiles = 0;               // formula programs built so far (a value edit must not add one)
 };
 
 class ViewportView {
 public:
     virtual ~ViewportView() = default;
-    // Advances the image for this state by one frame's work, on the current GL context. A
-    // structure change (Formula::structureKey) recompiles; a value change only re-uploads
-    // uniforms. When the compile fails, compileError() says why and the last good image stays.
-    virtual void render(const Formula& formula, const Camera& camera, const ViewSettings& settings, int width,
-                        int height) = 0;
-    // The display-referred (sRGB, RGBA8) image, bottom row first (GL convention).
+    // Advances the image of this preset by one frame's work on the current GL context, and
+    // refreshes displayTexture() through the preset's OCIO display/view and exposure. A structure
+    // change (Formula::structureKey) recompiles; a value change only re-uploads uniforms. When
+    // the compile fails, compileError() says why and the last good image stays.
+    virtual void render(const Preset& preset, const ViewSettings& settings, int width, int height) = 0;
+    // The display-referred RGBA8 image, top row first (draw with ImGui uv (0,0)-(1,1)). 0 before
+    // the first frame.
     virtual GLuint displayTexture() const = 0;
+    virtual int width() const = 0;
+    virtual int height() const = 0;
     virtual const ViewportStats& stats() const = 0;
     // Empty when the current structure compiled; else the log, naming the node (explainLog).
     virtual const std::string& compileError() const = 0;
+    // Empty when the display transform is set up; else why not (bad OCIO view, ...).
+    virtual const std::string& displayError() const = 0;
 };
 
-std::unique_ptr<ViewportView> makeViewportView();
+std::unique_ptr<ViewportView> makeViewportView(const ColorPipeline& color);
 
 }  // namespace fraktal::editor

@@ -1,0 +1,17 @@
+// Small widgets for the Render and Shading tabs: doubles, ints, colours and directions of the
+// preset's settings structs (core/render/settings.hpp), each with its range and help text.
+#pragma once
+
+#include "core/vec.hpp"
+
+namespace fraktal::editor {
+
+bool dragDouble(const char* label, double& value, double lo, double hi, float speed, const char* format,
+                const char* help);
+bool dragInt(const char* label, int& value, int lo, int hi, float speed, const char* help);
+// A linear Rec.709 colour; components may exceed 1 (light intensities), HDR picker.
+bool colorEdit(const char* label, vec3& rgb, const char* help);
+// A direction (never the zero vector: such an edit is refused).
+bool directionEdit(const char* label, vec3& direction, const char* help);
+
+}  // namespace fraktal::editor

@@ -1,0 +1,107 @@
+// The Shading tab: the preset's `shading` section (core/render/settings.hpp), which the viewport
+// and the still export both read. Colours are linear Rec.709 as the preset stores them.
+#include <imgui.h>
+
+#include <iterator>
+
+#include "app/editor/panels.hpp"
+#include "app/editor/param_widgets.hpp"
+#include "app/editor/setting_widgets.hpp"
+
+namespace fraktal::editor {
+
+namespace {
+
+// Cosine palettes colour = a + b cos(2 pi (c t + d)) (I. Quilez, "Palettes", 1999,
+// iquilezles.org/articles/palettes): a starting point for the orbit-trap colouring.
+struct NamedPalette {
+    const char* name;
+    vec3 a, b, c, d;
+};
+const NamedPalette kPalettes[] = {
+    {"Ember (default)", {0.6, 0.5, 0.44}, {0.32, 0.26, 0.24}, {0.8, 0.8, 0.8}, {0.0, 0.15, 0.3}},
+    {"Rainbow", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 1.0}, {0.0, 0.33, 0.67}},
+    {"Ocean", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 1.0}, {0.0, 0.1, 0.2}},
+    {"Copper", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 0.5}, {0.8, 0.9, 0.3}},
+    {"Bone", {0.55, 0.52, 0.48}, {0.12, 0.1, 0.08}, {1.0, 1.0, 1.0}, {0.0, 0.05, 0.1}},
+};
+
+void drawLightSection(ShadingSettings& sh) {
+    sectionHeader("Light");
+    directionEdit("Light direction", sh.lightDirection, "Toward the key light (normalised on use).");
+    colorEdit("Light colour", sh.lightColor, "Key light colour and intensity (linear Rec.709).");
+    colorEdit("Fill colour", sh.fillColor, "Sky / fill hemisphere light.");
+    dragDouble("Specular", sh.specular, 0.0, 4.0, 0.005f, "%.3f", nullptr);
+    dragDouble("Shininess", sh.shininess, 1.0, 1000.0, 0.5f, "%.1f", nullptr);
+    bool shadows = sh.shadowSteps > 0;
+    if (ImGui::Checkbox("Shadows", &shadows)) sh.shadowSteps = shadows ? ShadingSettings{}.shadowSteps : 0;
+    if (shadows) {
+        dragInt("Shadow steps", sh.shadowSteps, 1, 1000, 0.5f, "March steps of a shadow ray.");
+        dragDouble("Shadow softness", sh.shadowSoftness, 0.5, 200.0, 0.1f, "%.1f",
+                   "Penumbra factor k of the soft-shadow estimate: larger is sharper.");
+    }
+    bool ao = sh.aoSteps > 0;
+    if (ImGui::Checkbox("Ambient occlusion", &ao)) sh.aoSteps = ao ? ShadingSettings{}.aoSteps : 0;
+    if (ao) {
+        dragInt("AO steps", sh.aoSteps, 1, 32, 0.1f, nullptr);
+        dragDouble("AO distance", sh.aoDistance, 0.001, 1.0, 0.001f, "%.3f x bound", nullptr);
+        dragDouble("AO strength", sh.aoStrength, 0.0, 4.0, 0.01f, "%.2f", nullptr);
+    }
+}
+
+void drawPaletteSection(ShadingSettings& sh) {
+    sectionHeader("Orbit-trap palette");
+    if (ImGui::BeginCombo("Palette", "Choose a starting point")) {
+        for (const NamedPalette& p : kPalettes)
+            if (ImGui::Selectable(p.name)) {
+                sh.paletteA = p.a;
+                sh.paletteB = p.b;
+                sh.paletteC = p.c;
+                sh.paletteD = p.d;
+            }
+        ImGui::EndCombo();
+    }
+    helpMarker(
+        "colour = a + b cos(2 pi (c t + d)), t = offset + scale * dot(weights, trap); trap = the orbit's "
+        "closest approach to the planes and the origin (seed 3.3).");
+    double w[4] = {sh.trapWeights.x, sh.trapWeights.y, sh.trapWeights.z, sh.trapWeights.w};
+    const double lo = -4.0, hi = 4.0;
+    if (ImGui::DragScalarN("Trap weights", ImGuiDataType_Double, w, 4, 0.005f, &lo, &hi, "%.2f",
+                           ImGuiSliderFlags_AlwaysClamp))
+        sh.trapWeights = vec4(w[0], w[1], w[2], w[3]);
+    dragDouble("Trap scale", sh.trapScale, -20.0, 20.0, 0.01f, "%.3f", nullptr);
+    dragDouble("Trap offset", sh.trapOffset, -4.0, 4.0, 0.005f, "%.3f", nullptr);
+    colorEdit("a (base)", sh.paletteA, nullptr);
+    colorEdit("b (swing)", sh.paletteB, nullptr);
+    double c[3] = {sh.paletteC.x, sh.paletteC.y, sh.paletteC.z}, d[3] = {sh.paletteD.x, sh.paletteD.y, sh.paletteD.z};
+    const double flo = 0.0, fhi = 8.0;
+    if (ImGui::DragScalarN("c (frequency)", ImGuiDataType_Double, c, 3, 0.005f, &flo, &fhi, "%.2f",
+                           ImGuiSliderFlags_AlwaysClamp))
+        sh.paletteC = vec3(c[0], c[1], c[2]);
+    const double plo = -1.0, phi = 1.0;
+    if (ImGui::DragScalarN("d (phase)", ImGuiDataType_Double, d, 3, 0.005f, &plo, &phi, "%.2f",
+                           ImGuiSliderFlags_AlwaysClamp))
+        sh.paletteD = vec3(d[0], d[1], d[2]);
+}
+
+void drawAtmosphereSection(ShadingSettings& sh) {
+    sectionHeader("Fog, reflection, background");
+    dragDouble("Fog density", sh.fogDensity, 0.0, 20.0, 0.005f, "%.3f", "Per bound radius travelled (0: no fog).");
+    colorEdit("Fog colour", sh.fogColor, nullptr);
+    dragDouble("Reflection", sh.reflection, 0.0, 1.0, 0.002f, "%.3f", "Fresnel F0 of the surface (0: no reflections).");
+    colorEdit("Background top", sh.backgroundTop, nullptr);
+    colorEdit("Background bottom", sh.backgroundBottom, nullptr);
+}
+
+}  // namespace
+
+void drawShadingTab(EditorState& s) {
+    ShadingSettings& sh = s.doc.preset.shading;
+    drawLightSection(sh);
+    drawPaletteSection(sh);
+    drawAtmosphereSection(sh);
+    ImGui::Spacing();
+    if (ImGui::Button("Reset shading to defaults")) sh = ShadingSettings{};
+}
+
+}  // namespace fraktal::editor

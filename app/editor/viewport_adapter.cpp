@@ -1,0 +1,143 @@
+#include "app/editor/viewport_adapter.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace fraktal::editor {
+
+std::unique_ptr<ViewportView> makeViewportView(const ColorPipeline& color) {
+    return std::make_unique<CoreViewportView>(color);
+}
+
+viewport::ViewportOptions viewportOptions(const ViewSettings& v) {
+    viewport::ViewportOptions o;
+    o.stepsPerFrame = v.stepsPerFrame;
+    o.maxSamples = v.aaCap;
+    o.reproject = v.reprojection;
+    o.coneTile = v.coneTile;
+    return o;
+}
+
+ShadingSettings shadingInWorkingSpace(const ShadingSettings& shading, const ColorPipeline& color,
+                                      const std::string& workingSpace) {
+    // The colours core/render/shading_params.cpp converts (the palette's c and d are frequencies
+    // and phases, and its a and b multiply the light, so they stay as written, as in the still).
+    ShadingSettings s = shading;
+    for (vec3* c : {&s.lightColor, &s.fillColor, &s.fogColor, &s.backgroundTop, &s.backgroundBottom})
+        *c = color.fromLinearRec709(*c, workingSpace);
+    return s;
+}
+
+namespace {
+
+bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOptions& b) {
+    return a.stepsPerFrame == b.stepsPerFrame && a.maxSamples == b.maxSamples && a.reproject == b.reproject &&
+           a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile && a.coneSteps == b.coneSteps;
+}
+
+}  // namespace
+
+CoreViewportView::CoreViewportView(const ColorPipeline& color) : color_(color) {}
+
+CoreViewportView::~CoreViewportView() {
+    glDeleteFramebuffers(1, &displayFramebuffer_);
+    glDeleteTextures(1, &displayTexture_);
+}
+
+bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& settings, int width, int height) {
+    const Formula& formula = preset.formula;
+    if (!failedStructure_.empty() && formula.structureKey() == failedStructure_) return false;
+    const viewport::ViewportOptions options = viewportOptions(settings);
+    if (!sameOptions(options, viewport_.options())) viewport_.setOptions(options);
+
+    if (!shadingKey_ || shadingKey_->first != preset.shading || shadingKey_->second != preset.render.workingSpace) {
+        workingShading_ = shadingInWorkingSpace(preset.shading, color_, preset.render.workingSpace);
+        shadingKey_.emplace(preset.shading, preset.render.workingSpace);
+    }
+    const bool newStructure = tracker_.needsRecompile(formula);
+    const auto start = std::chrono::steady_clock::now();
+    viewport::FrameStats frame;
+    try {
+        frame = viewport_.render(formula, preset.camera, preset.render, workingShading_, width, height);
+    } catch (const std::exception& e) {
+        // The viewport keeps its previous programs and image (viewport.hpp).
+        compileError_ = e.what();
+        if (newStructure) failedStructure_ = formula.structureKey();
+        return false;
+    }
+    if (newStructure) {
+        tracker_.compiled(formula);
+        ++stats_.compiles;
+    }
+    compileError_.clear();
+    failedStructure_.clear();
+
+    const bool idle = frame.settled && frame.action == viewport::FrameAction::Continue && frame.deEvalsPerPixel == 0.0;
+    stats_.renderMs =
+        idle ? 0.0 : std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats_.deEvaluationsPerPixel = frame.deEvalsPerPixel;
+    stats_.reprojectedShare = frame.shareReprojected;
+    stats_.convergedShare = frame.shareConverged;
+    stats_.action = viewport::toString(frame.action);
+    stats_.aaCap = settings.aaCap;
+    stats_.settled = frame.settled;
+    stats_.aaLevel = frame.settled ? settings.aaCap : frame.samplesAtRest + 1;
+    stats_.width = width;
+    stats_.height = height;
+    return !idle;
+}
+
+void CoreViewportView::ensureDisplayTarget(int width, int height) {
+    if (width == displayWidth_ && height == displayHeight_ && displayTexture_) return;
+    glDeleteFramebuffers(1, &displayFramebuffer_);
+    glDeleteTextures(1, &displayTexture_);
+    glCreateTextures(GL_TEXTURE_2D, 1, &displayTexture_);
+    glTextureStorage2D(displayTexture_, 1, GL_RGBA8, width, height);
+    // Upscaled to the window by ImGui: linear filtering.
+    glTextureParameteri(displayTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(displayTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(displayTexture_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(displayTexture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glCreateFramebuffers(1, &displayFramebuffer_);
+    glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, displayTexture_, 0);
+    displayWidth_ = width;
+    displayHeight_ = height;
+    shownDisplay_.reset();
+}
+
+void CoreViewportView::redisplay(const Preset& preset) {
+    const DisplayKey key{preset.render.workingSpace, preset.render.display, preset.render.view};
+    try {
+        display_.configure(color_, key);
+        displayError_.clear();
+    } catch (const std::exception& e) {
+        // A bad view keeps the last good transform on screen; the Render tab shows why.
+        displayError_ = e.what();
+        if (!display_.configured()) return;
+    }
+    const auto shown = std::make_pair(display_.key(), preset.render.exposure);
+    if (!imageChanged_ && shownDisplay_ == shown) return;
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
+    glViewport(0, 0, displayWidth_, displayHeight_);
+    display_.draw(viewport_.imageTexture(), preset.render.exposure);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    shownDisplay_ = shown;
+    imageChanged_ = false;
+}
+
+void CoreViewportView::render(const Preset& preset, const ViewSettings& settings, int width, int height) {
+    width = std::max(width, 2);
+    height = std::max(height, 2);
+    try {
+        if (renderFrame(preset, settings, width, height)) imageChanged_ = true;
+    } catch (const std::exception& e) {
+        displayError_ = e.what();  // e.g. an unknown working space
+    }
+    if (!viewport_.imageTexture()) return;
+    ensureDisplayTarget(viewport_.width(), viewport_.height());
+    redisplay(preset);
+}
+
+}  // namespace fraktal::editor

@@ -1,0 +1,22 @@
+#version 450 core
+// The editor viewport's display pass (app/editor/ocio_display_pass.cpp): the only place its image
+// leaves scene-linear data. Exposure (a gain of 2^stops in the working space), then the OCIO
+// display/view transform whose GLSL OpenColorIO generates (GpuShaderDesc, GLSL 4.0; it defines
+// `vec4 OCIODisplay(vec4)` and its LUT samplers and replaces the marker line below), then the
+// clamp to [0, 1] that the 8-bit target and the still's PNG (DisplayTransform::toDisplay8) apply.
+// Draw with editor_fullscreen.vert into a target of the image's size.
+
+// OCIO_SHADER_TEXT
+
+layout(binding = 0) uniform sampler2D u_image;
+uniform float u_gain;
+layout(location = 0) out vec4 o_color;
+
+void main() {
+    vec3 linear = texelFetch(u_image, ivec2(gl_FragCoord.xy), 0).rgb * u_gain;
+    vec3 display = OCIODisplay(vec4(linear, 1.0)).rgb;
+    // Non-finite values show black, as in the PNG export.
+    for (int i = 0; i < 3; ++i)
+        if (isnan(display[i]) || isinf(display[i])) display[i] = 0.0;
+    o_color = vec4(clamp(display, 0.0, 1.0), 1.0);
+}
