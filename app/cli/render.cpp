@@ -10,9 +10,11 @@
 #include <regex>
 
 #include "cli/commands.hpp"
+#include "cli/plane_render.hpp"
 #include "core/color/color_pipeline.hpp"
 #include "core/gl/context.hpp"
 #include "core/image/exr_writer.hpp"
+#include "core/plane/plane_preset.hpp"
 #include "core/preset.hpp"
 #include "core/render/still_job.hpp"
 
@@ -94,6 +96,17 @@ struct ProgressPrinter {
 };
 
 int runRender(const RenderOptions& o) {
+    if (isPlanePresetFile(o.input)) {  // a 2D preset (presets/2d): the 2D renderer, same options
+        PlaneRenderRequest q{o.input, o.output, o.png, 0, 0, o.spp, o.exposure, o.view, o.display,
+                             o.workingSpace, o.fullFloat, o.threads, std::min(o.tile, 4096), o.quiet};
+        if (!o.size.empty()) {
+            RenderSettings size;
+            parseSize(o.size, size);
+            q.width = size.width;
+            q.height = size.height;
+        }
+        return runPlaneRender(q);
+    }
     StillJob job;
     job.preset = loadInput(o.input);
     RenderSettings& r = job.preset.render;

@@ -1,0 +1,125 @@
+// 2D blocks: the plane counterpart of core/block.hpp. A 2D block is one step of a membership
+// test in the plane (seed 2.1): a fold, a transform, a triangle test or the complex power
+// iteration, or the closing estimator. Each is declared once (formulas/plane/*.hpp) with its id,
+// help, one ParamDecl list (the same declarations the editor's widgets and the preset reader use)
+// and its GLSL and CPU bodies side by side; core/plane/plane_registry.cpp holds one line per block.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <span>
+#include <string_view>
+
+#include "core/block.hpp"
+
+namespace fraktal {
+
+// The shader's number type: double where the driver has fp64 (deep zooms), else float. The CPU
+// bodies use the same names so that they read line for line like the GLSL.
+using real = double;
+using real2 = glm::dvec2;
+
+// The iteration state. GLSL declares the same struct (shaders/plane_formula.glsl).
+struct PlaneState {
+    real2 z{0.0};     // the point
+    real dz = 1.0;    // running scale (folds, scales) or derivative bound |dz/dc| (power iteration)
+    double power = 1.0;  // degree of the last power step: smooth iteration count uses log(power)
+    bool escaped = false;   // decided outside (a triangle test found no corner, or the bailout)
+    bool captured = false;  // decided inside (the point fell into a kept triangle)
+};
+
+// How the closing estimator's formula decides membership.
+enum class PlaneMembership {
+    NotEscaped,  // inside unless the orbit escaped (Mandelbrot, Julia)
+    Region,      // not escaped and the closing distance <= 0 (Sierpinski: in the triangle at depth N)
+    Captured,    // inside only if a test captured it (Koch snowflake: triangle plus bumps)
+};
+
+using PlaneApplyFn = void (*)(PlaneState& s, const real2& c, Args a);
+using PlaneEstimateFn = double (*)(const PlaneState& s, const real2& c, Args a);
+
+struct PlaneBlockDesc {
+    std::string_view id;
+    std::string_view label;
+    std::string_view help;
+    Category category;
+    std::span<const ParamDecl> params;  // Float parameters only (GLSL sees them as float uniforms)
+    // GLSL body. Steps: statements over `inout PlaneState s` and `real2 c`. Estimators:
+    // statements ending in `return <distance>;` (a float). Parameters are in scope by name.
+    std::string_view glsl;
+    PlaneApplyFn apply = nullptr;
+    PlaneEstimateFn estimate = nullptr;
+    PlaneMembership membership = PlaneMembership::NotEscaped;
+
+    bool isEstimator() const { return category == Category::Estimator; }
+    int paramIndex(std::string_view name) const {
+        for (size_t i = 0; i < params.size(); ++i)
+            if (params[i].name == name) return int(i);
+        return -1;
+    }
+};
+
+template <class B>
+concept PlaneBlockCommon = requires {
+    { B::id } -> std::convertible_to<std::string_view>;
+    { B::label } -> std::convertible_to<std::string_view>;
+    { B::help } -> std::convertible_to<std::string_view>;
+    { B::category } -> std::convertible_to<Category>;
+    { B::glsl } -> std::convertible_to<std::string_view>;
+    { std::span<const ParamDecl>(B::params) };
+};
+
+template <class B>
+concept PlaneStepBlock = PlaneBlockCommon<B> && requires(PlaneState& s, const real2& c, Args a) {
+    { B::apply(s, c, a) } -> std::same_as<void>;
+};
+
+template <class B>
+concept PlaneEstimatorBlock = PlaneBlockCommon<B> && requires(const PlaneState& s, const real2& c, Args a) {
+    { B::estimate(s, c, a) } -> std::same_as<double>;
+    { B::membership } -> std::convertible_to<PlaneMembership>;
+};
+
+template <class B>
+consteval bool allParamsFloat() {
+    for (const ParamDecl& p : B::params)
+        if (p.type != ParamType::Float) return false;
+    return true;
+}
+
+template <class B>
+    requires PlaneStepBlock<B> || PlaneEstimatorBlock<B>
+constexpr PlaneBlockDesc describePlane() {
+    static_assert(allParamsFloat<B>(), "2D block parameters are floats (a 2D vector is two of them)");
+    PlaneBlockDesc d{B::id, B::label, B::help, B::category, std::span<const ParamDecl>(B::params), B::glsl};
+    if constexpr (PlaneEstimatorBlock<B>) {
+        static_assert(B::category == Category::Estimator, "an estimator block must say so");
+        d.estimate = &B::estimate;
+        d.membership = B::membership;
+    } else {
+        static_assert(B::category != Category::Estimator, "an estimator block needs estimate()");
+        d.apply = &B::apply;
+    }
+    return d;
+}
+
+// All registered 2D blocks (core/plane/plane_registry.cpp).
+std::span<const PlaneBlockDesc> allPlaneBlocks();
+const PlaneBlockDesc* findPlaneBlock(std::string_view id);
+
+// Signed distance to the equilateral triangle pointing up (+y), centroid at the origin,
+// circumradius `radius` (negative inside). Inigo Quilez, "2D distance functions",
+// sdEquilateralTriangle, with his half-side r = radius * sqrt(3) / 2. The GLSL twin is
+// planeSdTriangle in shaders/plane_formula.glsl.
+inline real planeSdTriangle(real2 p, real radius) {
+    const real k = std::sqrt(3.0);
+    const real r = radius * k * 0.5;
+    p.x = std::abs(p.x) - r;
+    p.y = p.y + r / k;
+    if (p.x + k * p.y > 0.0) p = real2(p.x - k * p.y, -k * p.x - p.y) / 2.0;
+    p.x -= std::clamp(p.x, -2.0 * r, 0.0);
+    return -glm::length(p) * (p.y > 0.0 ? 1.0 : p.y < 0.0 ? -1.0 : 0.0);
+}
+
+}  // namespace fraktal

@@ -1,0 +1,40 @@
+// The 2D block registry: one line per block. A block that lacks part of its declaration fails to
+// compile here (see the concepts in core/plane/plane_block.hpp).
+#include "formulas/plane/abs_fold.hpp"
+#include "formulas/plane/estimators.hpp"
+#include "formulas/plane/line_fold.hpp"
+#include "formulas/plane/power.hpp"
+#include "formulas/plane/rotate.hpp"
+#include "formulas/plane/scale.hpp"
+#include "formulas/plane/translate.hpp"
+#include "formulas/plane/triangle_capture.hpp"
+#include "formulas/plane/triangle_corner.hpp"
+
+namespace fraktal {
+
+namespace {
+using namespace plane_blocks;
+constexpr std::array kPlaneBlocks{
+    describePlane<LineFold>(),
+    describePlane<AbsFold>(),
+    describePlane<Rotate>(),
+    describePlane<Scale>(),
+    describePlane<Translate>(),
+    describePlane<TriangleCorner>(),
+    describePlane<TriangleCapture>(),
+    describePlane<Power>(),
+    describePlane<EscapeEstimator>(),
+    describePlane<TriangleEstimator>(),
+    describePlane<SegmentEstimator>(),
+};
+}  // namespace
+
+std::span<const PlaneBlockDesc> allPlaneBlocks() { return kPlaneBlocks; }
+
+const PlaneBlockDesc* findPlaneBlock(std::string_view id) {
+    for (const PlaneBlockDesc& b : kPlaneBlocks)
+        if (b.id == id) return &b;
+    return nullptr;
+}
+
+}  // namespace fraktal

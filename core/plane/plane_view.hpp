@@ -1,0 +1,69 @@
+// The editor's 2D view, as a small class the editor owns: it keeps the view rectangle (pan by
+// drag, zoom by wheel about the cursor), the GL textures, and progressive refinement: every
+// frame adds a few samples per pixel while nothing changes, and starts afresh when the preset or
+// the view does. Needs the editor's current GL context.
+//
+// What the editor calls, per frame:
+//   view.setPreset(preset);                    // after any edit (cheap when nothing changed)
+//   view.pan(dx, dy) / view.zoomAt(x, y, f);    // on drag / wheel (pixels from the top left)
+//   view.update(width, height);                // renders the next refinement pass
+//   ImGui::Image(view.colourTexture(), ...)   // shows colour sums / count (see colourTexture)
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/plane/plane_preset.hpp"
+#include "core/plane/plane_renderer.hpp"
+
+namespace fraktal {
+
+// Progressive refinement schedule, pure logic: how many samples the next pass adds. The first
+// pass is one sample (an instant preview), then doubling passes up to `maxPerPass` until
+// `target` samples are reached.
+struct PlaneRefinement {
+    int samplesDone = 0;
+    int target = 64;
+    int maxPerPass = 8;
+
+    void restart() { samplesDone = 0; }
+    bool finished() const { return samplesDone >= target; }
+    int nextPassSamples() const {
+        if (finished()) return 0;
+        return std::min(target - samplesDone, std::min(maxPerPass, std::max(1, samplesDone)));
+    }
+};
+
+class PlaneView {
+public:
+    void setPreset(const PlanePreset& preset);  // restarts refinement when formula or colouring changed
+    const PlaneViewRect& rect() const { return rect_; }
+    void setRect(const PlaneViewRect& rect);
+    void pan(double dxPixels, double dyPixels);
+    void zoomAt(double cursorX, double cursorY, double factor);  // factor > 1 zooms in
+
+    // Renders the next pass at this size (a size change restarts). Returns true when it drew.
+    // Throws std::runtime_error on a GLSL error (naming the node).
+    bool update(int width, int height);
+    bool refining() const { return !refinement_.finished(); }
+    int samples() const { return refinement_.samplesDone; }
+
+    // RGBA32F: rgb = sum of linear colours, a = sample count: display rgb / a (the editor's
+    // display pass applies exposure and the OCIO view, tev style).
+    GLuint colourTexture() const { return target_.colourTexture(); }
+    // RGBA32F AOV sums (see PlaneTileData): inside count, iteration and distance sums, outside count.
+    GLuint aovTexture() const { return target_.aovTexture(); }
+    const std::vector<std::string>& warnings() const { return renderer_.warnings(); }
+    PlaneRefinement& refinement() { return refinement_; }
+
+private:
+    PlanePreset preset_;
+    std::string presetKey_;
+    PlaneViewRect rect_;
+    int width_ = 0, height_ = 0;
+    PlaneRenderer renderer_;
+    PlaneTarget target_;
+    PlaneRefinement refinement_;
+};
+
+}  // namespace fraktal
