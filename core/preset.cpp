@@ -1,5 +1,7 @@
 #include "core/preset.hpp"
 
+#include "core/image/atomic_file.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -491,6 +493,10 @@ json presetToJson(const Preset& p) {
 }
 
 std::string serializePreset(const Preset& p) { return presetToJson(p).dump(2) + "\n"; }
+
+void savePresetFile(const std::filesystem::path& path, const Preset& preset) {
+    writeFileAtomically(path, serializePreset(preset), /*keepBackup=*/true);
+}
 
 std::string describeFormula(const Formula& f) {
     std::ostringstream s;

@@ -48,6 +48,9 @@ Preset loadPreset(const std::filesystem::path& path);
 // Writes only what differs from defaults, plus the format and version.
 nlohmann::json presetToJson(const Preset& preset);
 std::string serializePreset(const Preset& preset);
+// Saves atomically (temp file, fsync, rename) and keeps the previous version as PATH.bak: if
+// the program is killed mid-save, PATH is the complete old or the complete new preset.
+void savePresetFile(const std::filesystem::path& path, const Preset& preset);
 
 // A short human-readable listing of the formula (for `fraktal check`).
 std::string describeFormula(const Formula& f);

@@ -101,3 +101,20 @@ TEST(CustomBlock, CheckMeasuresACustomFormulaOnTheGpu) {
     EXPECT_NE(r.output.find("custom blocks are evaluated there"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("conservative"), std::string::npos) << r.output;
 }
+
+// The example in presets/README.md compiles and evaluates to finite distances.
+TEST(CustomBlock, TheDocumentedExampleWorks) {
+    const Preset p = loadPreset(test::sourceDir() / "tests/custom_presets/twisted_mandelbulb.json");
+    test::glContext();
+    gl::GpuSampler sampler(p.formula);
+    const auto points = test::randomPoints(1000, p.formula.boundRadius, 41);
+    std::vector<Evaluation> out(points.size());
+    sampler.evaluate(points, out);
+    size_t finite = 0, inside = 0;
+    for (const Evaluation& e : out) {
+        finite += std::isfinite(e.distance);
+        inside += e.inside;
+    }
+    EXPECT_EQ(finite, points.size());
+    EXPECT_GT(inside, 10u);  // the twisted bulb is there
+}

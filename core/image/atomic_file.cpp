@@ -1,9 +1,11 @@
 #include "core/image/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -39,11 +41,52 @@ AtomicFile::~AtomicFile() {
     }
 }
 
-void AtomicFile::commit() {
+namespace {
+
+void syncPath(const fs::path& path, int flags) {
+    const int fd = ::open(path.c_str(), flags);
+    if (fd < 0) throw std::runtime_error(path.string() + ": cannot open to flush (" + std::strerror(errno) + ")");
+    const int result = ::fsync(fd);
+    const int err = errno;
+    ::close(fd);
+    if (result != 0) throw std::runtime_error(path.string() + ": cannot flush to disk (" + std::strerror(err) + ")");
+}
+
+}  // namespace
+
+void AtomicFile::commit(bool keepBackup) {
+    syncPath(temp_, O_RDONLY);
     std::error_code ec;
+    if (keepBackup && fs::exists(destination_, ec)) {
+        // link + rename: "<name>.bak" is replaced atomically, and the destination stays in place.
+        const fs::path backup = destination_.string() + ".bak";
+        const fs::path backupTemp = temp_.string() + ".bak";
+        fs::remove(backupTemp, ec);
+        fs::create_hard_link(destination_, backupTemp, ec);
+        if (!ec) fs::rename(backupTemp, backup, ec);
+        if (ec) {
+            fs::remove(backupTemp, ec);
+            throw std::runtime_error(backup.string() + ": cannot keep the previous version: " + ec.message());
+        }
+    }
     fs::rename(temp_, destination_, ec);
     if (ec) throw std::runtime_error(destination_.string() + ": cannot replace with the new file: " + ec.message());
     committed_ = true;
+    fs::path folder = destination_.parent_path();
+    syncPath(folder.empty() ? fs::path(".") : folder, O_RDONLY | O_DIRECTORY);
+}
+
+void writeFileAtomically(const fs::path& destination, std::string_view text, bool keepBackup) {
+    AtomicFile file(destination);
+    {
+        FILE* out = std::fopen(file.tempPath().c_str(), "wb");
+        if (!out) throw std::runtime_error(destination.string() + ": cannot write (" + std::strerror(errno) + ")");
+        const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+        const int err = errno;
+        if (std::fclose(out) != 0 || !ok)
+            throw std::runtime_error(destination.string() + ": cannot write (" + std::strerror(err) + ")");
+    }
+    file.commit(keepBackup);
 }
 
 }  // namespace fraktal

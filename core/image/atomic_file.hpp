@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string_view>
 
 namespace fraktal {
 
@@ -20,12 +21,18 @@ public:
     // libraries that choose the format by it still work.
     const std::filesystem::path& tempPath() const { return temp_; }
     const std::filesystem::path& destination() const { return destination_; }
-    // Renames the temporary file over the destination; throws on failure.
-    void commit();
+    // Flushes the temporary file to disk, then renames it over the destination (and flushes the
+    // folder), so that after a crash or power loss the destination is the complete old or the
+    // complete new file. With keepBackup, the old file is kept as "<destination>.bak" first
+    // (by a hard link, so the destination never goes missing). Throws on failure.
+    void commit(bool keepBackup = false);
 
 private:
     std::filesystem::path destination_, temp_;
     bool committed_ = false;
 };
+
+// Writes `text` to `destination` through an AtomicFile.
+void writeFileAtomically(const std::filesystem::path& destination, std::string_view text, bool keepBackup = false);
 
 }  // namespace fraktal

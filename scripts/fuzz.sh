@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Fuzzes the preset loader with libFuzzer (clang, AddressSanitizer + UBSan) for a bounded time,
+# seeded with the shipped presets and the malformed-preset corpus. Usage: scripts/fuzz.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+out=build-fuzz
+mkdir -p "$out"
+sources=(core/preset.cpp core/formula.cpp core/custom_block.cpp core/camera.cpp core/image/atomic_file.cpp
+         formulas/registry.cpp tests/fuzz/preset_fuzzer.cpp)
+if [ ! -x "$out/preset_fuzzer" ] || [ -n "$(find "${sources[@]}" core/*.hpp formulas/*.hpp -newer "$out/preset_fuzzer")" ]; then
+  clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I. \
+    "${sources[@]}" -o "$out/preset_fuzzer"
+fi
+# The first folder collects new inputs; the seeds are only read.
+corpus="$out/corpus"
+mkdir -p "$corpus"
+seeds=$(mktemp -d)
+trap 'rm -rf "$seeds"' EXIT
+find presets tests/bad_presets -maxdepth 1 -type f -name '*.json' -size -64k -exec cp {} "$seeds"/ \;
+"$out/preset_fuzzer" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+  -print_final_stats=1 "$corpus" "$seeds" 2>&1 | tail -n 12
+echo "fuzz: the preset loader survived ${seconds} s"
