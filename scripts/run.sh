@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# Quick start, command 1: install what is missing, build, and run the main job.
+# Quick start, command 1: install what is missing, build, and run the main job: the editor when
+# a display exists, otherwise a headless render of the default preset to EXR + PNG.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 preset="${1:-presets/mandelbulb.json}"
-if ./build/app/fraktal --help | grep -q "  render"; then
-  mkdir -p out
-  ./build/app/fraktal render "$preset" -o out/default.exr --png out/default.png
-  echo "run: rendered $preset to out/default.exr and out/default.png"
-else
-  ./build/app/fraktal check "$preset"
+if [ -n "${DISPLAY:-}" ]; then
+  exec ./build/app/fraktal edit "$preset"
 fi
+mkdir -p out
+echo "run: no display; rendering $preset headlessly (the editor needs a display)"
+./build/app/fraktal render "$preset" -o out/default.exr --png out/default.png
+echo "run: wrote $(pwd)/out/default.exr (scene-linear, with AOVs) and $(pwd)/out/default.png"
