@@ -27,6 +27,23 @@ layout(std430, binding = 0) buffer ViewportCounters {
     uint c_deEvals, c_reprojected, c_restarted, c_converged, c_shaded, c_busy;
 };
 
+// The pixels to shade this frame, appended by the march pass and shaded by an indirect dispatch
+// of 64-wide groups (MarchState::shadeList, core/viewport/shade_pass.cpp): on a SIMD CPU rasteriser (llvmpipe) a
+// full-screen shading dispatch where ~1% of pixels shade runs each shaded pixel with its SIMD
+// neighbours idle; a compacted list keeps every lane busy. groupsX counts the groups the list
+// needs (it grows when a pixel opens a new group); groupsY and groupsZ stay 1.
+const uint SHADE_GROUP = 64u;
+layout(std430, binding = 2) buffer ShadeList {
+    uint sl_groupsX, sl_groupsY, sl_groupsZ, sl_count;
+    uint sl_pixels[];
+};
+
+void appendToShadeList(ivec2 px) {
+    uint slot = atomicAdd(sl_count, 1u);
+    sl_pixels[slot] = uint(px.y * u_size.x + px.x);
+    if (slot % SHADE_GROUP == 0u) atomicAdd(sl_groupsX, 1u);
+}
+
 // Mirror of fraktal::viewport::aaJitter (R2 sequence, Roberts 2018).
 vec2 aaJitter(int sampleIndex) {
     if (sampleIndex <= 0) return vec2(0.0);

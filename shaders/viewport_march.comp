@@ -1,5 +1,6 @@
 // shaders/viewport_march.comp — progressive marching (seed 4.1): advances every unfinished ray
-// by at most u_stepsPerFrame steps of march.glsl's marcher, resuming from the stored state.
+// by at most u_stepsPerFrame steps of march.glsl's marcher, resuming from the stored state, and
+// lists the pixels the shade pass has to shade (rays that finished; at rest, reused colours).
 // Needs the formula, march.glsl and viewport_common.glsl before it.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
@@ -7,12 +8,17 @@ layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 uniform int u_stepsPerFrame;
 uniform int u_maxSteps;
+uniform int u_atRest;
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(px, u_size))) return;
     ivec4 info = imageLoad(u_rayInfo, px);
-    if (info.x != STATUS_MARCHING) return;
+    if (info.x != STATUS_MARCHING) {
+        // At rest a colour reused from the previous view is shaded exactly once (viewport_shade.comp).
+        if (u_atRest != 0 && (info.w & FLAG_REUSED) != 0 && (info.w & FLAG_SHADED_NOW) == 0) appendToShadeList(px);
+        return;
+    }
     vec4 state = imageLoad(u_rayState, px);
     int sampleIndex = info.z;
     vec3 ro = u_cameraPosition;
@@ -44,7 +50,10 @@ void main() {
             s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
     }
     atomicAdd(c_deEvals, uint(deEvals));
-    if (s.status != MARCH_MARCHING) info.w |= FLAG_NEEDS_SHADE;
+    if (s.status != MARCH_MARCHING) {
+        info.w |= FLAG_NEEDS_SHADE;
+        appendToShadeList(px);
+    }
     info.x = s.status;
     info.y = s.steps;
     imageStore(u_rayState, px, vec4(s.t, s.lastD, s.omega, covered));

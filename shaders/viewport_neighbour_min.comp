@@ -1,6 +1,7 @@
 // shaders/viewport_neighbour_min.comp — starts every pixel's ray for a new view. After a
 // reprojection (u_resetAll = 0) it is the seed's second erosion fix (4.2): the start is the
-// minimum reprojected distance over the 3x3 neighbourhood, backed off by a margin and verified
+// minimum reprojected distance over the 3x3 neighbourhood (which also fills the scatter's
+// one-pixel gaps), backed off by a margin and verified
 // with the DE (a start within the hit threshold of a surface may lie behind a thin shell: such a
 // ray restarts). Pixels nothing was reprojected onto (disoccluded, off-screen) restart from the
 // camera, or from the cone pre-pass distance. A reset (u_resetAll = 1) restarts every pixel and
@@ -42,12 +43,17 @@ void main() {
             carried.a = r.z;
             flags |= FLAG_CARRIED;
         }
-        float tMin = r.x;
+    }
+    // The minimum over the neighbourhood also fills the one-pixel gaps the reprojection scatter
+    // leaves where the view magnifies (nothing landed here, but on both sides).
+    float tMin = r.x > 0.0 ? r.x : 1e30;
+    if (u_resetAll == 0)
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 float n = texelFetch(u_reprojDistance, clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1), 0).x;
                 if (n > 0.0) tMin = min(tMin, n);
             }
+    if (tMin < 1e30) {
         float candidate = tMin - reprojectionMargin(tMin, u_pixelAngle, u_detail);
         if (inBound && candidate > restartAt) {
             float d = DE(ro + rd * candidate);

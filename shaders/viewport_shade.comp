@@ -1,18 +1,20 @@
 // shaders/viewport_shade.comp — shades only the samples whose ray finished this frame (the
-// per-pixel shading cache: a finished sample is never shaded again). Under camera motion a
+// per-pixel shading cache: a finished sample is never shaded again), one invocation per entry of
+// the shade list the march pass built (dispatched indirectly, viewport_common.glsl). Under camera motion a
 // reprojected ray that lands where its carried colour came from keeps that colour (diffuse, AO,
 // shadow and albedo of a surface point do not depend on the view; only the specular highlight
 // does), so motion costs march steps, not shading. When the camera stops, reused colours are
 // shaded exactly once. Needs the formula, march.glsl, shade.glsl and viewport_common.glsl.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 64) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
 uniform int u_atRest;
 
 void main() {
-    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(px, u_size))) return;
+    uint entry = gl_GlobalInvocationID.x;
+    if (entry >= sl_count) return;
+    ivec2 px = ivec2(int(sl_pixels[entry]) % u_size.x, int(sl_pixels[entry]) / u_size.x);
     ivec4 info = imageLoad(u_rayInfo, px);
     if (info.x == STATUS_MARCHING) return;
     bool finished = (info.w & FLAG_NEEDS_SHADE) != 0;

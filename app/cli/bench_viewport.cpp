@@ -27,7 +27,7 @@ struct BenchViewportArgs {
     int samples = 16;
     int coneTile = 0;
     double degrees = 0.5;
-    bool noReproject = false, noOverRelaxation = false, noError = false, json = false;
+    bool noReproject = false, noOverRelaxation = false, noError = false, json = false, timePasses = false;
 };
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -55,6 +55,7 @@ int run(const BenchViewportArgs& a) {
     fs.options.reproject = !a.noReproject;
     fs.options.overRelaxation = !a.noOverRelaxation;
     fs.options.coneTile = a.coneTile;
+    fs.options.timePasses = a.timePasses;
     fs.measureError = !a.noError;
 
     auto context = gl::HeadlessContext::create();
@@ -91,6 +92,11 @@ int run(const BenchViewportArgs& a) {
                               {"converged", f.stats.shareConverged},
                               {"shaded", f.stats.shareShaded},
                               {"psnr_db", number(f.psnrDb)}});
+            if (a.timePasses) {
+                nlohmann::json passes = nlohmann::json::object();
+                for (const auto& p : f.stats.passTimes) passes[p.name] = p.milliseconds;
+                frames.back()["pass_ms"] = passes;
+            }
         }
         out["per_frame"] = frames;
         std::printf("%s\n", out.dump(2).c_str());
@@ -104,6 +110,11 @@ int run(const BenchViewportArgs& a) {
         std::printf("%5zu  %-9s %7.1f %8.2f  %5.2f  %6.2f  %5.2f  %6.2f  %6.1f\n", i, viewport::toString(s.action),
                     s.milliseconds, s.deEvalsPerPixel, s.shareReprojected, s.shareRestarted, s.shareConverged,
                     s.shareShaded, r.frames[i].psnrDb);
+        if (a.timePasses) {
+            std::printf("       GPU ms:");
+            for (const auto& p : s.passTimes) std::printf(" %s %.1f", p.name, p.milliseconds);
+            std::printf("\n");
+        }
     }
     std::printf("mean: %.1f ms/frame, %.2f DE evals/pixel/frame, %.1f dB\n", r.meanMilliseconds, r.meanDeEvalsPerPixel,
                 r.meanPsnrDb);
@@ -144,6 +155,7 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--no-reproject", args->noReproject, "restart every ray on camera motion");
     cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");
     cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");
+    cmd->add_flag("--time-passes", args->timePasses, "GPU timestamps around each pass (per-frame pass_ms)");
     cmd->add_flag("--json", args->json, "one JSON object on stdout");
     cmd->callback([args, &action] { action = [args] { return run(*args); }; });
 }

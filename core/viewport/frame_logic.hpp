@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
@@ -90,14 +91,21 @@ struct FrameCounters {
     uint64_t shaded = 0;       // pixels shaded this frame (a shading cache miss)
 };
 
+// GPU time of one pass of a frame (core/viewport/pass_timer.hpp), when ViewportOptions::timePasses.
+struct PassTime {
+    const char* name = "";  // a string literal: "reproject", "start", "march", "shade", ...
+    double milliseconds = 0.0;
+};
+
 struct FrameStats {
     FrameAction action = FrameAction::Reset;
     int width = 0, height = 0;
     double deEvalsPerPixel = 0.0;
     double shareReprojected = 0.0, shareRestarted = 0.0, shareConverged = 0.0, shareShaded = 0.0;
-    int samplesAtRest = 0;      // the AA sample index the frame worked on (0 under motion)
-    bool settled = false;       // every pixel is finished at the AA cap: further frames cost nothing
-    double milliseconds = 0.0;  // wall time incl. glFinish; filled in by whoever times the frame
+    int samplesAtRest = 0;            // the AA sample index the frame worked on (0 under motion)
+    bool settled = false;             // every pixel is finished at the AA cap: further frames cost nothing
+    double milliseconds = 0.0;        // wall time incl. glFinish; filled in by whoever times the frame
+    std::vector<PassTime> passTimes;  // per pass, only with ViewportOptions::timePasses
 };
 
 FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction action);

@@ -9,6 +9,8 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     setViewUniforms(program, c.camera, s.width(), s.height());
     setInt(program, "u_stepsPerFrame", c.options.stepsPerFrame);
     setInt(program, "u_maxSteps", c.maxSteps);
+    setInt(program, "u_atRest", c.atRest ? 1 : 0);
+    s.clearShadeList();
     dispatchPixels(s.width(), s.height());
     imageBarrier();
 }

@@ -34,19 +34,14 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
 
     reprojDistance = makeTexture(GL_RGBA32F, width, height);
     reprojColor = makeTexture(GL_RGBA32F, width, height);
-    reprojDepth = makeTexture(GL_DEPTH_COMPONENT32F, width, height);
-    glCreateFramebuffers(1, &reprojFramebuffer);
-    glNamedFramebufferTexture(reprojFramebuffer, GL_COLOR_ATTACHMENT0, reprojDistance, 0);
-    glNamedFramebufferTexture(reprojFramebuffer, GL_COLOR_ATTACHMENT1, reprojColor, 0);
-    glNamedFramebufferTexture(reprojFramebuffer, GL_DEPTH_ATTACHMENT, reprojDepth, 0);
-    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(reprojFramebuffer, 2, buffers);
+    glCreateBuffers(1, &shadeList);
+    glNamedBufferStorage(shadeList, GLsizeiptr((4 + size_t(width) * size_t(height)) * sizeof(GLuint)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
 }
 
 MarchState::~MarchState() {
-    glDeleteFramebuffers(1, &reprojFramebuffer);
-    const GLuint textures[] = {rayState, rayInfo, sampleColor,    accum,       image,
-                               centre,   cone,    reprojDistance, reprojColor, reprojDepth};
+    glDeleteBuffers(1, &shadeList);
+    const GLuint textures[] = {rayState, rayInfo, sampleColor, accum, image, centre, cone, reprojDistance, reprojColor};
     glDeleteTextures(GLsizei(std::size(textures)), textures);
 }
 
@@ -58,6 +53,12 @@ void MarchState::bindImages() const {
     glBindImageTexture(4, image, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(5, centre, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(6, cone, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, shadeList);
+}
+
+void MarchState::clearShadeList() const {
+    const GLuint empty[4] = {0, 1, 1, 0};  // groups x, y, z; count
+    glNamedBufferSubData(shadeList, 0, sizeof empty, empty);
 }
 
 }  // namespace fraktal::viewport

@@ -21,8 +21,9 @@ struct FrameContext {
     bool atRest;  // FrameAction::Continue: the AA level may rise
 };
 
-// Reprojection (reproject_pass.cpp): rasterises the previous frame's grid into the reprojection
-// target. Owns the grid's index buffer (rebuilt when the size changes).
+// Reprojection (reproject_pass.cpp): scatters the previous frame's points into the reprojection
+// target (MarchState::reprojDistance / reprojColor). Owns the per-pixel depth buffer the nearest
+// point wins in (resized with the image).
 class ReprojectPass {
    public:
     ReprojectPass();
@@ -33,9 +34,8 @@ class ReprojectPass {
              double boundRadius);
 
    private:
-    GLuint vertexArray_ = 0, indices_ = 0;
+    GLuint depth_ = 0;
     int width_ = 0, height_ = 0;
-    GLsizei indexCount_ = 0;
 };
 
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);

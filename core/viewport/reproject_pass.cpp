@@ -1,74 +1,54 @@
-// Reprojection (seed 4.2): one vertex per pixel at the point its centre ray reached, a quad
-// between each 2x2 block of pixels, rasterised with the new view-projection; the depth test keeps
-// the nearest surface where quads overlap. Pixels no quad covers stay at -1 and restart.
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
-#include <vector>
+// Reprojection (seed 4.2) as a compute scatter (shaders/viewport_reproject.comp): every previous
+// pixel's point goes to the new pixel it projects into, nearest first. Pixels nothing lands on
+// stay at -1; the start pass fills one-pixel gaps from their neighbours and restarts the rest.
+#include <limits>
 
 #include "core/viewport/passes.hpp"
 
 namespace fraktal::viewport {
 
-ReprojectPass::ReprojectPass() {
-    glCreateVertexArrays(1, &vertexArray_);
-    glCreateBuffers(1, &indices_);
-}
+ReprojectPass::ReprojectPass() { glCreateBuffers(1, &depth_); }
 
-ReprojectPass::~ReprojectPass() {
-    glDeleteBuffers(1, &indices_);
-    glDeleteVertexArrays(1, &vertexArray_);
-}
+ReprojectPass::~ReprojectPass() { glDeleteBuffers(1, &depth_); }
 
 void ReprojectPass::run(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current,
-                        double boundRadius) {
+                        double /*boundRadius*/) {
     const int w = s.width(), h = s.height();
     if (w != width_ || h != height_) {
-        std::vector<GLuint> index;
-        index.reserve(size_t(w - 1) * size_t(h - 1) * 6);
-        for (int y = 0; y + 1 < h; ++y)
-            for (int x = 0; x + 1 < w; ++x) {
-                const GLuint a = GLuint(y * w + x), b = a + 1, c = a + GLuint(w), d = c + 1;
-                index.insert(index.end(), {a, b, c, b, d, c});
-            }
-        glNamedBufferData(indices_, GLsizeiptr(index.size() * sizeof(GLuint)), index.data(), GL_STATIC_DRAW);
-        glVertexArrayElementBuffer(vertexArray_, indices_);
-        indexCount_ = GLsizei(index.size());
+        glNamedBufferData(depth_, GLsizeiptr(size_t(w) * size_t(h) * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
         width_ = w;
         height_ = h;
     }
-    // Clip space of the new camera; y flipped because image rows count from the top.
-    const double distance = glm::length(current.position);
-    const double nearPlane = 1e-4 * boundRadius, farPlane = 4.0 * (distance + boundRadius);
-    const glm::dmat4 projection = glm::perspective(glm::radians(current.fovY), double(w) / h, nearPlane, farPlane);
-    const glm::dmat4 flip = glm::scale(glm::dmat4(1.0), glm::dvec3(1.0, -1.0, 1.0));
-    const glm::mat4 clipFromWorld(flip * projection * glm::lookAt(current.position, current.target, current.up));
-
-    glBindFramebuffer(GL_FRAMEBUFFER, s.reprojFramebuffer);
-    glViewport(0, 0, w, h);
-    const float nothing[4] = {-1.0f, 0.0f, -1.0f, 0.0f}, black[4] = {0, 0, 0, 0};
-    const float farDepth = 1.0f;
-    glClearNamedFramebufferfv(s.reprojFramebuffer, GL_COLOR, 0, nothing);
-    glClearNamedFramebufferfv(s.reprojFramebuffer, GL_COLOR, 1, black);
-    glClearNamedFramebufferfv(s.reprojFramebuffer, GL_DEPTH, 0, &farDepth);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
+    const GLuint farthest = std::numeric_limits<GLuint>::max();
+    glClearNamedBufferData(depth_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &farthest);
+    const float nothing[4] = {-1.0f, 0.0f, -1.0f, 0.0f};
+    glClearTexImage(s.reprojDistance, 0, GL_RGBA, GL_FLOAT, nothing);
 
     const GLuint program = p.reproject.id();
     glUseProgram(program);
     setViewUniforms(program, previous, w, h);
-    glUniformMatrix4fv(glGetUniformLocation(program, "u_newClipFromWorld"), 1, GL_FALSE, glm::value_ptr(clipFromWorld));
-    glUniform3f(glGetUniformLocation(program, "u_newCameraPosition"), float(current.position.x),
-                float(current.position.y), float(current.position.z));
+    // The new camera's basis, exactly as setViewUniforms builds it.
+    const vec3 forward = normalize(current.target - current.position);
+    const vec3 right = normalize(glm::cross(forward, current.up));
+    const vec3 up = glm::cross(right, forward);
+    auto set3 = [&](const char* name, const vec3& v) {
+        glUniform3f(glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
+    };
+    set3("u_newCameraPosition", current.position);
+    set3("u_newRight", right);
+    set3("u_newUp", up);
+    set3("u_newForward", forward);
+    setFloat(program, "u_newTanHalfFovY", float(std::tan(glm::radians(current.fovY) * 0.5)));
     glBindTextureUnit(0, s.centre);
     glBindTextureUnit(1, s.image);
-    glBindVertexArray(vertexArray_);
-    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
-    glBindVertexArray(0);
-    glDisable(GL_DEPTH_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    imageBarrier();
+    glBindImageTexture(7, s.reprojDistance, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(8, s.reprojColor, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, depth_);
+    for (int resolve = 0; resolve <= 1; ++resolve) {
+        setInt(program, "u_resolve", resolve);
+        dispatchPixels(w, h);
+        imageBarrier();
+    }
 }
 
 }  // namespace fraktal::viewport

@@ -1,4 +1,5 @@
-// Shading of finished samples only (shaders/viewport_shade.comp).
+// Shading of finished samples only (shaders/viewport_shade.comp), over the shade list the march
+// pass built: an indirect dispatch of as many 64-wide groups as the list needs.
 #include "core/viewport/passes.hpp"
 
 namespace fraktal::viewport {
@@ -8,7 +9,10 @@ void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     p.shade.use(c.formula, c.shading);
     setViewUniforms(program, c.camera, s.width(), s.height());
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
-    dispatchPixels(s.width(), s.height());
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, s.shadeList);
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     imageBarrier();
 }
 

@@ -5,6 +5,7 @@ namespace fraktal::viewport {
 Viewport::Viewport(ViewportOptions options) : options_(options) {
     reproject_ = std::make_unique<ReprojectPass>();
     counters_ = std::make_unique<GpuCounters>();
+    timer_ = std::make_unique<PassTimer>();
     glCreateVertexArrays(1, &displayVertexArray_);
 }
 
@@ -46,19 +47,34 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     }
 
     const FrameContext context{formula, camera, params, options_, render.maxSteps, action == FrameAction::Continue};
+    const bool timed = options_.timePasses;
+    auto mark = [&](const char* pass) {
+        if (timed) timer_->mark(pass);
+    };
+    if (timed) timer_->begin();
     counters_->clearAndBind();
     state_->bindImages();
-    if (action == FrameAction::Reproject)
+    if (action == FrameAction::Reproject) {
         reproject_->run(*programs_, *state_, previous_->camera, camera, formula.boundRadius);
+        mark("reproject");
+    }
     if (action != FrameAction::Continue) {
-        if (options_.coneTile > 0) runConePass(*programs_, *state_, context);
+        if (options_.coneTile > 0) {
+            runConePass(*programs_, *state_, context);
+            mark("cone");
+        }
         runNeighbourMinPass(*programs_, *state_, context, action == FrameAction::Reset);
+        mark("start");
     }
     runMarchPass(*programs_, *state_, context);
+    mark("march");
     runShadePass(*programs_, *state_, context);
+    mark("shade");
     runAccumulatePass(*programs_, *state_, context);
+    mark("accumulate");
 
     FrameStats stats = summarize(counters_->read(), width, height, action);
+    if (timed) stats.passTimes = timer_->read();
     settled_ = action == FrameAction::Continue && counters_->busyPixels() == 0;
     stats.settled = settled_;
     previous_ = std::move(key);

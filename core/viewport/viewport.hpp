@@ -22,6 +22,7 @@
 #include "core/viewport/frame_logic.hpp"
 #include "core/viewport/gpu_counters.hpp"
 #include "core/viewport/march_state.hpp"
+#include "core/viewport/pass_timer.hpp"
 #include "core/viewport/passes.hpp"
 #include "core/viewport/viewport_options.hpp"
 #include "core/viewport/viewport_programs.hpp"
@@ -65,6 +66,7 @@ class Viewport {
     std::unique_ptr<MarchState> state_;
     std::unique_ptr<ReprojectPass> reproject_;
     std::unique_ptr<GpuCounters> counters_;
+    std::unique_ptr<PassTimer> timer_;
     std::optional<FrameKey> previous_;
     FrameAction previousAction_ = FrameAction::Reset;
     bool settled_ = false;

@@ -12,6 +12,7 @@ struct ViewportOptions {
     bool overRelaxation = true;  // over-relaxed sphere tracing (RenderSettings::overRelaxation); off: omega = 1
     int coneTile = 0;            // low-resolution cone pre-pass tile in pixels (0: off; 8 is typical)
     int coneSteps = 64;          // DE steps of a pre-pass cone
+    bool timePasses = false;     // GPU timestamps around each pass into FrameStats::passTimes
 };
 
 }  // namespace fraktal::viewport

@@ -46,9 +46,8 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
     const GeneratedFormula none;
     accumulate = gl::compileCompute(
         assembleShader(none, "viewport_accumulate.comp", concat({"viewport_common.glsl", "viewport_accumulate.comp"})));
-    reproject = gl::compileGraphics(
-        assembleShader(none, "viewport_reproject.vert", concat({"viewport_common.glsl", "viewport_reproject.vert"})),
-        assembleShader(none, "viewport_reproject.frag", concat({"viewport_reproject.frag"})));
+    reproject = gl::compileCompute(
+        assembleShader(none, "viewport_reproject.comp", concat({"viewport_common.glsl", "viewport_reproject.comp"})));
     display = gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
                                   assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"})));
 }
