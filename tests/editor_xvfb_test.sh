@@ -24,7 +24,7 @@ for preset in "$presets"/*.json; do
     name=$(basename "$preset" .json)
     shot="$out/editor_$name.png"
     rm -f "$shot"
-    if ! HOME="$home" xvfb-run -a -s "-screen 0 1280x800x24" "$fraktal" edit "$preset" --frames 6 --screenshot "$shot"; then
+    if ! HOME="$home" xvfb-run -a -s "-screen 0 1280x800x24" "$fraktal" edit "$preset" --frames 3 --screenshot "$shot"; then
         echo "FAIL $name: the editor exited with an error"; failures=$((failures + 1)); continue
     fi
     size=$(identify -format "%wx%h" "$shot")

@@ -17,6 +17,7 @@ struct EditOptions {
     std::string preset;
     int frames = 0;
     std::string screenshot;
+    std::string tab;
     int width = 1280, height = 800;
 };
 
@@ -28,6 +29,7 @@ int runEdit(const EditOptions& o) {
     e.screenshot = o.screenshot;
     e.width = o.width;
     e.height = o.height;
+    e.sidebarTab = o.tab;
     // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
     e.useIniFile = o.frames == 0;
     // Nor autosave or a restore prompt: a scripted run is not a session to recover.
@@ -48,6 +50,8 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--frames", o->frames, "Draw this many frames, then exit")->check(CLI::Range(1, 100000));
     cmd->add_option("--screenshot", o->screenshot, "With --frames: save a PNG of the whole window at the end")
         ->needs("--frames");
+    cmd->add_option("--tab", o->tab, "Scene panel tab to show first")
+        ->check(CLI::IsMember({"Camera", "Render", "Shading", "Presets"}));
     cmd->add_option("--width", o->width, "Window width")->check(CLI::Range(320, 16384));
     cmd->add_option("--height", o->height, "Window height")->check(CLI::Range(240, 16384));
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });

@@ -157,6 +157,7 @@ int runEditor(const EditorOptions& o) {
             std::fprintf(stderr, "fraktal: %s\n", s.status.text.c_str());
             if (o.frames > 0) status = 2;  // a scripted run must not pass with the wrong scene
         }
+        s.panels.selectTab = o.sidebarTab;
         if (o.sessionRecovery && !beginSession(s.autosave, config, glfwGetTime())) setStatus(s, s.autosave.error, true);
         std::string title;
         int frame = 0;

@@ -12,6 +12,7 @@ struct EditorOptions {
     std::filesystem::path screenshot;  // with frames: a PNG of the whole window after the last
     int width = 1280, height = 800;
     bool useIniFile = true;            // false for reproducible screenshots
+    std::string sidebarTab;            // Scene tab shown first: Camera, Render, Shading or Presets
     bool sessionRecovery = true;       // autosave and the restore prompt (off for scripted runs)
 };
 

@@ -28,6 +28,7 @@ struct PanelVisibility {
     bool sidebar = true;  // camera, render, presets
     bool stats = true;
     bool demo = false;    // ImGui's own metrics, for bug reports
+    std::string selectTab;  // a Scene tab to bring to front on the next frame ("Render", ...)
 };
 
 // Laid out by the panels each frame; the viewport gets what they leave.

@@ -62,7 +62,8 @@ bool startExport(ExportJob& job, const Preset& preset, double now) {
         job.status = ExportStatus::Failed;
         return false;
     }
-    const std::vector<std::string> args = exportCommand(fs::read_symlink("/proc/self/exe"), job.presetFile, job.options);
+    const fs::path exe = job.executable.empty() ? fs::read_symlink("/proc/self/exe") : job.executable;
+    const std::vector<std::string> args = exportCommand(exe, job.presetFile, job.options);
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);

@@ -49,6 +49,7 @@ struct ExportJob {
     double progress = -1.0;   // 0..1, or < 0 when the child has not said
     double startedAt = 0.0;
     std::filesystem::path presetFile;  // the temp preset handed to the child
+    std::filesystem::path executable;  // the fraktal binary to run; empty: this program
 };
 
 // The command line for the still renderer (`fraktal render`), for the dialog to show.

@@ -103,9 +103,12 @@ void drawColourSection(EditorState& s) {
 }  // namespace
 
 void drawRenderTab(EditorState& s) {
+    // Leave the labels room: they name what a preset field does.
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     drawViewportSection(s.doc.view);
     drawMarchSection(s.doc.preset.render);
     drawColourSection(s);
+    ImGui::PopItemWidth();
 }
 
 }  // namespace fraktal::editor

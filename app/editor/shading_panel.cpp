@@ -97,9 +97,11 @@ void drawAtmosphereSection(ShadingSettings& sh) {
 
 void drawShadingTab(EditorState& s) {
     ShadingSettings& sh = s.doc.preset.shading;
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     drawLightSection(sh);
     drawPaletteSection(sh);
     drawAtmosphereSection(sh);
+    ImGui::PopItemWidth();
     ImGui::Spacing();
     if (ImGui::Button("Reset shading to defaults")) sh = ShadingSettings{};
 }

@@ -6,6 +6,13 @@
 
 namespace fraktal::editor {
 
+namespace {
+// Selects the tab named by `--tab` (or a command) once.
+ImGuiTabItemFlags selectIf(const EditorState& s, const char* tab) {
+    return s.panels.selectTab == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+}
+}  // namespace
+
 void drawSidebar(EditorState& s) {
     if (!s.panels.sidebar) return;
     const ImGuiViewport* vp = ImGui::GetMainViewport();
@@ -17,24 +24,25 @@ void drawSidebar(EditorState& s) {
     ImGui::Begin("Scene", &s.panels.sidebar, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
     s.layout.rightWidth = ImGui::GetWindowWidth();
     if (ImGui::BeginTabBar("scene_tabs")) {
-        if (ImGui::BeginTabItem("Camera")) {
+        if (ImGui::BeginTabItem("Camera", nullptr, selectIf(s, "Camera"))) {
             drawCameraTab(s);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("Render")) {
+        if (ImGui::BeginTabItem("Render", nullptr, selectIf(s, "Render"))) {
             drawRenderTab(s);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("Shading")) {
+        if (ImGui::BeginTabItem("Shading", nullptr, selectIf(s, "Shading"))) {
             drawShadingTab(s);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("Presets")) {
+        if (ImGui::BeginTabItem("Presets", nullptr, selectIf(s, "Presets"))) {
             drawPresetsTab(s);
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();
     }
+    s.panels.selectTab.clear();
     ImGui::End();
 }
 

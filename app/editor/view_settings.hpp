@@ -22,7 +22,7 @@ struct ViewSettings {
     // Progressive anti-aliasing cap: jittered samples per pixel while the camera rests.
     int aaCap = 8;
     // Cone pre-pass tile in pixels (0: off).
-    int coneTile = 8;
+    int coneTile = 0;
 
     bool operator==(const ViewSettings&) const = default;
 };
