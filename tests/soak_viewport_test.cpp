@@ -1,0 +1,107 @@
+// Soak test of the viewport (issue 6): random parameter edits, structure edits (a block toggled,
+// which recompiles), camera moves and resizes with frames in between, for a bounded time
+// (FRAKTAL_SOAK_SECONDS, default 60 s in CI; set it higher for a long soak). Resident memory
+// after a warm-up must stay flat to the end (a small margin for allocator noise) and GL must
+// raise no error.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "core/viewport/camera_path.hpp"
+#include "core/viewport/viewport.hpp"
+#include "test_support.hpp"
+
+namespace fraktal::viewport {
+namespace {
+
+// Resident set size in KiB, from /proc/self/status (VmRSS).
+long residentKiB() {
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    while (status >> key) {
+        if (key == "VmRSS:") {
+            long kib = 0;
+            status >> kib;
+            return kib;
+        }
+        status.ignore(1 << 12, '\n');
+    }
+    return -1;
+}
+
+double soakSeconds() {
+    const char* env = std::getenv("FRAKTAL_SOAK_SECONDS");
+    return env ? std::max(1.0, std::atof(env)) : 60.0;
+}
+
+TEST(SoakViewport, RandomEditsKeepMemoryFlatAndRaiseNoGlError) {
+    test::glContext();
+    std::vector<Preset> presets;
+    for (const auto& path : test::shippedPresets()) presets.push_back(loadPreset(path));
+    std::mt19937 rng(20261121);
+    auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+
+    Viewport viewport;
+    const auto start = std::chrono::steady_clock::now();
+    const double total = soakSeconds(), warmUp = std::min(10.0, total / 4);
+    long rssAfterWarmUp = -1;
+    int frames = 0, edits = 0;
+    Preset current = presets[0];
+    Camera camera = current.camera;
+    int width = 64, height = 48;
+    while (true) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (rssAfterWarmUp < 0 && elapsed >= warmUp) rssAfterWarmUp = residentKiB();
+        if (elapsed >= total) break;
+        switch (std::uniform_int_distribution<int>(0, 5)(rng)) {
+            case 0:  // another preset: a structure change (recompile)
+                current = presets[std::uniform_int_distribution<size_t>(0, presets.size() - 1)(rng)];
+                camera = current.camera;
+                ++edits;
+                break;
+            case 1:  // a parameter edit within a tenth of the value
+                for (Node& n : current.formula.nodes)
+                    for (ParamValue& v : n.values) v.x *= uniform(0.95, 1.05);
+                ++edits;
+                break;
+            case 2:  // a structure edit: one block switched off or on (never all of them)
+                if (current.formula.nodes.size() > 1) {
+                    Node& n =
+                        current.formula
+                            .nodes[std::uniform_int_distribution<size_t>(0, current.formula.nodes.size() - 1)(rng)];
+                    n.enabled = !n.enabled;
+                    ++edits;
+                }
+                break;
+            case 3:  // a resize
+                width = std::uniform_int_distribution<int>(32, 96)(rng);
+                height = std::uniform_int_distribution<int>(24, 64)(rng);
+                break;
+            default:  // camera motion (reprojection)
+                camera = cameraOnPath(camera, CameraPath::Orbit, 1, uniform(-3.0, 3.0));
+                break;
+        }
+        for (int f = 0; f < 3; ++f, ++frames) {
+            try {
+                viewport.render(current.formula, camera, current.render, current.shading, width, height);
+            } catch (const std::runtime_error&) {
+                // A toggled-off block may leave a formula that does not compile: the old image stays.
+            }
+        }
+        ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "after " << frames << " frames, " << edits << " edits";
+    }
+    const long rssAtEnd = residentKiB();
+    ASSERT_GT(rssAfterWarmUp, 0);
+    EXPECT_GT(edits, 10);
+    // Allocator and driver caches may grow a little; a leak per frame or per edit grows without bound.
+    EXPECT_LT(rssAtEnd, rssAfterWarmUp + std::max(16L * 1024, rssAfterWarmUp / 20))
+        << "RSS after warm-up " << rssAfterWarmUp << " KiB, at the end " << rssAtEnd << " KiB, " << frames
+        << " frames, " << edits << " edits";
+}
+
+}  // namespace
+}  // namespace fraktal::viewport
