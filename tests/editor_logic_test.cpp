@@ -280,3 +280,14 @@ TEST(EditorFiles, UnsavedMarkFollowsEditsAndSaves) {
 
 }  // namespace
 }  // namespace fraktal::editor
+
+// A formula with a custom GLSL block (no CPU evaluation) must not break the fly rule: outside
+// the bound the distance to the bound sphere, inside a crawl.
+TEST(EditorFlySpeed, CustomGlslFormulaFallsBackToTheBound) {
+    const fraktal::Preset p = fraktal::loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/tests/custom_presets/twisted_mandelbulb.json");
+    ASSERT_FALSE(p.formula.cpuEvaluable());
+    EXPECT_NEAR(fraktal::editor::safeDistance(p.formula, fraktal::vec3(0.0, 0.0, 4.0)), 4.0 - p.formula.boundRadius, 1e-12);
+    EXPECT_EQ(fraktal::editor::safeDistance(p.formula, fraktal::vec3(0.0, 0.0, 1.0)), 0.0);
+    const fraktal::editor::FlyRule rule;
+    EXPECT_EQ(fraktal::editor::flySpeed(p.formula, fraktal::vec3(0.0, 0.0, 1.0), rule), rule.escapeSpeed);
+}

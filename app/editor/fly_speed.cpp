@@ -7,6 +7,9 @@ namespace fraktal::editor {
 
 double safeDistance(const Formula& f, const vec3& eye) {
     const double r = length(eye);
+    // A formula with custom GLSL blocks has no CPU evaluation: only the bound sphere is known,
+    // so outside it the distance to the sphere is the lower bound, and inside it the eye crawls.
+    if (!f.cpuEvaluable()) return std::max(r - f.boundRadius, 0.0);
     if (r <= f.boundRadius) return distanceEstimate(f, eye);
     const vec3 s = eye * (f.boundRadius / r);
     const double onSphere = std::max(distanceEstimate(f, s), 0.0);
