@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "test_support.hpp"
@@ -134,7 +135,16 @@ TEST(Preset, EveryMalformedPresetGivesAClearError) {
     EXPECT_EQ(count, std::size(kBadPresets));
 }
 
+// Every file under `dir` with its size and modification time.
+std::map<std::string, std::pair<uintmax_t, std::filesystem::file_time_type>> snapshot(const std::filesystem::path& dir) {
+    std::map<std::string, std::pair<uintmax_t, std::filesystem::file_time_type>> files;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+        files[e.path().string()] = {e.is_regular_file() ? e.file_size() : 0, e.last_write_time()};
+    return files;
+}
+
 TEST(Preset, CheckCommandExitsNonZeroWithTheMessage) {
+    const auto corpusBefore = snapshot(test::sourceDir() / "tests/bad_presets");
     for (const BadPreset& b : kBadPresets) {
         const std::string path = (test::sourceDir() / "tests/bad_presets" / b.file).string();
         const test::CliRun r = test::runCli("check " + path);
@@ -149,6 +159,7 @@ TEST(Preset, CheckCommandExitsNonZeroWithTheMessage) {
     const test::CliRun directory = test::runCli("check " + (test::sourceDir() / "presets").string());
     EXPECT_EQ(directory.exitCode, 2);
     EXPECT_NE(directory.output.find("is a directory"), std::string::npos) << directory.output;
+    EXPECT_EQ(snapshot(test::sourceDir() / "tests/bad_presets"), corpusBefore) << "checking a bad preset touched a file";
 }
 
 TEST(Preset, CheckCommandReportsASoundPreset) {
