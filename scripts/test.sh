@@ -15,7 +15,9 @@ echo "== tests under AddressSanitizer + UBSan"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRAKTAL_SANITIZE=ON -DFRAKTAL_BUILD_EDITOR=OFF >/dev/null
 cmake --build build-asan --parallel "$(nproc)" --target fraktal_tests fraktal
 # Mesa (uninstrumented) keeps allocations until exit; leaks are checked in the tests without GL.
-ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 build-asan/tests/fraktal_tests --gtest_brief=1
+# The peak-memory test measures RSS, which ASan's shadow memory inflates: it runs in Release only.
+ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 build-asan/tests/fraktal_tests --gtest_brief=1 \
+  --gtest_filter='-CliRender.LargeImagePeakMemoryIsBounded'
 ASAN_OPTIONS=detect_leaks=1 build-asan/tests/fraktal_tests --gtest_brief=1 \
   --gtest_filter='Preset.*:PresetSave.*:DEQuality.*:GlslCompile.OnlyStructureChangesTheCode:CustomBlock.RoundTrips*:Editor*:ViewportLogic.*'
 
