@@ -3,47 +3,66 @@
 #pragma once
 
 #include <filesystem>
-#include <stdexcept>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/json_reader.hpp"
+#include "core/preset_migrate.hpp"
 #include "core/render/settings.hpp"
 
 namespace fraktal {
 
-inline constexpr int kPresetVersion = 1;
+// Version 2 moved the colour-management settings out of "render" (presets/README.md, "Versions").
+// Older files are migrated on load (core/preset_migrate.hpp), with a note.
+inline constexpr int kPresetVersion = 2;
 inline constexpr std::string_view kPresetFormat = "fraktal-preset";
-
-// A preset that cannot be used: says which file, which field (a JSON path such as
-// formula.nodes[2].params.limit) and why.
-class PresetError : public std::runtime_error {
-public:
-    PresetError(std::string file, std::string field, std::string reason);
-    const std::string& file() const { return file_; }
-    const std::string& field() const { return field_; }
-    const std::string& reason() const { return reason_; }
-
-private:
-    std::string file_, field_, reason_;
-};
 
 struct Preset {
     std::string name;
     std::string description;
     Formula formula;
     Camera camera;
-    RenderSettings render;    // "render" section (optional)
+    RenderSettings render;    // "render" and "colorManagement" sections (optional)
     ShadingSettings shading;  // "shading" section (optional)
-    // Top-level sections this version does not know (from a newer fraktal), kept on save.
+    // Top-level sections this version does not know (from a newer fraktal, or the editor's own
+    // "editor" section), kept on save.
     nlohmann::json extra = nlohmann::json::object();
+    // Fields a newer format version added inside the known sections, written back on save.
+    KeptFields unknownFields;
+    // The version written on save: kPresetVersion, or a newer file's own version when it was
+    // read from one (its unknown fields are kept, and a file that carries them must keep saying
+    // it is of that version, or the next load would refuse them as typos).
+    int formatVersion = kPresetVersion;
+    // What loading changed to read a file of an older version, one note per step ("version 1 ->
+    // 2: ..."); empty for a current file. Not saved: the next save writes the current version.
+    std::vector<std::string> migrationNotes;
 };
+
+// A preset document after the checks that every preset, 3D or 2D, passes first: the JSON
+// guards (json_reader.hpp), "format", a "version" that is known, migrated from an older
+// version to kPresetVersion (the notes and moved fields in `migration`), or newer.
+struct PresetDocument {
+    nlohmann::json json;
+    int fileVersion = kPresetVersion;  // as written in the file
+    MigrationReport migration;
+    bool newer() const { return fileVersion > kPresetVersion; }
+};
+PresetDocument readPresetDocument(std::string_view text, const std::string& file);
+// `e`, raised while reading the migrated document, with its field named as in the file.
+PresetError errorAsInFile(const PresetError& e, const PresetDocument& document);
 
 // `source` names the file in error messages.
 Preset parsePreset(std::string_view text, const std::string& source);
 Preset loadPreset(const std::filesystem::path& path);
+
+// The "colorManagement" section (working space, display, view, exposure; 3D and 2D alike), read
+// into and written from the RenderSettings that carry it.
+void parseColorManagement(const ReadContext& context, const nlohmann::json& j, RenderSettings& s);
+nlohmann::json colorManagementJson(const RenderSettings& s);
 
 // Writes only what differs from defaults, plus the format and version.
 nlohmann::json presetToJson(const Preset& preset);

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 out=build-fuzz
 mkdir -p "$out"
-sources=(core/preset.cpp core/formula.cpp core/custom_block.cpp core/camera.cpp core/image/atomic_file.cpp
+sources=(core/preset.cpp core/json_reader.cpp core/preset_migrate.cpp core/formula.cpp core/custom_block.cpp core/camera.cpp core/image/atomic_file.cpp
          formulas/registry.cpp tests/fuzz/preset_fuzzer.cpp)
 if [ ! -x "$out/preset_fuzzer" ] || [ -n "$(find "${sources[@]}" core/*.hpp formulas/*.hpp -newer "$out/preset_fuzzer")" ]; then
   clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I. \

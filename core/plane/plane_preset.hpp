@@ -2,13 +2,15 @@
 // "dimension": 2, a 2D formula ("start" and "nodes" of 2D blocks), a "view" (centre and width in
 // the plane, in double) instead of a camera, and a "colouring" section instead of "shading".
 // Format: presets/README.md, section "2D presets". Errors are PresetError (file, field, reason).
+// The document guards, field reader, version migration and keeping of a newer version's fields
+// are the 3D reader's (core/json_reader.hpp, core/preset.hpp).
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
+#include <vector>
 
 #include "core/plane/plane_colouring.hpp"
 #include "core/plane/plane_formula.hpp"
@@ -24,6 +26,11 @@ struct PlanePreset {
     PlaneViewRect view;
     RenderSettings render;  // width, height, spp and the colour settings (3D-only fields unused)
     PlaneColouring colouring;
+    // As in Preset (core/preset.hpp): fields of a newer version kept for saving, the version
+    // to save as, and what loading an older version changed.
+    KeptFields unknownFields;
+    int formatVersion = kPresetVersion;
+    std::vector<std::string> migrationNotes;
 };
 
 // True when the JSON text is a preset with "dimension": 2 (false for 3D presets and for text

@@ -1,0 +1,234 @@
+#include "core/json_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace fraktal {
+
+using nlohmann::json;
+
+PresetError::PresetError(std::string file, std::string field, std::string reason)
+    : std::runtime_error(file + ": " + (field.empty() ? "" : field + ": ") + reason),
+      file_(std::move(file)),
+      field_(std::move(field)),
+      reason_(std::move(reason)) {}
+
+json parseGuardedJson(std::string_view text, const std::string& file) {
+    if (text.size() > kMaxDocumentBytes)
+        throw PresetError(file, "",
+                          "file is larger than " + std::to_string(kMaxDocumentBytes >> 20) + " MiB; not a preset");
+    if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) throw PresetError(file, "", "file is empty");
+    // The keys seen in each open object, to find duplicates while parsing.
+    std::vector<std::set<std::string>> keys;
+    std::string duplicate, tooDeep;
+    auto callback = [&](int depth, json::parse_event_t event, json& parsed) {
+        if (depth > kMaxJsonDepth && tooDeep.empty())
+            tooDeep = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
+        switch (event) {
+            case json::parse_event_t::object_start: keys.emplace_back(); break;
+            case json::parse_event_t::object_end:
+                if (!keys.empty()) keys.pop_back();
+                break;
+            case json::parse_event_t::key:
+                if (!keys.empty() && !keys.back().insert(parsed.get<std::string>()).second && duplicate.empty())
+                    duplicate = parsed.get<std::string>();
+                break;
+            default: break;
+        }
+        return tooDeep.empty();
+    };
+    json j;
+    try {
+        j = json::parse(text.begin(), text.end(), callback);
+    } catch (const json::parse_error& e) {
+        // Byte offset to line.
+        const size_t at = std::min(e.byte, text.size());
+        const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + long(at ? at - 1 : 0), '\n'));
+        std::string reason = e.what();
+        if (auto p = reason.find("parse error"); p != std::string::npos) reason = reason.substr(p);
+        if (!tooDeep.empty()) reason = tooDeep;
+        throw PresetError(file, "", "invalid JSON at line " + std::to_string(line) + ": " + reason);
+    } catch (const json::exception& e) {  // e.g. out_of_range 406: a number too large for a double
+        std::string reason = e.what();
+        if (auto p = reason.find("] "); p != std::string::npos) reason = reason.substr(p + 2);
+        throw PresetError(file, "", "invalid JSON: " + reason);
+    }
+    if (!tooDeep.empty()) throw PresetError(file, "", "invalid preset: " + tooDeep);
+    if (!duplicate.empty()) throw PresetError(file, duplicate, "duplicated key");
+    return j;
+}
+
+std::string readGuardedFile(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) throw PresetError(file, "", "no such file");
+    if (std::filesystem::is_directory(status)) throw PresetError(file, "", "is a directory, not a preset file");
+    if (!std::filesystem::is_regular_file(status)) throw PresetError(file, "", "is not a regular file");
+    if (std::filesystem::file_size(path, ec) > kMaxDocumentBytes)
+        throw PresetError(file, "",
+                          "file is larger than " + std::to_string(kMaxDocumentBytes >> 20) + " MiB; not a preset");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw PresetError(file, "", "cannot be opened for reading");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string pointerFromPath(const std::string& path) {
+    if (path.empty()) return "";
+    std::string pointer = "/";
+    for (char c : path) {
+        if (c == '.' || c == '[')
+            pointer += '/';
+        else if (c != ']')
+            pointer += c;
+    }
+    return pointer;
+}
+
+namespace {
+
+// The identity of an array element: the first of these keys it has.
+json elementIdentity(const json& element) {
+    if (element.is_object())
+        for (const char* key : {"block", "id", "name"})
+            if (element.contains(key)) return json{{key, element[key]}};
+    return nullptr;
+}
+
+bool matchesIdentity(const json& element, const json& identity) {
+    if (identity.is_null()) return true;
+    const auto& [key, value] = *identity.items().begin();
+    return element.is_object() && element.contains(key) && element[key] == value;
+}
+
+}  // namespace
+
+void KeptFields::keep(const json& document, const std::string& holderPath, const std::string& key, const json& value) {
+    auto entry =
+        std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.holderPath == holderPath; });
+    if (entry == entries_.end()) {
+        Entry e;
+        e.holderPath = holderPath;
+        if (const size_t bracket = holderPath.rfind('['); bracket != std::string::npos) {
+            e.elementPointer = pointerFromPath(holderPath.substr(0, holderPath.find(']', bracket) + 1));
+            const json::json_pointer element(e.elementPointer);
+            if (document.contains(element)) e.identity = elementIdentity(document.at(element));
+        }
+        entries_.push_back(std::move(e));
+        entry = entries_.end() - 1;
+    }
+    entry->fields[key] = value;
+}
+
+void KeptFields::writeBack(json& document) const {
+    for (const Entry& e : entries_) {
+        if (!e.elementPointer.empty()) {
+            const json::json_pointer element(e.elementPointer);
+            if (!document.contains(element) || !matchesIdentity(document.at(element), e.identity)) continue;
+        }
+        const json::json_pointer holder(pointerFromPath(e.holderPath));
+        if (!document.contains(holder)) {
+            // Only a section or a node's params object that the saver left out: its parent must
+            // be there as an object.
+            if (!document.contains(holder.parent_pointer()) || !document.at(holder.parent_pointer()).is_object())
+                continue;
+            document[holder] = json::object();
+        }
+        json& target = document.at(holder);
+        if (!target.is_object()) continue;
+        for (const auto& [key, value] : e.fields.items())
+            if (!target.contains(key)) target[key] = value;
+    }
+}
+
+std::vector<std::string> KeptFields::paths() const {
+    std::vector<std::string> out;
+    for (const Entry& e : entries_)
+        for (const auto& [key, value] : e.fields.items())
+            out.push_back(e.holderPath.empty() ? key : e.holderPath + "." + key);
+    return out;
+}
+
+FieldReader::FieldReader(const ReadContext& context, const json& object, std::string path)
+    : context_(context), object_(object), path_(std::move(path)) {
+    if (!object_.is_object()) fail("expected an object, found " + typeName(object_));
+}
+
+void FieldReader::fail(const std::string& reason, const std::string& key) const {
+    throw PresetError(context_.file, key.empty() ? path_ : child(key), reason);
+}
+
+const json& FieldReader::at(const std::string& key) {
+    seen_.insert(key);
+    if (!object_.contains(key)) fail("missing required field", key);
+    return object_.at(key);
+}
+
+double FieldReader::number(const std::string& key, double fallback, double lo, double hi) {
+    return has(key) ? checkNumber(at(key), child(key), lo, hi) : fallback;
+}
+
+int FieldReader::integer(const std::string& key, int fallback, int lo, int hi) {
+    if (!has(key)) return fallback;
+    const json& v = at(key);
+    const double d = checkNumber(v, child(key), lo, hi);
+    if (d != std::floor(d)) fail("expected a whole number, found " + v.dump(), key);
+    return int(d);
+}
+
+bool FieldReader::boolean(const std::string& key, bool fallback) {
+    if (!has(key)) return fallback;
+    const json& v = at(key);
+    if (!v.is_boolean()) fail("expected true or false, found " + typeName(v), key);
+    return v.get<bool>();
+}
+
+std::string FieldReader::string(const std::string& key, const std::string& fallback, size_t maxLength) {
+    if (!has(key)) return fallback;
+    const json& v = at(key);
+    if (!v.is_string()) fail("expected a string, found " + typeName(v), key);
+    std::string s = v.get<std::string>();
+    if (s.size() > maxLength) fail("string longer than " + std::to_string(maxLength) + " bytes", key);
+    return s;
+}
+
+void FieldReader::finish(const std::string& reason) const {
+    for (const auto& [key, value] : object_.items()) {
+        if (seen_.count(key)) continue;
+        if (!context_.keepUnknown || !context_.document) fail(reason, key);
+        context_.keepUnknown->keep(*context_.document, path_, key, value);
+    }
+}
+
+double FieldReader::checkNumber(const json& v, const std::string& path, double lo, double hi) const {
+    if (!v.is_number()) throw PresetError(context_.file, path, "expected a number, found " + typeName(v));
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) throw PresetError(context_.file, path, "number is not finite");
+    if (d < lo || d > hi)
+        throw PresetError(
+            context_.file, path,
+            "value " + v.dump() + " is outside the range [" + formatNumber(lo) + ", " + formatNumber(hi) + "]");
+    return d;
+}
+
+std::string FieldReader::typeName(const json& v) {
+    if (v.is_number()) return "a number";
+    if (v.is_string()) return "a string";
+    if (v.is_array()) return "an array";
+    if (v.is_object()) return "an object";
+    if (v.is_boolean()) return "a boolean";
+    if (v.is_null()) return "null";
+    return v.type_name();
+}
+
+std::string FieldReader::formatNumber(double d) {
+    std::ostringstream s;
+    s << d;
+    return s.str();
+}
+
+}  // namespace fraktal
