@@ -10,10 +10,17 @@
 
 layout(binding = 0) uniform sampler2D u_image;
 uniform float u_gain;
+// The editor's 2D view: the image holds sample sums in rgb and the sample count in alpha
+// (u_divideByCount = 1), in linear Rec.709 that u_toWorking takes to the working space (the
+// identity for the 3D viewport, whose image is in the working space already).
+uniform int u_divideByCount;
+uniform mat3 u_toWorking;
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    vec3 linear = texelFetch(u_image, ivec2(gl_FragCoord.xy), 0).rgb * u_gain;
+    vec4 texel = texelFetch(u_image, ivec2(gl_FragCoord.xy), 0);
+    if (u_divideByCount != 0) texel.rgb /= max(texel.a, 1.0);
+    vec3 linear = u_toWorking * texel.rgb * u_gain;
     vec3 display = OCIODisplay(vec4(linear, 1.0)).rgb;
     // Non-finite values show black, as in the PNG export.
     for (int i = 0; i < 3; ++i)

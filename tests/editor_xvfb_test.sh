@@ -1,5 +1,5 @@
 #!/bin/sh
-# Starts the real editor under Xvfb (Mesa llvmpipe) for every shipped preset, draws a few
+# Starts the real editor under Xvfb (Mesa llvmpipe) for every shipped preset (3D and 2D), draws a few
 # frames, saves a screenshot of the whole window and checks it: the viewport (the middle of the
 # window) is not blank, and the panels are drawn (the left and right columns hold the panel
 # background with text on it). The screenshots stay in OUT_DIR (a CI artifact).
@@ -20,8 +20,10 @@ bright() { convert "$1" -crop "$2" +repage -colorspace Gray -threshold 60% -form
 check() { awk "BEGIN { exit !($1) }"; }
 
 failures=0
-for preset in "$presets"/*.json; do
+# 3D presets, then the 2D ones (presets/2d: the editor switches to its 2D view and panels).
+for preset in "$presets"/*.json "$presets"/2d/*.json; do
     name=$(basename "$preset" .json)
+    case $preset in "$presets"/2d/*) name="2d_$name" ;; esac
     shot="$out/editor_$name.png"
     rm -f "$shot"
     if ! HOME="$home" xvfb-run -a -s "-screen 0 1280x800x24" "$fraktal" edit "$preset" --frames 3 --screenshot "$shot"; then

@@ -50,8 +50,8 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--frames", o->frames, "Draw this many frames, then exit")->check(CLI::Range(1, 100000));
     cmd->add_option("--screenshot", o->screenshot, "With --frames: save a PNG of the whole window at the end")
         ->needs("--frames");
-    cmd->add_option("--tab", o->tab, "Scene panel tab to show first")
-        ->check(CLI::IsMember({"Camera", "Render", "Shading", "Presets"}));
+    cmd->add_option("--tab", o->tab, "Scene panel tab to show first (2D documents: View, Render, Colouring, Presets)")
+        ->check(CLI::IsMember({"Camera", "Render", "Shading", "Presets", "View", "Colouring"}));
     cmd->add_option("--width", o->width, "Window width")->check(CLI::Range(320, 16384));
     cmd->add_option("--height", o->height, "Window height")->check(CLI::Range(240, 16384));
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });

@@ -41,7 +41,8 @@ int runPlaneRender(const PlaneRenderRequest& q) {
         std::fprintf(stderr, "rendering %s (2D): %dx%d, %d spp, %s\n", q.input.c_str(), r.width, r.height, r.spp,
                      context->renderer().c_str());
         job.onProgress = [](int done, int total) {
-            std::fprintf(stderr, "progress: %d/%d tiles\n", done, total);
+            // "NN%" as the 3D renderer prints it: the editor's export dialog reads it.
+            std::fprintf(stderr, "progress: %d/%d tiles (%d%%)\n", done, total, 100 * done / std::max(1, total));
         };
     }
     gPlaneCancel = false;
@@ -49,7 +50,8 @@ int runPlaneRender(const PlaneRenderRequest& q) {
     std::signal(SIGINT, requestPlaneCancel);
     std::signal(SIGTERM, requestPlaneCancel);
     try {
-        for (const std::string& w : renderPlaneStill(job, color)) std::fprintf(stderr, "fraktal: warning: %s\n", w.c_str());
+        for (const std::string& w : renderPlaneStill(job, color))
+            std::fprintf(stderr, "fraktal: warning: %s\n", w.c_str());
     } catch (const RenderCancelled&) {
         std::fprintf(stderr, "\nfraktal: render cancelled; no file written\n");
         return 130;

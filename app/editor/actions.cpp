@@ -4,7 +4,10 @@
 #include <ImfInputFile.h>
 #include <ImfStringAttribute.h>
 
+#include "app/editor/plane_edits.hpp"
 #include "app/editor/preset_files.hpp"
+#include "core/image/atomic_file.hpp"
+#include "core/plane/plane_still.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::editor {
@@ -15,6 +18,7 @@ namespace {
 
 void clampSelection(EditorState& s) {
     s.selectedNode = std::clamp(s.selectedNode, 0, int(s.doc.preset.formula.nodes.size()));
+    if (s.doc.plane) s.planeSelection = clampedSelection(s.doc.plane->formula, s.planeSelection);
 }
 
 void adoptDocument(EditorState& s, Document d, const fs::path& path) {
@@ -23,7 +27,15 @@ void adoptDocument(EditorState& s, Document d, const fs::path& path) {
     s.file.path = path;
     s.file.savedFingerprint = fingerprint(s.doc);
     s.selectedNode = 0;
+    s.planeSelection = {};
+    if (s.doc.plane) s.planeHome = s.doc.plane->view;
     clampSelection(s);
+}
+
+bool isExr(const fs::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    return ext == ".exr";
 }
 
 void rememberRecent(EditorState& s, const fs::path& file) {
@@ -66,24 +78,62 @@ void newDocument(EditorState& s) {
     setStatus(s, "New document");
 }
 
+void newPlaneDocument(EditorState& s) {
+    Document d;
+    const fs::path shipped = fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "2d" / "mandelbrot.json";
+    try {
+        d.plane = loadPlanePreset(shipped);
+        d.plane->name = "Untitled";
+    } catch (const std::exception&) {
+        d.plane.emplace();
+        d.plane->formula.nodes.push_back(PlaneNode::make(*findPlaneBlock("power")));
+        d.plane->formula.estimator = PlaneNode::make(*findPlaneBlock("escape"));
+    }
+    adoptDocument(s, std::move(d), {});
+    setStatus(s, "New 2D document");
+}
+
+void resetPlaneView(EditorState& s) {
+    if (s.doc.plane) s.doc.plane->view = s.planeHome;
+}
+
+std::optional<PlanePreset> planePresetFromExr(const fs::path& file) {
+    const std::optional<std::string> text = readExrPlanePreset(file);
+    if (!text) return std::nullopt;
+    return parsePlanePreset(*text, file.string() + " [" + kExrPlanePresetAttribute + "]");
+}
+
 Preset presetFromExr(const fs::path& file) {
     Imf::InputFile in(file.c_str());
     for (auto it = in.header().begin(); it != in.header().end(); ++it) {
         const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute());
         if (!text || text->value().find(kPresetFormat) == std::string::npos) continue;
+        if (std::string_view(it.name()) == kExrPlanePresetAttribute) continue;  // a 2D still's
         return parsePreset(text->value(), file.string() + " [" + it.name() + "]");
     }
     throw PresetError(file.string(), "", "this EXR carries no fraktal preset in its header");
 }
 
+Document loadDocument(const fs::path& file) {
+    Document d;
+    if (isExr(file)) {
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) throw PresetError(file.string(), "", "no such file");
+        d.plane = planePresetFromExr(file);
+        if (!d.plane) d.preset = presetFromExr(file);
+    } else if (isPlanePresetFile(file)) {
+        d.plane = loadPlanePreset(file);
+    } else {
+        d.preset = loadPreset(file);
+    }
+    if (!d.plane) loadEditorSection(d);
+    return d;
+}
+
 bool openDocument(EditorState& s, const fs::path& file) {
     try {
-        Document d;
-        std::string ext = file.extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        const bool exr = ext == ".exr";
-        d.preset = exr ? presetFromExr(file) : loadPreset(file);
-        loadEditorSection(d);
+        Document d = loadDocument(file);
+        const bool exr = isExr(file);
         // An EXR is an image, not a scene file: "Save" must ask where to put the preset.
         adoptDocument(s, std::move(d), exr ? fs::path() : file);
         if (!exr) rememberRecent(s, file);
@@ -103,9 +153,8 @@ void restoreDocument(EditorState& s, RecoveryOffer offer) {
 
 bool saveDocumentAs(EditorState& s, const fs::path& file) {
     try {
-        Document d = s.doc;
-        storeEditorSection(d);
-        savePresetFile(file, d.preset);
+        // Atomic, with the previous version kept as FILE.bak (as core's savePresetFile).
+        writeFileAtomically(file, documentFileText(s.doc), /*keepBackup=*/true);
         s.file.path = file;
         s.file.savedFingerprint = fingerprint(s.doc);
         rememberRecent(s, file);
@@ -149,6 +198,7 @@ void runPending(EditorState& s) {
     s.dialogs.pending = {};
     switch (a.kind) {
         case PendingKind::New: newDocument(s); break;
+        case PendingKind::NewPlane: newPlaneDocument(s); break;
         case PendingKind::Open: openDocument(s, a.path); break;
         case PendingKind::Quit: s.quit = true; break;
         case PendingKind::None: break;

@@ -55,21 +55,27 @@ AutosaveAction autosaveDecision(double now, double lastWrite, bool dirty, const 
     return AutosaveAction::Write;
 }
 
-Preset recoveryPreset(const Document& doc, const fs::path& originalFile) {
-    Document d = doc;
-    storeEditorSection(d);
-    d.preset.extra[kRecoveryKey] = {{"file", originalFile.string()}};
-    return d.preset;
+std::string recoveryText(const Document& doc, const fs::path& originalFile) {
+    json j = json::parse(documentFileText(doc));
+    j[kRecoveryKey] = {{"file", originalFile.string()}};
+    return j.dump(2) + "\n";
 }
 
-Document documentFromRecovery(const Preset& recovery, fs::path& originalFile) {
-    Document d;
-    d.preset = recovery;
-    const json& r = d.preset.extra.value(kRecoveryKey, json());
+Document documentFromRecovery(std::string_view text, const std::string& file, fs::path& originalFile) {
+    json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (!j.is_object()) throw PresetError(file, "", "not a recovery file (not a JSON object)");
+    const json r = j.value(kRecoveryKey, json());
     originalFile =
         r.is_object() && r.value("file", json()).is_string() ? fs::path(r["file"].get<std::string>()) : fs::path();
-    d.preset.extra.erase(kRecoveryKey);
-    loadEditorSection(d);
+    j.erase(kRecoveryKey);
+    const std::string preset = j.dump();
+    Document d;
+    if (isPlanePresetText(preset)) {
+        d.plane = parsePlanePreset(preset, file);
+    } else {
+        d.preset = parsePreset(preset, file);
+        loadEditorSection(d);
+    }
     return d;
 }
 
@@ -89,7 +95,7 @@ bool beginSession(AutosaveState& s, const fs::path& configFolder, double now) {
     if (shouldOfferRecovery(previous, fs::exists(s.paths.recovery, ec))) {
         try {
             RecoveryOffer offer;
-            offer.doc = documentFromRecovery(loadPreset(s.paths.recovery), offer.originalFile);
+            offer.doc = documentFromRecovery(readText(s.paths.recovery), s.paths.recovery.string(), offer.originalFile);
             s.offer = std::move(offer);
         } catch (const std::exception& e) {
             s.error = std::string("the recovery file cannot be read: ") + e.what();
@@ -121,7 +127,7 @@ void autosaveTick(AutosaveState& s, const Document& doc, const fs::path& origina
         case AutosaveAction::Write:
             s.lastWrite = now;
             try {
-                writeFileAtomically(s.paths.recovery, serializePreset(recoveryPreset(doc, originalFile)));
+                writeFileAtomically(s.paths.recovery, recoveryText(doc, originalFile));
                 s.recoveryFingerprint = print;
             } catch (const std::exception& e) {
                 s.error = std::string("autosave failed: ") + e.what();

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "app/editor/document.hpp"
 
@@ -36,10 +37,12 @@ enum class AutosaveAction { Nothing, Write, Remove };
 AutosaveAction autosaveDecision(double now, double lastWrite, bool dirty, const std::string& fingerprint,
                                 const std::string& recoveryFingerprint);
 
-// The recovery file keeps the document and the file it belongs to ("" for an unsaved one).
-Preset recoveryPreset(const Document& doc, const std::filesystem::path& originalFile);
-// The document and its original file back from a recovery preset.
-Document documentFromRecovery(const Preset& recovery, std::filesystem::path& originalFile);
+// The recovery file keeps the document (a 3D preset with its "editor" section, or a 2D preset)
+// and the file it belongs to ("" for an unsaved one) in a "recovery" section.
+std::string recoveryText(const Document& doc, const std::filesystem::path& originalFile);
+// The document and its original file back from a recovery file's text. Throws PresetError
+// naming `file` when the text is not a recovery file.
+Document documentFromRecovery(std::string_view text, const std::string& file, std::filesystem::path& originalFile);
 
 struct RecoveryOffer {
     Document doc;

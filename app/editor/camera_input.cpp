@@ -3,6 +3,8 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "app/editor/plane_edits.hpp"
+
 namespace fraktal::editor {
 
 bool gatherCameraInput(const EditorState& s, CameraInput& in) {
@@ -30,6 +32,28 @@ bool gatherCameraInput(const EditorState& s, CameraInput& in) {
         if (in.move != vec3(0.0)) gesture = true;
     }
     return gesture;
+}
+
+void updatePlaneView(EditorState& s, int imageWidth, int imageHeight) {
+    if (!s.doc.plane) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const Layout& l = s.layout;
+    s.cameraGesture = false;
+    if (io.WantCaptureMouse) return;  // over a panel, or a drag that a panel took
+    PlaneInput in;
+    in.cursorX = io.MousePos.x - l.viewportX;
+    in.cursorY = io.MousePos.y - l.viewportY;
+    const bool overViewport =
+        in.cursorX >= 0 && in.cursorX < l.viewportW && in.cursorY >= 0 && in.cursorY < l.viewportH;
+    for (int button = 0; button < 3; ++button)
+        if (ImGui::IsMouseDown(button)) {
+            in.dragX = io.MouseDelta.x;
+            in.dragY = io.MouseDelta.y;
+            s.cameraGesture = true;  // one undo step per drag
+            break;
+        }
+    if (overViewport) in.wheel = io.MouseWheel;
+    s.doc.plane->view = navigatePlane(s.doc.plane->view, in, imageWidth, imageHeight, l.viewportW);
 }
 
 void updateCamera(EditorState& s) {

@@ -13,4 +13,8 @@ bool gatherCameraInput(const EditorState& s, CameraInput& in);
 // Gathers input and moves the document's camera by the active controller.
 void updateCamera(EditorState& s);
 
+// The 2D document's navigation: a drag (any button) pans, the wheel zooms about the cursor.
+// The image is imageWidth x imageHeight pixels shown over the viewport.
+void updatePlaneView(EditorState& s, int imageWidth, int imageHeight);
+
 }  // namespace fraktal::editor

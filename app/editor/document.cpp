@@ -63,9 +63,17 @@ ViewSettings viewSettingsFromJson(const json& j) {
 }
 
 std::string fingerprint(const Document& d) {
+    if (d.plane) return planePresetToJson(*d.plane).dump();
     json j = presetToJson(d.preset);
     j["editor"] = editorSection(d);
     return j.dump();
+}
+
+std::string documentFileText(const Document& d) {
+    if (d.plane) return serializePlanePreset(*d.plane);
+    Document withSection = d;
+    storeEditorSection(withSection);
+    return serializePreset(withSection.preset);
 }
 
 void storeEditorSection(Document& d) { d.preset.extra["editor"] = editorSection(d); }

@@ -66,14 +66,35 @@ void layoutViewport(EditorState& s, float windowW, float windowH) {
 }
 
 // The display texture's rows are top first, as ImGui's image coordinates are.
-void drawViewportImage(const EditorState& s, const ViewportView& v) {
+void drawViewportImage(const EditorState& s, GLuint displayTexture) {
     const Layout& l = s.layout;
     ImDrawList* bg = ImGui::GetBackgroundDrawList();
     const ImVec2 a(l.viewportX, l.viewportY), b(l.viewportX + l.viewportW, l.viewportY + l.viewportH);
     bg->AddRectFilled(ImVec2(0, 0), ImGui::GetIO().DisplaySize, IM_COL32(12, 13, 15, 255));
-    if (v.displayTexture())
-        bg->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(v.displayTexture())), a, b, ImVec2(0, 0),
+    if (displayTexture)
+        bg->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(displayTexture)), a, b, ImVec2(0, 0),
                      ImVec2(1, 1));
+}
+
+// The viewport of the current document: the 3D one, or the 2D view for a 2D document. Returns
+// the compile error to report (empty when none).
+const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, PlaneViewport& plane) {
+    const Layout& l = s.layout;
+    const ImGuiIO& io = ImGui::GetIO();
+    const double scale = s.doc.view.renderScale * io.DisplayFramebufferScale.x;
+    const int width = int(l.viewportW * scale), height = int(l.viewportH * scale);
+    if (s.doc.plane) {
+        updatePlaneView(s, std::max(width, 2), std::max(height, 2));
+        plane.render(*s.doc.plane, width, height);
+        drawViewportImage(s, plane.displayTexture());
+        drawPlaneStatsOverlay(s, plane);
+        return plane.compileError();
+    }
+    updateCamera(s);
+    viewport.render(s.doc.preset, s.doc.view, width, height);
+    drawViewportImage(s, viewport.displayTexture());
+    drawStatsOverlay(s, viewport);
+    return viewport.compileError();
 }
 
 // $OCIO when set, else the shipped config; a broken $OCIO falls back to the shipped one (said in
@@ -112,9 +133,10 @@ int runEditor(const EditorOptions& o) {
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     GLFWwindow* window = glfwCreateWindow(o.width, o.height, "fraktal", nullptr, nullptr);
     if (!window) {
-        std::fputs("fraktal: cannot create an OpenGL 4.5 core window on this display.\n"
-                   "  For headless use: fraktal render PRESET -o OUT.exr\n",
-                   stderr);
+        std::fputs(
+            "fraktal: cannot create an OpenGL 4.5 core window on this display.\n"
+            "  For headless use: fraktal render PRESET -o OUT.exr\n",
+            stderr);
         glfwTerminate();
         return 3;
     }
@@ -131,7 +153,8 @@ int runEditor(const EditorOptions& o) {
     fs::create_directories(config, ec);
     s.file.recentListFile = config / "recent.json";
     s.file.recent = loadRecentList(s.file.recentListFile);
-    s.browser.folders = {fs::path(FRAKTAL_SOURCE_DIR) / "presets", userPresetFolder()};
+    s.browser.folders = {fs::path(FRAKTAL_SOURCE_DIR) / "presets", fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "2d",
+                         userPresetFolder()};
     fs::create_directories(userPresetFolder(), ec);
 
     IMGUI_CHECKVERSION();
@@ -151,6 +174,7 @@ int runEditor(const EditorOptions& o) {
     if (!loadColorPipeline(s)) status = 2;
     if (status == 0) {
         std::unique_ptr<ViewportView> viewport = makeViewportView(*s.color);
+        PlaneViewport planeViewport(*s.color);
         ThumbnailRenderer thumbnails;
         newDocument(s);
         if (!o.preset.empty() && !openDocument(s, o.preset)) {
@@ -163,10 +187,12 @@ int runEditor(const EditorOptions& o) {
         int frame = 0;
         while (!s.quit && !glfwWindowShouldClose(window)) {
             // Idle when the image is converged and nothing happens: no busy loop on a laptop.
-            const bool busy = o.frames > 0 || !viewport->stats().settled || exportActive(s.exportJob) ||
-                              ImGui::IsAnyMouseDown();
-            if (busy) glfwPollEvents();
-            else glfwWaitEventsTimeout(0.25);
+            const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
+            const bool busy = o.frames > 0 || !settled || exportActive(s.exportJob) || ImGui::IsAnyMouseDown();
+            if (busy)
+                glfwPollEvents();
+            else
+                glfwWaitEventsTimeout(0.25);
             s.now = glfwGetTime();
             if (!s.dropped.empty()) {
                 requestAction(s, {PendingKind::Open, s.dropped.front()});
@@ -179,16 +205,13 @@ int runEditor(const EditorOptions& o) {
             ImGui::NewFrame();
             handleShortcuts(s);
             drawMenuBar(s);
-            drawFormulaPanel(s, *viewport);
+            if (s.doc.plane)
+                drawPlaneFormulaPanel(s, planeViewport.compileError());
+            else
+                drawFormulaPanel(s, *viewport);
             drawSidebar(s);
             layoutViewport(s, io.DisplaySize.x, io.DisplaySize.y);
-            updateCamera(s);
-
-            const Layout& l = s.layout;
-            const double scale = s.doc.view.renderScale * io.DisplayFramebufferScale.x;
-            viewport->render(s.doc.preset, s.doc.view, int(l.viewportW * scale), int(l.viewportH * scale));
-            drawViewportImage(s, *viewport);
-            drawStatsOverlay(s, *viewport);
+            const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);
             drawStatusLine(s);
             drawExportDialog(s);
             drawFileDialogs(s);
@@ -215,8 +238,8 @@ int runEditor(const EditorOptions& o) {
                         status = 2;
                     }
                 }
-                if (!viewport->compileError().empty()) {
-                    std::fprintf(stderr, "fraktal: %s\n", viewport->compileError().c_str());
+                if (!compileError.empty()) {
+                    std::fprintf(stderr, "fraktal: %s\n", compileError.c_str());
                     status = 2;
                 }
                 break;

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "app/editor/autosave.hpp"
 #include "app/editor/camera_controller.hpp"
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
 #include "app/editor/undo_history.hpp"
-#include "app/editor/autosave.hpp"
 #include "core/color/color_pipeline.hpp"
 
 namespace fraktal::editor {
@@ -27,7 +27,7 @@ struct PanelVisibility {
     bool formula = true;
     bool sidebar = true;  // camera, render, presets
     bool stats = true;
-    bool demo = false;    // ImGui's own metrics, for bug reports
+    bool demo = false;      // ImGui's own metrics, for bug reports
     std::string selectTab;  // a Scene tab to bring to front on the next frame ("Render", ...)
 };
 
@@ -40,17 +40,17 @@ struct Layout {
 };
 
 // What to do once the user answered the unsaved-changes question.
-enum class PendingKind { None, New, Open, Quit };
+enum class PendingKind { None, New, NewPlane, Open, Quit };
 struct PendingAction {
     PendingKind kind = PendingKind::None;
     std::filesystem::path path;  // for Open
 };
 
 struct Dialogs {
-    bool openPath = false;      // "Open..." path prompt
-    bool saveAs = false;        // "Save as..." path prompt
-    bool unsaved = false;       // "Save changes?" prompt
-    bool exportStill = false;   // F12
+    bool openPath = false;     // "Open..." path prompt
+    bool saveAs = false;       // "Save as..." path prompt
+    bool unsaved = false;      // "Save changes?" prompt
+    bool exportStill = false;  // F12
     std::string pathInput;
     PendingAction pending;
 };
@@ -65,7 +65,7 @@ struct Thumbnail {
 struct PresetBrowser {
     std::vector<Thumbnail> entries;
     bool scanned = false;
-    bool visible = false;  // the tab was drawn this frame: thumbnails render only then
+    bool visible = false;                        // the tab was drawn this frame: thumbnails render only then
     std::vector<std::filesystem::path> folders;  // shipped presets/, then the user's folder
 };
 
@@ -73,6 +73,15 @@ struct StatusLine {
     std::string text;
     bool error = false;
     double until = 0.0;  // glfwGetTime() at which it fades
+};
+
+// Which node of a 2D formula the Formula panel has selected: a start node, a loop node or the
+// estimator (index unused).
+enum class PlaneList { Start, Loop, Estimator };
+struct PlaneSelection {
+    PlaneList list = PlaneList::Loop;
+    int index = 0;
+    bool operator==(const PlaneSelection&) const = default;
 };
 
 struct EditorState {
@@ -90,10 +99,12 @@ struct EditorState {
     PresetBrowser browser;
     ExportJob exportJob;
     StatusLine status;
-    int selectedNode = 0;        // formula.nodes.size() selects the estimator
-    bool cameraGesture = false;  // a drag or fly key is held: do not commit undo mid-gesture
+    int selectedNode = 0;           // formula.nodes.size() selects the estimator
+    PlaneSelection planeSelection;  // the same for a 2D document
+    PlaneViewRect planeHome;        // the 2D view as opened: "reset view" returns to it
+    bool cameraGesture = false;     // a drag or fly key is held: do not commit undo mid-gesture
     bool quit = false;
-    double now = 0.0;            // seconds, for status fades and frame time
+    double now = 0.0;                            // seconds, for status fades and frame time
     std::vector<std::filesystem::path> dropped;  // files dropped on the window this frame
 };
 

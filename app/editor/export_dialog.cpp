@@ -66,11 +66,7 @@ void drawExportDialog(EditorState& s) {
 
     ImGui::Spacing();
     if (!running) {
-        if (ImGui::Button("Render", ImVec2(120, 0))) {
-            Document d = s.doc;
-            storeEditorSection(d);
-            startExport(job, d.preset, s.now);
-        }
+        if (ImGui::Button("Render", ImVec2(120, 0))) startExport(job, documentFileText(s.doc), s.now);
     } else {
         ImGui::BeginDisabled(job.status == ExportStatus::Cancelling);
         if (ImGui::Button("Cancel", ImVec2(120, 0))) cancelExport(job);

@@ -22,10 +22,15 @@ namespace fs = std::filesystem;
 std::vector<std::string> exportCommand(const fs::path& fraktalExe, const fs::path& preset, const ExportOptions& o) {
     // The flags of `fraktal render --help` (app/cli/render.cpp). Exposure, OCIO display/view and
     // working space travel in the preset's render section.
-    std::vector<std::string> cmd{fraktalExe.string(), "render",  preset.string(),
-                                 "-o",                o.output + ".exr",
-                                 "--size",            std::to_string(o.width) + "x" + std::to_string(o.height),
-                                 "--spp",             std::to_string(o.spp)};
+    std::vector<std::string> cmd{fraktalExe.string(),
+                                 "render",
+                                 preset.string(),
+                                 "-o",
+                                 o.output + ".exr",
+                                 "--size",
+                                 std::to_string(o.width) + "x" + std::to_string(o.height),
+                                 "--spp",
+                                 std::to_string(o.spp)};
     if (o.pngPreview) {
         cmd.push_back("--png");
         cmd.push_back(o.output + ".png");
@@ -43,14 +48,18 @@ double parseProgress(const std::string& log) {
 }
 
 bool startExport(ExportJob& job, const Preset& preset, double now) {
+    return startExport(job, presetToJson(preset).dump(2), now);
+}
+
+bool startExport(ExportJob& job, const std::string& presetText, double now) {
     job.log.clear();
     job.progress = -1.0;
     job.startedAt = now;
     const fs::path out(job.options.output);
-    job.presetFile = (out.has_parent_path() ? out.parent_path() : fs::path(".")) /
-                     ("." + out.filename().string() + ".export.json");
+    job.presetFile =
+        (out.has_parent_path() ? out.parent_path() : fs::path(".")) / ("." + out.filename().string() + ".export.json");
     try {
-        writeFileAtomically(job.presetFile, presetToJson(preset).dump(2), /*keepBackup=*/false);
+        writeFileAtomically(job.presetFile, presetText, /*keepBackup=*/false);
     } catch (const std::exception& e) {
         job.log = e.what();
         job.status = ExportStatus::Failed;
@@ -99,8 +108,10 @@ void reap(ExportJob& job, int wstatus) {
     job.pid = -1;
     std::error_code ec;
     fs::remove(job.presetFile, ec);
-    if (job.status == ExportStatus::Cancelling) job.status = ExportStatus::Cancelled;
-    else job.status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 ? ExportStatus::Done : ExportStatus::Failed;
+    if (job.status == ExportStatus::Cancelling)
+        job.status = ExportStatus::Cancelled;
+    else
+        job.status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 ? ExportStatus::Done : ExportStatus::Failed;
 }
 
 void drain(ExportJob& job) {

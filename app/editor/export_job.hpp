@@ -21,8 +21,12 @@ struct ExportSize {
 
 // A3 and A2 landscape at 300 dpi (ISO 216: 420x297 mm and 594x420 mm).
 inline constexpr ExportSize kExportSizes[] = {
-    {"Viewport size", 0, 0},          {"HD 1920 x 1080", 1920, 1080}, {"4K UHD 3840 x 2160", 3840, 2160},
-    {"A3 300 dpi 4961 x 3508", 4961, 3508}, {"A2 300 dpi 7016 x 4961", 7016, 4961}, {"Custom", -1, -1},
+    {"Viewport size", 0, 0},
+    {"HD 1920 x 1080", 1920, 1080},
+    {"4K UHD 3840 x 2160", 3840, 2160},
+    {"A3 300 dpi 4961 x 3508", 4961, 3508},
+    {"A2 300 dpi 7016 x 4961", 7016, 4961},
+    {"Custom", -1, -1},
 };
 
 struct ExportOptions {
@@ -33,7 +37,7 @@ struct ExportOptions {
     // header attribute): it is the master. OUT.png goes through the preset's OCIO display/view
     // and exposure, as the viewport shows it.
     bool pngPreview = true;
-    bool halfFloat = true;  // EXR channels as half (else 32-bit float)
+    bool halfFloat = true;                 // EXR channels as half (else 32-bit float)
     std::string output = "fraktal_still";  // path without extension
 };
 
@@ -45,8 +49,8 @@ struct ExportJob {
     ExportStatus status = ExportStatus::Idle;
     pid_t pid = -1;
     int outputFd = -1;
-    std::string log;          // the child's output so far
-    double progress = -1.0;   // 0..1, or < 0 when the child has not said
+    std::string log;         // the child's output so far
+    double progress = -1.0;  // 0..1, or < 0 when the child has not said
     double startedAt = 0.0;
     std::filesystem::path presetFile;  // the temp preset handed to the child
     std::filesystem::path executable;  // the fraktal binary to run; empty: this program
@@ -60,6 +64,8 @@ double parseProgress(const std::string& log);
 
 // Writes the preset next to the output and starts the child; false with job.log saying why.
 bool startExport(ExportJob& job, const Preset& preset, double now);
+// The same for a preset's file text (a 2D preset too: `fraktal render` tells them apart).
+bool startExport(ExportJob& job, const std::string& presetText, double now);
 // Reads the child's output without blocking and notices when it ended.
 void pollExport(ExportJob& job);
 // Asks the renderer to stop (SIGTERM) and returns at once; pollExport sees it end.

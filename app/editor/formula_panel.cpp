@@ -7,55 +7,34 @@
 #include <string>
 
 #include "app/editor/formula_edits.hpp"
+#include "app/editor/node_list_widgets.hpp"
 #include "app/editor/panels.hpp"
-#include "app/editor/param_widgets.hpp"
 
 namespace fraktal::editor {
 
 namespace {
 
 constexpr const char* kNodePayload = "FRAKTAL_NODE";
-const ImVec4 kErrorColor(1.0f, 0.42f, 0.36f, 1.0f);
-
-std::string nodeLabel(const Node& n, int index) {
-    std::string label = std::to_string(index + 1) + ". " + std::string(n.block->label);
-    if (n.period > 1) label += "  (iter % " + std::to_string(n.period) + " = " + std::to_string(n.phase) + ")";
-    return label;
-}
 
 void addBlockMenu(EditorState& s) {
     Formula& f = s.doc.preset.formula;
     const Category steps[] = {Category::Fold, Category::Transform, Category::Power};
     for (Category c : steps) {
         if (!ImGui::BeginMenu(std::string(categoryName(c)).c_str())) continue;
-        for (const BlockDesc* b : blocksIn(c)) {
-            if (ImGui::MenuItem(std::string(b->label).c_str())) {
-                const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
-                if (addNode(f, *b, at)) s.selectedNode = at;
-            }
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(b->help).c_str());
+        if (const BlockDesc* b = blockMenuItems(blocksIn(c))) {
+            const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
+            if (addNode(f, *b, at)) s.selectedNode = at;
         }
         ImGui::EndMenu();
     }
     ImGui::Separator();
     if (ImGui::BeginMenu("Estimator (replaces)")) {
-        for (const BlockDesc* b : blocksIn(Category::Estimator)) {
-            if (ImGui::MenuItem(std::string(b->label).c_str(), nullptr, f.estimator.block == b)) {
-                setEstimator(f, *b);
-                s.selectedNode = int(f.nodes.size());
-            }
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(b->help).c_str());
+        if (const BlockDesc* b = blockMenuItems(blocksIn(Category::Estimator), f.estimator.block)) {
+            setEstimator(f, *b);
+            s.selectedNode = int(f.nodes.size());
         }
         ImGui::EndMenu();
     }
-}
-
-void errorUnder(const std::string& error) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(error.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::PopStyleColor();
 }
 
 void globalSettings(Formula& f) {
@@ -77,75 +56,9 @@ void globalSettings(Formula& f) {
     helpMarker("Multiplies the distance estimate: below 1 makes an overshooting hybrid safe (see fraktal check).");
 }
 
-// One row of the node list; returns the index to remove / duplicate through the out params.
-void nodeRow(EditorState& s, int i, int errorNode, const std::string& error, int& remove, int& duplicate,
-             int& moveFrom, int& moveTo) {
-    Formula& f = s.doc.preset.formula;
-    Node& n = f.nodes[size_t(i)];
-    ImGui::PushID(i);
-    ImGui::Checkbox("##on", &n.enabled);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip(n.enabled ? "Disable this node" : "Enable this node");
-    ImGui::SameLine();
-    const float buttons = ImGui::CalcTextSize("DupDel").x + ImGui::GetStyle().FramePadding.x * 4 +
-                          ImGui::GetStyle().ItemSpacing.x * 2;
-    if (!n.enabled) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    if (i == errorNode) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
-    if (ImGui::Selectable(nodeLabel(n, i).c_str(), s.selectedNode == i, 0,
-                          ImVec2(ImGui::GetContentRegionAvail().x - buttons, 0)))
-        s.selectedNode = i;
-    if (i == errorNode) ImGui::PopStyleColor();
-    if (!n.enabled) ImGui::PopStyleColor();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\nDrag to reorder.", std::string(n.block->help).c_str());
-    if (ImGui::BeginDragDropSource()) {
-        ImGui::SetDragDropPayload(kNodePayload, &i, sizeof i);
-        ImGui::TextUnformatted(nodeLabel(n, i).c_str());
-        ImGui::EndDragDropSource();
-    }
-    if (ImGui::BeginDragDropTarget()) {
-        if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload(kNodePayload)) {
-            moveFrom = *static_cast<const int*>(p->Data);
-            moveTo = i;
-        }
-        ImGui::EndDragDropTarget();
-    }
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Dup")) duplicate = i;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Duplicate this node (Ctrl+D)");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Del")) remove = i;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this node (Delete)");
-    if (i == errorNode) errorUnder(error);
-    ImGui::PopID();
-}
-
-void selectedNodeEditor(EditorState& s) {
-    Formula& f = s.doc.preset.formula;
-    const bool estimator = s.selectedNode == int(f.nodes.size());
-    Node& n = estimator ? f.estimator : f.nodes[size_t(s.selectedNode)];
-    if (!n.block) return;
-    ImGui::Text("%s", std::string(n.block->label).c_str());
-    ImGui::SameLine();
-    ImGui::TextDisabled("%s", std::string(categoryName(n.block->category)).c_str());
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", std::string(n.block->help).c_str());
-    ImGui::PopTextWrapPos();
-    if (!estimator) {
-        // Period and phase decide on which iterations the node runs (hybrids): structure edits.
-        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
-        if (ImGui::InputInt("Period", &n.period, 1, 1)) n.period = std::clamp(n.period, 1, 16);
-        helpMarker("The node runs on iterations i with i % period == phase (hybrids alternate blocks).");
-        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
-        if (ImGui::InputInt("Phase", &n.phase, 1, 1)) n.phase = std::clamp(n.phase, 0, n.period - 1);
-        n.phase = std::clamp(n.phase, 0, n.period - 1);
-    }
-    if (n.block->params.empty()) ImGui::TextDisabled("This block has no parameters.");
-    for (size_t k = 0; k < n.block->params.size(); ++k) paramWidget(n.block->params[k], n.values[k]);
-}
-
 }  // namespace
 
-void drawFormulaPanel(EditorState& s, const ViewportView& v) {
-    if (!s.panels.formula) return;
+void beginFormulaWindow(EditorState& s) {
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     const float height = vp->WorkSize.y;
     ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x, vp->WorkPos.y));
@@ -153,6 +66,11 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     ImGui::SetNextWindowSize(ImVec2(s.layout.leftWidth, height), ImGuiCond_FirstUseEver);
     ImGui::Begin("Formula", &s.panels.formula, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
     s.layout.leftWidth = ImGui::GetWindowWidth();
+}
+
+void drawFormulaPanel(EditorState& s, const ViewportView& v) {
+    if (!s.panels.formula) return;
+    beginFormulaWindow(s);
     Formula& f = s.doc.preset.formula;
     s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
 
@@ -164,8 +82,10 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
 
     const std::string& error = v.compileError();
     const int errorNode = error.empty() ? -2 : nodeNamedInLog(error, int(f.nodes.size()));
-    int remove = -1, duplicate = -1, moveFrom = -1, moveTo = -1;
-    for (int i = 0; i < int(f.nodes.size()); ++i) nodeRow(s, i, errorNode, error, remove, duplicate, moveFrom, moveTo);
+    NodeListRequest req;
+    for (int i = 0; i < int(f.nodes.size()); ++i)
+        if (nodeRow(f.nodes[size_t(i)], i, s.selectedNode == i, i == errorNode ? &error : nullptr, kNodePayload, req))
+            s.selectedNode = i;
 
     // The estimator closes the list; it is always last and cannot be removed, only replaced.
     ImGui::PushID("estimator");
@@ -189,22 +109,24 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     const bool nodeSelected = s.selectedNode < int(f.nodes.size());
     ImGui::SameLine();
     ImGui::BeginDisabled(!nodeSelected || s.selectedNode == 0);
-    if (ImGui::ArrowButton("##up", ImGuiDir_Up)) moveFrom = s.selectedNode, moveTo = s.selectedNode - 1;
+    if (ImGui::ArrowButton("##up", ImGuiDir_Up)) req.moveFrom = s.selectedNode, req.moveTo = s.selectedNode - 1;
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(!nodeSelected || s.selectedNode + 1 >= int(f.nodes.size()));
-    if (ImGui::ArrowButton("##down", ImGuiDir_Down)) moveFrom = s.selectedNode, moveTo = s.selectedNode + 1;
+    if (ImGui::ArrowButton("##down", ImGuiDir_Down)) req.moveFrom = s.selectedNode, req.moveTo = s.selectedNode + 1;
     ImGui::EndDisabled();
 
     // Apply list edits after drawing the list, so no row is drawn from a moved vector.
-    if (moveFrom >= 0 && moveNode(f, moveFrom, moveTo)) s.selectedNode = moveTo;
-    if (duplicate >= 0 && duplicateNode(f, duplicate)) s.selectedNode = duplicate + 1;
-    if (remove >= 0 && removeNode(f, remove)) s.selectedNode = std::max(0, std::min(remove, int(f.nodes.size()) - 1));
+    if (req.moveFrom >= 0 && moveNode(f, req.moveFrom, req.moveTo)) s.selectedNode = req.moveTo;
+    if (req.duplicate >= 0 && duplicateNode(f, req.duplicate)) s.selectedNode = req.duplicate + 1;
+    if (req.remove >= 0 && removeNode(f, req.remove))
+        s.selectedNode = std::max(0, std::min(req.remove, int(f.nodes.size()) - 1));
     s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
 
     ImGui::Spacing();
     sectionHeader("Parameters");
-    selectedNodeEditor(s);
+    const bool estimatorSelected = s.selectedNode == int(f.nodes.size());
+    nodeParameters(estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)], estimatorSelected);
     ImGui::End();
 }
 

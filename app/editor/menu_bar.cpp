@@ -9,7 +9,8 @@ namespace fraktal::editor {
 void drawMenuBar(EditorState& s) {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("New", "Ctrl+N")) requestAction(s, {PendingKind::New, {}});
+        if (ImGui::MenuItem("New 3D", "Ctrl+N")) requestAction(s, {PendingKind::New, {}});
+        if (ImGui::MenuItem("New 2D", "Ctrl+Shift+N")) requestAction(s, {PendingKind::NewPlane, {}});
         if (ImGui::MenuItem("Open...", "Ctrl+O")) s.dialogs.openPath = true;
         if (ImGui::BeginMenu("Open recent", !s.file.recent.empty())) {
             for (const std::string& r : s.file.recent)
@@ -39,16 +40,21 @@ void drawMenuBar(EditorState& s) {
         ImGui::MenuItem("Stats overlay", "F4", &s.panels.stats);
         ImGui::Separator();
         bool fly = s.cameraControls.mode == CameraMode::Fly;
-        if (ImGui::MenuItem("Fly camera", "Tab", &fly)) s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
-        if (ImGui::MenuItem("Reset view", "Home"))
-            s.doc.preset.camera = defaultViewFor(s.doc.preset.formula, s.doc.preset.camera);
+        if (ImGui::MenuItem("Fly camera", "Tab", &fly, !s.doc.plane))
+            s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
+        if (ImGui::MenuItem("Reset view", "Home")) {
+            if (s.doc.plane)
+                resetPlaneView(s);
+            else
+                s.doc.preset.camera = defaultViewFor(s.doc.preset.formula, s.doc.preset.camera);
+        }
         ImGui::Separator();
         ImGui::MenuItem("ImGui metrics", nullptr, &s.panels.demo);
         ImGui::EndMenu();
     }
     // The document's name and unsaved mark, right-aligned.
-    const std::string title = (isDirty(s) ? "* " : "") +
-                              (s.file.path.empty() ? std::string("untitled") : s.file.path.filename().string());
+    const std::string title =
+        (isDirty(s) ? "* " : "") + (s.file.path.empty() ? std::string("untitled") : s.file.path.filename().string());
     ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(title.c_str()).x - 16);
     ImGui::TextDisabled("%s", title.c_str());
     s.layout.menuHeight = ImGui::GetWindowHeight();

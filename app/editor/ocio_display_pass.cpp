@@ -117,11 +117,14 @@ void OcioDisplayPass::configure(const ColorPipeline& color, const DisplayKey& ke
     key_ = key;
 }
 
-void OcioDisplayPass::draw(GLuint linearImage, double exposureStops) const {
+void OcioDisplayPass::draw(GLuint linearImage, double exposureStops, const SumInput& input) const {
     if (!program_) return;
     const GLuint program = program_.id();
     glUseProgram(program);
     glUniform1f(glGetUniformLocation(program, "u_gain"), float(std::exp2(exposureStops)));
+    glUniform1i(glGetUniformLocation(program, "u_divideByCount"), input.divideByCount ? 1 : 0);
+    const glm::mat3 toWorking(input.toWorking);
+    glUniformMatrix3fv(glGetUniformLocation(program, "u_toWorking"), 1, GL_FALSE, &toWorking[0][0]);
     glBindTextureUnit(0, linearImage);
     for (size_t i = 0; i < luts_.size(); ++i) {
         const GLint unit = GLint(i) + 1;

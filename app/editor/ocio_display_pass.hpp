@@ -13,6 +13,7 @@
 
 #include "core/color/color_pipeline.hpp"
 #include "core/gl/program.hpp"
+#include "core/vec.hpp"
 
 namespace fraktal::editor {
 
@@ -38,7 +39,14 @@ class OcioDisplayPass {
 
     // Draws `linearImage` (RGBA32F, scene-linear in the working space) into the bound framebuffer
     // at the current glViewport, texel for pixel (same size, same row order).
-    void draw(GLuint linearImage, double exposureStops) const;
+    void draw(GLuint linearImage, double exposureStops) const { draw(linearImage, exposureStops, {}); }
+    // The 2D view's image (core/plane/plane_view.hpp) is progressive sums of linear Rec.709
+    // samples with their count in alpha: shown as toWorking * (rgb / a).
+    struct SumInput {
+        bool divideByCount = false;
+        mat3 toWorking{1.0};  // linear Rec.709 -> working space (identity: already in it)
+    };
+    void draw(GLuint linearImage, double exposureStops, const SumInput& input) const;
 
    private:
     struct LutTexture {

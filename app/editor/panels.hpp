@@ -2,25 +2,34 @@
 // EditorState it is given. They hold no state of their own.
 #pragma once
 
+#include <string>
+
 #include "app/editor/editor_state.hpp"
+#include "app/editor/plane_viewport.hpp"
 #include "app/editor/viewport_view.hpp"
 
 namespace fraktal::editor {
 
-void handleShortcuts(EditorState& s);                     // shortcuts.cpp
-void drawMenuBar(EditorState& s);                         // menu_bar.cpp
+void handleShortcuts(EditorState& s);                          // shortcuts.cpp
+void drawMenuBar(EditorState& s);                              // menu_bar.cpp
 void drawFormulaPanel(EditorState& s, const ViewportView& v);  // formula_panel.cpp
-void drawSidebar(EditorState& s);                         // sidebar.cpp: the tabs below
-void drawCameraTab(EditorState& s);                       // camera_panel.cpp
-void drawRenderTab(EditorState& s);                       // render_panel.cpp
-void drawShadingTab(EditorState& s);                      // shading_panel.cpp
-void drawPresetsTab(EditorState& s);                      // preset_browser.cpp
-void drawStatsOverlay(EditorState& s, const ViewportView& v);  // stats_overlay.cpp
-void drawExportDialog(EditorState& s);                    // export_dialog.cpp
-void drawFileDialogs(EditorState& s);                     // file_dialogs.cpp
-void drawStatusLine(EditorState& s);                      // stats_overlay.cpp
-void drawRecoveryDialog(EditorState& s);                  // recovery_dialog.cpp
+void beginFormulaWindow(EditorState& s);                       // formula_panel.cpp: the left column
+// The 2D document's panels (plane_*.cpp); `compileError` is the 2D view's.
+void drawPlaneFormulaPanel(EditorState& s, const std::string& compileError);  // plane_formula_panel.cpp
+void drawPlaneViewTab(EditorState& s);                                        // plane_view_tab.cpp
+void drawPlaneColouringTab(EditorState& s);                                   // plane_colouring_tab.cpp
+void drawPlaneStatsOverlay(EditorState& s, const PlaneViewport& v);           // stats_overlay.cpp
+void drawSidebar(EditorState& s);                                             // sidebar.cpp: the tabs below
+void drawCameraTab(EditorState& s);                                           // camera_panel.cpp
+void drawRenderTab(EditorState& s);                                           // render_panel.cpp
+void drawShadingTab(EditorState& s);                                          // shading_panel.cpp
+void drawPresetsTab(EditorState& s);                                          // preset_browser.cpp
+void drawStatsOverlay(EditorState& s, const ViewportView& v);                 // stats_overlay.cpp
+void drawExportDialog(EditorState& s);                                        // export_dialog.cpp
+void drawFileDialogs(EditorState& s);                                         // file_dialogs.cpp
+void drawStatusLine(EditorState& s);                                          // stats_overlay.cpp
+void drawRecoveryDialog(EditorState& s);                                      // recovery_dialog.cpp
 
-void applyEditorStyle(float scale);                       // style.cpp
+void applyEditorStyle(float scale);  // style.cpp
 
 }  // namespace fraktal::editor

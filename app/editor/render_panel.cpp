@@ -77,8 +77,7 @@ void drawMarchSection(RenderSettings& r) {
                "Initial step factor of the over-relaxed marcher (1: plain sphere tracing).");
 }
 
-void drawColourSection(EditorState& s) {
-    RenderSettings& r = s.doc.preset.render;
+void drawColourSection(EditorState& s, RenderSettings& r) {
     sectionHeader("Colour (OCIO)");
     if (!s.color) {
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "No OCIO config.");
@@ -105,9 +104,14 @@ void drawColourSection(EditorState& s) {
 void drawRenderTab(EditorState& s) {
     // Leave the labels room: they name what a preset field does.
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-    drawViewportSection(s.doc.view);
-    drawMarchSection(s.doc.preset.render);
-    drawColourSection(s);
+    if (s.doc.plane) {
+        // A 2D document has no march; its view refines by itself (the View tab).
+        drawColourSection(s, s.doc.plane->render);
+    } else {
+        drawViewportSection(s.doc.view);
+        drawMarchSection(s.doc.preset.render);
+        drawColourSection(s, s.doc.preset.render);
+    }
     ImGui::PopItemWidth();
 }
 

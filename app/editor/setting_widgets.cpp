@@ -10,7 +10,53 @@ namespace {
 void help(const char* text) {
     if (text) helpMarker(text);
 }
+
+// Cosine palettes colour = a + b cos(2 pi (c t + d)) (I. Quilez, "Palettes", 1999,
+// iquilezles.org/articles/palettes): a starting point for the orbit-trap colouring.
+struct NamedPalette {
+    const char* name;
+    vec3 a, b, c, d;
+};
+const NamedPalette kPalettes[] = {
+    {"Ember (default)", {0.6, 0.5, 0.44}, {0.32, 0.26, 0.24}, {0.8, 0.8, 0.8}, {0.0, 0.15, 0.3}},
+    {"Rainbow", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 1.0}, {0.0, 0.33, 0.67}},
+    {"Ocean", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 1.0}, {0.0, 0.1, 0.2}},
+    {"Copper", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 0.5}, {0.8, 0.9, 0.3}},
+    {"Bone", {0.55, 0.52, 0.48}, {0.12, 0.1, 0.08}, {1.0, 1.0, 1.0}, {0.0, 0.05, 0.1}},
+};
+
+bool vec3Drag(const char* label, vec3& v, double lo, double hi) {
+    double x[3] = {v.x, v.y, v.z};
+    if (!ImGui::DragScalarN(label, ImGuiDataType_Double, x, 3, 0.005f, &lo, &hi, "%.2f", ImGuiSliderFlags_AlwaysClamp))
+        return false;
+    v = vec3(x[0], x[1], x[2]);
+    return true;
+}
 }  // namespace
+
+bool paletteChoice(vec3& a, vec3& b, vec3& c, vec3& d) {
+    bool changed = false;
+    if (ImGui::BeginCombo("Palette", "Choose a starting point")) {
+        for (const NamedPalette& p : kPalettes)
+            if (ImGui::Selectable(p.name)) {
+                a = p.a;
+                b = p.b;
+                c = p.c;
+                d = p.d;
+                changed = true;
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+bool paletteTerms(vec3& a, vec3& b, vec3& c, vec3& d) {
+    bool changed = colorEdit("a (base)", a, nullptr);
+    changed |= colorEdit("b (swing)", b, nullptr);
+    changed |= vec3Drag("c (frequency)", c, 0.0, 8.0);
+    changed |= vec3Drag("d (phase)", d, -1.0, 1.0);
+    return changed;
+}
 
 bool dragDouble(const char* label, double& value, double lo, double hi, float speed, const char* format,
                 const char* helpText) {

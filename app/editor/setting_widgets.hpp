@@ -14,4 +14,9 @@ bool colorEdit(const char* label, vec3& rgb, const char* help);
 // A direction (never the zero vector: such an edit is refused).
 bool directionEdit(const char* label, vec3& direction, const char* help);
 
+// Cosine palettes a + b cos(2 pi (c t + d)) (3D orbit traps, 2D smooth iteration counts): a
+// combo of named starting points, and the four terms' widgets.
+bool paletteChoice(vec3& a, vec3& b, vec3& c, vec3& d);
+bool paletteTerms(vec3& a, vec3& b, vec3& c, vec3& d);
+
 }  // namespace fraktal::editor

@@ -12,20 +12,6 @@ namespace fraktal::editor {
 
 namespace {
 
-// Cosine palettes colour = a + b cos(2 pi (c t + d)) (I. Quilez, "Palettes", 1999,
-// iquilezles.org/articles/palettes): a starting point for the orbit-trap colouring.
-struct NamedPalette {
-    const char* name;
-    vec3 a, b, c, d;
-};
-const NamedPalette kPalettes[] = {
-    {"Ember (default)", {0.6, 0.5, 0.44}, {0.32, 0.26, 0.24}, {0.8, 0.8, 0.8}, {0.0, 0.15, 0.3}},
-    {"Rainbow", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 1.0}, {0.0, 0.33, 0.67}},
-    {"Ocean", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 1.0}, {0.0, 0.1, 0.2}},
-    {"Copper", {0.5, 0.5, 0.5}, {0.5, 0.5, 0.5}, {1.0, 1.0, 0.5}, {0.8, 0.9, 0.3}},
-    {"Bone", {0.55, 0.52, 0.48}, {0.12, 0.1, 0.08}, {1.0, 1.0, 1.0}, {0.0, 0.05, 0.1}},
-};
-
 void drawLightSection(ShadingSettings& sh) {
     sectionHeader("Light");
     directionEdit("Light direction", sh.lightDirection, "Toward the key light (normalised on use).");
@@ -51,16 +37,7 @@ void drawLightSection(ShadingSettings& sh) {
 
 void drawPaletteSection(ShadingSettings& sh) {
     sectionHeader("Orbit-trap palette");
-    if (ImGui::BeginCombo("Palette", "Choose a starting point")) {
-        for (const NamedPalette& p : kPalettes)
-            if (ImGui::Selectable(p.name)) {
-                sh.paletteA = p.a;
-                sh.paletteB = p.b;
-                sh.paletteC = p.c;
-                sh.paletteD = p.d;
-            }
-        ImGui::EndCombo();
-    }
+    paletteChoice(sh.paletteA, sh.paletteB, sh.paletteC, sh.paletteD);
     helpMarker(
         "colour = a + b cos(2 pi (c t + d)), t = offset + scale * dot(weights, trap); trap = the orbit's "
         "closest approach to the planes and the origin (seed 3.3).");
@@ -71,17 +48,7 @@ void drawPaletteSection(ShadingSettings& sh) {
         sh.trapWeights = vec4(w[0], w[1], w[2], w[3]);
     dragDouble("Trap scale", sh.trapScale, -20.0, 20.0, 0.01f, "%.3f", nullptr);
     dragDouble("Trap offset", sh.trapOffset, -4.0, 4.0, 0.005f, "%.3f", nullptr);
-    colorEdit("a (base)", sh.paletteA, nullptr);
-    colorEdit("b (swing)", sh.paletteB, nullptr);
-    double c[3] = {sh.paletteC.x, sh.paletteC.y, sh.paletteC.z}, d[3] = {sh.paletteD.x, sh.paletteD.y, sh.paletteD.z};
-    const double flo = 0.0, fhi = 8.0;
-    if (ImGui::DragScalarN("c (frequency)", ImGuiDataType_Double, c, 3, 0.005f, &flo, &fhi, "%.2f",
-                           ImGuiSliderFlags_AlwaysClamp))
-        sh.paletteC = vec3(c[0], c[1], c[2]);
-    const double plo = -1.0, phi = 1.0;
-    if (ImGui::DragScalarN("d (phase)", ImGuiDataType_Double, d, 3, 0.005f, &plo, &phi, "%.2f",
-                           ImGuiSliderFlags_AlwaysClamp))
-        sh.paletteD = vec3(d[0], d[1], d[2]);
+    paletteTerms(sh.paletteA, sh.paletteB, sh.paletteC, sh.paletteD);
 }
 
 void drawAtmosphereSection(ShadingSettings& sh) {

@@ -1,6 +1,9 @@
 // The right-hand panel: camera, render and shading settings and the preset browser as tabs (ImGui 1.86 has
-// no docking, so panels are fixed columns whose widths the ini file remembers).
+// no docking, so panels are fixed columns whose widths the ini file remembers). A 2D document
+// shows its view, render (colour) and colouring settings and the browser.
 #include <imgui.h>
+
+#include <utility>
 
 #include "app/editor/panels.hpp"
 
@@ -23,21 +26,18 @@ void drawSidebar(EditorState& s) {
     ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x, vp->WorkPos.y), ImGuiCond_Always, ImVec2(1, 0));
     ImGui::Begin("Scene", &s.panels.sidebar, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
     s.layout.rightWidth = ImGui::GetWindowWidth();
-    if (ImGui::BeginTabBar("scene_tabs")) {
-        if (ImGui::BeginTabItem("Camera", nullptr, selectIf(s, "Camera"))) {
-            drawCameraTab(s);
-            ImGui::EndTabItem();
-        }
-        if (ImGui::BeginTabItem("Render", nullptr, selectIf(s, "Render"))) {
-            drawRenderTab(s);
-            ImGui::EndTabItem();
-        }
-        if (ImGui::BeginTabItem("Shading", nullptr, selectIf(s, "Shading"))) {
-            drawShadingTab(s);
-            ImGui::EndTabItem();
-        }
-        if (ImGui::BeginTabItem("Presets", nullptr, selectIf(s, "Presets"))) {
-            drawPresetsTab(s);
+    // A 2D document shows its view rectangle instead of a camera, its colouring instead of shading.
+    using Tab = std::pair<const char*, void (*)(EditorState&)>;
+    const Tab scene[] = {
+        {"Camera", drawCameraTab}, {"Render", drawRenderTab}, {"Shading", drawShadingTab}, {"Presets", drawPresetsTab}};
+    const Tab plane[] = {{"View", drawPlaneViewTab},
+                         {"Render", drawRenderTab},
+                         {"Colouring", drawPlaneColouringTab},
+                         {"Presets", drawPresetsTab}};
+    if (ImGui::BeginTabBar(s.doc.plane ? "plane_tabs" : "scene_tabs")) {
+        for (const auto& [name, draw] : s.doc.plane ? plane : scene) {
+            if (!ImGui::BeginTabItem(name, nullptr, selectIf(s, name))) continue;
+            draw(s);
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();

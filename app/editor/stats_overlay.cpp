@@ -1,4 +1,5 @@
-// The stats overlay (top left of the viewport) and the status line (bottom of the viewport).
+// The stats overlay (top left of the viewport; the 3D viewport's or the 2D view's), the error
+// banners and the status line (bottom of the viewport).
 #include <imgui.h>
 
 #include "app/editor/panels.hpp"
@@ -9,11 +10,10 @@ namespace {
 constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                            ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
-}
 
-void drawStatsOverlay(EditorState& s, const ViewportView& v) {
-    const Layout& l = s.layout;
-    if (!v.compileError().empty()) {
+// Banners over the viewport: a compile error (the last good image stays) and a display error.
+void drawErrorBanners(const Layout& l, const std::string& compileError, const std::string& displayError) {
+    if (!compileError.empty()) {
         ImGui::SetNextWindowPos(ImVec2(l.viewportX + l.viewportW * 0.5f, l.viewportY + 10), ImGuiCond_Always,
                                 ImVec2(0.5f, 0));
         ImGui::SetNextWindowBgAlpha(0.85f);
@@ -22,28 +22,54 @@ void drawStatsOverlay(EditorState& s, const ViewportView& v) {
         ImGui::TextDisabled("Details under the node in the Formula panel.");
         ImGui::End();
     }
-    if (!v.displayError().empty()) {
+    if (!displayError.empty()) {
         ImGui::SetNextWindowPos(ImVec2(l.viewportX + l.viewportW * 0.5f, l.viewportY + l.viewportH - 40),
                                 ImGuiCond_Always, ImVec2(0.5f, 1));
         ImGui::SetNextWindowBgAlpha(0.85f);
         ImGui::Begin("##display_error", nullptr, kOverlayFlags);
         ImGui::PushTextWrapPos(l.viewportW * 0.8f);
-        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "Display: %s", v.displayError().c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "Display: %s", displayError.c_str());
         ImGui::PopTextWrapPos();
         ImGui::End();
     }
-    if (!s.panels.stats) return;
-    // The viewport's own per-frame statistics (core/viewport FrameStats).
-    const ViewportStats& st = v.stats();
-    const ImGuiIO& io = ImGui::GetIO();
+}
+
+// The error banners, then (when shown) the stats window at the viewport's top left: true when
+// the caller fills it (and ends it).
+bool beginStatsOverlay(EditorState& s, const std::string& compileError, const std::string& displayError) {
+    const Layout& l = s.layout;
+    drawErrorBanners(l, compileError, displayError);
+    if (!s.panels.stats) return false;
     ImGui::SetNextWindowPos(ImVec2(l.viewportX + 10, l.viewportY + 10), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.55f);
     ImGui::Begin("##stats", nullptr, kOverlayFlags);
+    return true;
+}
+
+}  // namespace
+
+void drawStatsOverlay(EditorState& s, const ViewportView& v) {
+    if (!beginStatsOverlay(s, v.compileError(), v.displayError())) return;
+    // The viewport's own per-frame statistics (core/viewport FrameStats).
+    const ViewportStats& st = v.stats();
+    const ImGuiIO& io = ImGui::GetIO();
     ImGui::Text("%.0f fps   %.1f ms viewport", io.Framerate, st.renderMs);
     ImGui::Text("%d x %d px   %.1f DE evals / px", st.width, st.height, st.deEvaluationsPerPixel);
     ImGui::Text("reprojected %.0f%%   converged %.0f%%", 100.0 * st.reprojectedShare, 100.0 * st.convergedShare);
     ImGui::Text("AA %d / %d spp%s   %s", st.aaLevel, st.aaCap, st.settled ? " (settled)" : "",
                 s.cameraControls.mode == CameraMode::Fly ? "FLY" : "ORBIT");
+    ImGui::End();
+}
+
+void drawPlaneStatsOverlay(EditorState& s, const PlaneViewport& v) {
+    if (!beginStatsOverlay(s, v.compileError(), v.displayError())) return;
+    const PlaneViewportStats& st = v.stats();
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::Text("%.0f fps   %.1f ms last pass", io.Framerate, st.passMs);
+    ImGui::Text("%d x %d px   %s", st.width, st.height, st.fp64 ? "fp64" : "fp32");
+    ImGui::Text("samples %d / %d spp%s   2D", st.samples, st.target, st.samples >= st.target ? " (settled)" : "");
+    if (s.doc.plane) ImGui::Text("view width %.3g", s.doc.plane->view.width);
+    for (const std::string& w : v.warnings()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1), "%s", w.c_str());
     ImGui::End();
 }
 
@@ -54,8 +80,10 @@ void drawStatusLine(EditorState& s) {
     ImGui::SetNextWindowBgAlpha(0.7f);
     ImGui::Begin("##status", nullptr, kOverlayFlags);
     ImGui::PushTextWrapPos(l.viewportW - 40);
-    if (s.status.error) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "%s", s.status.text.c_str());
-    else ImGui::TextUnformatted(s.status.text.c_str());
+    if (s.status.error)
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "%s", s.status.text.c_str());
+    else
+        ImGui::TextUnformatted(s.status.text.c_str());
     ImGui::PopTextWrapPos();
     ImGui::End();
 }

@@ -12,12 +12,39 @@ namespace {
 // Enough frames for every ray of one sample to finish at any steps-per-frame budget the
 // preset's march can need (maxSteps / stepsPerFrame, plus the settle frame), bounded.
 constexpr int kMaxThumbnailFrames = 64;
+constexpr int kPlaneThumbnailSamples = 4;
+
+// A texture of its own for the browser (the renderers reuse theirs for the next thumbnail).
+GLuint copyOf(GLuint source, int width, int height) {
+    GLuint copy = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &copy);
+    glTextureStorage2D(copy, 1, GL_RGBA8, width, height);
+    glTextureParameteri(copy, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(copy, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glCopyImageSubData(source, GL_TEXTURE_2D, 0, 0, 0, 0, copy, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+    return copy;
+}
+
+GLuint renderPlaneThumbnail(ThumbnailRenderer& r, const PlanePreset& preset, const ColorPipeline& color) {
+    if (!r.plane) r.plane = std::make_unique<PlaneViewport>(color);
+    r.plane->setTargetSamples(kPlaneThumbnailSamples);
+    for (int pass = 0; pass < kPlaneThumbnailSamples; ++pass) {
+        r.plane->render(preset, r.width, r.height);
+        if (!r.plane->compileError().empty()) throw std::runtime_error(r.plane->compileError());
+        if (!r.plane->refining()) break;
+    }
+    return copyOf(r.plane->displayTexture(), r.width, r.height);
+}
 }  // namespace
 
 bool renderNextThumbnail(ThumbnailRenderer& r, PresetBrowser& b, const ColorPipeline& color) {
     for (Thumbnail& t : b.entries) {
         if (t.texture || t.failed) continue;
         try {
+            if (isPlanePresetFile(t.file)) {
+                t.texture = renderPlaneThumbnail(r, loadPlanePreset(t.file), color);
+                return true;
+            }
             Document d;
             d.preset = loadPreset(t.file);
             loadEditorSection(d);
@@ -30,14 +57,7 @@ bool renderNextThumbnail(ThumbnailRenderer& r, PresetBrowser& b, const ColorPipe
                 if (!r.viewport->compileError().empty()) throw std::runtime_error(r.viewport->compileError());
                 if (r.viewport->stats().settled) break;
             }
-            GLuint copy = 0;
-            glCreateTextures(GL_TEXTURE_2D, 1, &copy);
-            glTextureStorage2D(copy, 1, GL_RGBA8, r.width, r.height);
-            glTextureParameteri(copy, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            glTextureParameteri(copy, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            glCopyImageSubData(r.viewport->displayTexture(), GL_TEXTURE_2D, 0, 0, 0, 0, copy, GL_TEXTURE_2D, 0, 0, 0, 0,
-                               r.width, r.height, 1);
-            t.texture = copy;
+            t.texture = copyOf(r.viewport->displayTexture(), r.width, r.height);
         } catch (const std::exception&) {
             t.failed = true;  // shown as "(cannot render)"; opening it reports the reason
         }

@@ -3,11 +3,11 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfIntAttribute.h>
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
-#include <ImfIntAttribute.h>
 #include <ImfStringAttribute.h>
-
 #include <half.h>
 
 #include "core/image/atomic_file.hpp"
@@ -16,11 +16,7 @@
 
 namespace fraktal {
 
-namespace {
-
-// Linear Rec.709 -> working space as a matrix (columns: the images of the unit primaries),
-// exact for the linear working spaces the configs offer.
-mat3 workingFromRec709(const ColorPipeline& color, const std::string& workingSpace) {
+mat3 planeWorkingFromRec709(const ColorPipeline& color, const std::string& workingSpace) {
     mat3 m(1.0);
     for (int i = 0; i < 3; ++i) {
         vec3 e(0.0);
@@ -29,6 +25,8 @@ mat3 workingFromRec709(const ColorPipeline& color, const std::string& workingSpa
     }
     return m;
 }
+
+namespace {
 
 // One strip of full-width rows in the EXR's channel layout.
 struct PlaneStrip {
@@ -45,7 +43,7 @@ struct PlaneStrip {
 };
 
 class PlaneExrWriter {
-public:
+   public:
     PlaneExrWriter(const std::filesystem::path& path, int width, int height, bool fullFloat, const Imf::Header& extra)
         : width_(width), fullFloat_(fullFloat) {
         Imf::Header header = extra;
@@ -72,7 +70,8 @@ public:
         if (fullFloat_) {
             const char* names[4] = {"R", "G", "B", "A"};
             for (int c = 0; c < 4; ++c)
-                fb.insert(names[c], Imf::Slice(Imf::FLOAT, (char*)(s.rgba.data() + c - shift * 4), 16, 16 * size_t(width_)));
+                fb.insert(names[c],
+                          Imf::Slice(Imf::FLOAT, (char*)(s.rgba.data() + c - shift * 4), 16, 16 * size_t(width_)));
             fb.insert("inside", Imf::Slice(Imf::FLOAT, (char*)(s.inside.data() - shift), 4, 4 * size_t(width_)));
         } else {
             halves_.resize(n * 5);
@@ -80,7 +79,8 @@ public:
             for (size_t i = 0; i < n; ++i) halves_[n * 4 + i] = half(s.inside[i]);
             const char* names[4] = {"R", "G", "B", "A"};
             for (int c = 0; c < 4; ++c)
-                fb.insert(names[c], Imf::Slice(Imf::HALF, (char*)(halves_.data() + c - shift * 4), 8, 8 * size_t(width_)));
+                fb.insert(names[c],
+                          Imf::Slice(Imf::HALF, (char*)(halves_.data() + c - shift * 4), 8, 8 * size_t(width_)));
             fb.insert("inside", Imf::Slice(Imf::HALF, (char*)(halves_.data() + n * 4 - shift), 2, 2 * size_t(width_)));
         }
         fb.insert("iterations", Imf::Slice(Imf::FLOAT, (char*)(s.iterations.data() - shift), 4, 4 * size_t(width_)));
@@ -90,7 +90,7 @@ public:
     }
     void close() { file_.reset(); }
 
-private:
+   private:
     int width_;
     bool fullFloat_;
     std::vector<half> halves_;
@@ -98,6 +98,17 @@ private:
 };
 
 }  // namespace
+
+std::optional<std::string> readExrPlanePreset(const std::filesystem::path& path) {
+    try {
+        Imf::InputFile in(path.c_str());
+        const auto* text = in.header().findTypedAttribute<Imf::StringAttribute>(kExrPlanePresetAttribute);
+        if (!text) return std::nullopt;
+        return text->value();
+    } catch (const std::exception& e) {
+        throw std::runtime_error(path.string() + ": cannot read EXR: " + e.what());
+    }
+}
 
 void validatePlaneStillJob(const PlaneStillJob& job, const ColorPipeline& color) {
     // The 3D still's checks cover everything but the scene: size, spp, extensions, folders, colour.
@@ -115,7 +126,7 @@ std::vector<std::string> renderPlaneStill(const PlaneStillJob& job, const ColorP
     const PlanePreset& p = job.preset;
     const RenderSettings& r = p.render;
     const std::string workingSpace = color.resolveSpace(r.workingSpace);
-    const mat3 toWorking = workingFromRec709(color, r.workingSpace);
+    const mat3 toWorking = planeWorkingFromRec709(color, r.workingSpace);
 
     PlaneRenderer renderer;
     renderer.prepare(p.formula, job.precision);
@@ -168,7 +179,7 @@ std::vector<std::string> renderPlaneStill(const PlaneStillJob& job, const ColorP
         exr.write(strip, y0);
         if (display)
             display->toDisplay8(strip.rgba, std::span(preview).subspan(size_t(y0) * size_t(r.width) * 3,
-                                                                      size_t(rows) * size_t(r.width) * 3));
+                                                                       size_t(rows) * size_t(r.width) * 3));
     }
     exr.close();
     exrFile.commit();

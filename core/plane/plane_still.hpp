@@ -31,6 +31,15 @@ struct PlaneStillJob {
     const std::atomic<bool>* cancel = nullptr;  // polled between tiles: throws RenderCancelled
 };
 
+// Linear Rec.709 (the 2D renderer's colours) -> the working space, as a matrix whose columns
+// are the images of the unit primaries: exact for the linear working spaces configs offer.
+mat3 planeWorkingFromRec709(const ColorPipeline& color, const std::string& workingSpace);
+
+// The 2D preset embedded in a 2D still's EXR header (kExrPlanePresetAttribute), or nullopt when
+// the file is an EXR without one. Throws std::runtime_error naming the file when it cannot be
+// read as an EXR.
+std::optional<std::string> readExrPlanePreset(const std::filesystem::path& path);
+
 // Checks sizes, outputs and colour settings before rendering (the 3D still's checks); throws
 // std::runtime_error saying what is wrong.
 void validatePlaneStillJob(const PlaneStillJob& job, const ColorPipeline& color);

@@ -35,7 +35,7 @@ struct PlaneRefinement {
 };
 
 class PlaneView {
-public:
+   public:
     void setPreset(const PlanePreset& preset);  // restarts refinement when formula or colouring changed
     const PlaneViewRect& rect() const { return rect_; }
     void setRect(const PlaneViewRect& rect);
@@ -55,8 +55,10 @@ public:
     GLuint aovTexture() const { return target_.aovTexture(); }
     const std::vector<std::string>& warnings() const { return renderer_.warnings(); }
     PlaneRefinement& refinement() { return refinement_; }
+    const PlaneRefinement& refinement() const { return refinement_; }
+    bool usesDouble() const { return renderer_.usesDouble(); }
 
-private:
+   private:
     PlanePreset preset_;
     std::string presetKey_;
     PlaneViewRect rect_;
