@@ -1,12 +1,15 @@
 // `fraktal render` and `fraktal info` from the outside: bad input is a clear error with a
 // non-zero exit that leaves existing files alone; Ctrl-C leaves nothing; memory stays bounded.
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
 #include <gtest/gtest.h>
-
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <thread>
 
@@ -53,6 +56,49 @@ TEST(CliRender, RendersExrAndPngAndInfoPrintsThePreset) {
     EXPECT_NE(runCli("info " + box.path("b.exr")).output.find("64 x 48"), std::string::npos);
 }
 
+// One float channel of an EXR, rows from the top.
+std::vector<float> readChannel(const std::string& path, const char* name, int& width, int& height) {
+    Imf::InputFile in(path.c_str());
+    const Imath::Box2i dw = in.header().dataWindow();
+    width = dw.max.x - dw.min.x + 1;
+    height = dw.max.y - dw.min.y + 1;
+    std::vector<float> data(size_t(width) * size_t(height));
+    Imf::FrameBuffer fb;
+    fb.insert(name, Imf::Slice(Imf::FLOAT, (char*)data.data(), sizeof(float), sizeof(float) * size_t(width)));
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    return data;
+}
+
+// A 2D still keeps its preset under its own attribute: `fraktal info` prints it and `fraktal
+// render STILL.exr` renders the same image again (its size, samples and view, not the file's).
+TEST(CliRender, A2dStillReRendersFromItsExrToTheSameImage) {
+    Sandbox box;
+    const std::string julia = (test::sourceDir() / "presets" / "2d" / "julia.json").string();
+    const auto first = runCli("render " + julia + " -o " + box.path("a.exr") + " --size 24x16 --spp 2 --float -q");
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    const auto info = runCli("info " + box.path("a.exr"));
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("2D preset (fraktal.planePreset)"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("\"Julia set"), std::string::npos) << info.output;
+    EXPECT_EQ(info.output.find("no embedded"), std::string::npos) << info.output;
+
+    const auto again = runCli("render " + box.path("a.exr") + " -o " + box.path("b.exr") + " --float -q");
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    for (const char* channel : {"R", "G", "B", "inside", "iterations"}) {
+        int w1 = 0, h1 = 0, w2 = 0, h2 = 0;
+        const std::vector<float> a = readChannel(box.path("a.exr"), channel, w1, h1);
+        const std::vector<float> b = readChannel(box.path("b.exr"), channel, w2, h2);
+        EXPECT_EQ(w2, 24) << "the EXR's size, not the preset file's";
+        EXPECT_EQ(h2, 16);
+        EXPECT_EQ(a, b) << "channel " << channel;
+    }
+    // The image is not trivially constant (the comparison above could fail).
+    int w = 0, h = 0;
+    const std::vector<float> inside = readChannel(box.path("a.exr"), "inside", w, h);
+    EXPECT_NE(*std::min_element(inside.begin(), inside.end()), *std::max_element(inside.begin(), inside.end()));
+}
+
 // Each bad invocation: non-zero exit, a message with `expect`, and the existing file untouched.
 TEST(CliRender, BadInputIsAClearErrorAndOverwritesNothing) {
     Sandbox box;
@@ -65,7 +111,8 @@ TEST(CliRender, BadInputIsAClearErrorAndOverwritesNothing) {
     const Case cases[] = {
         {"render " + ok + " -o /nonexistent_dir/x.exr --size 32x32", "", "does not exist"},
         {"render " + ok + " -o " + box.path("x.tiff") + " --size 32x32", "", "unknown output extension"},
-        {"render " + ok + " -o " + existing + " --png " + box.path("x.jpg") + " --size 32x32", "", "unknown preview extension"},
+        {"render " + ok + " -o " + existing + " --png " + box.path("x.jpg") + " --size 32x32", "",
+         "unknown preview extension"},
         {"render " + ok + " -o " + existing + " --size 0x10", "", "--size"},
         {"render " + ok + " -o " + existing + " --size -5x10", "", "--size"},
         {"render " + ok + " -o " + existing + " --size 1000000x1000000", "", "--size"},
@@ -80,7 +127,8 @@ TEST(CliRender, BadInputIsAClearErrorAndOverwritesNothing) {
         {"render " + ok + " -o " + existing + " --size 32x32 --working-space Nope", "", "no colour space"},
         {"info " + box.path("missing.exr"), "", "no such file"},
     };
-    std::ofstream(box.path("broken.ocio")) << "ocio_profile_version: 2.1\nroles: {scene_linear: nowhere}\ndisplays: [\n";
+    std::ofstream(box.path("broken.ocio"))
+        << "ocio_profile_version: 2.1\nroles: {scene_linear: nowhere}\ndisplays: [\n";
     for (const Case& c : cases) {
         const auto r = runCli(c.args, c.env);
         EXPECT_GT(r.exitCode, 0) << c.args << "\n" << r.output;
@@ -156,10 +204,9 @@ TEST(CliRender, InterruptLeavesNoFile) {
     Sandbox box;
     const std::string existing = box.path("out.exr");
     std::ofstream(existing) << "precious";
-    const auto [code, peak] =
-        runChild({"render", preset("mandelbulb"), "-o", existing, "--png", box.path("out.png"), "--size", "1024x1024",
-                  "--spp", "16", "--tile", "64"},
-                 1500);
+    const auto [code, peak] = runChild({"render", preset("mandelbulb"), "-o", existing, "--png", box.path("out.png"),
+                                        "--size", "1024x1024", "--spp", "16", "--tile", "64"},
+                                       1500);
     EXPECT_EQ(code, 130);
     EXPECT_EQ(readFile(existing), "precious");
     EXPECT_FALSE(fs::exists(box.path("out.png")));

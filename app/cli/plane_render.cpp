@@ -16,9 +16,9 @@ std::atomic<bool> gPlaneCancel{false};  // set by SIGINT/SIGTERM; a handler can 
 extern "C" void requestPlaneCancel(int) { gPlaneCancel.store(true); }
 }  // namespace
 
-int runPlaneRender(const PlaneRenderRequest& q) {
+int runPlaneRender(const PlaneRenderRequest& q, PlanePreset preset) {
     PlaneStillJob job;
-    job.preset = loadPlanePreset(q.input);
+    job.preset = std::move(preset);
     RenderSettings& r = job.preset.render;
     if (q.width > 0) r.width = q.width;
     if (q.height > 0) r.height = q.height;

@@ -5,12 +5,14 @@
 #include <optional>
 #include <string>
 
+#include "core/plane/plane_preset.hpp"
+
 namespace fraktal::cli {
 
 struct PlaneRenderRequest {
-    std::string input, output, png;
-    int width = 0, height = 0;  // 0: the preset's
-    int spp = 0;                // 0: the preset's
+    std::string input, output, png;  // input: for messages
+    int width = 0, height = 0;       // 0: the preset's
+    int spp = 0;                     // 0: the preset's
     std::optional<double> exposure;
     std::string view, display, workingSpace;
     bool fullFloat = false;
@@ -20,6 +22,8 @@ struct PlaneRenderRequest {
     bool forceFloat = false;  // single precision even where fp64 exists (comparisons)
 };
 
-int runPlaneRender(const PlaneRenderRequest& request);
+// Renders `preset` (loaded by the caller from a 2D preset file or a 2D still's EXR) with the
+// request's overrides.
+int runPlaneRender(const PlaneRenderRequest& request, PlanePreset preset);
 
 }  // namespace fraktal::cli

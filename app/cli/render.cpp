@@ -1,5 +1,5 @@
 // `fraktal render PRESET -o OUT.exr [--png OUT.png] ...`: a print-quality still, headless.
-// PRESET may also be an EXR written by fraktal: its embedded preset is rendered again.
+// PRESET may also be an EXR written by fraktal: its embedded preset (3D or 2D) is rendered again.
 #include <unistd.h>
 
 #include <atomic>
@@ -15,6 +15,7 @@
 #include "core/gl/context.hpp"
 #include "core/image/exr_writer.hpp"
 #include "core/plane/plane_preset.hpp"
+#include "core/plane/plane_still.hpp"
 #include "core/preset.hpp"
 #include "core/render/still_job.hpp"
 
@@ -42,15 +43,32 @@ struct RenderOptions {
     bool quiet = false;
 };
 
-Preset loadInput(const std::string& input) {
+bool isExrPath(const std::string& input) {
     std::string ext = std::filesystem::path(input).extension().string();
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".exr") {
+    return ext == ".exr";
+}
+
+Preset loadInput(const std::string& input) {
+    if (isExrPath(input)) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(input, ec)) throw PresetError(input, "", "no such file");
         return parsePreset(readExrPreset(input), input + " (embedded preset)");
     }
     return loadPreset(input);
+}
+
+// A 2D preset (presets/2d) or a 2D still's EXR (its embedded 2D preset); nullopt for 3D input.
+std::optional<PlanePreset> loadPlaneInput(const std::string& input) {
+    if (isExrPath(input)) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(input, ec)) return std::nullopt;  // loadInput says so
+        const std::optional<std::string> text = readExrPlanePreset(input);
+        if (!text) return std::nullopt;
+        return parsePlanePreset(*text, input + " (embedded 2D preset)");
+    }
+    if (isPlanePresetFile(input)) return loadPlanePreset(input);
+    return std::nullopt;
 }
 
 void parseSize(const std::string& text, RenderSettings& r) {
@@ -67,8 +85,10 @@ void parseSize(const std::string& text, RenderSettings& r) {
 
 std::string formatSeconds(double s) {
     char buf[32];
-    if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
-    else std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
+    if (s < 60)
+        std::snprintf(buf, sizeof buf, "%.1fs", s);
+    else
+        std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
     return buf;
 }
 
@@ -84,7 +104,8 @@ struct ProgressPrinter {
             std::string bar(size_t(f * width), '#');
             bar.resize(width, ' ');
             std::fprintf(stderr, "\r[%s] %3d%%  tile %d/%d  %s elapsed  ETA %s   ", bar.c_str(), int(f * 100),
-                         p.tilesDone, p.tilesTotal, formatSeconds(p.secondsElapsed).c_str(), formatSeconds(eta).c_str());
+                         p.tilesDone, p.tilesTotal, formatSeconds(p.secondsElapsed).c_str(),
+                         formatSeconds(eta).c_str());
             if (p.tilesDone == p.tilesTotal) std::fputc('\n', stderr);
         } else if (int decile = int(f * 10); decile != lastDecile) {
             lastDecile = decile;
@@ -96,16 +117,28 @@ struct ProgressPrinter {
 };
 
 int runRender(const RenderOptions& o) {
-    if (isPlanePresetFile(o.input)) {  // a 2D preset (presets/2d): the 2D renderer, same options
-        PlaneRenderRequest q{o.input, o.output, o.png, 0, 0, o.spp, o.exposure, o.view, o.display,
-                             o.workingSpace, o.fullFloat, o.threads, std::min(o.tile, 4096), o.quiet};
+    if (std::optional<PlanePreset> plane = loadPlaneInput(o.input)) {  // 2D: the 2D renderer, same options
+        PlaneRenderRequest q{o.input,
+                             o.output,
+                             o.png,
+                             0,
+                             0,
+                             o.spp,
+                             o.exposure,
+                             o.view,
+                             o.display,
+                             o.workingSpace,
+                             o.fullFloat,
+                             o.threads,
+                             std::min(o.tile, 4096),
+                             o.quiet};
         if (!o.size.empty()) {
             RenderSettings size;
             parseSize(o.size, size);
             q.width = size.width;
             q.height = size.height;
         }
-        return runPlaneRender(q);
+        return runPlaneRender(q, std::move(*plane));
     }
     StillJob job;
     job.preset = loadInput(o.input);
@@ -158,7 +191,8 @@ int runRender(const RenderOptions& o) {
 void addRenderCommand(CLI::App& app, Action& action) {
     auto o = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render a print-quality still to EXR (and a PNG preview)");
-    cmd->add_option("preset", o->input, "Preset (JSON), or an EXR written by fraktal (its embedded preset)")->required();
+    cmd->add_option("preset", o->input, "Preset (JSON), or an EXR written by fraktal (its embedded preset)")
+        ->required();
     cmd->add_option("-o,--output", o->output, "Output EXR (scene-linear, with AOVs)")->required();
     cmd->add_option("--png", o->png, "Also write a PNG through the OCIO display/view transform");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default: the preset's, else 1280x720)");
@@ -173,7 +207,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
                     "Scene-linear working space: an OCIO colour space or role (shipped: scene_linear = Linear "
                     "Rec.709 (sRGB), ACEScg)");
     cmd->add_flag("--float", o->fullFloat, "32-bit float EXR channels (default: half)");
-    cmd->add_option("--threads", o->threads, "Rendering threads (llvmpipe; default: all cores)")->check(CLI::Range(1, 1024));
+    cmd->add_option("--threads", o->threads, "Rendering threads (llvmpipe; default: all cores)")
+        ->check(CLI::Range(1, 1024));
     cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
     cmd->callback([&action, o] { action = [o] { return runRender(*o); }; });
