@@ -56,5 +56,20 @@ TEST(Tiles, CoverEveryPixelOnce) {
     for (int v : hits) ASSERT_EQ(v, 1);
 }
 
+// Strips stay near 2 Mpixel at any width (bounded memory), hold whole EXR ZIP blocks (16 rows)
+// and never more than one row of tiles.
+TEST(Tiles, StillStripRowsAreBoundedWholeZipBlocks) {
+    for (int width : {1, 100, 1000, 1920, 4096, 8192, 16384, 65536})
+        for (int tile : {16, 64, 100, 256, 4096}) {
+            const int rows = stillStripRows(width, tile);
+            EXPECT_EQ(rows % 16, 0) << width << " " << tile;
+            EXPECT_GE(rows, 16);
+            EXPECT_LE(rows, std::max(16, tile));
+            EXPECT_LE(double(rows) * width, std::max(16.0 * width, double(1 << 21))) << width << " " << tile;
+        }
+    EXPECT_EQ(stillStripRows(8192, 256), 256);
+    EXPECT_EQ(stillStripRows(16384, 256), 128);
+}
+
 }  // namespace
 }  // namespace fraktal

@@ -5,14 +5,18 @@
 #pragma once
 
 #include <ImfOutputFile.h>
+#include <half.h>
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
-#include "core/color/color_pipeline.hpp"
 #include "core/camera.hpp"
+#include "core/color/color_pipeline.hpp"
 #include "core/render/image_strip.hpp"
 
 namespace fraktal {
@@ -31,23 +35,44 @@ struct ExrMetadata {
     std::optional<Chromaticities> chromaticities;
 };
 
+// Where each EXR channel comes from: which of the strip's four interleaved buffers (in
+// ImageStrip::buffers() order), which component, and whether it is always 32-bit float.
+struct ExrChannelSource {
+    const char* name;
+    int buffer;
+    int component;
+    bool alwaysFloat;
+};
+// The channels fraktal writes, in this order: R G B A, Z, N.x N.y N.z, albedo.R/G/B, AO, steps.
+std::span<const ExrChannelSource> exrStripChannels();
+
 class ExrStripWriter {
-public:
-    // Opens `path` for writing (the caller passes an AtomicFile's temporary path).
-    ExrStripWriter(const std::filesystem::path& path, int width, int height, bool fullFloat, const ExrMetadata& meta);
+   public:
+    // Opens `path` for writing (the caller passes an AtomicFile's temporary path). Compression
+    // runs on `compressionThreads` threads (0: one per core).
+    ExrStripWriter(const std::filesystem::path& path, int width, int height, bool fullFloat, const ExrMetadata& meta,
+                   int compressionThreads = 0);
     ~ExrStripWriter();
-    // Strips must arrive in order, covering every row exactly once.
+    // Strips must arrive in order, covering every row exactly once. Strips of a multiple of 16
+    // rows let OpenEXR compress whole ZIP blocks in parallel within the call.
     void write(const ImageStrip& strip);
     // Flushes and closes the file; throws on failure.
     void close();
 
-private:
+   private:
     std::filesystem::path path_;
     int width_, height_;
     bool fullFloat_;
     int nextRow_ = 0;
     std::unique_ptr<Imf::OutputFile> file_;
+    // Interleaved half copies of the strip's buffers, reused from strip to strip.
+    std::array<std::vector<half>, 4> halfBuffers_;
 };
+
+// Float to half (round to nearest even, as Imath's half(float)). Fastest uses the CPU's F16C
+// instruction when it has one; Portable is Imath's per-value conversion (the tests compare them).
+enum class HalfConversion { Fastest, Portable };
+void convertFloatsToHalf(std::span<const float> src, std::span<half> dst, HalfConversion how = HalfConversion::Fastest);
 
 // The preset embedded in an EXR written by fraktal; throws naming the file when there is none.
 std::string readExrPreset(const std::filesystem::path& path);

@@ -3,19 +3,24 @@
 // image never exists at once).
 #pragma once
 
+#include <array>
 #include <vector>
 
 namespace fraktal {
 
 struct ImageStrip {
     int width = 0;
-    int y0 = 0;    // first row, counted from the top of the image
+    int y0 = 0;  // first row, counted from the top of the image
     int rows = 0;
     // Four floats per pixel each, row-major from (0, y0):
     std::vector<float> rgba;         // colour, alpha = coverage
     std::vector<float> normalDepth;  // world normal (coverage-weighted), depth of the nearest hit (1e30: none)
     std::vector<float> albedoAO;     // orbit-trap albedo, ambient occlusion (coverage-weighted)
     std::vector<float> stats;        // DE evaluations per sample, march steps per camera ray, 0, 0
+
+    // The four buffers in a fixed order (rgba, normalDepth, albedoAO, stats), for code that walks them.
+    std::array<std::vector<float>*, 4> buffers() { return {&rgba, &normalDepth, &albedoAO, &stats}; }
+    std::array<const std::vector<float>*, 4> buffers() const { return {&rgba, &normalDepth, &albedoAO, &stats}; }
 
     void resize(int w, int firstRow, int rowCount) {
         width = w;

@@ -29,7 +29,8 @@ void validateStillJob(const StillJob& job, const ColorPipeline& color) {
     if ((long long)r.width * r.height > kMaxImagePixels)
         throw std::runtime_error("image of " + std::to_string((long long)r.width * r.height) + " pixels is too big");
     if (r.spp < 1 || r.spp > kMaxSpp)
-        throw std::runtime_error("samples per pixel " + std::to_string(r.spp) + " is outside 1.." + std::to_string(kMaxSpp));
+        throw std::runtime_error("samples per pixel " + std::to_string(r.spp) + " is outside 1.." +
+                                 std::to_string(kMaxSpp));
     if (job.tileSize < 16 || job.tileSize > 4096) throw std::runtime_error("tile size must be within 16..4096");
     if (!hasExtension(job.exr, ".exr"))
         throw std::runtime_error(job.exr.string() + ": unknown output extension '" + job.exr.extension().string() +
@@ -37,8 +38,8 @@ void validateStillJob(const StillJob& job, const ColorPipeline& color) {
     AtomicFile checkExr(job.exr);  // throws when the folder is missing or not writable
     if (job.png) {
         if (!hasExtension(*job.png, ".png"))
-            throw std::runtime_error(job.png->string() + ": unknown preview extension '" + job.png->extension().string() +
-                                     "' (expected .png)");
+            throw std::runtime_error(job.png->string() + ": unknown preview extension '" +
+                                     job.png->extension().string() + "' (expected .png)");
         if ((long long)r.width * r.height > kMaxPngPixels)
             throw std::runtime_error("a PNG preview is limited to " + std::to_string(kMaxPngPixels) +
                                      " pixels; render the EXR alone at this size");
@@ -55,9 +56,8 @@ void renderStillJob(const StillJob& job, const ColorPipeline& color) {
     const Preset& preset = job.preset;
     const RenderSettings& r = preset.render;
     const std::string workingSpace = color.resolveSpace(r.workingSpace);
-    const ShadingParams shading = resolveShading(preset.shading, r, preset.formula, [&](const vec3& c) {
-        return color.fromLinearRec709(c, workingSpace);
-    });
+    const ShadingParams shading = resolveShading(
+        preset.shading, r, preset.formula, [&](const vec3& c) { return color.fromLinearRec709(c, workingSpace); });
     const DisplayTransform display(color, workingSpace, r.display, r.view, r.exposure);
 
     const int tileSize = std::min(job.tileSize, std::max(r.width, r.height));
@@ -75,9 +75,7 @@ void renderStillJob(const StillJob& job, const ColorPipeline& color) {
     std::vector<uint8_t> preview;
     if (job.png) preview.resize(size_t(r.width) * size_t(r.height) * 3);
 
-    // About 2 Mpixel per strip (16 floats each, ~128 MiB) whatever the width: bounded memory.
-    const int stripRows = std::clamp((1 << 21) / r.width, 16, tileSize);
-    const std::vector<TileRect> strips = stripsOf(r.width, r.height, stripRows);
+    const std::vector<TileRect> strips = stripsOf(r.width, r.height, stillStripRows(r.width, tileSize));
     StillProgress progress;
     for (const TileRect& s : strips) progress.tilesTotal += int(tilesOf(s, tileSize).size());
     const auto start = std::chrono::steady_clock::now();

@@ -11,11 +11,20 @@ std::vector<TileRect> stripsOf(int imageWidth, int imageHeight, int stripRows) {
     return strips;
 }
 
+int stillStripRows(int imageWidth, int tileSize) {
+    constexpr int kStripPixels = 1 << 21;
+    constexpr int kZipBlockRows = 16;  // OpenEXR's ZIP_COMPRESSION compresses 16 scanlines at a time
+    const int rows =
+        std::clamp(kStripPixels / std::max(1, imageWidth), kZipBlockRows, std::max(kZipBlockRows, tileSize));
+    return rows / kZipBlockRows * kZipBlockRows;
+}
+
 std::vector<TileRect> tilesOf(const TileRect& strip, int tileSize) {
     std::vector<TileRect> tiles;
     for (int y = strip.y; y < strip.y + strip.height; y += tileSize)
         for (int x = strip.x; x < strip.x + strip.width; x += tileSize)
-            tiles.push_back({x, y, std::min(tileSize, strip.x + strip.width - x), std::min(tileSize, strip.y + strip.height - y)});
+            tiles.push_back(
+                {x, y, std::min(tileSize, strip.x + strip.width - x), std::min(tileSize, strip.y + strip.height - y)});
     return tiles;
 }
 
