@@ -46,30 +46,46 @@ enum class Membership {
     EscapeTime,  // inside where the orbit never passed the bailout (Mandelbulb, Mandelbox)
 };
 
-using ApplyFn = void (*)(P4& p, const vec3& c, Args a);
-using EstimateFn = double (*)(const P4& p, const vec3& c, Args a);
+// The type-erased description that the rest of the program sees, for one family of blocks: the
+// state a step transforms, the point `c` it sees and how its estimators decide membership. 3D
+// blocks are BlockDesc below; 2D blocks (core/plane/plane_block.hpp) are the same template over
+// the plane's state, so both families share one definition, one set of concepts and describe.
+template <class StateT, class PointT, class MembershipT>
+struct BlockDescOf {
+    using State = StateT;
+    using Point = PointT;
+    using MembershipKind = MembershipT;
+    using ApplyFn = void (*)(State& p, const Point& c, Args a);
+    using EstimateFn = double (*)(const State& p, const Point& c, Args a);
 
-// The type-erased description that the rest of the program sees.
-struct BlockDesc {
     std::string_view id;
     std::string_view label;
     std::string_view help;
     Category category;
     std::span<const ParamDecl> params;
-    // GLSL body. Folds/transforms/powers: statements over `inout vec4 p` and `vec3 c`.
-    // Estimators: statements ending in `return <distance>;`. Parameters are in scope by name.
+    // GLSL body. Folds/transforms/powers: statements over the state (3D: `inout vec4 p`; 2D:
+    // `inout PlaneState s`) and `c`. Estimators: statements ending in `return <distance>;`.
+    // Parameters are in scope by name.
     std::string_view glsl;
     ApplyFn apply = nullptr;        // non-estimators
     EstimateFn estimate = nullptr;  // estimators
-    Membership membership = Membership::Distance;
-    bool custom = false;  // a user's GLSL block (core/custom_block.hpp): no CPU body
+    MembershipT membership{};       // the family's first kind unless the estimator says
+    bool custom = false;            // a user's GLSL block (core/custom_block.hpp): no CPU body
 
     bool isEstimator() const { return category == Category::Estimator; }
-    int paramIndex(std::string_view name) const;
+    int paramIndex(std::string_view name) const {
+        for (size_t i = 0; i < params.size(); ++i)
+            if (params[i].name == name) return int(i);
+        return -1;
+    }
 };
 
+using BlockDesc = BlockDescOf<P4, vec3, Membership>;
+using ApplyFn = BlockDesc::ApplyFn;
+using EstimateFn = BlockDesc::EstimateFn;
+
 // What a block definition must provide; a block missing any of it fails to compile at its
-// registration line in formulas/registry.cpp.
+// registration line in formulas/registry.cpp (2D: core/plane/plane_registry.cpp).
 template <class B>
 concept BlockCommon = requires {
     { B::id } -> std::convertible_to<std::string_view>;
@@ -77,25 +93,32 @@ concept BlockCommon = requires {
     { B::help } -> std::convertible_to<std::string_view>;
     { B::category } -> std::convertible_to<Category>;
     { B::glsl } -> std::convertible_to<std::string_view>;
-    { std::span<const ParamDecl>(B::params) };
+    {std::span<const ParamDecl>(B::params)};
 };
 
-template <class B>
-concept StepBlock = BlockCommon<B> && requires(P4& p, const vec3& c, Args a) {
+template <class B, class Desc>
+concept StepBlockFor = BlockCommon<B> && requires(typename Desc::State& p, const typename Desc::Point& c, Args a) {
     { B::apply(p, c, a) } -> std::same_as<void>;
 };
 
-template <class B>
-concept EstimatorBlock = BlockCommon<B> && requires(const P4& p, const vec3& c, Args a) {
+template <class B, class Desc>
+concept EstimatorBlockFor = BlockCommon<B> &&
+    requires(const typename Desc::State& p, const typename Desc::Point& c, Args a) {
     { B::estimate(p, c, a) } -> std::same_as<double>;
-    { B::membership } -> std::convertible_to<Membership>;
+    { B::membership } -> std::convertible_to<typename Desc::MembershipKind>;
 };
 
 template <class B>
-    requires StepBlock<B> || EstimatorBlock<B>
-constexpr BlockDesc describe() {
-    BlockDesc d{B::id, B::label, B::help, B::category, std::span<const ParamDecl>(B::params), B::glsl};
-    if constexpr (EstimatorBlock<B>) {
+concept StepBlock = StepBlockFor<B, BlockDesc>;
+template <class B>
+concept EstimatorBlock = EstimatorBlockFor<B, BlockDesc>;
+
+// The description of block B in family Desc.
+template <class Desc, class B>
+requires StepBlockFor<B, Desc> || EstimatorBlockFor<B, Desc>
+constexpr Desc describeAs() {
+    Desc d{B::id, B::label, B::help, B::category, std::span<const ParamDecl>(B::params), B::glsl};
+    if constexpr (EstimatorBlockFor<B, Desc>) {
         static_assert(B::category == Category::Estimator, "an estimator block must say so");
         d.estimate = &B::estimate;
         d.membership = B::membership;
@@ -105,6 +128,10 @@ constexpr BlockDesc describe() {
     }
     return d;
 }
+
+template <class B>
+requires StepBlock<B> || EstimatorBlock<B>
+constexpr BlockDesc describe() { return describeAs<BlockDesc, B>(); }
 
 // All registered blocks (formulas/registry.cpp).
 std::span<const BlockDesc> allBlocks();

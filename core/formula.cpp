@@ -15,12 +15,6 @@ std::string_view categoryName(Category c) {
     return "?";
 }
 
-int BlockDesc::paramIndex(std::string_view name) const {
-    for (size_t i = 0; i < params.size(); ++i)
-        if (params[i].name == name) return int(i);
-    return -1;
-}
-
 const BlockDesc* findBlock(std::string_view id) {
     for (const BlockDesc& b : allBlocks())
         if (b.id == id) return &b;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <regex>
+#include <stdexcept>
 
 #include "core/shader_library.hpp"
 
@@ -13,39 +14,18 @@ std::string glslType(ParamType t) { return t == ParamType::Float ? "float" : "ve
 
 int countLines(std::string_view s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
-// Builds text while tracking the line number within the formula source (string 1), so that
-// after a node's #line block the numbering of the template can be restored.
-struct Emitter {
-    std::string out;
-    void line(std::string_view s) {
-        out += s;
-        out += '\n';
-    }
-    int nextLine() const { return countLines(out) + 1; }
-    void restoreFormulaLines() { line("#line " + std::to_string(kFormulaLineBase + nextLine() + 1)); }
-};
-
 std::string nodeFunctionName(int k) { return "fraktal_node" + std::to_string(k); }
 
 // One function per node: uniforms, then the block's body under the node's own source number.
-void emitNodeFunction(Emitter& e, int k, const Node& node, const std::string& name, bool estimator) {
+void emitNodeFunction(GlslEmitter& e, int k, const Node& node, const std::string& name, bool estimator) {
     const BlockDesc& b = *node.block;
-    e.line("// @node " + std::to_string(k) + " " + std::string(b.id) + ": " + name);
-    std::string signature = std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
-                            (estimator ? "(vec4 p, vec3 c" : "(inout vec4 p, vec3 c");
-    for (const ParamDecl& p : b.params) {
-        const std::string u = estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name);
-        e.line("uniform " + glslType(p.type) + " " + u + ";");
-        signature += ", " + glslType(p.type) + " " + std::string(p.name);
-    }
-    e.line(signature + ") {");
-    e.line("#line " + std::to_string(kNodeLineStride * (k + 1) + 1));
-    std::string_view body = b.glsl;
-    if (!body.empty() && body.front() == '\n') body.remove_prefix(1);
-    e.out += body;
-    if (!body.empty() && body.back() != '\n') e.out += '\n';
-    e.restoreFormulaLines();
-    e.line("}");
+    std::vector<GlslEmitter::Param> params;
+    for (const ParamDecl& p : b.params)
+        params.push_back(
+            {glslType(p.type), estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name), p.name});
+    const std::string head = std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
+                             (estimator ? "(vec4 p, vec3 c" : "(inout vec4 p, vec3 c");
+    e.nodeFunction(k, b.id, name, head, params, b.glsl);
 }
 
 std::string nodeCall(int k, const Node& node, bool estimator) {
@@ -56,13 +36,45 @@ std::string nodeCall(int k, const Node& node, bool estimator) {
 }
 
 void replaceMarker(std::string& text, std::string_view marker, const std::string& with) {
-    const size_t at = text.find(marker);
-    if (at == std::string::npos) throw std::logic_error("formula template lacks marker " + std::string(marker));
-    size_t end = text.find('\n', at);
-    text.replace(at, (end == std::string::npos ? text.size() : end) - at, with);
+    replaceTemplateMarker(text, marker, with, "formula.glsl");
 }
 
 }  // namespace
+
+void GlslEmitter::line(std::string_view s) {
+    out += s;
+    out += '\n';
+}
+
+int GlslEmitter::nextLine() const { return countLines(out) + 1; }
+
+void GlslEmitter::restoreFormulaLines() { line("#line " + std::to_string(kFormulaLineBase + nextLine() + 1)); }
+
+void GlslEmitter::nodeFunction(int k, std::string_view blockId, const std::string& name, const std::string& head,
+                               const std::vector<Param>& params, std::string_view body) {
+    line("// @node " + std::to_string(k) + " " + std::string(blockId) + ": " + name);
+    std::string signature = head;
+    for (const Param& p : params) {
+        line("uniform " + p.type + " " + p.uniform + ";");
+        signature += ", " + p.type + " " + std::string(p.name);
+    }
+    line(signature + ") {");
+    line("#line " + std::to_string(kNodeLineStride * (k + 1) + 1));
+    if (!body.empty() && body.front() == '\n') body.remove_prefix(1);
+    out += body;
+    if (!body.empty() && body.back() != '\n') out += '\n';
+    restoreFormulaLines();
+    line("}");
+}
+
+void replaceTemplateMarker(std::string& text, std::string_view marker, const std::string& with,
+                           std::string_view templateName) {
+    const size_t at = text.find(marker);
+    if (at == std::string::npos)
+        throw std::logic_error(std::string(templateName) + " lacks marker " + std::string(marker));
+    const size_t end = text.find('\n', at);
+    text.replace(at, (end == std::string::npos ? text.size() : end) - at, with);
+}
 
 std::string nodeUniformName(int nodeIndex, std::string_view param) {
     return "u_n" + std::to_string(nodeIndex) + "_" + std::string(param);
@@ -76,7 +88,7 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
 
     // Text before the marker keeps its own line numbers; the node functions follow.
-    Emitter e;
+    GlslEmitter e;
     e.out = tmpl.substr(0, nodesAt);
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         g.nodeNames.push_back("node " + std::to_string(k) + " (" + std::string(f.nodes[k].block->id) + ")");
@@ -93,7 +105,8 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
         if (!n.enabled) continue;
         const std::string call = nodeCall(int(k), n, false) + ";";
         if (n.period > 1)
-            loop += "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") " + call + "\n";
+            loop +=
+                "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") " + call + "\n";
         else
             loop += "        " + call + "\n";
     }

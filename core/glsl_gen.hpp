@@ -19,11 +19,40 @@ inline constexpr int kFormulaLineBase = 5000;
 inline constexpr int kNodeLineStride = 10000;
 
 struct GeneratedFormula {
-    std::string code;  // defines formulaEval(vec3, out vec4, out int, out bool), formulaDE(vec3, out vec4, out int), DE(vec3)
+    std::string
+        code;  // defines formulaEval(vec3, out vec4, out int, out bool), formulaDE(vec3, out vec4, out int), DE(vec3)
     std::vector<std::string> nodeNames;  // index k: "node 3 (box_fold)"
 };
 
 GeneratedFormula generateFormulaGLSL(const Formula& f);
+
+// What the 3D generator and the 2D one (core/plane/plane_glsl.cpp) share: formula source text
+// that tracks its own line numbers (string 1), so that after a node's #line block the numbering
+// of the template can be restored, and the per-node function under its own #line range.
+struct GlslEmitter {
+    struct Param {
+        std::string type;       // "float", "vec3"
+        std::string uniform;    // the uniform the call passes
+        std::string_view name;  // the parameter's name inside the body
+    };
+
+    std::string out;
+
+    void line(std::string_view s);
+    int nextLine() const;
+    void restoreFormulaLines();
+    // "// @node k id: name", a uniform per parameter, then `head, <type> <name>...) {` with the
+    // block's body under the node's own #line numbers (kNodeLineStride * (k + 1) + 1).
+    // `head` opens the signature up to the state and point, e.g. "void fraktal_node3(inout vec4
+    // p, vec3 c".
+    void nodeFunction(int k, std::string_view blockId, const std::string& name, const std::string& head,
+                      const std::vector<Param>& params, std::string_view body);
+};
+
+// Replaces the line holding `marker` in a formula template with `with`; throws std::logic_error
+// naming the template when the marker is missing.
+void replaceTemplateMarker(std::string& text, std::string_view marker, const std::string& with,
+                           std::string_view templateName);
 
 // Uniform names, shared by the generator and the uploader.
 std::string nodeUniformName(int nodeIndex, std::string_view param);

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <concepts>
 #include <span>
 #include <string_view>
 
@@ -22,9 +21,9 @@ using real2 = glm::dvec2;
 
 // The iteration state. GLSL declares the same struct (shaders/plane_formula.glsl).
 struct PlaneState {
-    real2 z{0.0};     // the point
-    real dz = 1.0;    // running scale (folds, scales) or derivative bound |dz/dc| (power iteration)
-    double power = 1.0;  // degree of the last power step: smooth iteration count uses log(power)
+    real2 z{0.0};           // the point
+    real dz = 1.0;          // running scale (folds, scales) or derivative bound |dz/dc| (power iteration)
+    double power = 1.0;     // degree of the last power step: smooth iteration count uses log(power)
     bool escaped = false;   // decided outside (a triangle test found no corner, or the bailout)
     bool captured = false;  // decided inside (the point fell into a kept triangle)
 };
@@ -36,50 +35,16 @@ enum class PlaneMembership {
     Captured,    // inside only if a test captured it (Koch snowflake: triangle plus bumps)
 };
 
-using PlaneApplyFn = void (*)(PlaneState& s, const real2& c, Args a);
-using PlaneEstimateFn = double (*)(const PlaneState& s, const real2& c, Args a);
-
-struct PlaneBlockDesc {
-    std::string_view id;
-    std::string_view label;
-    std::string_view help;
-    Category category;
-    std::span<const ParamDecl> params;  // Float parameters only (GLSL sees them as float uniforms)
-    // GLSL body. Steps: statements over `inout PlaneState s` and `real2 c`. Estimators:
-    // statements ending in `return <distance>;` (a float). Parameters are in scope by name.
-    std::string_view glsl;
-    PlaneApplyFn apply = nullptr;
-    PlaneEstimateFn estimate = nullptr;
-    PlaneMembership membership = PlaneMembership::NotEscaped;
-
-    bool isEstimator() const { return category == Category::Estimator; }
-    int paramIndex(std::string_view name) const {
-        for (size_t i = 0; i < params.size(); ++i)
-            if (params[i].name == name) return int(i);
-        return -1;
-    }
-};
+// The 2D family of core/block.hpp's BlockDescOf: the same description, concepts and
+// describeAs over the plane's state.
+using PlaneBlockDesc = BlockDescOf<PlaneState, real2, PlaneMembership>;
+using PlaneApplyFn = PlaneBlockDesc::ApplyFn;
+using PlaneEstimateFn = PlaneBlockDesc::EstimateFn;
 
 template <class B>
-concept PlaneBlockCommon = requires {
-    { B::id } -> std::convertible_to<std::string_view>;
-    { B::label } -> std::convertible_to<std::string_view>;
-    { B::help } -> std::convertible_to<std::string_view>;
-    { B::category } -> std::convertible_to<Category>;
-    { B::glsl } -> std::convertible_to<std::string_view>;
-    { std::span<const ParamDecl>(B::params) };
-};
-
+concept PlaneStepBlock = StepBlockFor<B, PlaneBlockDesc>;
 template <class B>
-concept PlaneStepBlock = PlaneBlockCommon<B> && requires(PlaneState& s, const real2& c, Args a) {
-    { B::apply(s, c, a) } -> std::same_as<void>;
-};
-
-template <class B>
-concept PlaneEstimatorBlock = PlaneBlockCommon<B> && requires(const PlaneState& s, const real2& c, Args a) {
-    { B::estimate(s, c, a) } -> std::same_as<double>;
-    { B::membership } -> std::convertible_to<PlaneMembership>;
-};
+concept PlaneEstimatorBlock = EstimatorBlockFor<B, PlaneBlockDesc>;
 
 template <class B>
 consteval bool allParamsFloat() {
@@ -89,19 +54,10 @@ consteval bool allParamsFloat() {
 }
 
 template <class B>
-    requires PlaneStepBlock<B> || PlaneEstimatorBlock<B>
+requires PlaneStepBlock<B> || PlaneEstimatorBlock<B>
 constexpr PlaneBlockDesc describePlane() {
     static_assert(allParamsFloat<B>(), "2D block parameters are floats (a 2D vector is two of them)");
-    PlaneBlockDesc d{B::id, B::label, B::help, B::category, std::span<const ParamDecl>(B::params), B::glsl};
-    if constexpr (PlaneEstimatorBlock<B>) {
-        static_assert(B::category == Category::Estimator, "an estimator block must say so");
-        d.estimate = &B::estimate;
-        d.membership = B::membership;
-    } else {
-        static_assert(B::category != Category::Estimator, "an estimator block needs estimate()");
-        d.apply = &B::apply;
-    }
-    return d;
+    return describeAs<PlaneBlockDesc, B>();
 }
 
 // All registered 2D blocks (core/plane/plane_registry.cpp).

@@ -9,38 +9,16 @@ namespace fraktal {
 
 namespace {
 
-int countLines(std::string_view s) { return int(std::count(s.begin(), s.end(), '\n')); }
-
-// Text with the running line number of the formula source, so that after a node's own #line
-// block the template's numbering is restored (see kFormulaLineBase in core/glsl_gen.hpp).
-struct Emitter {
-    std::string out;
-    void line(std::string_view s) {
-        out += s;
-        out += '\n';
-    }
-    void restoreFormulaLines() { line("#line " + std::to_string(kFormulaLineBase + countLines(out) + 2)); }
-};
-
 std::string functionName(int k) { return "fraktal_pnode" + std::to_string(k); }
 
-void emitNodeFunction(Emitter& e, int k, const PlaneNode& node, const std::string& name, bool estimator) {
+// The node's function, as the 3D generator writes its own (GlslEmitter::nodeFunction).
+void emitNodeFunction(GlslEmitter& e, int k, const PlaneNode& node, const std::string& name, bool estimator) {
     const PlaneBlockDesc& b = *node.block;
-    e.line("// @node " + std::to_string(k) + " " + std::string(b.id) + ": " + name);
-    std::string signature = std::string(estimator ? "float " : "void ") + functionName(k) +
-                            (estimator ? "(PlaneState s, real2 c" : "(inout PlaneState s, real2 c");
-    for (const ParamDecl& p : b.params) {
-        e.line("uniform float " + planeUniformName(k, p.name) + ";");
-        signature += ", float " + std::string(p.name);
-    }
-    e.line(signature + ") {");
-    e.line("#line " + std::to_string(kNodeLineStride * (k + 1) + 1));
-    std::string_view body = b.glsl;
-    if (!body.empty() && body.front() == '\n') body.remove_prefix(1);
-    e.out += body;
-    if (!body.empty() && body.back() != '\n') e.out += '\n';
-    e.restoreFormulaLines();
-    e.line("}");
+    std::vector<GlslEmitter::Param> params;
+    for (const ParamDecl& p : b.params) params.push_back({"float", planeUniformName(k, p.name), p.name});
+    const std::string head = std::string(estimator ? "float " : "void ") + functionName(k) +
+                             (estimator ? "(PlaneState s, real2 c" : "(inout PlaneState s, real2 c");
+    e.nodeFunction(k, b.id, name, head, params, b.glsl);
 }
 
 std::string nodeCall(int k, const PlaneNode& node) {
@@ -50,10 +28,7 @@ std::string nodeCall(int k, const PlaneNode& node) {
 }
 
 void replaceMarker(std::string& text, std::string_view marker, const std::string& with) {
-    const size_t at = text.find(marker);
-    if (at == std::string::npos) throw std::logic_error("plane_formula.glsl lacks marker " + std::string(marker));
-    const size_t end = text.find('\n', at);
-    text.replace(at, (end == std::string::npos ? text.size() : end) - at, with);
+    replaceTemplateMarker(text, marker, with, "plane_formula.glsl");
 }
 
 }  // namespace
@@ -68,7 +43,7 @@ GeneratedFormula generatePlaneGLSL(const PlaneFormula& f) {
     const size_t nodesAt = tmpl.find("//@PLANE_NODES");
     if (nodesAt == std::string::npos) throw std::logic_error("plane_formula.glsl lacks //@PLANE_NODES");
 
-    Emitter e;
+    GlslEmitter e;
     e.out = tmpl.substr(0, nodesAt);
     std::string startCalls, loopCalls;
     int k = 0;
@@ -87,7 +62,8 @@ GeneratedFormula generatePlaneGLSL(const PlaneFormula& f) {
         emitNodeFunction(e, k, n, g.nodeNames.back(), false);
         const std::string call = nodeCall(k, n) + ";";
         if (n.period > 1)
-            loopCalls += "            if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") " + call + "\n";
+            loopCalls += "            if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") " +
+                         call + "\n";
         else
             loopCalls += "            " + call + "\n";
     }
