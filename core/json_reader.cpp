@@ -101,8 +101,8 @@ json elementIdentity(const json& element) {
 
 bool matchesIdentity(const json& element, const json& identity) {
     if (identity.is_null()) return true;
-    const auto& [key, value] = *identity.items().begin();
-    return element.is_object() && element.contains(key) && element[key] == value;
+    const auto only = identity.begin();  // identity holds one field
+    return element.is_object() && element.contains(only.key()) && element[only.key()] == only.value();
 }
 
 }  // namespace

@@ -80,8 +80,8 @@ MigrationReport migratePreset(json& preset, int fromVersion, int toVersion, std:
         // earlier place no longer names it.
         std::vector<std::pair<std::string, std::string>> traced;
         for (const auto& [now, before] : result.moved) traced.emplace_back(now, report.fieldInFile(before));
-        for (const auto& [now, before] : result.moved)
-            std::erase_if(report.moved, [&](const auto& m) { return isWithin(m.first, before); });
+        for (const auto& move : result.moved)
+            std::erase_if(report.moved, [&](const auto& m) { return isWithin(m.first, move.second); });
         report.moved.insert(report.moved.end(), traced.begin(), traced.end());
     }
     return report;

@@ -6,9 +6,10 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 out=build-fuzz
 mkdir -p "$out"
-sources=(core/preset.cpp core/json_reader.cpp core/preset_migrate.cpp core/formula.cpp core/custom_block.cpp core/camera.cpp core/image/atomic_file.cpp
+sources=(core/preset.cpp core/json_reader.cpp core/preset_migrate.cpp core/formula.cpp core/custom_block.cpp core/camera.cpp
+         core/image/atomic_file.cpp core/plane/plane_preset.cpp core/plane/plane_formula.cpp core/plane/plane_registry.cpp
          formulas/registry.cpp tests/fuzz/preset_fuzzer.cpp)
-if [ ! -x "$out/preset_fuzzer" ] || [ -n "$(find "${sources[@]}" core/*.hpp formulas/*.hpp -newer "$out/preset_fuzzer")" ]; then
+if [ ! -x "$out/preset_fuzzer" ] || [ -n "$(find "${sources[@]}" core/*.hpp core/plane/*.hpp formulas/*.hpp formulas/plane/*.hpp -newer "$out/preset_fuzzer")" ]; then
   clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I. \
     "${sources[@]}" -o "$out/preset_fuzzer"
 fi
@@ -17,7 +18,7 @@ corpus="$out/corpus"
 mkdir -p "$corpus"
 seeds=$(mktemp -d)
 trap 'rm -rf "$seeds"' EXIT
-find presets tests/bad_presets -maxdepth 1 -type f -name '*.json' -size -64k -exec cp {} "$seeds"/ \;
+find presets tests/bad_presets tests/legacy_presets -maxdepth 3 -type f -name '*.json' -size -64k -exec cp {} "$seeds"/ \;
 "$out/preset_fuzzer" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
   -print_final_stats=1 "$corpus" "$seeds" 2>&1 | tail -n 12
 echo "fuzz: the preset loader survived ${seconds} s"

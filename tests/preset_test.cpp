@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/plane/plane_preset.hpp"
 #include "test_support.hpp"
 
 using namespace fraktal;
@@ -112,7 +113,25 @@ const BadPreset kBadPresets[] = {
     {"custom_block_unknown_category.json", "formula.customBlocks[0].category", "expected fold, transform"},
     {"custom_block_default_out_of_range.json", "formula.customBlocks[0].params[0].default", "outside [min, max]"},
     {"a_directory.json", "", "is a directory, not a preset file"},
+    // A field that migration moved is named as it stands in the (version 1) file.
+    {"moved_field_out_of_range.json", "render.exposure", "outside the range [-20, 20]"},
+    // A newer version's unknown fields are kept, but the fields this version knows are checked.
+    {"newer_version_bad_known_field.json", "formula.iterations", "outside the range [0, 1000]"},
+    // 2D presets pass through the same reader.
+    {"plane_duplicate_key.json", "width", "duplicated key"},
+    {"plane_deep_nesting.json", "", "nested deeper than 32 levels"},
+    {"plane_wrong_type.json", "formula.iterations", "expected a number, found a string"},
+    {"plane_unknown_field.json", "colouring.edgewidth", "unknown field"},
+    {"plane_moved_field_out_of_range.json", "render.exposure", "outside the range [-20, 20]"},
 };
+
+// Loads a preset file with the reader its "dimension" asks for, as `fraktal check` does.
+void loadAnyPreset(const std::filesystem::path& path) {
+    if (isPlanePresetFile(path))
+        loadPlanePreset(path);
+    else
+        loadPreset(path);
+}
 
 TEST(Preset, EveryMalformedPresetGivesAClearError) {
     size_t count = 0;
@@ -124,7 +143,7 @@ TEST(Preset, EveryMalformedPresetGivesAClearError) {
             if (name == b.file) expected = &b;
         ASSERT_NE(expected, nullptr) << name << " has no expected error in kBadPresets";
         try {
-            loadPreset(entry.path());
+            loadAnyPreset(entry.path());
             ADD_FAILURE() << name << " loaded without an error";
         } catch (const PresetError& e) {
             EXPECT_EQ(e.file(), entry.path().string()) << name;
@@ -136,7 +155,8 @@ TEST(Preset, EveryMalformedPresetGivesAClearError) {
 }
 
 // Every file under `dir` with its size and modification time.
-std::map<std::string, std::pair<uintmax_t, std::filesystem::file_time_type>> snapshot(const std::filesystem::path& dir) {
+std::map<std::string, std::pair<uintmax_t, std::filesystem::file_time_type>> snapshot(
+    const std::filesystem::path& dir) {
     std::map<std::string, std::pair<uintmax_t, std::filesystem::file_time_type>> files;
     for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
         files[e.path().string()] = {e.is_regular_file() ? e.file_size() : 0, e.last_write_time()};
@@ -151,7 +171,8 @@ TEST(Preset, CheckCommandExitsNonZeroWithTheMessage) {
         EXPECT_EQ(r.exitCode, 2) << b.file << ":\n" << r.output;
         EXPECT_NE(r.output.find(path + ": " + (std::string(b.field).empty() ? "" : std::string(b.field) + ": ")),
                   std::string::npos)
-            << b.file << ":\n" << r.output;
+            << b.file << ":\n"
+            << r.output;
     }
     const test::CliRun missing = test::runCli("check /nonexistent/preset.json");
     EXPECT_EQ(missing.exitCode, 2);
@@ -159,7 +180,8 @@ TEST(Preset, CheckCommandExitsNonZeroWithTheMessage) {
     const test::CliRun directory = test::runCli("check " + (test::sourceDir() / "presets").string());
     EXPECT_EQ(directory.exitCode, 2);
     EXPECT_NE(directory.output.find("is a directory"), std::string::npos) << directory.output;
-    EXPECT_EQ(snapshot(test::sourceDir() / "tests/bad_presets"), corpusBefore) << "checking a bad preset touched a file";
+    EXPECT_EQ(snapshot(test::sourceDir() / "tests/bad_presets"), corpusBefore)
+        << "checking a bad preset touched a file";
 }
 
 TEST(Preset, CheckCommandReportsASoundPreset) {
@@ -178,4 +200,267 @@ TEST(Preset, CheckCommandFlagsAnUnsafeFormula) {
     const test::CliRun r = test::runCli("check --rays 40 " + file.string());
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("multiply formula.deFactor by"), std::string::npos) << r.output;
+}
+
+// --- Fields of a newer format version -------------------------------------------------------
+
+namespace {
+
+nlohmann::json readJsonFile(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return nlohmann::json::parse(ss.str());
+}
+
+// Fields a newer version might add inside the sections this version knows: (JSON Pointer where
+// it goes, the field path an error must name when the file is of the current version, value).
+struct FutureField {
+    const char* pointer;
+    const char* field;
+    nlohmann::json value;
+};
+
+// On the custom-block preset (tests/custom_presets/twisted_mandelbulb.json), at every level: the
+// formula, a node, a node's params, a custom block and its parameter, and the camera, render,
+// colorManagement and shading sections (which the preset leaves at their defaults, so that the
+// saver omits them: the kept fields must bring them back).
+std::vector<FutureField> futureFields3d() {
+    return {
+        {"/formula/glow", "formula.glow", 0.25},
+        {"/formula/nodes/1/weight", "formula.nodes[1].weight", {{"curve", "smooth"}}},
+        {"/formula/nodes/1/params/phase", "formula.nodes[1].params.phase", 0.5},
+        {"/formula/customBlocks/0/author", "formula.customBlocks[0].author", "a stranger"},
+        {"/formula/customBlocks/0/params/0/unit", "formula.customBlocks[0].params[0].unit", "radians"},
+        {"/camera/aperture", "camera.aperture", 0.1},
+        {"/render/denoise", "render.denoise", true},
+        {"/colorManagement/look", "colorManagement.look", "Filmic"},
+        {"/shading/subsurface", "shading.subsurface", nlohmann::json::array({0.1, 0.2, 0.3})},
+    };
+}
+
+nlohmann::json withFields(nlohmann::json j, const std::vector<FutureField>& fields, int version) {
+    j["version"] = version;
+    for (const FutureField& f : fields) j[nlohmann::json::json_pointer(f.pointer)] = f.value;
+    return j;
+}
+
+}  // namespace
+
+TEST(PresetNewerVersion, UnknownFieldsAtEveryLevelAreKeptAtTheirPlace) {
+    const auto source = test::sourceDir() / "tests/custom_presets/twisted_mandelbulb.json";
+    const Preset plain = loadPreset(source);
+    const int newer = kPresetVersion + 1;
+    const Preset p = parsePreset(withFields(readJsonFile(source), futureFields3d(), newer).dump(), "newer.json");
+    // What this version knows is read as usual.
+    expectSameFormula(p.formula, plain.formula, "newer");
+    EXPECT_EQ(p.camera.position, plain.camera.position);
+    EXPECT_EQ(p.render, plain.render);
+    EXPECT_EQ(p.shading, plain.shading);
+    EXPECT_TRUE(p.migrationNotes.empty());
+    EXPECT_EQ(p.unknownFields.paths().size(), futureFields3d().size());
+
+    const nlohmann::json saved = presetToJson(p);
+    EXPECT_EQ(saved["version"], newer) << "a file that carries a newer version's fields must keep saying so";
+    for (const FutureField& f : futureFields3d()) {
+        const nlohmann::json::json_pointer at(f.pointer);
+        ASSERT_TRUE(saved.contains(at)) << f.pointer << " was dropped:\n" << saved.dump(2);
+        EXPECT_EQ(saved.at(at), f.value) << f.pointer;
+    }
+    // Known fields are unchanged by the kept ones, and the saved file loads to the same.
+    EXPECT_EQ(saved["formula"]["nodes"][0]["params"]["rate"], 0.8);
+    const Preset reloaded = parsePreset(saved.dump(), "saved.json");
+    EXPECT_EQ(presetToJson(reloaded), saved);
+}
+
+TEST(PresetNewerVersion, TheSameFieldsInACurrentFileAreErrorsNamingTheField) {
+    const auto source = test::sourceDir() / "tests/custom_presets/twisted_mandelbulb.json";
+    for (const FutureField& f : futureFields3d()) {
+        const nlohmann::json j = withFields(readJsonFile(source), {f}, kPresetVersion);
+        try {
+            parsePreset(j.dump(), "typo.json");
+            ADD_FAILURE() << f.field << " was accepted in a current-version file";
+        } catch (const PresetError& e) {
+            EXPECT_EQ(e.file(), "typo.json");
+            EXPECT_EQ(e.field(), f.field) << e.what();
+            EXPECT_NE(e.reason().find("unknown"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(PresetNewerVersion, KeptNodeFieldsAreNotWrittenOntoAnotherBlock) {
+    // A node list edited after loading: the node that held the field (mandelbulb, index 1) is
+    // now at index 2 and index 1 holds twist. The field must not land on twist.
+    const auto source = test::sourceDir() / "tests/custom_presets/twisted_mandelbulb.json";
+    Preset p = parsePreset(withFields(readJsonFile(source), {futureFields3d()[1]}, kPresetVersion + 1).dump(), "x");
+    p.formula.nodes.insert(p.formula.nodes.begin(), p.formula.nodes[0]);
+    const nlohmann::json saved = presetToJson(p);
+    ASSERT_EQ(saved["formula"]["nodes"][1]["block"], "twist");
+    for (const auto& node : saved["formula"]["nodes"]) EXPECT_FALSE(node.contains("weight")) << node.dump();
+}
+
+TEST(PresetNewerVersion, TwoDimensionalPresetsKeepThemToo) {
+    const auto source = test::sourceDir() / "presets/2d/koch_snowflake.json";
+    const std::vector<FutureField> fields = {
+        {"/formula/start/2/params/skew", "formula.start[2].params.skew", 1.0},
+        {"/formula/nodes/0/label", "formula.nodes[0].label", "bump"},
+        {"/view/rotation", "view.rotation", 30.0},
+        {"/colouring/dither", "colouring.dither", true},
+        {"/colorManagement/look", "colorManagement.look", "Filmic"},
+        {"/animation", "animation", {{"frames", 24}}},
+    };
+    const nlohmann::json newer = withFields(readJsonFile(source), fields, kPresetVersion + 1);
+    const PlanePreset p = parsePlanePreset(newer.dump(), "newer2d.json");
+    EXPECT_EQ(serializePlanePreset(p).find("\"version\": " + std::to_string(kPresetVersion + 1)) != std::string::npos,
+              true);
+    const nlohmann::json saved = planePresetToJson(p);
+    for (const FutureField& f : fields) {
+        ASSERT_TRUE(saved.contains(nlohmann::json::json_pointer(f.pointer))) << f.pointer;
+        EXPECT_EQ(saved.at(nlohmann::json::json_pointer(f.pointer)), f.value) << f.pointer;
+    }
+    EXPECT_EQ(serializePlanePreset(parsePlanePreset(saved.dump(), "saved2d.json")), saved.dump(2) + "\n");
+    for (const FutureField& f : fields) {
+        try {
+            parsePlanePreset(withFields(readJsonFile(source), {f}, kPresetVersion).dump(), "typo2d.json");
+            ADD_FAILURE() << f.field << " was accepted in a current-version 2D file";
+        } catch (const PresetError& e) {
+            EXPECT_EQ(e.field(), f.field) << e.what();
+            EXPECT_NE(e.reason().find("unknown"), std::string::npos) << e.what();
+        }
+    }
+}
+
+// --- Migration of older versions ----------------------------------------------------------
+
+namespace {
+
+// A test-only history: version 1 called a field "a"; version 2 renamed it "b"; version 3 moved
+// it into a section "s" as "c".
+MigrationStepResult renameAToB(nlohmann::json& j) {
+    if (!j.contains("a")) return {"nothing to rename", {}};
+    j["b"] = j["a"];
+    j.erase("a");
+    return {"a renamed b", {{"b", "a"}}};
+}
+MigrationStepResult moveBIntoS(nlohmann::json& j) {
+    if (!j.contains("b")) return {"nothing to move", {}};
+    j["s"]["c"] = j["b"];
+    j.erase("b");
+    return {"b moved to s.c", {{"s.c", "b"}}};
+}
+constexpr PresetMigration kTestMigrations[] = {{2, &moveBIntoS}, {1, &renameAToB}};  // order of the list: any
+
+}  // namespace
+
+TEST(PresetMigration, StepsRunInVersionOrderWithANoteEach) {
+    nlohmann::json j = {{"version", 1}, {"a", {{"x", 7}}}};
+    const MigrationReport report = migratePreset(j, 1, 3, kTestMigrations);
+    EXPECT_EQ(j, nlohmann::json({{"version", 3}, {"s", {{"c", {{"x", 7}}}}}}));
+    ASSERT_EQ(report.notes.size(), 2u);
+    EXPECT_EQ(report.notes[0], "version 1 -> 2: a renamed b");
+    EXPECT_EQ(report.notes[1], "version 2 -> 3: b moved to s.c");
+    // An error inside the moved field is traced back through both steps to the file's name.
+    EXPECT_EQ(report.fieldInFile("s.c.x"), "a.x");
+    EXPECT_EQ(report.fieldInFile("s.c"), "a");
+    EXPECT_EQ(report.fieldInFile("s.cx"), "s.cx");
+    EXPECT_EQ(report.fieldInFile("b"), "b") << "b no longer names the moved field";
+
+    nlohmann::json fromTwo = {{"version", 2}, {"b", 1}};
+    EXPECT_EQ(migratePreset(fromTwo, 2, 3, kTestMigrations).notes.size(), 1u);
+    EXPECT_EQ(fromTwo["s"]["c"], 1);
+    nlohmann::json current = {{"version", 3}};
+    EXPECT_TRUE(migratePreset(current, 3, 3, kTestMigrations).notes.empty());
+    nlohmann::json gap = {{"version", 1}};
+    EXPECT_THROW(migratePreset(gap, 1, 4, kTestMigrations), std::logic_error);
+}
+
+TEST(PresetMigration, ThisBuildHasAStepFromEveryOlderVersion) {
+    for (int v = 1; v < kPresetVersion; ++v) {
+        int steps = 0;
+        for (const PresetMigration& m : presetMigrations()) steps += m.fromVersion == v;
+        EXPECT_EQ(steps, 1) << "from version " << v;
+    }
+    for (const PresetMigration& m : presetMigrations()) EXPECT_LT(m.fromVersion, kPresetVersion);
+}
+
+TEST(PresetMigration, StepsAcceptAnyObject) {
+    // A step runs before the reader: it must not throw on malformed sections (the reader refuses them).
+    for (const char* text : {R"({"render": 3})", R"({"render": {"view": 1}, "colorManagement": 5})",
+                             R"({"render": {"exposure": 1}, "colorManagement": {"exposure": 2}})", R"({})"}) {
+        nlohmann::json j = nlohmann::json::parse(text);
+        EXPECT_NO_THROW(migratePreset(j, 1, kPresetVersion, presetMigrations())) << text;
+    }
+}
+
+// Every preset in tests/legacy_presets/v1 migrates, with a note, to exactly its current
+// counterpart: tests/legacy_presets/v2/<same name> where one exists, else presets/<same name>.
+TEST(PresetMigration, LegacyPresetsMigrateToTheirCurrentCounterpart) {
+    const auto legacy = test::sourceDir() / "tests/legacy_presets/v1";
+    int count3d = 0, count2d = 0;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(legacy)) {
+        if (e.path().extension() != ".json") continue;
+        const auto relative = std::filesystem::relative(e.path(), legacy);
+        auto counterpart = test::sourceDir() / "tests/legacy_presets/v2" / relative;
+        if (!std::filesystem::exists(counterpart)) counterpart = test::sourceDir() / "presets" / relative;
+        SCOPED_TRACE(relative.string() + " -> " + counterpart.string());
+        ASSERT_TRUE(std::filesystem::exists(counterpart));
+        EXPECT_EQ(readJsonFile(e.path())["version"], 1);
+        EXPECT_EQ(readJsonFile(counterpart)["version"], kPresetVersion);
+        if (isPlanePresetFile(e.path())) {
+            ++count2d;
+            const PlanePreset old = loadPlanePreset(e.path()), now = loadPlanePreset(counterpart);
+            ASSERT_EQ(old.migrationNotes.size(), size_t(kPresetVersion - 1));
+            EXPECT_EQ(old.migrationNotes[0].rfind("version 1 -> 2: ", 0), 0u) << old.migrationNotes[0];
+            EXPECT_TRUE(now.migrationNotes.empty());
+            EXPECT_EQ(old.render, now.render);
+            EXPECT_EQ(old.formula.structureKey(), now.formula.structureKey());
+            EXPECT_EQ(planePresetToJson(old), planePresetToJson(now));
+        } else {
+            ++count3d;
+            const Preset old = loadPreset(e.path()), now = loadPreset(counterpart);
+            ASSERT_EQ(old.migrationNotes.size(), size_t(kPresetVersion - 1));
+            EXPECT_EQ(old.migrationNotes[0].rfind("version 1 -> 2: ", 0), 0u) << old.migrationNotes[0];
+            EXPECT_TRUE(now.migrationNotes.empty());
+            expectSameFormula(old.formula, now.formula, relative.string());
+            EXPECT_EQ(old.camera.position, now.camera.position);
+            EXPECT_EQ(old.camera.target, now.camera.target);
+            EXPECT_EQ(old.camera.up, now.camera.up);
+            EXPECT_EQ(old.camera.fovY, now.camera.fovY);
+            EXPECT_EQ(old.render, now.render);
+            EXPECT_EQ(old.shading, now.shading);
+            EXPECT_EQ(old.name, now.name);
+            EXPECT_EQ(presetToJson(old), presetToJson(now));
+        }
+    }
+    EXPECT_GE(count3d, 2);
+    EXPECT_GE(count2d, 2);
+}
+
+TEST(PresetMigration, MovedColourFieldsKeepTheirValues) {
+    // Not only equal to the counterpart: the values really arrive (a test that both files lose
+    // them would pass the comparison above).
+    const Preset p = loadPreset(test::sourceDir() / "tests/legacy_presets/v1/mandelbulb_graded.json");
+    EXPECT_EQ(p.render.workingSpace, "ACEScg");
+    EXPECT_EQ(p.render.view, "ACES");
+    EXPECT_EQ(p.render.exposure, 0.5);
+    EXPECT_EQ(p.render.spp, 16);
+    EXPECT_NE(p.migrationNotes[0].find("render.exposure"), std::string::npos) << p.migrationNotes[0];
+    const nlohmann::json saved = presetToJson(p);
+    EXPECT_EQ(saved["version"], kPresetVersion);
+    EXPECT_EQ(saved["colorManagement"]["exposure"], 0.5);
+    EXPECT_FALSE(saved["render"].contains("exposure"));
+    const PlanePreset q = loadPlanePreset(test::sourceDir() / "tests/legacy_presets/v1/2d/julia_graded.json");
+    EXPECT_EQ(q.render.view, "ACES");
+    EXPECT_EQ(q.render.exposure, -0.5);
+}
+
+TEST(PresetMigration, CheckCommandPrintsTheNotesAndSucceeds) {
+    const auto dir = test::sourceDir() / "tests/legacy_presets/v1";
+    const test::CliRun r2d = test::runCli("check " + (dir / "2d/julia_graded.json").string());
+    EXPECT_EQ(r2d.exitCode, 0) << r2d.output;
+    EXPECT_NE(r2d.output.find("migrated: version 1 -> 2: render.view, render.exposure moved"), std::string::npos)
+        << r2d.output;
+    const test::CliRun r3d = test::runCli("check --rays 10 --grid 4 " + (dir / "mandelbulb_graded.json").string());
+    EXPECT_EQ(r3d.exitCode, 0) << r3d.output;
+    EXPECT_NE(r3d.output.find("migrated: version 1 -> 2: render.workingSpace"), std::string::npos) << r3d.output;
 }

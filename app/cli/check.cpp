@@ -9,6 +9,8 @@
 #include "core/de_check.hpp"
 #include "core/gl/context.hpp"
 #include "core/gl/de_probe.hpp"
+#include "core/plane/plane_preset.hpp"
+#include "core/plane/plane_renderer.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::cli {
@@ -38,10 +40,55 @@ void compareGpuWithCpu(const Formula& f, gl::DEProbe& probe, uint64_t seed) {
     std::printf("GPU (float) and CPU (double) agree within 1e-4 at %zu of %zu points\n", agree, points.size());
 }
 
+// What loading did beyond reading: notes on migrating an older version (not problems: the
+// preset is read as the current version), and fields of a newer version that were kept.
+void printLoadNotes(const std::vector<std::string>& migrationNotes, const KeptFields& kept, int formatVersion) {
+    for (const std::string& note : migrationNotes) std::printf("migrated: %s\n", note.c_str());
+    if (!migrationNotes.empty())
+        std::printf("migrated: saving writes format version %d (the file itself is not changed)\n", kPresetVersion);
+    if (formatVersion > kPresetVersion) {
+        std::printf("newer format: the file is version %d, this build reads version %d", formatVersion, kPresetVersion);
+        if (kept.empty()) std::printf("\n");
+        for (const std::string& field : kept.paths())
+            std::printf("%s %s", field == kept.paths().front() ? ";" : ",", field.c_str());
+        if (!kept.empty()) std::printf(" (not read here; kept when saving)\n");
+    }
+}
+
+// A 2D preset: its schema and ranges (by loading it) and its GLSL. Distance-estimate checks are
+// for 3D ray marching; the 2D renderer evaluates every sample to the end of its orbit.
+int runPlaneCheck(const CheckOptions& o) {
+    const PlanePreset preset = loadPlanePreset(o.preset);
+    std::printf("%s: %s (2D)\n", o.preset.c_str(), preset.name.empty() ? "(unnamed)" : preset.name.c_str());
+    printLoadNotes(preset.migrationNotes, preset.unknownFields, preset.formatVersion);
+    std::printf("formula: %s", describePlaneFormula(preset.formula).c_str());
+    std::unique_ptr<gl::HeadlessContext> context;
+    try {
+        context = gl::HeadlessContext::create();
+    } catch (const std::exception& e) {
+        std::printf("GLSL: not checked (%s)\nOK\n", e.what());
+        return 0;
+    }
+    try {
+        PlaneRenderer renderer;
+        renderer.prepare(preset.formula);
+        std::printf("GLSL: compiles on %s (%s precision)\n", context->renderer().c_str(),
+                    renderer.usesDouble() ? "double" : "single");
+        for (const std::string& w : renderer.warnings()) std::printf("warning: %s\n", w.c_str());
+    } catch (const std::runtime_error& e) {
+        std::printf("PROBLEM: %s\nNOT SOUND\n", e.what());
+        return 1;
+    }
+    std::printf("OK\n");
+    return 0;
+}
+
 int runCheck(const CheckOptions& o) {
+    if (isPlanePresetFile(o.preset)) return runPlaneCheck(o);
     const Preset preset = loadPreset(o.preset);
     const Formula& f = preset.formula;
     std::printf("%s: %s\n", o.preset.c_str(), preset.name.empty() ? "(unnamed)" : preset.name.c_str());
+    printLoadNotes(preset.migrationNotes, preset.unknownFields, preset.formatVersion);
     std::printf("formula: %s", describeFormula(f).c_str());
 
     int status = 0;
@@ -80,8 +127,9 @@ int runCheck(const CheckOptions& o) {
     co.rays = o.rays;
     co.seed = o.seed;
     const ConservativenessReport c = checkConservativeness(*sampler, preset.camera, co);
-    std::printf("baseline marcher: %d rays, %d hit, %ld samples; worst DE / true distance = %.4f at (%.4f, %.4f, %.4f)\n",
-                c.rays, c.raysHit, c.samples, c.worstRatio, c.worstPoint.x, c.worstPoint.y, c.worstPoint.z);
+    std::printf(
+        "baseline marcher: %d rays, %d hit, %ld samples; worst DE / true distance = %.4f at (%.4f, %.4f, %.4f)\n",
+        c.rays, c.raysHit, c.samples, c.worstRatio, c.worstPoint.x, c.worstPoint.y, c.worstPoint.z);
 
     if (g.nonFinite > 0) {
         std::printf("PROBLEM: the DE is not finite at %ld grid points\n", g.nonFinite);
@@ -94,9 +142,10 @@ int runCheck(const CheckOptions& o) {
     if (c.conservative()) {
         std::printf("conservative: the DE never overshoots by more than 1%%; step multiplier 1 is safe\n");
     } else {
-        std::printf("PROBLEM: the DE overshoots by up to %.1f%%: multiply formula.deFactor by %.3f (or less) "
-                    "to make marching safe\n",
-                    100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier());
+        std::printf(
+            "PROBLEM: the DE overshoots by up to %.1f%%: multiply formula.deFactor by %.3f (or less) "
+            "to make marching safe\n",
+            100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier());
         status = 1;
     }
     std::printf(status == 0 ? "OK\n" : "NOT SOUND\n");

@@ -1,6 +1,7 @@
 #include "core/plane/plane_preset.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 namespace fraktal {
 
@@ -235,5 +236,22 @@ json planePresetToJson(const PlanePreset& p) {
 }
 
 std::string serializePlanePreset(const PlanePreset& p) { return planePresetToJson(p).dump(2) + "\n"; }
+
+std::string describePlaneFormula(const PlaneFormula& f) {
+    std::ostringstream s;
+    s << "iterations " << f.iterations << ", bailout " << f.bailout << "\n";
+    auto describeNode = [&](const PlaneNode& n, const std::string& prefix) {
+        s << prefix << n.block->id;
+        if (!n.enabled) s << " (disabled)";
+        if (n.period > 1) s << " (iterations i % " << n.period << " == " << n.phase << ")";
+        for (size_t i = 0; i < n.values.size(); ++i)
+            s << (i == 0 ? ": " : ", ") << n.block->params[i].name << " = " << n.values[i].x;
+        s << "\n";
+    };
+    for (size_t k = 0; k < f.start.size(); ++k) describeNode(f.start[k], "  start " + std::to_string(k) + ". ");
+    for (size_t k = 0; k < f.nodes.size(); ++k) describeNode(f.nodes[k], "  " + std::to_string(k) + ". ");
+    describeNode(f.estimator, "  => ");
+    return s.str();
+}
 
 }  // namespace fraktal

@@ -42,6 +42,8 @@ PlanePreset parsePlanePreset(std::string_view text, const std::string& file);
 PlanePreset loadPlanePreset(const std::filesystem::path& path);
 
 nlohmann::json planePresetToJson(const PlanePreset& preset);
+// A short human-readable listing of the formula (for `fraktal check`), as describeFormula.
+std::string describePlaneFormula(const PlaneFormula& f);
 std::string serializePlanePreset(const PlanePreset& preset);
 
 }  // namespace fraktal

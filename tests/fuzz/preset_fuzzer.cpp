@@ -1,17 +1,26 @@
-// libFuzzer target for the preset loader: any byte string must either parse or raise a
-// PresetError; anything else (a crash, a sanitizer report, another exception) is a bug.
-// Built and run by scripts/fuzz.sh (clang, -fsanitize=fuzzer,address,undefined).
+// libFuzzer target for the preset loaders (3D, and 2D for text with "dimension": 2): any byte
+// string must either parse or raise a PresetError; anything else (a crash, a sanitizer report,
+// another exception) is a bug. Both go through the same guarded reader and migration
+// (core/json_reader.hpp, core/preset_migrate.hpp). Built and run by scripts/fuzz.sh (clang,
+// -fsanitize=fuzzer,address,undefined).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
+#include "core/plane/plane_preset.hpp"
 #include "core/preset.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
     try {
-        const fraktal::Preset p = fraktal::parsePreset(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.json");
         // What parses must save and parse again.
-        fraktal::parsePreset(fraktal::serializePreset(p), "fuzz-saved.json");
+        if (fraktal::isPlanePresetText(text)) {
+            const fraktal::PlanePreset p = fraktal::parsePlanePreset(text, "fuzz.json");
+            fraktal::parsePlanePreset(fraktal::serializePlanePreset(p), "fuzz-saved.json");
+        } else {
+            const fraktal::Preset p = fraktal::parsePreset(text, "fuzz.json");
+            fraktal::parsePreset(fraktal::serializePreset(p), "fuzz-saved.json");
+        }
     } catch (const fraktal::PresetError&) {
     }
     return 0;
