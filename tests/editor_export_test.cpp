@@ -58,6 +58,29 @@ TEST_F(EditorExportJob, RendersTheExrWithTheEmbeddedPresetAndThePng) {
     EXPECT_FALSE(fs::exists(job.presetFile)) << "the temporary preset is removed";
 }
 
+// A 2D document exports through the same job: the dialog hands `fraktal render` the 2D preset's
+// text, and the still carries it under fraktal.planePreset (as the editor reopens it).
+TEST_F(EditorExportJob, Exports2dDocumentsWithTheirPresetAndProgress) {
+    Document d;
+    d.plane = loadPlanePreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "2d" / "sierpinski_triangle.json");
+    d.plane->view.width = 0.75;
+    d.plane->render.exposure = -1.0;
+    job.options.width = 40;
+    job.options.height = 30;
+    job.options.spp = 1;
+    ASSERT_TRUE(startExport(job, documentFileText(d), 0.0)) << job.log;
+    ASSERT_TRUE(pollUntilEnded(job, 120.0)) << job.log;
+    ASSERT_EQ(job.status, ExportStatus::Done) << job.log;
+    EXPECT_NEAR(job.progress, 1.0, 1e-9) << "2D progress lines carry a percentage too: " << job.log;
+    EXPECT_TRUE(fs::exists(dir / "still.png"));
+    const std::optional<PlanePreset> embedded = planePresetFromExr(dir / "still.exr");
+    ASSERT_TRUE(embedded.has_value());
+    EXPECT_EQ(embedded->view.width, 0.75);
+    EXPECT_EQ(embedded->render.exposure, -1.0);
+    EXPECT_EQ(embedded->render.width, 40) << "the size actually rendered";
+    EXPECT_EQ(embedded->formula.structureKey(), d.plane->formula.structureKey());
+}
+
 TEST_F(EditorExportJob, CancelReturnsAtOnceAndLeavesNoFile) {
     job.options.width = 1600;
     job.options.height = 1200;

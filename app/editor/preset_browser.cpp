@@ -39,8 +39,7 @@ void drawPresetsTab(EditorState& s) {
     sectionHeader("Recent files");
     if (s.file.recent.empty()) ImGui::TextDisabled("None yet.");
     for (const std::string& r : s.file.recent) {
-        if (ImGui::Selectable(fs::path(r).filename().string().c_str()))
-            requestAction(s, {PendingKind::Open, r});
+        if (ImGui::Selectable(fs::path(r).filename().string().c_str())) requestAction(s, {PendingKind::Open, r});
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.c_str());
     }
 
@@ -51,7 +50,8 @@ void drawPresetsTab(EditorState& s) {
     for (const fs::path& folder : b.folders) ImGui::TextDisabled("%s", folder.string().c_str());
 
     const float thumbW = 136.0f, thumbH = 85.0f;
-    const int columns = std::max(1, int(ImGui::GetContentRegionAvail().x / (thumbW + ImGui::GetStyle().ItemSpacing.x + 8)));
+    const int columns =
+        std::max(1, int(ImGui::GetContentRegionAvail().x / (thumbW + ImGui::GetStyle().ItemSpacing.x + 8)));
     int column = 0;
     for (size_t i = 0; i < b.entries.size(); ++i) {
         Thumbnail& t = b.entries[i];
@@ -59,13 +59,13 @@ void drawPresetsTab(EditorState& s) {
         ImGui::BeginGroup();
         bool clicked = false;
         if (t.texture) {
-            // GL textures are stored bottom row first: flip v.
+            // Copies of the viewports' display textures: top row first, as the viewport shows them.
             clicked = ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t.texture)),
-                                         ImVec2(thumbW, thumbH), ImVec2(0, 1), ImVec2(1, 0));
+                                         ImVec2(thumbW, thumbH), ImVec2(0, 0), ImVec2(1, 1));
         } else {
-            clicked = ImGui::Button(t.failed ? "(cannot render)" : "rendering...",
-                                    ImVec2(thumbW + ImGui::GetStyle().FramePadding.x * 2,
-                                           thumbH + ImGui::GetStyle().FramePadding.y * 2));
+            clicked = ImGui::Button(
+                t.failed ? "(cannot render)" : "rendering...",
+                ImVec2(thumbW + ImGui::GetStyle().FramePadding.x * 2, thumbH + ImGui::GetStyle().FramePadding.y * 2));
         }
         ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + thumbW);
         ImGui::TextUnformatted(t.name.c_str());
@@ -74,8 +74,10 @@ void drawPresetsTab(EditorState& s) {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\nClick to open", t.file.string().c_str());
         if (clicked) requestAction(s, {PendingKind::Open, t.file});
         ImGui::PopID();
-        if (++column < columns) ImGui::SameLine();
-        else column = 0;
+        if (++column < columns)
+            ImGui::SameLine();
+        else
+            column = 0;
     }
 }
 
