@@ -463,4 +463,15 @@ TEST(PresetMigration, CheckCommandPrintsTheNotesAndSucceeds) {
     const test::CliRun r3d = test::runCli("check --rays 10 --grid 4 " + (dir / "mandelbulb_graded.json").string());
     EXPECT_EQ(r3d.exitCode, 0) << r3d.output;
     EXPECT_NE(r3d.output.find("migrated: version 1 -> 2: render.workingSpace"), std::string::npos) << r3d.output;
+
+    // A newer file: what was kept is listed, and it is not a problem either.
+    nlohmann::json newer = readJsonFile(test::sourceDir() / "presets/2d/koch_snowflake.json");
+    newer["version"] = kPresetVersion + 1;
+    newer["view"]["rotation"] = 30.0;
+    const auto file = std::filesystem::temp_directory_path() / "fraktal_newer_koch.json";
+    std::ofstream(file) << newer.dump();
+    const test::CliRun rNewer = test::runCli("check " + file.string());
+    EXPECT_EQ(rNewer.exitCode, 0) << rNewer.output;
+    EXPECT_NE(rNewer.output.find("kept for saving, not read: view.rotation"), std::string::npos) << rNewer.output;
+    std::filesystem::remove(file);
 }

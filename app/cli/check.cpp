@@ -47,11 +47,10 @@ void printLoadNotes(const std::vector<std::string>& migrationNotes, const KeptFi
     if (!migrationNotes.empty())
         std::printf("migrated: saving writes format version %d (the file itself is not changed)\n", kPresetVersion);
     if (formatVersion > kPresetVersion) {
-        std::printf("newer format: the file is version %d, this build reads version %d", formatVersion, kPresetVersion);
-        if (kept.empty()) std::printf("\n");
-        for (const std::string& field : kept.paths())
-            std::printf("%s %s", field == kept.paths().front() ? ";" : ",", field.c_str());
-        if (!kept.empty()) std::printf(" (not read here; kept when saving)\n");
+        std::string fields;
+        for (const std::string& field : kept.paths()) fields += (fields.empty() ? "" : ", ") + field;
+        std::printf("newer format: the file is version %d, this build reads version %d%s\n", formatVersion,
+                    kPresetVersion, fields.empty() ? "" : ("; kept for saving, not read: " + fields).c_str());
     }
 }
 
