@@ -48,10 +48,7 @@ Node parseNode(const ReadContext& context, const json& j, const std::string& pat
         r.fail("unknown block '" + id.get<std::string>() + "' (known blocks: " + known + ")", "block");
     }
     Node n = Node::make(*block);
-    n.enabled = r.boolean("enabled", true);
-    n.period = r.integer("period", 1, 1, 16);
-    n.phase = r.integer("phase", 0, 0, 15);
-    if (n.phase >= n.period) r.fail("phase must be smaller than period (" + std::to_string(n.period) + ")", "phase");
+    readNodeSchedule(r, n);
     if (r.has("params")) {
         FieldReader params(context, r.at("params"), r.child("params"));
         std::string known;
@@ -137,9 +134,7 @@ Formula parseFormula(const ReadContext& context, const json& j) {
                               "escape_linear), found '" +
                                   std::string(n.block->id) + "'");
         if (last) {
-            if (!n.enabled) throw PresetError(context.file, nodePath + ".enabled", "the estimator cannot be disabled");
-            if (n.period != 1)
-                throw PresetError(context.file, nodePath + ".period", "the estimator runs once, after the loop");
+            checkEstimatorSchedule(n, context.file, nodePath);
             f.estimator = std::move(n);
         } else {
             f.nodes.push_back(std::move(n));
@@ -165,9 +160,7 @@ Camera parseCamera(const ReadContext& context, const json& j) {
 
 void parseRender(const ReadContext& context, const json& j, RenderSettings& s) {
     FieldReader r(context, j, "render");
-    s.width = r.integer("width", s.width, 1, kMaxImageSide);
-    s.height = r.integer("height", s.height, 1, kMaxImageSide);
-    s.spp = r.integer("spp", s.spp, 1, kMaxSpp);
+    readImageSize(r, s);
     s.maxSteps = r.integer("maxSteps", s.maxSteps, 1, kMaxMarchSteps);
     s.detail = r.number("detail", s.detail, 1e-3, 100.0);
     s.overRelaxation = r.number("overRelaxation", s.overRelaxation, 1.0, 1.95);
@@ -236,6 +229,19 @@ Preset readPreset(const PresetDocument& doc, const std::string& file) {
 
 }  // namespace
 
+void readImageSize(FieldReader& r, RenderSettings& s) {
+    s.width = r.integer("width", s.width, 1, kMaxImageSide);
+    s.height = r.integer("height", s.height, 1, kMaxImageSide);
+    s.spp = r.integer("spp", s.spp, 1, kMaxSpp);
+}
+
+void writeImageSize(const RenderSettings& s, json& j) {
+    const RenderSettings d;
+    if (s.width != d.width) j["width"] = s.width;
+    if (s.height != d.height) j["height"] = s.height;
+    if (s.spp != d.spp) j["spp"] = s.spp;
+}
+
 void parseColorManagement(const ReadContext& context, const json& j, RenderSettings& s) {
     FieldReader r(context, j, "colorManagement");
     s.workingSpace = r.string("workingSpace", s.workingSpace, 256);
@@ -277,9 +283,7 @@ json renderJson(const RenderSettings& s) {
     auto put = [&](const char* key, const auto& value, const auto& fallback) {
         if (value != fallback) j[key] = value;
     };
-    put("width", s.width, d.width);
-    put("height", s.height, d.height);
-    put("spp", s.spp, d.spp);
+    writeImageSize(s, j);
     put("maxSteps", s.maxSteps, d.maxSteps);
     put("detail", s.detail, d.detail);
     put("overRelaxation", s.overRelaxation, d.overRelaxation);
@@ -327,9 +331,7 @@ json shadingJson(const ShadingSettings& s) {
 json nodeJson(const Node& n) {
     json j;
     j["block"] = n.block->id;
-    if (!n.enabled) j["enabled"] = false;
-    if (n.period != 1) j["period"] = n.period;
-    if (n.phase != 0) j["phase"] = n.phase;
+    writeNodeSchedule(n, j);
     json params = json::object();
     for (size_t i = 0; i < n.block->params.size(); ++i) {
         const ParamDecl& d = n.block->params[i];

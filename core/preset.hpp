@@ -64,6 +64,32 @@ Preset loadPreset(const std::filesystem::path& path);
 void parseColorManagement(const ReadContext& context, const nlohmann::json& j, RenderSettings& s);
 nlohmann::json colorManagementJson(const RenderSettings& s);
 
+// Pieces of the format that 3D and 2D presets (core/plane/plane_preset.cpp) share.
+// When a node runs: "enabled" (default true), "period" and "phase" (default 1 and 0; the node
+// runs on iterations i with i % period == phase). NodeT: Node or PlaneNode.
+template <class NodeT>
+void readNodeSchedule(FieldReader& node, NodeT& n) {
+    n.enabled = node.boolean("enabled", true);
+    n.period = node.integer("period", 1, 1, 16);
+    n.phase = node.integer("phase", 0, 0, 15);
+    if (n.phase >= n.period) node.fail("phase must be smaller than period (" + std::to_string(n.period) + ")", "phase");
+}
+template <class NodeT>
+void writeNodeSchedule(const NodeT& n, nlohmann::json& node) {
+    if (!n.enabled) node["enabled"] = false;
+    if (n.period != 1) node["period"] = n.period;
+    if (n.phase != 0) node["phase"] = n.phase;
+}
+// The closing estimator at `path` runs once, after the loop.
+template <class NodeT>
+void checkEstimatorSchedule(const NodeT& n, const std::string& file, const std::string& path) {
+    if (!n.enabled) throw PresetError(file, path + ".enabled", "the estimator cannot be disabled");
+    if (n.period != 1) throw PresetError(file, path + ".period", "the estimator runs once, after the loop");
+}
+// The image size and samples of the "render" section.
+void readImageSize(FieldReader& render, RenderSettings& s);
+void writeImageSize(const RenderSettings& s, nlohmann::json& render);
+
 // Writes only what differs from defaults, plus the format and version.
 nlohmann::json presetToJson(const Preset& preset);
 std::string serializePreset(const Preset& preset);

@@ -23,10 +23,7 @@ PlaneNode parseNode(const ReadContext& context, const json& j, const std::string
     if (!block)
         r.fail("unknown 2D block '" + id.get<std::string>() + "' (known 2D blocks: " + knownBlocks() + ")", "block");
     PlaneNode n = PlaneNode::make(*block);
-    n.enabled = r.boolean("enabled", true);
-    n.period = r.integer("period", 1, 1, 16);
-    n.phase = r.integer("phase", 0, 0, 15);
-    if (n.phase >= n.period) r.fail("phase must be smaller than period (" + std::to_string(n.period) + ")", "phase");
+    readNodeSchedule(r, n);
     if (r.has("params")) {
         FieldReader params(context, r.at("params"), r.child("params"));
         std::string known;
@@ -77,9 +74,7 @@ PlaneFormula parseFormula(const ReadContext& context, const json& j) {
                                   ? "the node list must end with a 2D estimator (escape, triangle, segment), found '" +
                                         std::string(nodes[i].block->id) + "'"
                                   : "estimator '" + std::string(nodes[i].block->id) + "' may only close the node list");
-        if (last && !nodes[i].enabled) throw PresetError(file, path + ".enabled", "the estimator cannot be disabled");
-        if (last && nodes[i].period != 1)
-            throw PresetError(file, path + ".period", "the estimator runs once, after the loop");
+        if (last) checkEstimatorSchedule(nodes[i], file, path);
     }
     f.estimator = std::move(nodes.back());
     nodes.pop_back();
@@ -101,9 +96,7 @@ PlaneViewRect parseView(const ReadContext& context, const json& j) {
 // management is the shared "colorManagement" section.
 void parseRender(const ReadContext& context, const json& j, RenderSettings& s) {
     FieldReader r(context, j, "render");
-    s.width = r.integer("width", s.width, 1, kMaxImageSide);
-    s.height = r.integer("height", s.height, 1, kMaxImageSide);
-    s.spp = r.integer("spp", s.spp, 1, kMaxSpp);
+    readImageSize(r, s);
     r.finish();
 }
 
@@ -175,9 +168,7 @@ namespace {
 json nodeJson(const PlaneNode& n) {
     json j;
     j["block"] = n.block->id;
-    if (!n.enabled) j["enabled"] = false;
-    if (n.period != 1) j["period"] = n.period;
-    if (n.phase != 0) j["phase"] = n.phase;
+    writeNodeSchedule(n, j);
     json params = json::object();
     for (size_t i = 0; i < n.block->params.size(); ++i)
         if (n.values[i].x != n.block->params[i].defaultValue.x)
@@ -190,7 +181,6 @@ json nodeJson(const PlaneNode& n) {
 
 json planePresetToJson(const PlanePreset& p) {
     const PlaneFormula formulaDefaults;
-    const RenderSettings renderDefaults;
     const PlaneColouring colourDefaults;
     json j = json::object();
     j["format"] = kPresetFormat;
@@ -212,9 +202,7 @@ json planePresetToJson(const PlanePreset& p) {
     j["view"] = {{"center", {p.view.center.x, p.view.center.y}}, {"width", p.view.width}};
     json r = json::object();
     const RenderSettings& s = p.render;
-    if (s.width != renderDefaults.width) r["width"] = s.width;
-    if (s.height != renderDefaults.height) r["height"] = s.height;
-    if (s.spp != renderDefaults.spp) r["spp"] = s.spp;
+    writeImageSize(s, r);
     if (!r.empty()) j["render"] = r;
     if (json cm = colorManagementJson(s); !cm.empty()) j["colorManagement"] = cm;
     json c = json::object();
