@@ -6,6 +6,7 @@
 // table this produces.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -27,6 +28,7 @@ struct BenchViewportArgs {
     int samples = 16;
     int coneTile = 0;
     double degrees = 0.5;
+    std::string dump;
     bool noReproject = false, noOverRelaxation = false, noError = false, json = false, timePasses = false;
 };
 
@@ -57,6 +59,11 @@ int run(const BenchViewportArgs& a) {
     fs.options.coneTile = a.coneTile;
     fs.options.timePasses = a.timePasses;
     fs.measureError = !a.noError;
+    fs.dumpDirectory = a.dump;
+    if (!a.dump.empty()) {
+        if (a.noError) throw std::runtime_error("--dump needs the per-frame reference renders (drop --no-error)");
+        std::filesystem::create_directories(a.dump);
+    }
 
     auto context = gl::HeadlessContext::create();
     const viewport::FlightResult r = viewport::fly(preset, fs);
@@ -156,6 +163,7 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");
     cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");
     cmd->add_flag("--time-passes", args->timePasses, "GPU timestamps around each pass (per-frame pass_ms)");
+    cmd->add_option("--dump", args->dump, "write each moving frame and its reference as PNGs into this folder");
     cmd->add_flag("--json", args->json, "one JSON object on stdout");
     cmd->callback([args, &action] { action = [args] { return run(*args); }; });
 }

@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
+#include "core/image/png_writer.hpp"
 #include "core/viewport/converge.hpp"
 #include "core/viewport/image_error.hpp"
 
@@ -40,6 +42,14 @@ FlightResult fly(const Preset& preset, const FlightSettings& fs) {
             const Converged c = renderUntilSettled(reference, preset.formula, camera, preset.render, preset.shading,
                                                    fs.width, fs.height, fs.maxRestFrames);
             frame.psnrDb = std::min(displayPsnr(image, c.image), 99.0);
+            if (!fs.dumpDirectory.empty()) {
+                char name[32];
+                std::snprintf(name, sizeof name, "frame_%03d", f);
+                writePngAtomic(fs.dumpDirectory / (std::string(name) + ".png"), fs.width, fs.height,
+                               displayRgb8(image));
+                writePngAtomic(fs.dumpDirectory / (std::string(name) + "_ref.png"), fs.width, fs.height,
+                               displayRgb8(c.image));
+            }
             psnrSum += frame.psnrDb;
         }
         result.meanDeEvalsPerPixel += frame.stats.deEvalsPerPixel / fs.frames;

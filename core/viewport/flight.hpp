@@ -3,6 +3,7 @@
 // viewport` and of the viewport's work tests.
 #pragma once
 
+#include <filesystem>
 #include <vector>
 
 #include "core/preset.hpp"
@@ -20,6 +21,9 @@ struct FlightSettings {
     bool measureError = true;  // per-frame PSNR against a converged sample-0 render of the view
     int maxRestFrames = 400;   // after the path: frames at rest until settled
     double restThresholdDb = 40.0;
+    // When set: each moving frame and its reference as DIR/frame_NNN.png and frame_NNN_ref.png
+    // (sRGB display of the scene-linear images), for looking at what an error figure means.
+    std::filesystem::path dumpDirectory;
 };
 
 struct FlightFrame {

@@ -31,4 +31,12 @@ double displayPsnr(std::span<const float> image, std::span<const float> referenc
     return 10.0 * std::log10(1.0 / (squared / double(count)));
 }
 
+std::vector<uint8_t> displayRgb8(std::span<const float> image) {
+    std::vector<uint8_t> rgb;
+    rgb.reserve(image.size() / 4 * 3);
+    for (size_t i = 0; i + 3 < image.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c) rgb.push_back(uint8_t(std::lround(srgbEncode(image[i + c]) * 255.0)));
+    return rgb;
+}
+
 }  // namespace fraktal::viewport
