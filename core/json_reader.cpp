@@ -15,28 +15,71 @@ PresetError::PresetError(std::string file, std::string field, std::string reason
       field_(std::move(field)),
       reason_(std::move(reason)) {}
 
+namespace {
+
+// Follows the parser's events to find the first key that occurs twice in one object, and names
+// it by its field path ("formula.nodes", "formula.nodes[2].params.limit").
+class DuplicateKeyFinder {
+   public:
+    void see(json::parse_event_t event, const json& parsed) {
+        switch (event) {
+            case json::parse_event_t::object_start:
+            case json::parse_event_t::array_start:
+                elementStarts();
+                open_.push_back({event == json::parse_event_t::array_start, {}, {}, -1});
+                break;
+            case json::parse_event_t::object_end:
+            case json::parse_event_t::array_end:
+                if (!open_.empty()) open_.pop_back();
+                break;
+            case json::parse_event_t::key:
+                if (open_.empty()) break;
+                open_.back().key = parsed.get<std::string>();
+                if (!open_.back().keys.insert(open_.back().key).second && found_.empty()) found_ = currentPath();
+                break;
+            case json::parse_event_t::value: elementStarts(); break;
+        }
+    }
+    const std::string& found() const { return found_; }
+
+   private:
+    struct Container {
+        bool array;
+        std::set<std::string> keys;  // objects: the keys seen so far
+        std::string key;             // objects: the latest key
+        long index;                  // arrays: the latest element
+    };
+    void elementStarts() {
+        if (!open_.empty() && open_.back().array) ++open_.back().index;
+    }
+    // The path of the latest key or element of the innermost container.
+    std::string currentPath() const {
+        std::string path;
+        for (const Container& c : open_) {
+            if (c.array)
+                path += "[" + std::to_string(c.index) + "]";
+            else
+                path += (path.empty() ? "" : ".") + c.key;
+        }
+        return path;
+    }
+    std::vector<Container> open_;
+    std::string found_;
+};
+
+}  // namespace
+
 json parseGuardedJson(std::string_view text, const std::string& file) {
     if (text.size() > kMaxDocumentBytes)
         throw PresetError(file, "",
                           "file is larger than " + std::to_string(kMaxDocumentBytes >> 20) + " MiB; not a preset");
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) throw PresetError(file, "", "file is empty");
-    // The keys seen in each open object, to find duplicates while parsing.
-    std::vector<std::set<std::string>> keys;
-    std::string duplicate, tooDeep;
+    DuplicateKeyFinder duplicates;
+    std::string tooDeep;
     auto callback = [&](int depth, json::parse_event_t event, json& parsed) {
         if (depth > kMaxJsonDepth && tooDeep.empty())
             tooDeep = "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels";
-        switch (event) {
-            case json::parse_event_t::object_start: keys.emplace_back(); break;
-            case json::parse_event_t::object_end:
-                if (!keys.empty()) keys.pop_back();
-                break;
-            case json::parse_event_t::key:
-                if (!keys.empty() && !keys.back().insert(parsed.get<std::string>()).second && duplicate.empty())
-                    duplicate = parsed.get<std::string>();
-                break;
-            default: break;
-        }
+        duplicates.see(event, parsed);
         return tooDeep.empty();
     };
     json j;
@@ -56,7 +99,7 @@ json parseGuardedJson(std::string_view text, const std::string& file) {
         throw PresetError(file, "", "invalid JSON: " + reason);
     }
     if (!tooDeep.empty()) throw PresetError(file, "", "invalid preset: " + tooDeep);
-    if (!duplicate.empty()) throw PresetError(file, duplicate, "duplicated key");
+    if (!duplicates.found().empty()) throw PresetError(file, duplicates.found(), "duplicated key");
     return j;
 }
 

@@ -94,7 +94,7 @@ const BadPreset kBadPresets[] = {
     {"negative_bailout.json", "formula.bailout", "outside the range"},
     {"zero_direction.json", "formula.nodes[0].params.normal", "a direction must not be zero"},
     {"phase_not_below_period.json", "formula.nodes[0].phase", "phase must be smaller than period"},
-    {"duplicate_key.json", "nodes", "duplicated key"},
+    {"duplicate_key.json", "formula.nodes", "duplicated key"},
     {"camera_degenerate.json", "camera", "position and target coincide"},
     {"camera_fov_absurd.json", "camera.fovY", "outside the range [1, 170]"},
     {"invalid_utf8.json", "", "invalid JSON"},
@@ -118,7 +118,7 @@ const BadPreset kBadPresets[] = {
     // A newer version's unknown fields are kept, but the fields this version knows are checked.
     {"newer_version_bad_known_field.json", "formula.iterations", "outside the range [0, 1000]"},
     // 2D presets pass through the same reader.
-    {"plane_duplicate_key.json", "width", "duplicated key"},
+    {"plane_duplicate_key.json", "view.width", "duplicated key"},
     {"plane_deep_nesting.json", "", "nested deeper than 32 levels"},
     {"plane_wrong_type.json", "formula.iterations", "expected a number, found a string"},
     {"plane_unknown_field.json", "colouring.edgewidth", "unknown field"},
@@ -474,4 +474,21 @@ TEST(PresetMigration, CheckCommandPrintsTheNotesAndSucceeds) {
     EXPECT_EQ(rNewer.exitCode, 0) << rNewer.output;
     EXPECT_NE(rNewer.output.find("kept for saving, not read: view.rotation"), std::string::npos) << rNewer.output;
     std::filesystem::remove(file);
+}
+
+TEST(PresetJson, ADuplicatedKeyIsNamedByItsFullPath) {
+    auto duplicateAt = [](const std::string& text) {
+        try {
+            parseGuardedJson(text, "dup.json");
+        } catch (const PresetError& e) {
+            EXPECT_EQ(e.reason(), "duplicated key");
+            return e.field();
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(duplicateAt(R"({"a": 1, "a": 2})"), "a");
+    EXPECT_EQ(duplicateAt(R"({"f": {"n": [{"b": 1}, 7, [3], {"p": {"x": 1, "y": 2, "x": 3}}]}})"), "f.n[3].p.x");
+    EXPECT_EQ(duplicateAt(R"({"f": [{"b": 1}, {"c": {"d": 1}, "b": 1, "b": 2}]})"), "f[1].b");
+    // The same key in two different objects is not a duplicate.
+    EXPECT_EQ(duplicateAt(R"({"f": [{"b": 1}, {"b": 2}], "g": {"b": 3}})"), "no error");
 }
