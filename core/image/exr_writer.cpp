@@ -11,7 +11,10 @@
 #include <ImfStringAttribute.h>
 #include <ImfThreading.h>
 #include <half.h>
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <cpuid.h>
 #include <immintrin.h>
+#endif
 
 #include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
@@ -53,6 +56,13 @@ __attribute__((target("avx,f16c"))) void convertToHalfF16C(const float* src, uin
                          _mm256_cvtps_ph(_mm256_loadu_ps(src + i), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
     for (; i < n; ++i) dst[i] = imath_float_to_half(src[i]);
 }
+
+// AVX (with the OS saving its registers, which __builtin_cpu_supports checks) and F16C (CPUID
+// leaf 1, ECX bit 29; clang 14's __builtin_cpu_supports does not know "f16c").
+bool cpuHasF16C() {
+    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+    return __builtin_cpu_supports("avx") && __get_cpuid(1, &eax, &ebx, &ecx, &edx) && (ecx & bit_F16C) != 0;
+}
 #endif
 
 }  // namespace
@@ -60,7 +70,7 @@ __attribute__((target("avx,f16c"))) void convertToHalfF16C(const float* src, uin
 void convertFloatsToHalf(std::span<const float> src, std::span<half> dst, HalfConversion how) {
     if (src.size() != dst.size()) throw std::logic_error("convertFloatsToHalf: sizes differ");
 #if defined(__x86_64__) && defined(__GNUC__)
-    if (how == HalfConversion::Fastest && __builtin_cpu_supports("avx") && __builtin_cpu_supports("f16c")) {
+    if (how == HalfConversion::Fastest && cpuHasF16C()) {
         static_assert(sizeof(half) == sizeof(uint16_t));
         convertToHalfF16C(src.data(), reinterpret_cast<uint16_t*>(dst.data()), src.size());
         return;
