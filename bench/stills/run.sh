@@ -22,14 +22,15 @@ echo "|---|---|---|---|---|---|---|---|"
 for spp in "${spps[@]}"; do
   aa=$(echo "sqrt($spp)" | bc)
   [[ $((aa * aa)) -eq $spp ]] || { echo "spp $spp is not a square" >&2; exit 2; }
-  override="antialiasing_enabled=$([[ $aa -gt 1 ]] && echo true || echo false)#antialiasing_size=$aa"
   for name in menger sierpinski_tetrahedron mandelbulb mandelbox; do
+    # mandelbulber2 2.20 ignores -O for the anti-aliasing keys: set them in a copy of the settings.
+    sed "s/^antialiasing_enabled .*/antialiasing_enabled $([[ $aa -gt 1 ]] && echo true || echo false);\nantialiasing_size $aa;/" \
+      "$root/bench/stills/$name.fract" > "$tmp/$name.fract"
     t0=$(date +%s.%N)
     "$root/$build/app/fraktal" render "$root/presets/$name.json" -o "$tmp/$name.exr" --png "$tmp/$name.png" \
       --size "$size" --spp "$spp" -q
     t1=$(date +%s.%N)
-    HOME="$tmp" mandelbulber2 -n --stats -f png -r "$size" -O "$override" -o "$tmp/mb_$name" \
-      "$root/bench/stills/$name.fract" > "$tmp/mb.log" 2>&1
+    HOME="$tmp" mandelbulber2 -n --stats -f png -r "$size" -o "$tmp/mb_$name" "$tmp/$name.fract" > "$tmp/mb.log" 2>&1
     t2=$(date +%s.%N)
     de=$("$tmp/de_count" "$root/presets/$name.json" "$size" "$spp" | awk '{print $1}')
     iters=$(tr '\r' '\n' < "$tmp/mb.log" | grep "iters / pixel" | tail -1 | awk -F: '{print $NF}' | xargs printf %.0f)
