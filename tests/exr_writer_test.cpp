@@ -8,8 +8,10 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
