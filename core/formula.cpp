@@ -35,6 +35,16 @@ std::string Formula::structureKey() const {
                std::to_string(n.phase) + ";";
     }
     key += "=>" + std::string(estimator.block ? estimator.block->id : "");
+    // A user's block is compiled from its text: editing its GLSL or its parameter list (same id)
+    // is a change of structure. Built-in blocks are fixed by their id.
+    auto addCustom = [&key](const BlockDesc* b) {
+        if (!b || !b->custom) return;
+        key += "|" + std::string(b->id) + "{";
+        for (const ParamDecl& p : b->params) key += std::string(p.name) + ",";
+        key += "}" + std::string(b->glsl);
+    };
+    for (const Node& n : nodes) addCustom(n.block);
+    addCustom(estimator.block);
     return key;
 }
 

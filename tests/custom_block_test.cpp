@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "app/editor/fly_speed.hpp"
 #include "core/gl/de_probe.hpp"
 #include "test_support.hpp"
 
@@ -53,6 +54,49 @@ TEST(CustomBlock, EvaluatesOnTheGpuLikeTheBuiltInItCopies) {
                  gpu[i].inside == cpu.inside;
     }
     EXPECT_GE(agree, points.size() * 999 / 1000);
+}
+
+// The editor's fly speed for a formula with custom GLSL (no CPU body) comes from the GL probe:
+// the same distances as the built-in twin's CPU DE, and fly steps that never cross the surface.
+TEST(CustomBlock, FlySpeedUsesTheGpuDistance) {
+    const Preset custom = parsePreset(mandelboxWithCustomFold(kBoxFoldGlsl), "custom.json");
+    const Preset builtIn = loadPreset(test::sourceDir() / "presets/mandelbox.json");
+    test::glContext();
+    editor::EyeDistance eye;
+    const editor::DistanceAt gpu = eye.of(custom.formula);
+    EXPECT_TRUE(eye.onGpu());
+    const editor::DistanceAt cpu = editor::cpuDistance(builtIn.formula);
+    for (const vec3& p : test::randomPoints(64, 2.0 * custom.formula.boundRadius, 7)) {
+        const double expected = editor::safeDistance(builtIn.formula, cpu, p);
+        EXPECT_NEAR(editor::safeDistance(custom.formula, gpu, p), expected, 1e-4 * std::max(std::abs(expected), 0.1));
+    }
+    // Diving straight at the surface from outside: every step stays short of it.
+    vec3 position(0.0, 0.0, 2.0 * custom.formula.boundRadius);
+    for (int frame = 0; frame < 16; ++frame) {  // 16 halvings: still far above float resolution
+        const double before = editor::safeDistance(builtIn.formula, cpu, position);
+        const vec3 step = editor::flyStep(custom.formula, gpu, position, vec3(0, 0, -1), /*dt=*/1.0, /*boost=*/4.0);
+        EXPECT_LE(length(step), 0.5 * before * (1.0 + 1e-3) + 1e-6);
+        position += step;
+        ASSERT_GT(editor::safeDistance(builtIn.formula, cpu, position), 0.0) << "frame " << frame;
+    }
+    // The fly speed is not the bound-sphere fallback (which is 0 inside the sphere).
+    EXPECT_LT(length(position), custom.formula.boundRadius);
+    // A structure that does not compile falls back to the bound sphere instead of throwing.
+    Preset broken = parsePreset(mandelboxWithCustomFold("p.xyz = undefined_function(p.xyz);\n"), "broken.json");
+    const editor::DistanceAt fallback = eye.of(broken.formula);
+    EXPECT_FALSE(eye.onGpu());
+    EXPECT_EQ(fallback(vec3(0.0)), 0.0);
+    EXPECT_NEAR(fallback(vec3(0.0, 0.0, broken.formula.boundRadius + 1.0)), 1.0, 1e-12);
+}
+
+// Editing a custom block's GLSL keeps its id but must recompile: it is a change of structure.
+TEST(CustomBlock, EditingItsGlslIsAStructureChange) {
+    const Preset a = parsePreset(mandelboxWithCustomFold(kBoxFoldGlsl), "a.json");
+    const Preset b = parsePreset(
+        mandelboxWithCustomFold("p.xyz = clamp(p.xyz, -fold_limit, fold_limit) * 2.0 - p.xyz;\n// edited\n"), "b.json");
+    const Preset again = parsePreset(mandelboxWithCustomFold(kBoxFoldGlsl), "again.json");
+    EXPECT_NE(a.formula.structureKey(), b.formula.structureKey());
+    EXPECT_EQ(a.formula.structureKey(), again.formula.structureKey());
 }
 
 TEST(CustomBlock, ParametersAreUniformsWithTheirDeclaration) {

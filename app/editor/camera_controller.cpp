@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace fraktal::editor {
@@ -56,7 +55,7 @@ bool orbitCamera(Camera& cam, const CameraInput& in, const CameraControls& c) {
     return changed;
 }
 
-bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const CameraControls& c) {
+bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const CameraControls& c, const DistanceAt& de) {
     bool changed = false;
     vec3 look = cam.target - cam.position;
     const double lookDistance = length(look);
@@ -68,7 +67,9 @@ bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const Camer
     const vec3 right = normalize(glm::cross(forward, cam.up));
     const vec3 up = glm::cross(right, forward);
     const vec3 dir = right * in.move.x + up * in.move.y + forward * in.move.z;
-    const vec3 step = flyStep(f, cam.position, dir, in.dt, in.boost ? 4.0 : 1.0, c.fly);
+    const double boost = in.boost ? 4.0 : 1.0;
+    const vec3 step = de ? flyStep(f, de, cam.position, dir, in.dt, boost, c.fly)
+                         : flyStep(f, cam.position, dir, in.dt, boost, c.fly);
     if (step != vec3(0.0)) changed = true;
     cam.position += step;
     cam.target = cam.position + forward * lookDistance;

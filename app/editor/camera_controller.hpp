@@ -30,8 +30,10 @@ struct CameraControls {
 // scroll scales the distance to the target. Returns whether the camera changed.
 bool orbitCamera(Camera& cam, const CameraInput& in, const CameraControls& c);
 // Fly: mouse look turns the view about the eye; `move` translates eye and target together by
-// flyStep(). Returns whether the camera changed.
-bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const CameraControls& c);
+// flyStep() with the DE `de` (empty: the CPU DE, see EyeDistance for formulas without one).
+// Returns whether the camera changed.
+bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const CameraControls& c,
+               const DistanceAt& de = {});
 
 // The view a preset shows when "Reset view" is chosen: looking at the origin from outside the
 // bound sphere, framing it for the camera's field of view.
