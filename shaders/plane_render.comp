@@ -12,6 +12,7 @@ uniform real u_pixelSize;   // view width / image width
 uniform ivec2 u_imageSize;  // the whole image
 uniform ivec2 u_tileOrigin; // first pixel of this tile, from the top left
 uniform ivec2 u_tileSize;
+uniform ivec2 u_storeOrigin;  // where the tile's first pixel lands in the images (0: tile-sized images)
 uniform int u_sampleBegin;
 uniform int u_sampleCount;
 uniform bool u_accumulate;  // add to what the images hold
@@ -55,10 +56,11 @@ void main() {
         }
         colour += vec4(rgb, 1.0);
     }
+    ivec2 store = u_storeOrigin + local;
     if (u_accumulate) {
-        colour += imageLoad(u_colour, local);
-        aov += imageLoad(u_aov, local);
+        colour += imageLoad(u_colour, store);
+        aov += imageLoad(u_aov, store);
     }
-    imageStore(u_colour, local, colour);
-    imageStore(u_aov, local, aov);
+    imageStore(u_colour, store, colour);
+    imageStore(u_aov, store, aov);
 }

@@ -1,11 +1,10 @@
 // 2D fractals through GL: GPU and CPU agree on every pixel's classification except at a thin
 // boundary band; deep zooms keep their structure in fp64; the editor's view refines; the CLI
 // renders a 2D preset to EXR (with AOVs) and PNG.
-#include <gtest/gtest.h>
-
 #include <ImfChannelList.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <gtest/gtest.h>
 
 #include <set>
 
@@ -86,7 +85,8 @@ INSTANTIATE_TEST_SUITE_P(Shipped, PlaneAgreement,
 double structure(const PlaneTileData& d, int dx, int dy) {
     int differ = 0, pairs = 0;
     for (int y = 0; y + dy < d.height; ++y)
-        for (int x = 0; x + dx < d.width; ++x, ++pairs) differ += d.meanIterations(x, y) != d.meanIterations(x + dx, y + dy);
+        for (int x = 0; x + dx < d.width; ++x, ++pairs)
+            differ += d.meanIterations(x, y) != d.meanIterations(x + dx, y + dy);
     return double(differ) / pairs;
 }
 
@@ -107,7 +107,8 @@ TEST(PlaneDeepZoom, StructureSurvivesAtViewWidth1e12WithFp64) {
     // And the fp64 image is the CPU's: the same escape counts at sample pixels.
     for (int y = 0; y < 64; y += 9)
         for (int x = 0; x < 64; x += 7) {
-            const PlaneEvaluation e = evaluatePlane(p.formula, planePixelPosition(deep, 64, 64, x, y, planeSampleOffset(0)));
+            const PlaneEvaluation e =
+                evaluatePlane(p.formula, planePixelPosition(deep, 64, 64, x, y, planeSampleOffset(0)));
             if (!e.inside) EXPECT_NEAR(fp64.meanIterations(x, y), e.smoothIterations, 0.05) << x << "," << y;
         }
 }
@@ -138,7 +139,8 @@ TEST(PlaneSupersampling, BoundaryPixelsArePartlyInsideAndTheMeanMatchesTheCpu) {
             partial += f > 0.0 && f < 1.0;
             gpuArea += f;
             for (int k = 0; k < spp; ++k)
-                cpuArea += evaluatePlane(p.formula, planePixelPosition(p.view, w, h, x, y, planeSampleOffset(k))).inside;
+                cpuArea +=
+                    evaluatePlane(p.formula, planePixelPosition(p.view, w, h, x, y, planeSampleOffset(k))).inside;
         }
     EXPECT_GT(partial, 20);
     EXPECT_NEAR(gpuArea, cpuArea / spp, 0.5);
@@ -148,8 +150,7 @@ TEST(PlaneViewLogic, ZoomKeepsThePointUnderTheCursorAndPanFollowsIt) {
     const PlaneViewRect v{real2(-0.5, 0.1), 3.0};
     const int w = 200, h = 100;
     const double cx = 37.25, cy = 81.5;
-    const real2 before = planePixelPosition(v, w, h, 0, 0, glm::vec2(0.0f)) +
-                         real2(cx, -cy) * v.pixelSize(w);
+    const real2 before = planePixelPosition(v, w, h, 0, 0, glm::vec2(0.0f)) + real2(cx, -cy) * v.pixelSize(w);
     const PlaneViewRect z = planeZoomedAt(v, w, h, cx, cy, 8.0);
     const real2 after = planePixelPosition(z, w, h, 0, 0, glm::vec2(0.0f)) + real2(cx, -cy) * z.pixelSize(w);
     EXPECT_NEAR(glm::length(after - before), 0.0, 1e-12);
@@ -173,6 +174,64 @@ TEST(PlaneViewLogic, RefinementStartsWithOneSampleAndReachesTheTarget) {
     EXPECT_EQ(r.samplesDone, 20);
     for (int n : passes) EXPECT_LE(n, r.maxPerPass);
     EXPECT_EQ(r.nextPassSamples(), 0);
+}
+
+// The editor sizes passes to a time budget: as many samples as fit (by the last pass's cost per
+// sample), never none, never past the cap; unmeasured, the cap.
+TEST(PlaneViewLogic, PassSamplesFitTheTimeBudget) {
+    EXPECT_EQ(planeSamplesForBudget(0.0, 60.0, 8), 8);
+    EXPECT_EQ(planeSamplesForBudget(20.0, 60.0, 8), 3);
+    EXPECT_EQ(planeSamplesForBudget(125.0, 60.0, 8), 1) << "a slow sample still makes progress";
+    EXPECT_EQ(planeSamplesForBudget(0.5, 60.0, 8), 8);
+    PlaneRefinement r;
+    r.samplesDone = 4;
+    r.maxPerPass = planeSamplesForBudget(30.0, 60.0, 8);
+    EXPECT_EQ(r.nextPassSamples(), 2);
+}
+
+// While the view moves, the editor renders at the size where one sample takes the budget.
+TEST(PlaneViewLogic, InteractiveScaleFitsOneSampleInTheBudget) {
+    EXPECT_EQ(planeInteractiveScale(0.0, 800, 600, 60.0), 1.0) << "not measured yet: full size";
+    EXPECT_EQ(planeInteractiveScale(1e-5, 800, 600, 60.0), 1.0) << "4.8 ms a sample fits";
+    const double perPixel = 2e-3;  // 960 ms for a sample of 800x600
+    const double s = planeInteractiveScale(perPixel, 800, 600, 60.0);
+    EXPECT_NEAR(perPixel * (800 * s) * (600 * s), 60.0, 1e-9);
+    EXPECT_EQ(planeInteractiveScale(1.0, 800, 600, 60.0), 0.25) << "never below the minimum";
+}
+
+// A pass rendered in bands over several calls (the editor's time budget) gives exactly the
+// image of whole passes, and counts its samples only once the last band is done.
+TEST(PlaneViewGl, PassesInBandsGiveTheSameImage) {
+    test::glContext();
+    const PlanePreset preset = loadPlanePreset(test::sourceDir() / "presets" / "2d" / "mandelbrot.json");
+    const int w = 24, h = 17;
+    auto image = [&](PlaneView& v) {
+        std::vector<float> pixels(size_t(w) * h * 4);
+        glGetTextureImage(v.colourTexture(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
+                          pixels.data());
+        return pixels;
+    };
+    PlaneView whole, banded;
+    for (PlaneView* v : {&whole, &banded}) {
+        v->setPreset(preset);
+        v->refinement().target = 7;
+    }
+    while (whole.refining()) ASSERT_TRUE(whole.update(w, h));
+    int calls = 0;
+    while (banded.refining()) {
+        const int before = banded.samples();
+        ASSERT_TRUE(banded.update(w, h, 5));
+        EXPECT_LE(banded.lastPixelSamples(), 5.0 * w * 8) << "at most 5 rows of one pass";
+        if (++calls % 4 != 0) EXPECT_EQ(banded.samples(), before) << "17 rows take 4 bands of 5";
+        ASSERT_LT(calls, 100);
+    }
+    EXPECT_EQ(banded.samples(), 7);
+    EXPECT_GT(calls, 4);
+    const std::vector<float> a = image(whole), b = image(banded);
+    EXPECT_EQ(a, b);
+    float alphaMin = 1e9f;
+    for (size_t i = 3; i < b.size(); i += 4) alphaMin = std::min(alphaMin, b[i]);
+    EXPECT_EQ(alphaMin, 7.0f) << "every pixel holds all its samples";
 }
 
 TEST(PlaneViewGl, RefinesWhileStillAndRestartsOnZoom) {

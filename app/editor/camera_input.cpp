@@ -45,13 +45,17 @@ void updatePlaneView(EditorState& s, int imageWidth, int imageHeight) {
     in.cursorY = io.MousePos.y - l.viewportY;
     const bool overViewport =
         in.cursorX >= 0 && in.cursorX < l.viewportW && in.cursorY >= 0 && in.cursorY < l.viewportH;
-    for (int button = 0; button < 3; ++button)
-        if (ImGui::IsMouseDown(button)) {
+    for (int button = 0; button < 3; ++button) {
+        if (!ImGui::IsMouseDown(button)) continue;
+        s.cameraGesture = true;  // one undo step per drag
+        // The frame the button goes down, the delta is the move before the press (frames are
+        // slow while a pass renders): a drag starts counting from the next frame.
+        if (!ImGui::IsMouseClicked(button)) {
             in.dragX = io.MouseDelta.x;
             in.dragY = io.MouseDelta.y;
-            s.cameraGesture = true;  // one undo step per drag
-            break;
         }
+        break;
+    }
     if (overViewport) in.wheel = io.MouseWheel;
     s.doc.plane->view = navigatePlane(s.doc.plane->view, in, imageWidth, imageHeight, l.viewportW);
 }

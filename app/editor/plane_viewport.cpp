@@ -7,24 +7,45 @@
 namespace fraktal::editor {
 
 void PlaneViewport::render(const PlanePreset& preset, int width, int height) {
-    width = std::max(width, 2);
-    height = std::max(height, 2);
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point now = Clock::now();
+    const int samplesBefore = view_.samples();
     view_.setPreset(preset);
     if (!sameRect(view_.rect(), preset.view)) view_.setRect(preset.view);
+    if (samplesBefore > 0 && view_.samples() == 0) lastChange_ = now;  // an edit or a move restarted it
+    const bool moving =
+        reducedWhileMoving_ && lastChange_ && std::chrono::duration<double>(now - *lastChange_).count() < kRestSeconds;
+    const double scale = moving ? planeInteractiveScale(msPerPixelSample_, width, height, kPassBudgetMs) : 1.0;
+    width = std::max(int(width * scale), 2);
+    height = std::max(int(height * scale), 2);
+
     stats_.passMs = 0.0;
     const std::string structure = preset.formula.structureKey();
     if (failedStructure_.empty() || structure != failedStructure_) {
-        const auto start = std::chrono::steady_clock::now();
+        // As many samples per pass as a whole image fits in the budget (at least one), and as
+        // many rows of the pass per frame as fit (the same rule, per row).
+        const int perPass =
+            planeSamplesForBudget(msPerPixelSample_ * width * height, kPassBudgetMs, kMaxSamplesPerPass);
+        view_.refinement().maxPerPass = perPass;
+        const int maxRows = planeSamplesForBudget(msPerPixelSample_ * width * perPass, kPassBudgetMs, height);
+        const auto start = Clock::now();
         try {
-            if (view_.update(width, height)) imageChanged_ = true;
+            if (view_.update(width, height, maxRows)) {
+                imageChanged_ = true;
+                // update() waits for nothing: finish here so that the time is the band's own.
+                glFinish();
+                stats_.passMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+                // Rows differ a lot in cost (inside the set every sample runs all iterations), so
+                // the estimate is a slowly decaying maximum: a cheap band must not make the next
+                // one large enough to stall the UI.
+                msPerPixelSample_ = std::max(stats_.passMs / view_.lastPixelSamples(), msPerPixelSample_ * 0.75);
+            }
             compileError_.clear();
             failedStructure_.clear();
         } catch (const std::exception& e) {
             compileError_ = e.what();
             failedStructure_ = structure;
         }
-        if (imageChanged_)
-            stats_.passMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
     stats_.samples = view_.samples();
     stats_.target = view_.refinement().target;

@@ -6,6 +6,7 @@
 
 #include <epoxy/gl.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
 
@@ -33,11 +34,21 @@ class PlaneViewport {
     PlaneViewport& operator=(const PlaneViewport&) = delete;
 
     // Follows the preset (formula, colouring, view rectangle: any change restarts refinement),
-    // renders the next refinement pass at this size and refreshes displayTexture(). A GLSL error
-    // keeps the last good image (compileError() names the node).
+    // renders the next refinement pass for a viewport of this size and refreshes
+    // displayTexture() (smaller than asked while the view moves: the caller stretches it). A
+    // GLSL error keeps the last good image (compileError() names the node).
     void render(const PlanePreset& preset, int width, int height);
     // Refinement stops at this many samples per pixel (the thumbnails want few).
     void setTargetSamples(int samples) { view_.refinement().target = samples; }
+    // Whether a moving view renders at a reduced size (on for the editor's view; off where the
+    // image must have the size asked, the thumbnails).
+    void setReducedWhileMoving(bool on) { reducedWhileMoving_ = on; }
+    // A frame renders as much of a refinement pass as fits in about this time (at least a row
+    // of one sample), so that the editor stays responsive while the image refines on a CPU
+    // renderer.
+    static constexpr double kPassBudgetMs = 60.0;
+    static constexpr int kMaxSamplesPerPass = 8;
+    static constexpr double kRestSeconds = 0.3;
 
     GLuint displayTexture() const { return display_.texture(); }  // RGBA8, top row first
     bool refining() const { return view_.refining(); }
@@ -59,6 +70,11 @@ class PlaneViewport {
     bool imageChanged_ = false;
     std::optional<std::pair<DisplayKey, double>> shownDisplay_;
     PlaneViewportStats stats_;
+    bool reducedWhileMoving_ = true;
+    double msPerPixelSample_ = 0.0;  // what one sample of one pixel cost in the last pass
+    // When the formula, colouring or view last changed: until it rests for kRestSeconds the view
+    // renders at a reduced size (planeInteractiveScale) so that dragging stays fluid.
+    std::optional<std::chrono::steady_clock::time_point> lastChange_;
 };
 
 // Whether two view rectangles are the same (the view restarts refinement only on a change).

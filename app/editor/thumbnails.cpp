@@ -28,7 +28,9 @@ GLuint copyOf(GLuint source, int width, int height) {
 GLuint renderPlaneThumbnail(ThumbnailRenderer& r, const PlanePreset& preset, const ColorPipeline& color) {
     if (!r.plane) r.plane = std::make_unique<PlaneViewport>(color);
     r.plane->setTargetSamples(kPlaneThumbnailSamples);
-    for (int pass = 0; pass < kPlaneThumbnailSamples; ++pass) {
+    r.plane->setReducedWhileMoving(false);  // the copy below needs the full thumbnail size
+    // Each call renders a band of a pass within the view's time budget: call until refined.
+    for (int call = 0; call < 1024; ++call) {
         r.plane->render(preset, r.width, r.height);
         if (!r.plane->compileError().empty()) throw std::runtime_error(r.plane->compileError());
         if (!r.plane->refining()) break;

@@ -15,7 +15,8 @@ bool planeFp64Available() {
     GLint count = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &count);
     for (GLint i = 0; i < count; ++i)
-        if (std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))), "GL_ARB_gpu_shader_fp64") == 0)
+        if (std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))),
+                        "GL_ARB_gpu_shader_fp64") == 0)
             return true;
     return false;
 }
@@ -43,13 +44,15 @@ void PlaneRenderer::prepare(const PlaneFormula& formula, PlanePrecision precisio
     warnings_.clear();
     bool wantDouble = precision != PlanePrecision::Float;
     if (wantDouble && !planeFp64Available()) {
-        warnings_.push_back("this GL driver has no double-precision shaders (GL_ARB_gpu_shader_fp64): rendering in "
-                            "float, so zooms below a view width of about 1e-5 turn blocky");
+        warnings_.push_back(
+            "this GL driver has no double-precision shaders (GL_ARB_gpu_shader_fp64): rendering in "
+            "float, so zooms below a view width of about 1e-5 turn blocky");
         wantDouble = false;
     }
     if (wantDouble && formula.needsFloatPower())
-        warnings_.push_back("a non-whole power runs in float on the GPU (GLSL has no double pow/atan): deep zooms "
-                            "of this formula turn blocky");
+        warnings_.push_back(
+            "a non-whole power runs in float on the GPU (GLSL has no double pow/atan): deep zooms "
+            "of this formula turn blocky");
     const std::string key = formula.structureKey() + (wantDouble ? "#fp64" : "#fp32");
     if (key != key_ || !program_) {
         const GeneratedFormula generated = generatePlaneGLSL(formula);
@@ -74,9 +77,13 @@ void PlaneRenderer::prepare(const PlaneFormula& formula, PlanePrecision precisio
 }
 
 void PlaneRenderer::render(const PlaneFormula& formula, const PlaneColouring& colouring, const PlaneViewRect& view,
-                           const PlaneTile& tile, PlaneTarget& target, int sampleBegin, int sampleCount, bool accumulate) {
+                           const PlaneTile& tile, PlaneTarget& target, int sampleBegin, int sampleCount,
+                           bool accumulate, bool inImage) {
     if (!program_) throw std::logic_error("PlaneRenderer::render before prepare");
-    target.resize(tile.width, tile.height);
+    if (inImage)
+        target.resize(tile.imageWidth, tile.imageHeight);
+    else
+        target.resize(tile.width, tile.height);
     const GLuint p = program_.id();
     glUseProgram(p);
     auto loc = [p](const char* name) { return glGetUniformLocation(p, name); };
@@ -105,6 +112,7 @@ void PlaneRenderer::render(const PlaneFormula& formula, const PlaneColouring& co
     glUniform2i(loc("u_imageSize"), tile.imageWidth, tile.imageHeight);
     glUniform2i(loc("u_tileOrigin"), tile.x0, tile.y0);
     glUniform2i(loc("u_tileSize"), tile.width, tile.height);
+    glUniform2i(loc("u_storeOrigin"), inImage ? tile.x0 : 0, inImage ? tile.y0 : 0);
     glUniform1i(loc("u_sampleBegin"), sampleBegin);
     glUniform1i(loc("u_sampleCount"), sampleCount);
     glUniform1i(loc("u_accumulate"), accumulate ? 1 : 0);

@@ -24,7 +24,7 @@ bool planeFp64Available();
 // Two float images of one tile: colour (rgb sum, sample count) and AOVs (inside count,
 // smooth-iteration sum over outside samples, distance sum over outside samples, outside count).
 class PlaneTarget {
-public:
+   public:
     PlaneTarget() = default;
     ~PlaneTarget();
     PlaneTarget(const PlaneTarget&) = delete;
@@ -36,7 +36,7 @@ public:
     GLuint colourTexture() const { return colour_; }
     GLuint aovTexture() const { return aov_; }
 
-private:
+   private:
     GLuint colour_ = 0, aov_ = 0;
     int width_ = 0, height_ = 0;
 };
@@ -67,7 +67,7 @@ struct PlaneTileData {
 };
 
 class PlaneRenderer {
-public:
+   public:
     // Compiles the formula's program when its structure or the precision changed. Throws
     // std::runtime_error with the driver's log naming the node.
     void prepare(const PlaneFormula& formula, PlanePrecision precision = PlanePrecision::Auto);
@@ -76,11 +76,14 @@ public:
     const std::vector<std::string>& warnings() const { return warnings_; }
 
     // Adds samples [sampleBegin, sampleBegin + sampleCount) of every pixel of the tile into
-    // `target` (sized to the tile); accumulate = false starts the sums afresh.
+    // `target` (sized to the tile); accumulate = false starts the sums afresh. With `inImage`,
+    // `target` is the whole image (sized imageWidth x imageHeight) and the tile's pixels land at
+    // their place in it (the editor's view renders a pass in bands over several frames).
     void render(const PlaneFormula& formula, const PlaneColouring& colouring, const PlaneViewRect& view,
-                const PlaneTile& tile, PlaneTarget& target, int sampleBegin, int sampleCount, bool accumulate);
+                const PlaneTile& tile, PlaneTarget& target, int sampleBegin, int sampleCount, bool accumulate,
+                bool inImage = false);
 
-private:
+   private:
     gl::Program program_;
     std::string key_;
     bool double_ = false;

@@ -12,12 +12,12 @@ void PlaneView::setPreset(const PlanePreset& preset) {
     if (presetKey_.empty()) rect_ = preset.view;
     preset_ = preset;
     presetKey_ = key;
-    refinement_.restart();
+    restart();
 }
 
 void PlaneView::setRect(const PlaneViewRect& rect) {
     rect_ = rect;
-    refinement_.restart();
+    restart();
 }
 
 void PlaneView::pan(double dxPixels, double dyPixels) {
@@ -30,20 +30,30 @@ void PlaneView::zoomAt(double cursorX, double cursorY, double factor) {
     setRect(planeZoomedAt(rect_, width_, height_, cursorX, cursorY, factor));
 }
 
-bool PlaneView::update(int width, int height) {
+bool PlaneView::update(int width, int height, int maxRows) {
+    lastPixelSamples_ = 0.0;
     if (width <= 0 || height <= 0 || presetKey_.empty()) return false;
     if (width != width_ || height != height_) {
         width_ = width;
         height_ = height;
-        refinement_.restart();
+        restart();
     }
-    const int count = refinement_.nextPassSamples();
-    if (count == 0) return false;
+    if (passRow_ == 0) {
+        passSamples_ = refinement_.nextPassSamples();
+        if (passSamples_ == 0) return false;
+    }
     renderer_.prepare(preset_.formula);
-    const PlaneTile tile{width, height, 0, 0, width, height};
-    renderer_.render(preset_.formula, preset_.colouring, rect_, tile, target_, refinement_.samplesDone, count,
-                     refinement_.samplesDone > 0);
-    refinement_.samplesDone += count;
+    const int rows = std::clamp(maxRows, 1, height - passRow_);
+    const PlaneTile band{width, height, 0, passRow_, width, rows};
+    const int done = refinement_.samplesDone;
+    renderer_.render(preset_.formula, preset_.colouring, rect_, band, target_, done, passSamples_, done > 0,
+                     /*inImage=*/true);
+    lastPixelSamples_ = double(width) * rows * passSamples_;
+    passRow_ += rows;
+    if (passRow_ >= height) {
+        refinement_.samplesDone += passSamples_;
+        passRow_ = 0;
+    }
     return true;
 }
 
