@@ -56,8 +56,9 @@ CpuRun cpuReference(const PlanePreset& p, int width, int height) {
     const auto start = Clock::now();
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
-            iterations += evaluatePlane(p.formula, planePixelPosition(p.view, width, height, x, y, planeSampleOffset(0)))
-                              .iterations;
+            iterations +=
+                evaluatePlane(p.formula, planePixelPosition(p.view, width, height, x, y, planeSampleOffset(0)))
+                    .iterations;
     r.seconds = secondsSince(start);
     r.meanIterations = iterations / (double(width) * height);
     return r;
@@ -77,8 +78,9 @@ int main(int argc, char** argv) {
     auto context = gl::HeadlessContext::create();
     std::printf("GL: %s; GL image %dx%d at %d spp; CPU reference %dx%d at 1 spp, one thread\n\n",
                 context->renderer().c_str(), width, height, spp, cpuWidth, cpuHeight);
-    std::printf("| preset | iterations / sample | GL fp64 ms | GL fp64 Msamples/s | GL fp32 ms | GL fp32 Msamples/s | "
-                "fp32 / fp64 | CPU Msamples/s | GL fp64 / CPU |\n");
+    std::printf(
+        "| preset | iterations / sample | GL fp64 ms | GL fp64 Msamples/s | GL fp32 ms | GL fp32 Msamples/s | "
+        "fp32 / fp64 | CPU Msamples/s | GL fp64 / CPU |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     for (int i = 4; i < argc; ++i) {
         const PlanePreset p = loadPlanePreset(argv[i]);
@@ -90,9 +92,9 @@ int main(int argc, char** argv) {
         const double glRate = samples / fp64 / 1e6, floatRate = samples / fp32 / 1e6;
         const double cpuRate = double(cpuWidth) * cpuHeight / cpu.seconds / 1e6;
         const std::string name = std::filesystem::path(argv[i]).stem().string();
-        std::printf("| %s | %.1f | %.0f%s | %.2f | %.0f | %.2f | %.2fx | %.2f | %.2fx |\n", name.c_str(), cpu.meanIterations,
-                    fp64 * 1e3, usedDouble ? "" : " (no fp64)", glRate, fp32 * 1e3, floatRate, floatRate / glRate,
-                    cpuRate, glRate / cpuRate);
+        std::printf("| %s | %.1f | %.0f%s | %.2f | %.0f | %.2f | %.2fx | %.2f | %.2fx |\n", name.c_str(),
+                    cpu.meanIterations, fp64 * 1e3, usedDouble ? "" : " (no fp64)", glRate, fp32 * 1e3, floatRate,
+                    floatRate / glRate, cpuRate, glRate / cpuRate);
         std::fflush(stdout);
     }
     return 0;
