@@ -14,6 +14,7 @@
 #include <cstdlib>
 
 #include "app/editor/actions.hpp"
+#include "app/editor/background_compiler.hpp"
 #include "app/editor/camera_input.hpp"
 #include "app/editor/panel_ini.hpp"
 #include "app/editor/panels.hpp"
@@ -173,7 +174,15 @@ int runEditor(const EditorOptions& o) {
     int status = 0;
     if (!loadColorPipeline(s)) status = 2;
     if (status == 0) {
-        std::unique_ptr<ViewportView> viewport = makeViewportView(*s.color);
+        // Structure edits compile on a worker thread with a hidden context that shares the
+        // window's objects; without one (it could not be created) they compile in the frame.
+        glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+        GLFWwindow* compileContext = glfwCreateWindow(1, 1, "fraktal compiler", nullptr, window);
+        std::unique_ptr<BackgroundCompiler> compiler;
+        if (compileContext)
+            compiler = std::make_unique<BackgroundCompiler>(
+                [compileContext] { glfwMakeContextCurrent(compileContext); }, [] { glfwMakeContextCurrent(nullptr); });
+        std::unique_ptr<ViewportView> viewport = makeViewportView(*s.color, compiler.get());
         PlaneViewport planeViewport(*s.color);
         ThumbnailRenderer thumbnails;
         newDocument(s);
@@ -188,7 +197,9 @@ int runEditor(const EditorOptions& o) {
         while (!s.quit && !glfwWindowShouldClose(window)) {
             // Idle when the image is converged and nothing happens: no busy loop on a laptop.
             const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
-            const bool busy = o.frames > 0 || !settled || exportActive(s.exportJob) || ImGui::IsAnyMouseDown();
+            const bool compiling = !s.doc.plane && viewport->stats().compiling;
+            const bool busy =
+                o.frames > 0 || !settled || compiling || exportActive(s.exportJob) || ImGui::IsAnyMouseDown();
             if (busy)
                 glfwPollEvents();
             else
@@ -228,7 +239,8 @@ int runEditor(const EditorOptions& o) {
             glClear(GL_COLOR_BUFFER_BIT);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-            if (o.frames > 0 && ++frame >= o.frames) {
+            // A scripted run counts frames the viewport drew, not frames spent waiting for a compile.
+            if (o.frames > 0 && !(!s.doc.plane && viewport->stats().compiling) && ++frame >= o.frames) {
                 if (!o.screenshot.empty()) {
                     try {
                         saveWindowScreenshot(o.screenshot, fbW, fbH);
@@ -261,6 +273,9 @@ int runEditor(const EditorOptions& o) {
         finishExport(s.exportJob);
         releaseThumbnails(s.browser);
         endSession(s.autosave);
+        viewport.reset();
+        compiler.reset();  // joins the worker, which releases the hidden context
+        if (compileContext) glfwDestroyWindow(compileContext);
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();

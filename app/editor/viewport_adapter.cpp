@@ -5,8 +5,8 @@
 
 namespace fraktal::editor {
 
-std::unique_ptr<ViewportView> makeViewportView(const ColorPipeline& color) {
-    return std::make_unique<CoreViewportView>(color);
+std::unique_ptr<ViewportView> makeViewportView(const ColorPipeline& color, BackgroundCompiler* compiler) {
+    return std::make_unique<CoreViewportView>(color, compiler);
 }
 
 viewport::ViewportOptions viewportOptions(const ViewSettings& v) {
@@ -37,7 +37,28 @@ bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOpt
 
 }  // namespace
 
-CoreViewportView::CoreViewportView(const ColorPipeline& color) : color_(color) {}
+CoreViewportView::CoreViewportView(const ColorPipeline& color, BackgroundCompiler* compiler)
+    : color_(color), compiler_(compiler) {}
+
+bool CoreViewportView::programsReady(const Formula& formula) {
+    stats_.compiling = false;
+    if (!compiler_ || !viewport_.needsPrograms(formula)) return true;
+    const std::string structure = formula.structureKey();
+    std::optional<BackgroundCompiler::Result> result = compiler_->take(structure);
+    if (!result) {
+        compiler_->request(formula);
+        stats_.compiling = true;
+        return false;
+    }
+    if (!result->programs) {
+        // The viewport keeps its previous programs and image; the node's error is shown.
+        compileError_ = result->error;
+        failedStructure_ = structure;
+        return false;
+    }
+    viewport_.adoptPrograms(std::move(result->programs));
+    return true;
+}
 
 CoreViewportView::~CoreViewportView() {
     glDeleteFramebuffers(1, &displayFramebuffer_);
@@ -54,6 +75,7 @@ bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& set
         workingShading_ = shadingInWorkingSpace(preset.shading, color_, preset.render.workingSpace);
         shadingKey_.emplace(preset.shading, preset.render.workingSpace);
     }
+    if (!programsReady(formula)) return false;
     const bool newStructure = tracker_.needsRecompile(formula);
     const auto start = std::chrono::steady_clock::now();
     viewport::FrameStats frame;

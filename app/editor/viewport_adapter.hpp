@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "app/editor/background_compiler.hpp"
 #include "app/editor/formula_edits.hpp"
 #include "app/editor/ocio_display_pass.hpp"
 #include "app/editor/viewport_view.hpp"
@@ -25,7 +26,7 @@ ShadingSettings shadingInWorkingSpace(const ShadingSettings& shading, const Colo
 class CoreViewportView final : public ViewportView {
    public:
     // `color` is owned by the caller and outlives the view.
-    explicit CoreViewportView(const ColorPipeline& color);
+    explicit CoreViewportView(const ColorPipeline& color, BackgroundCompiler* compiler = nullptr);
     ~CoreViewportView() override;
     CoreViewportView(const CoreViewportView&) = delete;
     CoreViewportView& operator=(const CoreViewportView&) = delete;
@@ -44,7 +45,12 @@ class CoreViewportView final : public ViewportView {
     void ensureDisplayTarget(int width, int height);
     void redisplay(const Preset& preset);
 
+    // Asks the compiler for the formula's programs; true once the viewport has them (or when
+    // there is no compiler: render() compiles). False while compiling or when it failed.
+    bool programsReady(const Formula& formula);
+
     const ColorPipeline& color_;
+    BackgroundCompiler* compiler_ = nullptr;
     viewport::Viewport viewport_;
     OcioDisplayPass display_;
     ProgramTracker tracker_;

@@ -24,13 +24,14 @@ struct ViewportStats {
     const char* action = "reset";   // what the last frame did: reset, reproject or continue
     int aaLevel = 0;                // samples per pixel being worked on (the cap once settled)
     int aaCap = 1;
-    bool settled = false;           // every pixel has all its samples: frames cost nothing now
-    int width = 0, height = 0;      // render resolution
-    int compiles = 0;               // formula programs built so far (a value edit must not add one)
+    bool settled = false;       // every pixel has all its samples: frames cost nothing now
+    int width = 0, height = 0;  // render resolution
+    int compiles = 0;           // formula programs built so far (a value edit must not add one)
+    bool compiling = false;     // a new structure compiles in the background; the old image stays
 };
 
 class ViewportView {
-public:
+   public:
     virtual ~ViewportView() = default;
     // Advances the image of this preset by one frame's work on the current GL context, and
     // refreshes displayTexture() through the preset's OCIO display/view and exposure. A structure
@@ -49,6 +50,10 @@ public:
     virtual const std::string& displayError() const = 0;
 };
 
-std::unique_ptr<ViewportView> makeViewportView(const ColorPipeline& color);
+class BackgroundCompiler;
+
+// With a compiler, structure changes compile on its thread and the old image stays meanwhile;
+// without one (tests on a headless context) they compile in render(). `compiler` outlives the view.
+std::unique_ptr<ViewportView> makeViewportView(const ColorPipeline& color, BackgroundCompiler* compiler = nullptr);
 
 }  // namespace fraktal::editor

@@ -4,6 +4,7 @@
 // EGL 1.4 displays (shared/PLATFORM.md), so the EXT entry point is loaded by hand.
 // epoxy first: it defines the Khronos types that <EGL/egl.h> would otherwise redeclare.
 #include <epoxy/gl.h>
+// (after epoxy)
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
@@ -63,8 +64,9 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create() {
         eglTerminate(display);
         throw std::runtime_error("EGL cannot bind the desktop OpenGL API: " + std::string(kInstallHint));
     }
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context == EGL_NO_CONTEXT) {
         const EGLint e = eglGetError();
@@ -88,6 +90,35 @@ HeadlessContext::~HeadlessContext() {
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display, static_cast<EGLContext>(context_));
     eglTerminate(display);
+}
+
+std::unique_ptr<HeadlessContext::Shared> HeadlessContext::createShared() const {
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext context = eglCreateContext(static_cast<EGLDisplay>(display_), EGL_NO_CONFIG_KHR,
+                                          static_cast<EGLContext>(context_), attributes);
+    if (context == EGL_NO_CONTEXT)
+        throw std::runtime_error("cannot create a shared OpenGL context (" + eglErrorText(eglGetError()) + ")");
+    std::unique_ptr<Shared> shared(new Shared);
+    shared->display_ = display_;
+    shared->context_ = context;
+    return shared;
+}
+
+HeadlessContext::Shared::~Shared() {
+    eglDestroyContext(static_cast<EGLDisplay>(display_), static_cast<EGLContext>(context_));
+}
+
+void HeadlessContext::Shared::bind() {
+    eglBindAPI(EGL_OPENGL_API);  // the bound API is per thread (EGL 1.5, 3.7)
+    if (!eglMakeCurrent(static_cast<EGLDisplay>(display_), EGL_NO_SURFACE, EGL_NO_SURFACE,
+                        static_cast<EGLContext>(context_)))
+        throw std::runtime_error("cannot make the shared OpenGL context current (" + eglErrorText(eglGetError()) + ")");
+}
+
+void HeadlessContext::Shared::unbind() {
+    eglMakeCurrent(static_cast<EGLDisplay>(display_), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 }
 
 std::string HeadlessContext::renderer() const {

@@ -9,7 +9,7 @@
 namespace fraktal::gl {
 
 class HeadlessContext {
-public:
+   public:
     // Creates and makes current a GL 4.5 core context. Throws std::runtime_error saying why it
     // failed and what to install.
     static std::unique_ptr<HeadlessContext> create();
@@ -19,7 +19,26 @@ public:
 
     std::string renderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
 
-private:
+    // A second context that shares this one's objects (programs, buffers, textures), for GL work
+    // on another thread, e.g. compiling programs in the background. Not current anywhere until
+    // its bind(). Destroy it before this context.
+    class Shared {
+       public:
+        ~Shared();
+        Shared(const Shared&) = delete;
+        Shared& operator=(const Shared&) = delete;
+        void bind();    // makes it current on the calling thread (throws if EGL refuses)
+        void unbind();  // releases it from the calling thread
+
+       private:
+        friend class HeadlessContext;
+        Shared() = default;
+        void* display_ = nullptr;
+        void* context_ = nullptr;
+    };
+    std::unique_ptr<Shared> createShared() const;
+
+   private:
     HeadlessContext() = default;
     void* display_ = nullptr;
     void* context_ = nullptr;

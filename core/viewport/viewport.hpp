@@ -43,6 +43,15 @@ class Viewport {
     FrameStats render(const Formula& formula, const Camera& camera, const RenderSettings& render,
                       const ShadingSettings& shading, int width, int height);
 
+    // Whether render() with this formula would compile first: the current programs were built for
+    // another structure (or none yet).
+    bool needsPrograms(const Formula& formula) const {
+        return !programs_ || programs_->structure != formula.structureKey();
+    }
+    // Programs compiled elsewhere, e.g. on a shared context in a background thread (the editor's
+    // BackgroundCompiler), so that render() of their structure does not compile.
+    void adoptPrograms(std::unique_ptr<ViewportPrograms> programs) { programs_ = std::move(programs); }
+
     // Changing options takes effect on the next frame (a cone tile change resets).
     void setOptions(const ViewportOptions& options);
     const ViewportOptions& options() const { return options_; }
