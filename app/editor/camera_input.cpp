@@ -68,7 +68,8 @@ void updateCamera(EditorState& s) {
         orbitCamera(cam, in, s.cameraControls);
     } else {
         // In fly mode the left drag looks around; pan and wheel still work as in orbit.
-        flyCamera(cam, s.doc.preset.formula, in, s.cameraControls);
+        const Formula& formula = s.doc.preset.formula;
+        flyCamera(cam, formula, in, s.cameraControls, s.eyeDistance.of(formula));
         CameraInput rest;
         rest.panDrag = in.panDrag;
         rest.scroll = in.scroll;

@@ -24,8 +24,9 @@ void drawCameraTab(EditorState& s) {
     if (s.cameraControls.mode == CameraMode::Orbit)
         ImGui::TextDisabled("Left drag: orbit. Right/middle drag: pan. Wheel: zoom.");
     else
-        ImGui::TextDisabled("W/A/S/D: move, Q/E: down/up, left drag: look, Shift: 4x. "
-                            "Speed follows the distance to the surface.");
+        ImGui::TextDisabled(
+            "W/A/S/D: move, Q/E: down/up, left drag: look, Shift: 4x. "
+            "Speed follows the distance to the surface.");
     ImGui::PopTextWrapPos();
 
     const double fovLo = 5.0, fovHi = 120.0;
@@ -38,9 +39,10 @@ void drawCameraTab(EditorState& s) {
     ImGui::TextDisabled("(Home)");
 
     sectionHeader("Fly speed");
-    const double d = safeDistance(f, cam.position);
-    ImGui::Text("Distance to surface (CPU DE): %.4g", d);
-    ImGui::Text("Fly speed: %.4g units/s", flySpeed(f, cam.position, s.cameraControls.fly));
+    const DistanceAt de = s.eyeDistance.of(f);
+    const double d = safeDistance(f, de, cam.position);
+    ImGui::Text("Distance to surface (%s DE): %.4g", s.eyeDistance.onGpu() ? "GPU" : "CPU", d);
+    ImGui::Text("Fly speed: %.4g units/s", flySpeed(f, de, cam.position, s.cameraControls.fly));
     const double lo = 0.05, hi = 20.0;
     ImGui::DragScalar("Speed per distance", ImGuiDataType_Double, &s.cameraControls.fly.speedPerDistance, 0.01f, &lo,
                       &hi, "%.2f /s", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
@@ -52,8 +54,7 @@ void drawCameraTab(EditorState& s) {
         ImGui::BeginDisabled(!slot);
         if (ImGui::Button(("Go to " + std::to_string(i + 1)).c_str(), ImVec2(90, 0))) cam = *slot;
         ImGui::EndDisabled();
-        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip("Shortcut: %d", i + 1);
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Shortcut: %d", i + 1);
         ImGui::SameLine();
         if (ImGui::Button("Store")) slot = cam;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Shortcut: Ctrl+%d", i + 1);

@@ -274,6 +274,7 @@ int runEditor(const EditorOptions& o) {
         releaseThumbnails(s.browser);
         endSession(s.autosave);
         viewport.reset();
+        s.eyeDistance.release();
         compiler.reset();  // joins the worker, which releases the hidden context
         if (compileContext) glfwDestroyWindow(compileContext);
     }

@@ -95,6 +95,7 @@ struct EditorState {
     PanelVisibility panels;
     Layout layout;
     CameraControls cameraControls;
+    EyeDistance eyeDistance;  // the DE at the eye for the fly speed (GL probe for custom GLSL)
     Dialogs dialogs;
     PresetBrowser browser;
     ExportJob exportJob;

@@ -27,6 +27,12 @@ DistanceAt cpuDistance(const Formula& f) {
 EyeDistance::EyeDistance() = default;
 EyeDistance::~EyeDistance() = default;
 
+void EyeDistance::release() {
+    probe_.reset();
+    structure_.clear();
+    compileFailed_ = onGpu_ = false;
+}
+
 DistanceAt EyeDistance::of(const Formula& f) {
     onGpu_ = false;
     if (f.cpuEvaluable()) return cpuDistance(f);

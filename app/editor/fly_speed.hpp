@@ -49,6 +49,8 @@ class EyeDistance {
     DistanceAt of(const Formula& f);
     // Whether the last formula was evaluated on the GPU.
     bool onGpu() const { return onGpu_; }
+    // Drops the GL probe (call while its context is still current, before it is destroyed).
+    void release();
 
    private:
     std::string structure_;

@@ -58,6 +58,7 @@ void drawStatsOverlay(EditorState& s, const ViewportView& v) {
     ImGui::Text("reprojected %.0f%%   converged %.0f%%", 100.0 * st.reprojectedShare, 100.0 * st.convergedShare);
     ImGui::Text("AA %d / %d spp%s   %s", st.aaLevel, st.aaCap, st.settled ? " (settled)" : "",
                 s.cameraControls.mode == CameraMode::Fly ? "FLY" : "ORBIT");
+    if (st.compiling) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling the new structure...");
     ImGui::End();
 }
 
