@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "app/editor/fly_speed.hpp"
+#include "app/editor/formula_edits.hpp"
 #include "core/gl/de_probe.hpp"
 #include "test_support.hpp"
 
@@ -97,6 +98,65 @@ TEST(CustomBlock, EditingItsGlslIsAStructureChange) {
     const Preset again = parsePreset(mandelboxWithCustomFold(kBoxFoldGlsl), "again.json");
     EXPECT_NE(a.formula.structureKey(), b.formula.structureKey());
     EXPECT_EQ(a.formula.structureKey(), again.formula.structureKey());
+}
+
+// The editor's GLSL block editor applies a definition through upsertCustomBlock: a new block is
+// added, an edited one replaces the old everywhere it is used (values kept where the parameter
+// survives, clamped to its new range), and an unsound one is refused with the reason.
+TEST(CustomBlock, EditorAddsAndReplacesBlocksInTheFormula) {
+    Formula f = loadPreset(test::sourceDir() / "presets/mandelbox.json").formula;
+    const Formula original = f;
+    CustomBlock::Definition d;
+    d.id = "wobble";
+    d.category = Category::Transform;
+    d.help = "test";
+    d.params.push_back({"amount", "how much", ParamType::Float, vec3(0.5), 0.0, 2.0});
+    d.glsl = "p.x += amount * sin(p.y);\n";
+
+    CustomBlock::Definition builtInId = d;
+    builtInId.id = "box_fold";
+    EXPECT_NE(editor::upsertCustomBlock(f, builtInId).find("built-in"), std::string::npos);
+    CustomBlock::Definition looping = d;
+    looping.glsl = "for (int i = 0; i < 9; ++i) p.x += 1.0;\n";
+    EXPECT_NE(editor::upsertCustomBlock(f, looping), "");
+    EXPECT_EQ(f.structureKey(), original.structureKey()) << "a refused definition changed the formula";
+    EXPECT_TRUE(f.customBlocks.empty());
+
+    ASSERT_EQ(editor::upsertCustomBlock(f, d), "");
+    ASSERT_EQ(f.customBlocks.size(), 1u);
+    const auto custom = editor::customBlocksIn(f, Category::Transform);
+    ASSERT_EQ(custom.size(), 1u);
+    ASSERT_TRUE(editor::addNode(f, *custom[0], 1));
+    f.nodes[1].values[0] = vec3(1.5);
+    std::weak_ptr<const CustomBlock> first = f.customBlocks[0];
+    const std::string keyBefore = f.structureKey();
+
+    // Edit: a narrower range for "amount", a new parameter, new GLSL.
+    CustomBlock::Definition edited = d;
+    edited.params[0].max = 1.0;
+    edited.params.push_back({"phase", "", ParamType::Float, vec3(0.25), -1.0, 1.0});
+    edited.glsl = "p.x += amount * sin(p.y + phase);\n";
+    ASSERT_EQ(editor::upsertCustomBlock(f, edited), "");
+    EXPECT_EQ(f.customBlocks.size(), 1u);
+    EXPECT_TRUE(first.expired()) << "the old definition is still referenced";
+    EXPECT_EQ(f.nodes[1].block, &f.customBlocks[0]->desc());
+    EXPECT_EQ(f.nodes[1].values[0].x, 1.0);   // kept, clamped to the new range
+    EXPECT_EQ(f.nodes[1].values[1].x, 0.25);  // the new parameter's default
+    EXPECT_NE(f.structureKey(), keyBefore);
+
+    // The block in use as a node cannot become an estimator.
+    CustomBlock::Definition estimator = edited;
+    estimator.category = Category::Estimator;
+    estimator.glsl = "return length(p.xyz) / p.w;\n";
+    EXPECT_NE(editor::upsertCustomBlock(f, estimator).find("category"), std::string::npos);
+    EXPECT_EQ(f.nodes[1].block->category, Category::Transform);
+
+    // What the editor built saves into a preset and loads back as the same formula.
+    Preset p = loadPreset(test::sourceDir() / "presets/mandelbox.json");
+    p.formula = f;
+    const Preset back = parsePreset(serializePreset(p), "back.json");
+    EXPECT_EQ(back.formula.structureKey(), f.structureKey());
+    EXPECT_EQ(back.formula.nodes[1].values[0].x, 1.0);
 }
 
 TEST(CustomBlock, ParametersAreUniformsWithTheirDeclaration) {

@@ -225,6 +225,7 @@ int runEditor(const EditorOptions& o) {
             const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);
             drawStatusLine(s);
             drawExportDialog(s);
+            drawCustomBlockEditor(s);
             drawFileDialogs(s);
             drawRecoveryDialog(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);

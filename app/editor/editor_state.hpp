@@ -9,6 +9,7 @@
 
 #include "app/editor/autosave.hpp"
 #include "app/editor/camera_controller.hpp"
+#include "app/editor/custom_block_editor.hpp"
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
 #include "app/editor/undo_history.hpp"
@@ -95,6 +96,7 @@ struct EditorState {
     PanelVisibility panels;
     Layout layout;
     CameraControls cameraControls;
+    CustomBlockEditor customBlockEditor;
     EyeDistance eyeDistance;  // the DE at the eye for the fly speed (GL probe for custom GLSL)
     Dialogs dialogs;
     PresetBrowser browser;

@@ -12,6 +12,64 @@ std::vector<const BlockDesc*> blocksIn(Category category) {
     return out;
 }
 
+std::vector<const BlockDesc*> customBlocksIn(const Formula& f, Category category) {
+    std::vector<const BlockDesc*> out;
+    for (const auto& b : f.customBlocks)
+        if (b->desc().category == category) out.push_back(&b->desc());
+    return out;
+}
+
+const CustomBlock* findCustomBlock(const Formula& f, std::string_view id) {
+    for (const auto& b : f.customBlocks)
+        if (b->definition().id == id) return b.get();
+    return nullptr;
+}
+
+namespace {
+
+// The node for `block` with the values of `old` where a parameter of the same name and type
+// survives, clamped to the new range.
+Node rebind(const Node& old, const BlockDesc& block) {
+    Node n = Node::make(block);
+    n.enabled = old.enabled;
+    n.period = old.period;
+    n.phase = old.phase;
+    for (size_t i = 0; i < block.params.size(); ++i) {
+        const int j = old.block->paramIndex(block.params[i].name);
+        if (j < 0 || old.block->params[size_t(j)].type != block.params[i].type) continue;
+        n.values[i] = glm::clamp(old.values[size_t(j)], vec3(block.params[i].min), vec3(block.params[i].max));
+    }
+    return n;
+}
+
+}  // namespace
+
+std::string upsertCustomBlock(Formula& f, CustomBlock::Definition definition) {
+    if (std::string why = CustomBlock::validate(definition); !why.empty()) return why;
+    const CustomBlock* existing = findCustomBlock(f, definition.id);
+    if (!existing && int(f.customBlocks.size()) >= kMaxCustomBlocks)
+        return "more than " + std::to_string(kMaxCustomBlocks) + " custom blocks";
+    const BlockDesc* oldDesc = existing ? &existing->desc() : nullptr;
+    auto usedBy = [&](const Node& n) { return oldDesc && n.block == oldDesc; };
+    const bool wasEstimator = oldDesc && oldDesc->isEstimator();
+    const bool isEstimator = definition.category == Category::Estimator;
+    if (oldDesc && wasEstimator != isEstimator &&
+        (usedBy(f.estimator) || std::any_of(f.nodes.begin(), f.nodes.end(), usedBy)))
+        return "category: the block is in use as " + std::string(wasEstimator ? "the estimator" : "a node") +
+               "; remove it there first";
+    std::shared_ptr<const CustomBlock> block = CustomBlock::make(std::move(definition));
+    for (Node& n : f.nodes)
+        if (usedBy(n)) n = rebind(n, block->desc());
+    if (usedBy(f.estimator)) f.estimator = rebind(f.estimator, block->desc());
+    if (existing) {
+        for (auto& b : f.customBlocks)
+            if (b.get() == existing) b = block;  // the old definition dies here, after the rebind
+    } else {
+        f.customBlocks.push_back(std::move(block));
+    }
+    return {};
+}
+
 namespace {
 bool validIndex(const Formula& f, int i) { return i >= 0 && i < int(f.nodes.size()); }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/formula.hpp"
@@ -17,7 +18,7 @@ std::vector<const BlockDesc*> blocksIn(Category category);
 // index out of range or kMaxNodes reached.
 bool addNode(Formula& f, const BlockDesc& block, int insertAt = -1);  // -1: at the end
 bool removeNode(Formula& f, int index);
-bool duplicateNode(Formula& f, int index);  // the copy goes right after the original
+bool duplicateNode(Formula& f, int index);    // the copy goes right after the original
 bool moveNode(Formula& f, int from, int to);  // `to` is the index the node ends at
 bool setNodeEnabled(Formula& f, int index, bool enabled);
 bool setEstimator(Formula& f, const BlockDesc& estimator);  // keeps nothing of the old one
@@ -25,6 +26,19 @@ bool setEstimator(Formula& f, const BlockDesc& estimator);  // keeps nothing of 
 // declared range.
 bool setParam(Formula& f, int index, int param, const ParamValue& value);
 void resetParam(Formula& f, int index, int param);
+
+// The formula's own GLSL blocks of one category (the "Add block" menu lists them after the
+// built-in ones).
+std::vector<const BlockDesc*> customBlocksIn(const Formula& f, Category category);
+// The formula's custom block with this id, or null.
+const CustomBlock* findCustomBlock(const Formula& f, std::string_view id);
+
+// Adds a user's GLSL block to the formula, or replaces the one with the same id: every node
+// that uses it is rebound to the new definition, keeping the values of parameters that still
+// exist (clamped to their new range) and taking defaults for new ones. Returns the reason when
+// the definition is not sound (CustomBlock::validate, or a category change of a block in use),
+// leaving the formula alone; empty on success. A GLSL compile error shows later, at the node.
+std::string upsertCustomBlock(Formula& f, CustomBlock::Definition definition);
 
 // Remembers which structure the current program was built for. A value edit keeps the key;
 // a block added, removed, moved, enabled/disabled or re-phased changes it.

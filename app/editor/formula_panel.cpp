@@ -21,7 +21,9 @@ void addBlockMenu(EditorState& s) {
     const Category steps[] = {Category::Fold, Category::Transform, Category::Power};
     for (Category c : steps) {
         if (!ImGui::BeginMenu(std::string(categoryName(c)).c_str())) continue;
-        if (const BlockDesc* b = blockMenuItems(blocksIn(c))) {
+        std::vector<const BlockDesc*> blocks = blocksIn(c);
+        for (const BlockDesc* b : customBlocksIn(f, c)) blocks.push_back(b);  // the formula's GLSL blocks
+        if (const BlockDesc* b = blockMenuItems(blocks)) {
             const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
             if (addNode(f, *b, at)) s.selectedNode = at;
         }
@@ -29,11 +31,19 @@ void addBlockMenu(EditorState& s) {
     }
     ImGui::Separator();
     if (ImGui::BeginMenu("Estimator (replaces)")) {
-        if (const BlockDesc* b = blockMenuItems(blocksIn(Category::Estimator), f.estimator.block)) {
+        std::vector<const BlockDesc*> estimators = blocksIn(Category::Estimator);
+        for (const BlockDesc* b : customBlocksIn(f, Category::Estimator)) estimators.push_back(b);
+        if (const BlockDesc* b = blockMenuItems(estimators, f.estimator.block)) {
             setEstimator(f, *b);
             s.selectedNode = int(f.nodes.size());
         }
         ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("New GLSL block...")) {
+        s.customBlockEditor.definition = newBlockTemplate();
+        s.customBlockEditor.error.clear();
+        s.customBlockEditor.open = true;
     }
 }
 
@@ -126,7 +136,15 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     ImGui::Spacing();
     sectionHeader("Parameters");
     const bool estimatorSelected = s.selectedNode == int(f.nodes.size());
+    const Node& selected = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
     nodeParameters(estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)], estimatorSelected);
+    if (selected.block->custom) {
+        if (const CustomBlock* b = findCustomBlock(f, selected.block->id); b && ImGui::Button("Edit GLSL...")) {
+            s.customBlockEditor.definition = b->definition();
+            s.customBlockEditor.error.clear();
+            s.customBlockEditor.open = true;
+        }
+    }
     ImGui::End();
 }
 
