@@ -10,7 +10,9 @@
 //                        a: distance of the carried hit along the new ray (-1: none)
 //   accum       rgba32f  rgb: sum of the finished samples' colours; a: their count
 //   image       rgba32f  the scene-linear result shown (accum mean, carried colour, or the old image)
-//   centre      rgba32f  x: t of the sample-0 (pixel centre) ray; y: its status. Reprojection reads it.
+//   centre      rgba32f  x: t of the sample-0 (pixel centre) ray; y: its status; z: carry age, the
+//                        frames its colour has been carried by reprojection without a fresh
+//                        shade (0: shaded for this view). Reprojection reads it.
 uniform ivec2 u_size;
 uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
 uniform float u_tanHalfFovY;

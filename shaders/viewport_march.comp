@@ -58,5 +58,5 @@ void main() {
     info.y = s.steps;
     imageStore(u_rayState, px, vec4(s.t, s.lastD, s.omega, covered));
     imageStore(u_rayInfo, px, info);
-    if (sampleIndex == 0) imageStore(u_centre, px, vec4(s.t, float(s.status), 0.0, 0.0));
+    if (sampleIndex == 0) imageStore(u_centre, px, vec4(s.t, float(s.status), imageLoad(u_centre, px).z, 0.0));
 }

@@ -34,10 +34,13 @@ void main() {
     bool reprojected = false;
     int flags = 0;
     vec4 carried = vec4(0.0, 0.0, 0.0, -1.0);
+    float carryAge = 0.0;
     float deEvals = 0.0;
     vec4 r = u_resetAll != 0 ? vec4(-1.0) : texelFetch(u_reprojDistance, px, 0);
     if (r.x > 0.0) {
-        carried.rgb = texelFetch(u_reprojColor, px, 0).rgb;
+        vec4 carriedColor = texelFetch(u_reprojColor, px, 0);
+        carried.rgb = carriedColor.rgb;
+        carryAge = carriedColor.a;
         imageStore(u_image, px, vec4(carried.rgb, 1.0));
         if (r.y > 0.999) {
             carried.a = r.z;
@@ -69,7 +72,7 @@ void main() {
     imageStore(u_rayInfo, px, ivec4(STATUS_MARCHING, 0, 0, flags));
     imageStore(u_sampleColor, px, carried);
     imageStore(u_accum, px, vec4(0.0));
-    imageStore(u_centre, px, vec4(t, float(STATUS_MARCHING), 0.0, 0.0));
+    imageStore(u_centre, px, vec4(t, float(STATUS_MARCHING), carryAge, 0.0));
     atomicAdd(c_deEvals, uint(deEvals));
     if (reprojected) atomicAdd(c_reprojected, 1u);
     else atomicAdd(c_restarted, 1u);

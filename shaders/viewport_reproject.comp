@@ -9,7 +9,7 @@
 // Erosion fix 1: the point takes the smallest distance of its 3x3 neighbourhood, so silhouettes
 // do not erode. The camera uniforms of viewport_common.glsl hold the PREVIOUS camera here.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status
+layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry age
 layout(binding = 1) uniform sampler2D u_oldImage;
 layout(rgba32f, binding = 7) uniform writeonly image2D u_reprojDistance;  // t, hit weight, t of the carried hit
 layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;
@@ -48,5 +48,5 @@ void main() {
     vec3 ownHit = u_cameraPosition + rd * own.x - u_newCameraPosition;
     float hit = own.y == float(STATUS_HIT) ? 1.0 : 0.0;
     imageStore(u_reprojDistance, target, vec4(t, hit, length(ownHit), 1.0));
-    imageStore(u_reprojColor, target, vec4(texelFetch(u_oldImage, px, 0).rgb, 1.0));
+    imageStore(u_reprojColor, target, vec4(texelFetch(u_oldImage, px, 0).rgb, own.z + 1.0));  // a: carry age
 }

@@ -9,7 +9,11 @@ layout(local_size_x = 64) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
+layout(rgba32f, binding = 5) uniform image2D u_centre;
 uniform int u_atRest;
+// A carried colour is reused for at most this many frames in a row, then shaded afresh: each
+// carry resamples the previous image at the nearest pixel, so its error grows with every frame.
+uniform int u_maxCarryFrames;
 
 void main() {
     uint entry = gl_GlobalInvocationID.x;
@@ -29,7 +33,8 @@ void main() {
     vec3 color;
     info.w &= ~FLAG_REUSED;
     if (info.x == STATUS_HIT) {
-        bool sameHit = (info.w & FLAG_CARRIED) != 0 && info.z == 0 &&
+        vec4 centre = imageLoad(u_centre, px);
+        bool sameHit = (info.w & FLAG_CARRIED) != 0 && info.z == 0 && centre.z <= float(u_maxCarryFrames) &&
                        abs(t - carried.a) <= reprojectionMargin(carried.a, u_pixelAngle, u_detail);
         if (u_atRest == 0 && sameHit) {
             color = carried.rgb;
@@ -37,6 +42,7 @@ void main() {
         } else {
             color = shadeSurface(ro + rd * t, rd, t, u_pixelAngle, deEvals).color;
             atomicAdd(c_shaded, 1u);
+            if (info.z == 0) imageStore(u_centre, px, vec4(centre.xy, 0.0, centre.w));  // fresh
         }
     } else {
         color = shadeBackground(rd);

@@ -27,6 +27,7 @@ struct BenchViewportArgs {
     int steps = 30;
     int samples = 16;
     int coneTile = 0;
+    int maxCarry = viewport::ViewportOptions{}.maxCarryFrames;
     double degrees = 0.5;
     std::string dump;
     bool noReproject = false, noOverRelaxation = false, noError = false, json = false, timePasses = false;
@@ -57,6 +58,7 @@ int run(const BenchViewportArgs& a) {
     fs.options.reproject = !a.noReproject;
     fs.options.overRelaxation = !a.noOverRelaxation;
     fs.options.coneTile = a.coneTile;
+    fs.options.maxCarryFrames = a.maxCarry;
     fs.options.timePasses = a.timePasses;
     fs.measureError = !a.noError;
     fs.dumpDirectory = a.dump;
@@ -79,6 +81,7 @@ int run(const BenchViewportArgs& a) {
         out["reproject"] = fs.options.reproject;
         out["over_relaxation"] = fs.options.overRelaxation;
         out["cone_tile"] = fs.options.coneTile;
+        out["max_carry_frames"] = fs.options.maxCarryFrames;
         out["frames"] = fs.frames;
         out["mean_de_evals_per_pixel_per_frame"] = r.meanDeEvalsPerPixel;
         out["mean_ms_per_frame"] = r.meanMilliseconds;
@@ -158,6 +161,10 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_option("--cone-tile", args->coneTile, "cone pre-pass tile in pixels (0: off)")
         ->capture_default_str()
         ->check(CLI::Range(0, 64));
+    cmd->add_option("--max-carry", args->maxCarry,
+                    "frames a reprojected hit may keep its carried colour before it is shaded again (0: always shade)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1000));
     cmd->add_option("--degrees", args->degrees, "camera turn per frame, degrees")->capture_default_str();
     cmd->add_flag("--no-reproject", args->noReproject, "restart every ray on camera motion");
     cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");

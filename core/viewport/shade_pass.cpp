@@ -9,6 +9,7 @@ void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     p.shade.use(c.formula, c.shading);
     setViewUniforms(program, c.camera, s.width(), s.height());
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
+    setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, s.shadeList);
     glDispatchComputeIndirect(0);
