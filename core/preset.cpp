@@ -274,8 +274,6 @@ Preset loadPreset(const std::filesystem::path& path) { return parsePreset(readGu
 
 namespace {
 
-json vecJson(const vec3& v) { return json::array({v.x, v.y, v.z}); }
-
 // Only the fields that differ from the defaults.
 json renderJson(const RenderSettings& s) {
     const RenderSettings d;
@@ -328,23 +326,6 @@ json shadingJson(const ShadingSettings& s) {
     return j;
 }
 
-json nodeJson(const Node& n) {
-    json j;
-    j["block"] = n.block->id;
-    writeNodeSchedule(n, j);
-    json params = json::object();
-    for (size_t i = 0; i < n.block->params.size(); ++i) {
-        const ParamDecl& d = n.block->params[i];
-        if (d.type == ParamType::Float) {
-            if (n.values[i].x != d.defaultValue.x) params[std::string(d.name)] = n.values[i].x;
-        } else if (n.values[i] != d.defaultValue) {
-            params[std::string(d.name)] = vecJson(n.values[i]);
-        }
-    }
-    if (!params.empty()) j["params"] = params;
-    return j;
-}
-
 }  // namespace
 
 json presetToJson(const Preset& p) {
@@ -365,8 +346,8 @@ json presetToJson(const Preset& p) {
         for (const auto& b : p.formula.customBlocks) f["customBlocks"].push_back(customBlockToJson(*b));
     }
     json nodes = json::array();
-    for (const Node& n : p.formula.nodes) nodes.push_back(nodeJson(n));
-    nodes.push_back(nodeJson(p.formula.estimator));
+    for (const Node& n : p.formula.nodes) nodes.push_back(nodeToJson(n));
+    nodes.push_back(nodeToJson(p.formula.estimator));
     f["nodes"] = nodes;
     j["formula"] = f;
     json c = json::object();

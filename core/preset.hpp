@@ -80,6 +80,26 @@ void writeNodeSchedule(const NodeT& n, nlohmann::json& node) {
     if (n.period != 1) node["period"] = n.period;
     if (n.phase != 0) node["phase"] = n.phase;
 }
+inline nlohmann::json vecJson(const vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+// A node: its block, its schedule and the parameters that differ from their defaults (floats as
+// numbers, vectors as arrays). NodeT: Node or PlaneNode.
+template <class NodeT>
+nlohmann::json nodeToJson(const NodeT& n) {
+    nlohmann::json j;
+    j["block"] = n.block->id;
+    writeNodeSchedule(n, j);
+    nlohmann::json params = nlohmann::json::object();
+    for (size_t i = 0; i < n.block->params.size(); ++i) {
+        const ParamDecl& d = n.block->params[i];
+        if (d.type == ParamType::Float) {
+            if (n.values[i].x != d.defaultValue.x) params[std::string(d.name)] = n.values[i].x;
+        } else if (n.values[i] != d.defaultValue) {
+            params[std::string(d.name)] = vecJson(n.values[i]);
+        }
+    }
+    if (!params.empty()) j["params"] = params;
+    return j;
+}
 // The closing estimator at `path` runs once, after the loop.
 template <class NodeT>
 void checkEstimatorSchedule(const NodeT& n, const std::string& file, const std::string& path) {

@@ -163,22 +163,6 @@ PlanePreset loadPlanePreset(const std::filesystem::path& path) {
     return parsePlanePreset(readGuardedFile(path), path.string());
 }
 
-namespace {
-
-json nodeJson(const PlaneNode& n) {
-    json j;
-    j["block"] = n.block->id;
-    writeNodeSchedule(n, j);
-    json params = json::object();
-    for (size_t i = 0; i < n.block->params.size(); ++i)
-        if (n.values[i].x != n.block->params[i].defaultValue.x)
-            params[std::string(n.block->params[i].name)] = n.values[i].x;
-    if (!params.empty()) j["params"] = params;
-    return j;
-}
-
-}  // namespace
-
 json planePresetToJson(const PlanePreset& p) {
     const PlaneFormula formulaDefaults;
     const PlaneColouring colourDefaults;
@@ -193,11 +177,11 @@ json planePresetToJson(const PlanePreset& p) {
     if (p.formula.bailout != formulaDefaults.bailout) f["bailout"] = p.formula.bailout;
     if (!p.formula.start.empty()) {
         f["start"] = json::array();
-        for (const PlaneNode& n : p.formula.start) f["start"].push_back(nodeJson(n));
+        for (const PlaneNode& n : p.formula.start) f["start"].push_back(nodeToJson(n));
     }
     f["nodes"] = json::array();
-    for (const PlaneNode& n : p.formula.nodes) f["nodes"].push_back(nodeJson(n));
-    f["nodes"].push_back(nodeJson(p.formula.estimator));
+    for (const PlaneNode& n : p.formula.nodes) f["nodes"].push_back(nodeToJson(n));
+    f["nodes"].push_back(nodeToJson(p.formula.estimator));
     j["formula"] = f;
     j["view"] = {{"center", {p.view.center.x, p.view.center.y}}, {"width", p.view.width}};
     json r = json::object();
