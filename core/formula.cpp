@@ -40,7 +40,8 @@ std::string Formula::structureKey() const {
     auto addCustom = [&key](const BlockDesc* b) {
         if (!b || !b->custom) return;
         key += "|" + std::string(b->id) + "{";
-        for (const ParamDecl& p : b->params) key += std::string(p.name) + ",";
+        // The type too: a float and a vec3 parameter are different uniform declarations.
+        for (const ParamDecl& p : b->params) key += std::string(p.name) + (p.type == ParamType::Vec3 ? ":v," : ":f,");
         key += "}" + std::string(b->glsl);
     };
     for (const Node& n : nodes) addCustom(n.block);

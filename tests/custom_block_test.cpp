@@ -159,6 +159,24 @@ TEST(CustomBlock, EditorAddsAndReplacesBlocksInTheFormula) {
     EXPECT_EQ(back.formula.nodes[1].values[0].x, 1.0);
 }
 
+// A parameter's type is part of the generated GLSL (float or vec3 uniform): changing it alone
+// must recompile too.
+TEST(CustomBlock, ChangingAParameterTypeIsAStructureChange) {
+    Formula f = loadPreset(test::sourceDir() / "presets/mandelbox.json").formula;
+    CustomBlock::Definition d;
+    d.id = "shift";
+    d.category = Category::Transform;
+    d.help = "test";
+    d.params.push_back({"amount", "", ParamType::Float, vec3(0.5), 0.0, 2.0});
+    d.glsl = "p.xyz += amount;\n";
+    ASSERT_EQ(editor::upsertCustomBlock(f, d), "");
+    ASSERT_TRUE(editor::addNode(f, f.customBlocks[0]->desc(), 0));
+    const std::string before = f.structureKey();
+    d.params[0].type = ParamType::Vec3;
+    ASSERT_EQ(editor::upsertCustomBlock(f, d), "");
+    EXPECT_NE(f.structureKey(), before);
+}
+
 TEST(CustomBlock, ParametersAreUniformsWithTheirDeclaration) {
     Preset p = parsePreset(mandelboxWithCustomFold(kBoxFoldGlsl), "custom.json");
     const BlockDesc& block = *p.formula.nodes[0].block;
