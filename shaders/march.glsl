@@ -22,15 +22,39 @@ uniform float u_overRelaxation;
 const int MARCH_MARCHING = 0, MARCH_HIT = 1, MARCH_ESCAPED = 2;
 struct MarchState {
     float t;      // distance along the ray
-    float lastD;  // |DE| at the previous accepted point (0 before the first step)
+    float lastD;  // |DE| at the previous accepted point (0 before the first step); after a hit, the DE there
     float omega;  // current relaxation factor; drops to 1 at the first failure
     int status;
     int steps;    // DE evaluations made by this ray's marcher
 };
 
+// Hit refinement. The march stops at the first point with d < threshold, anywhere in the hit band
+// [0, threshold): where depends on where the ray started, so a ray resumed from a reprojected start
+// and one restarted at the camera stop at different depths, and on a fractal's sub-pixel texture a
+// different depth is a different colour (bench/README.md, "what limits equal error"). A few signed
+// steps toward the level set d = REFINE_LEVEL * threshold (t += d - level: never past that level
+// set while the DE is 1-Lipschitz, and back toward it from inside) make the hit point nearly
+// independent of the start. REFINE_STEPS moves cost REFINE_STEPS - 1 extra DE evaluations.
+const int REFINE_STEPS = 3;
+const float REFINE_LEVEL = 0.5;
+
+void refineHit(vec3 ro, vec3 rd, float pixelAngle, float d, inout MarchState s, inout float deEvals) {
+    for (int i = 0; i < REFINE_STEPS; ++i) {
+        if (i > 0) {
+            d = DE(ro + rd * s.t);
+            deEvals += 1.0;
+            s.steps += 1;
+        }
+        s.t += d - REFINE_LEVEL * pixelAngle * s.t * u_detail;
+    }
+}
+
 MarchState marchStart(float tStart) { return MarchState(tStart, 0.0, max(u_overRelaxation, 1.0), MARCH_MARCHING, 0); }
 
-void marchRay(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
+// The marcher without the hit refinement; a hit leaves the DE at the hit point in lastD, so that
+// the refinement can follow later (the viewport skips it for a pixel that keeps a carried colour:
+// that hit point is not shaded).
+void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
     for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
         float d = DE(ro + rd * s.t);
         deEvals += 1.0;
@@ -45,6 +69,7 @@ void marchRay(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inou
             continue;
         }
         if (d < pixelAngle * s.t * u_detail) {
+            s.lastD = d;
             s.status = MARCH_HIT;
             break;
         }
@@ -55,6 +80,11 @@ void marchRay(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inou
         s.lastD = abs(d);
         s.t += s.omega * d;
     }
+}
+
+void marchRay(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
+    marchSteps(ro, rd, tEnd, pixelAngle, maxSteps, s, deEvals);
+    if (s.status == MARCH_HIT) refineHit(ro, rd, pixelAngle, s.lastD, s, deEvals);
 }
 
 // The part of the ray inside the bound sphere (radius u_boundRadius about the origin), where the

@@ -27,6 +27,7 @@ const int FLAG_SHADED_NOW = 8;   // shaded this frame, not yet accumulated
 // Frame statistics (core/viewport/gpu_counters.cpp reads them back).
 layout(std430, binding = 0) buffer ViewportCounters {
     uint c_deEvals, c_reprojected, c_restarted, c_converged, c_shaded, c_busy;
+    uint c_shadeDeEvals;  // the part of c_deEvals spent shading (normals, albedo, AO, shadows)
 };
 
 // The pixels to shade this frame, appended by the march pass and shaded by an indirect dispatch
@@ -72,7 +73,17 @@ float extendConeCoverage(float covered, float t, float d, float tanHalfAngle) {
 }
 
 // Mirror of fraktal::viewport::reprojectionMargin.
-float reprojectionMargin(float t, float pixelAngle, float detail) { return 4.0 * pixelAngle * t * max(detail, 1.0); }
+float reprojectionMargin(float t, float pixelAngle, float detail) { return 2.0 * pixelAngle * t * max(detail, 1.0); }
+
+// Whether a finished sample keeps the colour reprojection carried to its pixel instead of being
+// shaded (viewport_shade.comp; the march pass asks first, to skip refining such hits): only under
+// motion, only the centre sample, only for at most maxCarryFrames frames in a row (specular and
+// fog depend on the view), and only when the ray hit where the colour's point lies.
+bool keepsCarriedColour(int atRest, ivec4 info, float carryAge, float t, float tCarried, int maxCarryFrames,
+                        float detail) {
+    return atRest == 0 && info.x == STATUS_HIT && (info.w & FLAG_CARRIED) != 0 && info.z == 0 &&
+           carryAge <= float(maxCarryFrames) && abs(t - tCarried) <= reprojectionMargin(tCarried, u_pixelAngle, detail);
+}
 
 // Half the diagonal of a pixel, as an angle: every AA sample of a pixel lies in this cone.
 const float HALF_DIAGONAL = 0.70710678;

@@ -5,8 +5,10 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
+layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 uniform int u_stepsPerFrame;
+uniform int u_maxCarryFrames;
 uniform int u_maxSteps;
 uniform int u_atRest;
 
@@ -26,6 +28,7 @@ void main() {
     MarchState s = MarchState(state.x, state.y, state.z, MARCH_MARCHING, info.y);
     float covered = state.w;
     float deEvals = 0.0;
+    bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
     float tStart, tEnd;
     if (!clipToBound(ro, rd, tStart, tEnd)) {
         // Misses the bound sphere: nothing anywhere along it. Park it beyond the sphere so that
@@ -39,15 +42,27 @@ void main() {
         int budget = min(u_stepsPerFrame, u_maxSteps - s.steps);
         for (int i = 0; i < budget && s.status == MARCH_MARCHING; ++i) {
             float t0 = s.t;
-            marchRay(ro, rd, tEnd, u_pixelAngle, 1, s, deEvals);
+            if (s.t > tEnd) {  // beyond the bound sphere nothing is left to find
+                s.status = MARCH_ESCAPED;
+                break;
+            }
+            marchSteps(ro, rd, tEnd, u_pixelAngle, 1, s, deEvals);
             // An accepted step stored the DE at t0 in lastD (a fallback step moves t backward).
             if (sampleIndex == 0 && s.status == MARCH_MARCHING && s.t > t0)
                 covered = extendConeCoverage(covered, t0, s.lastD, tanHalf);
         }
+        marchedToHit = s.status == MARCH_HIT;
         // Out of steps: as the still renderer (still.frag), a ray crawling along a grazing surface
         // is a hit; anything else is background.
         if (s.status == MARCH_MARCHING && s.steps >= u_maxSteps)
             s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
+    }
+    // A hit is refined (march.glsl) unless its pixel keeps the colour reprojection carried to it.
+    if (marchedToHit) {
+        info.x = s.status;
+        float tCarried = imageLoad(u_sampleColor, px).a;
+        if (!keepsCarriedColour(u_atRest, info, imageLoad(u_centre, px).z, s.t, tCarried, u_maxCarryFrames, u_detail))
+            refineHit(ro, rd, u_pixelAngle, s.lastD, s, deEvals);
     }
     atomicAdd(c_deEvals, uint(deEvals));
     if (s.status != MARCH_MARCHING) {

@@ -15,10 +15,36 @@ layout(rgba32f, binding = 3) uniform image2D u_accum;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(r32f, binding = 6) uniform readonly image2D u_cone;
-layout(binding = 0) uniform sampler2D u_reprojDistance;  // x: t (<= 0: nothing), y: hit weight, z: t of the carried hit
-layout(binding = 1) uniform sampler2D u_reprojColor;
+layout(binding = 0) uniform sampler2D u_reprojDistance;  // x: t (<= 0: nothing), y: 1 near a hit
+layout(binding = 1) uniform sampler2D u_reprojColor;     // rgb, a: carry age + 1 (0: no colour)
+layout(binding = 2) uniform sampler2D u_reprojCarried;   // xyz: the carried colour's point, w: its t
+layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
 uniform int u_resetAll;
 uniform int u_coneTile;  // 0: no cone pre-pass
+
+// A pixel no carried colour landed on (a point scatter leaves gaps where points crowd into one
+// pixel and spread apart elsewhere) borrows the colour whose point lies nearest its centre ray
+// among its 3x3 neighbours, within a pixel's footprint; it keeps that colour's own point, so the
+// borrowed sample stays where it belongs on the surface. Returns where the colour came from.
+ivec2 nearestCarriedColour(ivec2 px, vec3 rd, out vec4 color) {
+    ivec2 from = px;
+    color = vec4(0.0);
+    float best = HALF_DIAGONAL * u_pixelAngle;  // angle between the ray and the direction to the point
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1);
+            vec4 c = texelFetch(u_reprojColor, q, 0);
+            if (c.a == 0.0) continue;
+            vec3 toPoint = normalize(texelFetch(u_reprojCarried, q, 0).xyz - u_cameraPosition);
+            float angle = length(cross(toPoint, rd));
+            if (angle < best) {
+                best = angle;
+                from = q;
+                color = c;
+            }
+        }
+    return from;
+}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -37,15 +63,17 @@ void main() {
     float carryAge = 0.0;
     float deEvals = 0.0;
     vec4 r = u_resetAll != 0 ? vec4(-1.0) : texelFetch(u_reprojDistance, px, 0);
-    if (r.x > 0.0) {
-        vec4 carriedColor = texelFetch(u_reprojColor, px, 0);
-        carried.rgb = carriedColor.rgb;
+    ivec2 colourFrom = px;
+    vec4 carriedColor = u_resetAll != 0 ? vec4(0.0) : texelFetch(u_reprojColor, px, 0);
+    if (u_resetAll == 0 && carriedColor.a == 0.0) colourFrom = nearestCarriedColour(px, rd, carriedColor);
+    vec4 colourPoint = vec4(0.0);
+    if (carriedColor.a > 0.0) {
+        vec4 point = texelFetch(u_reprojCarried, colourFrom, 0);
+        carried = vec4(carriedColor.rgb, point.w);
+        colourPoint = vec4(point.xyz, 1.0);
         carryAge = carriedColor.a;
+        flags |= FLAG_CARRIED;
         imageStore(u_image, px, vec4(carried.rgb, 1.0));
-        if (r.y > 0.999) {
-            carried.a = r.z;
-            flags |= FLAG_CARRIED;
-        }
     }
     // The minimum over the neighbourhood also fills the one-pixel gaps the reprojection scatter
     // leaves where the view magnifies (nothing landed here, but on both sides).
@@ -56,23 +84,34 @@ void main() {
                 float n = texelFetch(u_reprojDistance, clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1), 0).x;
                 if (n > 0.0) tMin = min(tMin, n);
             }
+    float omega = max(u_overRelaxation, 1.0);
+    float lastD = 0.0, covered = t;
+    int steps = 0;
     if (tMin < 1e30) {
         float candidate = tMin - reprojectionMargin(tMin, u_pixelAngle, u_detail);
-        if (inBound && candidate > restartAt) {
+        if (inBound && candidate >= tEnd) {
+            // Beyond the bound sphere's far side: nothing to verify, the ray escapes (no DE).
+            t = candidate;
+            reprojected = true;
+        } else if (inBound && candidate > restartAt) {
             float d = DE(ro + rd * candidate);
             deEvals += 1.0;
             if (d >= u_pixelAngle * candidate * u_detail) {
-                t = candidate;
+                // The verifying DE is also the ray's first march step (as marchRay would take it).
+                covered = candidate;
+                t = candidate + omega * d;
+                lastD = d;
+                steps = 1;
                 reprojected = true;
             }
         }
     }
-    float omega = max(u_overRelaxation, 1.0);
-    imageStore(u_rayState, px, vec4(t, 0.0, omega, t));
-    imageStore(u_rayInfo, px, ivec4(STATUS_MARCHING, 0, 0, flags));
+    imageStore(u_rayState, px, vec4(t, lastD, omega, covered));
+    imageStore(u_rayInfo, px, ivec4(STATUS_MARCHING, steps, 0, flags));
     imageStore(u_sampleColor, px, carried);
     imageStore(u_accum, px, vec4(0.0));
     imageStore(u_centre, px, vec4(t, float(STATUS_MARCHING), carryAge, 0.0));
+    imageStore(u_colourPoint, px, colourPoint);
     atomicAdd(c_deEvals, uint(deEvals));
     if (reprojected) atomicAdd(c_reprojected, 1u);
     else atomicAdd(c_restarted, 1u);

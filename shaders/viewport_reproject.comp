@@ -8,15 +8,50 @@
 // are filled by the start pass's neighbourhood minimum (viewport_neighbour_min.comp).
 // Erosion fix 1: the point takes the smallest distance of its 3x3 neighbourhood, so silhouettes
 // do not erode. The camera uniforms of viewport_common.glsl hold the PREVIOUS camera here.
+//
+// Colours travel in a second scatter keyed by the surface point they are the shading of (the
+// colourPoint image), not by the eroded point of the distance scatter nor by the pixel's current
+// hit: a carried colour then lands in the pixel its own point projects into, so it stays a true
+// sample from inside that pixel however often it is carried. Keyed by anything else the colour
+// drifts by up to half a pixel per carry, and the error grew with every carry (bench/README.md).
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry age
 layout(binding = 1) uniform sampler2D u_oldImage;
-layout(rgba32f, binding = 7) uniform writeonly image2D u_reprojDistance;  // t, hit weight, t of the carried hit
-layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;
+layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's point, w: 1 if any
+layout(rgba32f, binding = 7) uniform writeonly image2D u_reprojDistance;  // x: t of the start point
+layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
+layout(rgba32f, binding = 9) uniform writeonly image2D u_reprojCarried;   // xyz: its point, w: its t
+// u_depth[0, n): distance keys of the start points; u_depth[n, 2n): of the carried hits.
 layout(std430, binding = 1) buffer ReprojectDepth { uint u_depth[]; };
 uniform vec3 u_newCameraPosition, u_newRight, u_newUp, u_newForward;
 uniform float u_newTanHalfFovY;
 uniform int u_resolve;
+
+// The new pixel a world point projects into (the inverse of cameraRay with the new camera), and
+// its distance from the new camera; false when it is behind the camera or off-screen.
+bool projectToNewView(vec3 world, out ivec2 target, out float t) {
+    vec3 v = world - u_newCameraPosition;
+    float z = dot(v, u_newForward);
+    t = length(v);
+    if (z <= 0.0) return false;
+    float aspect = float(u_size.x) / float(u_size.y);
+    float ndcX = dot(v, u_newRight) / (z * u_newTanHalfFovY * aspect);
+    float ndcY = dot(v, u_newUp) / (z * u_newTanHalfFovY);
+    vec2 imagePos = vec2(0.5 * (ndcX + 1.0) * float(u_size.x), 0.5 * (1.0 - ndcY) * float(u_size.y));
+    if (any(lessThan(imagePos, vec2(0.0))) || any(greaterThanEqual(imagePos, vec2(u_size)))) return false;
+    target = ivec2(imagePos);
+    return true;
+}
+
+// Pass 0 claims the target with the nearest key; pass 1 tells whether this point won it.
+bool nearestWins(uint index, float t) {
+    uint key = floatBitsToUint(t);
+    if (u_resolve == 0) {
+        atomicMin(u_depth[index], key);
+        return false;
+    }
+    return u_depth[index] == key;  // equal keys write equal-enough data
+}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -27,26 +62,19 @@ void main() {
         for (int dx = -1; dx <= 1; ++dx)
             tMin = min(tMin, texelFetch(u_oldCentre, clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1), 0).x);
     vec3 rd = cameraRay(vec2(px) + 0.5);
-    vec3 start = u_cameraPosition + rd * tMin - u_newCameraPosition;
-    // Into the new camera's image (the inverse of cameraRay with the new camera).
-    float z = dot(start, u_newForward);
-    if (z <= 0.0) return;
-    float aspect = float(u_size.x) / float(u_size.y);
-    float ndcX = dot(start, u_newRight) / (z * u_newTanHalfFovY * aspect);
-    float ndcY = dot(start, u_newUp) / (z * u_newTanHalfFovY);
-    vec2 imagePos = vec2(0.5 * (ndcX + 1.0) * float(u_size.x), 0.5 * (1.0 - ndcY) * float(u_size.y));
-    if (any(lessThan(imagePos, vec2(0.0))) || any(greaterThanEqual(imagePos, vec2(u_size)))) return;
-    ivec2 target = ivec2(imagePos);
-    uint index = uint(target.y * u_size.x + target.x);
-    float t = length(start);
-    uint key = floatBitsToUint(t);
-    if (u_resolve == 0) {
-        atomicMin(u_depth[index], key);
-        return;
+    uint pixels = uint(u_size.x * u_size.y);
+    ivec2 target;
+    float t;
+    if (projectToNewView(u_cameraPosition + rd * tMin, target, t)) {
+        uint index = uint(target.y * u_size.x + target.x);
+        if (nearestWins(index, t)) imageStore(u_reprojDistance, target, vec4(t, 0.0, 0.0, 1.0));
     }
-    if (u_depth[index] != key) return;  // a nearer point won (equal keys write equal-enough data)
-    vec3 ownHit = u_cameraPosition + rd * own.x - u_newCameraPosition;
-    float hit = own.y == float(STATUS_HIT) ? 1.0 : 0.0;
-    imageStore(u_reprojDistance, target, vec4(t, hit, length(ownHit), 1.0));
-    imageStore(u_reprojColor, target, vec4(texelFetch(u_oldImage, px, 0).rgb, own.z + 1.0));  // a: carry age
+    vec4 colourPoint = texelFetch(u_oldColourPoint, px, 0);
+    if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, t)) {
+        uint index = pixels + uint(target.y * u_size.x + target.x);
+        if (nearestWins(index, t)) {
+            imageStore(u_reprojColor, target, vec4(texelFetch(u_oldImage, px, 0).rgb, own.z + 1.0));
+            imageStore(u_reprojCarried, target, vec4(colourPoint.xyz, t));
+        }
+    }
 }

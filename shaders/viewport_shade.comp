@@ -10,6 +10,7 @@ layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
+layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
 uniform int u_atRest;
 // A carried colour is reused for at most this many frames in a row, then shaded afresh: each
 // carry resamples the previous image at the nearest pixel, so its error grows with every frame.
@@ -34,20 +35,32 @@ void main() {
     info.w &= ~FLAG_REUSED;
     if (info.x == STATUS_HIT) {
         vec4 centre = imageLoad(u_centre, px);
-        bool sameHit = (info.w & FLAG_CARRIED) != 0 && info.z == 0 && centre.z <= float(u_maxCarryFrames) &&
-                       abs(t - carried.a) <= reprojectionMargin(carried.a, u_pixelAngle, u_detail);
-        if (u_atRest == 0 && sameHit) {
+        if (keepsCarriedColour(u_atRest, info, centre.z, t, carried.a, u_maxCarryFrames, u_detail)) {
             color = carried.rgb;
             info.w |= FLAG_REUSED;
         } else {
+            if (makeExact) {
+                // The march skipped refining this hit while it kept a carried colour (march.glsl).
+                MarchState s = MarchState(t, 0.0, 1.0, MARCH_HIT, info.y);
+                refineHit(ro, rd, u_pixelAngle, DE(ro + rd * t), s, deEvals);
+                deEvals += 1.0;
+                t = s.t;
+                imageStore(u_rayState, px, vec4(t, imageLoad(u_rayState, px).yzw));
+                centre.x = t;
+            }
             color = shadeSurface(ro + rd * t, rd, t, u_pixelAngle, deEvals).color;
             atomicAdd(c_shaded, 1u);
-            if (info.z == 0) imageStore(u_centre, px, vec4(centre.xy, 0.0, centre.w));  // fresh
+            if (info.z == 0) {  // a fresh colour, of this sample's own point
+                imageStore(u_centre, px, vec4(centre.xy, 0.0, centre.w));  // x: the refined t
+                imageStore(u_colourPoint, px, vec4(ro + rd * t, 1.0));
+            }
         }
     } else {
         color = shadeBackground(rd);
+        if (info.z == 0) imageStore(u_colourPoint, px, vec4(0.0));
     }
     atomicAdd(c_deEvals, uint(deEvals));
+    atomicAdd(c_shadeDeEvals, uint(deEvals));
     info.w = (info.w & ~FLAG_NEEDS_SHADE) | FLAG_SHADED_NOW;
     imageStore(u_rayInfo, px, info);
     imageStore(u_sampleColor, px, vec4(color, carried.a));

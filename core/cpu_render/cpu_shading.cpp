@@ -10,6 +10,21 @@ double Scene::de(const vec3& p, double& deEvals) const {
     return distanceEstimate(formula, p);
 }
 
+// Mirror of march.glsl's refineHit (why: there).
+constexpr int kRefineSteps = 3;
+constexpr double kRefineLevel = 0.5;
+
+void refineHit(const Scene& scene, const vec3& ro, const vec3& rd, double pixelAngle, double d, MarchState& s,
+               double& deEvals) {
+    for (int i = 0; i < kRefineSteps; ++i) {
+        if (i > 0) {
+            d = scene.de(ro + rd * s.t, deEvals);
+            s.steps += 1;
+        }
+        s.t += d - kRefineLevel * pixelAngle * s.t * scene.params.detail;
+    }
+}
+
 MarchState marchStart(const Scene& scene, double tStart) {
     MarchState s;
     s.t = tStart;
@@ -17,8 +32,8 @@ MarchState marchStart(const Scene& scene, double tStart) {
     return s;
 }
 
-void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
-              MarchState& s, double& deEvals) {
+void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
+                MarchState& s, double& deEvals) {
     for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
         const double d = scene.de(ro + rd * s.t, deEvals);
         s.steps += 1;
@@ -29,6 +44,7 @@ void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, d
             continue;
         }
         if (d < pixelAngle * s.t * scene.params.detail) {
+            s.lastD = d;
             s.status = MarchStatus::Hit;
             break;
         }
@@ -39,6 +55,12 @@ void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, d
         s.lastD = std::abs(d);
         s.t += s.omega * d;
     }
+}
+
+void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
+              MarchState& s, double& deEvals) {
+    marchSteps(scene, ro, rd, tEnd, pixelAngle, maxSteps, s, deEvals);
+    if (s.status == MarchStatus::Hit) refineHit(scene, ro, rd, pixelAngle, s.lastD, s, deEvals);
 }
 
 bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd) {
@@ -74,7 +96,8 @@ vec3 trapAlbedo(const Scene& scene, const vec3& pos, double& deEvals) {
     const Evaluation e = evaluate(scene.formula, pos);
     deEvals += 1.0;
     const double x = s.trapOffset + s.trapScale * dot(s.trapWeights, e.trap.value);
-    const vec3 display = clamp(s.paletteA + s.paletteB * glm::cos(6.28318530718 * (s.paletteC * x + s.paletteD)), 0.0, 1.0);
+    const vec3 display =
+        clamp(s.paletteA + s.paletteB * glm::cos(6.28318530718 * (s.paletteC * x + s.paletteD)), 0.0, 1.0);
     return glm::pow(display, vec3(2.2));
 }
 

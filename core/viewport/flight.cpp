@@ -27,36 +27,49 @@ FlightResult fly(const Preset& preset, const FlightSettings& fs) {
     FlightResult result;
     Viewport viewport(fs.options);
     ViewportOptions referenceOptions = fs.options;
-    referenceOptions.maxSamples = 1;  // under motion only sample 0 runs
     referenceOptions.reproject = false;
+    ViewportOptions centreOptions = referenceOptions;
+    centreOptions.maxSamples = 1;  // under motion only sample 0 runs
+    auto converged = [&](const ViewportOptions& options, const Camera& camera) {
+        Viewport reference(options);
+        return renderUntilSettled(reference, preset.formula, camera, preset.render, preset.shading, fs.width, fs.height,
+                                  fs.maxRestFrames)
+            .image;
+    };
     Camera camera = preset.camera;
-    double psnrSum = 0.0;
+    double psnrSum = 0.0, psnrCentreSum = 0.0;
     for (int f = 0; f < fs.frames; ++f) {
         camera = cameraOnPath(preset.camera, fs.path, f, fs.degreesPerFrame);
         FlightFrame frame;
         frame.stats = timedFrame(viewport, preset, camera, fs.width, fs.height);
-        frame.psnrDb = NAN;
+        frame.psnrDb = frame.psnrCentreDb = NAN;
         if (fs.measureError) {
             const std::vector<float> image = viewport.readImage();
-            Viewport reference(referenceOptions);
-            const Converged c = renderUntilSettled(reference, preset.formula, camera, preset.render, preset.shading,
-                                                   fs.width, fs.height, fs.maxRestFrames);
-            frame.psnrDb = std::min(displayPsnr(image, c.image), 99.0);
+            const std::vector<float> reference = converged(referenceOptions, camera);
+            const std::vector<float> centre = converged(centreOptions, camera);
+            frame.psnrDb = std::min(displayPsnr(image, reference), 99.0);
+            frame.psnrCentreDb = std::min(displayPsnr(image, centre), 99.0);
             if (!fs.dumpDirectory.empty()) {
                 char name[32];
                 std::snprintf(name, sizeof name, "frame_%03d", f);
-                writePngAtomic(fs.dumpDirectory / (std::string(name) + ".png"), fs.width, fs.height,
-                               displayRgb8(image));
-                writePngAtomic(fs.dumpDirectory / (std::string(name) + "_ref.png"), fs.width, fs.height,
-                               displayRgb8(c.image));
+                const auto png = [&](const char* suffix, const std::vector<float>& pixels) {
+                    writePngAtomic(fs.dumpDirectory / (std::string(name) + suffix), fs.width, fs.height,
+                                   displayRgb8(pixels));
+                };
+                png(".png", image);
+                png("_ref.png", reference);
+                png("_ref_centre.png", centre);
             }
             psnrSum += frame.psnrDb;
+            psnrCentreSum += frame.psnrCentreDb;
         }
         result.meanDeEvalsPerPixel += frame.stats.deEvalsPerPixel / fs.frames;
+        result.meanShadeDeEvalsPerPixel += frame.stats.shadeDeEvalsPerPixel / fs.frames;
         result.meanMilliseconds += frame.stats.milliseconds / fs.frames;
         result.frames.push_back(frame);
     }
     result.meanPsnrDb = fs.measureError ? psnrSum / fs.frames : NAN;
+    result.meanPsnrCentreDb = fs.measureError ? psnrCentreSum / fs.frames : NAN;
 
     // The camera stops: record every image until settled, then compare them with the settled one.
     std::vector<std::vector<float>> rest;

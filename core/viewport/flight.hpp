@@ -18,8 +18,14 @@ struct FlightSettings {
     double degreesPerFrame = 0.5;
     int width = 640, height = 360;
     ViewportOptions options;
-    bool measureError = true;  // per-frame PSNR against a converged sample-0 render of the view
-    int maxRestFrames = 400;   // after the path: frames at rest until settled
+    // Per-frame PSNR against the fully converged render of the view (a fresh viewport settled at
+    // options.maxSamples: the anti-aliased image the camera stopping there would give), and
+    // against a converged single-sample (pixel-centre) render. Under motion every scheme draws one
+    // sample per pixel, and a sample from elsewhere in the pixel (a reprojected colour) differs
+    // from the centre sample by the pixel's aliasing, which the anti-aliased reference does not
+    // count as error; the centre reference does, and favours restarting from the camera.
+    bool measureError = true;
+    int maxRestFrames = 400;  // after the path: frames at rest until settled
     double restThresholdDb = 40.0;
     // When set: each moving frame and its reference as DIR/frame_NNN.png and frame_NNN_ref.png
     // (sRGB display of the scene-linear images), for looking at what an error figure means.
@@ -28,12 +34,14 @@ struct FlightSettings {
 
 struct FlightFrame {
     FrameStats stats;
-    double psnrDb = 0.0;  // vs the converged single-sample render of this view (NaN when not measured)
+    double psnrDb = 0.0;        // vs the fully converged (anti-aliased) render of this view (NaN: not measured)
+    double psnrCentreDb = 0.0;  // vs the converged single-sample (pixel-centre) render of this view
 };
 
 struct FlightResult {
     std::vector<FlightFrame> frames;  // the moving frames
-    double meanDeEvalsPerPixel = 0.0, meanMilliseconds = 0.0, meanPsnrDb = 0.0;
+    double meanDeEvalsPerPixel = 0.0, meanShadeDeEvalsPerPixel = 0.0, meanMilliseconds = 0.0;
+    double meanPsnrDb = 0.0, meanPsnrCentreDb = 0.0;
     // After the camera stops: frames until the image is within restThresholdDb of the settled
     // image, frames until settled, and the DE cost of a frame once settled.
     int restFramesToThreshold = -1, restFramesToSettle = -1;

@@ -83,7 +83,7 @@ double extendConeCoverage(double covered, double t, double d, double tanHalfAngl
 }
 
 double reprojectionMargin(double t, double pixelAngle, double detail) {
-    return 4.0 * pixelAngle * t * std::max(detail, 1.0);
+    return 2.0 * pixelAngle * t * std::max(detail, 1.0);
 }
 
 FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction action) {
@@ -93,6 +93,7 @@ FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction 
     s.height = height;
     const double pixels = std::max(1.0, double(width) * double(height));
     s.deEvalsPerPixel = double(c.deEvals) / pixels;
+    s.shadeDeEvalsPerPixel = double(c.shadeDeEvals) / pixels;
     s.shareReprojected = double(c.reprojected) / pixels;
     s.shareRestarted = double(c.restarted) / pixels;
     s.shareConverged = double(c.converged) / pixels;

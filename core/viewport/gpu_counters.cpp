@@ -5,7 +5,7 @@
 namespace fraktal::viewport {
 
 namespace {
-constexpr int kCounters = 6;  // deEvals, reprojected, restarted, converged, shaded, busy
+constexpr int kCounters = 7;  // deEvals, reprojected, restarted, converged, shaded, busy, shadeDeEvals
 }
 
 GpuCounters::GpuCounters() {
@@ -26,7 +26,7 @@ FrameCounters GpuCounters::read() const {
     std::array<uint32_t, kCounters> v{};
     glGetNamedBufferSubData(buffer_, 0, sizeof v, v.data());
     busy_ = v[5];
-    return FrameCounters{v[0], v[1], v[2], v[3], v[4]};
+    return FrameCounters{v[0], v[1], v[2], v[3], v[4], v[6]};
 }
 
 }  // namespace fraktal::viewport

@@ -10,6 +10,7 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     setInt(program, "u_stepsPerFrame", c.options.stepsPerFrame);
     setInt(program, "u_maxSteps", c.maxSteps);
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
+    setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);  // keepsCarriedColour skips refining
     s.clearShadeList();
     dispatchPixels(s.width(), s.height());
     imageBarrier();

@@ -15,15 +15,20 @@ class MarchState {
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // Binds every state image at its unit (0..6, as the shaders declare them) and the shade list
+    // Binds every state image at its unit (0..6 and 10, as the shaders declare them) and the shade list
     // at SSBO binding 2.
     void bindImages() const;
     // Empties the shade list (ShadeList in shaders/viewport_common.glsl): no pixels, no groups.
     void clearShadeList() const;
 
     GLuint rayState = 0, rayInfo = 0, sampleColor = 0, accum = 0, image = 0, centre = 0, cone = 0;
-    // Reprojection target (written by reproject_pass as images 7 and 8): distances, carried colours.
-    GLuint reprojDistance = 0, reprojColor = 0;
+    // xyz: the world point whose shading the pixel's sample-0 colour is (a carried colour keeps
+    // its own point); w: 1 when there is one (a surface colour), 0 for background.
+    GLuint colourPoint = 0;
+    // Reprojection target (written by reproject_pass as images 7, 8 and 9): start distances,
+    // carried colours (a: carry age + 1, 0: none) and each carried colour's point (xyz, and w: its
+    // distance from the new camera).
+    GLuint reprojDistance = 0, reprojColor = 0, reprojCarried = 0;
     // The pixels to shade this frame: 4 uints of indirect-dispatch header and count, then one
     // pixel index per entry (room for every pixel).
     GLuint shadeList = 0;

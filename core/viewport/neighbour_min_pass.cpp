@@ -12,6 +12,7 @@ void runNeighbourMinPass(const ViewportPrograms& p, const MarchState& s, const F
     setInt(program, "u_coneTile", c.options.coneTile);
     glBindTextureUnit(0, s.reprojDistance);
     glBindTextureUnit(1, s.reprojColor);
+    glBindTextureUnit(2, s.reprojCarried);
     dispatchPixels(s.width(), s.height());
     imageBarrier();
 }

@@ -1,6 +1,7 @@
 // Reprojection (seed 4.2) as a compute scatter (shaders/viewport_reproject.comp): every previous
 // pixel's point goes to the new pixel it projects into, nearest first. Pixels nothing lands on
 // stay at -1; the start pass fills one-pixel gaps from their neighbours and restarts the rest.
+// Hit colours take a second scatter keyed by their own hit point (why: the shader's header).
 #include <limits>
 
 #include "core/viewport/passes.hpp"
@@ -15,14 +16,16 @@ void ReprojectPass::run(const ViewportPrograms& p, const MarchState& s, const Ca
                         double /*boundRadius*/) {
     const int w = s.width(), h = s.height();
     if (w != width_ || h != height_) {
-        glNamedBufferData(depth_, GLsizeiptr(size_t(w) * size_t(h) * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
+        glNamedBufferData(depth_, GLsizeiptr(2 * size_t(w) * size_t(h) * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
         width_ = w;
         height_ = h;
     }
     const GLuint farthest = std::numeric_limits<GLuint>::max();
     glClearNamedBufferData(depth_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &farthest);
-    const float nothing[4] = {-1.0f, 0.0f, -1.0f, 0.0f};
+    const float nothing[4] = {-1.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(s.reprojDistance, 0, GL_RGBA, GL_FLOAT, nothing);
+    const float noColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // a = 0: nothing carried
+    glClearTexImage(s.reprojColor, 0, GL_RGBA, GL_FLOAT, noColor);
 
     const GLuint program = p.reproject.id();
     glUseProgram(program);
@@ -43,6 +46,8 @@ void ReprojectPass::run(const ViewportPrograms& p, const MarchState& s, const Ca
     glBindTextureUnit(1, s.image);
     glBindImageTexture(7, s.reprojDistance, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(8, s.reprojColor, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(9, s.reprojCarried, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindTextureUnit(2, s.colourPoint);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, depth_);
     for (int resolve = 0; resolve <= 1; ++resolve) {
         setInt(program, "u_resolve", resolve);

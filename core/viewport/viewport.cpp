@@ -87,12 +87,16 @@ void Viewport::drawDisplay(float exposure) {
     runDisplayPass(*programs_, *state_, exposure, true, displayVertexArray_);
 }
 
-std::vector<float> Viewport::readImage() const {
+std::vector<float> Viewport::readState(GLuint MarchState::*texture) const {
     if (!state_) return {};
     std::vector<float> pixels(size_t(state_->width()) * state_->height() * 4);
-    glGetTextureImage(state_->image, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+    glGetTextureImage((*state_).*texture, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
     return pixels;
 }
+
+std::vector<float> Viewport::readImage() const { return readState(&MarchState::image); }
+
+std::vector<float> Viewport::readCentreRays() const { return readState(&MarchState::centre); }
 
 std::vector<uint8_t> Viewport::readDisplay(float exposure) {
     if (!state_) return {};

@@ -66,10 +66,15 @@ class Viewport {
     void drawDisplay(float exposure);
     // The scene-linear image, RGBA floats, rows from the top.
     std::vector<float> readImage() const;
+    // The pixel-centre (sample 0) ray of every pixel, RGBA per pixel as the centre image holds it:
+    // its distance t, its status (0 marching, 1 hit, 2 escaped), carry age, 0. Rows from the top.
+    std::vector<float> readCentreRays() const;
     // The display-referred image, RGBA8, rows from the top.
     std::vector<uint8_t> readDisplay(float exposure);
 
    private:
+    std::vector<float> readState(GLuint MarchState::*texture) const;  // an RGBA32F state image
+
     ViewportOptions options_;
     std::unique_ptr<ViewportPrograms> programs_;
     std::unique_ptr<MarchState> state_;

@@ -10,9 +10,10 @@ struct ViewportOptions {
     int maxSamples = 16;     // progressive AA cap, samples per pixel
     bool reproject = true;   // carry distances over on camera motion (seed 4.2); off: restart
     // Under motion a reprojected hit on the same surface keeps its carried colour for at most this
-    // many frames in a row before it is shaded again (0: always shade; bench/README.md has the
-    // trade of DE evaluations against error).
-    int maxCarryFrames = 4;
+    // many frames in a row before it is shaded again (0: always shade). A carried colour keeps its
+    // own surface point, so its error does not grow with age; the cap bounds how stale the
+    // view-dependent part (specular, fog) gets. bench/README.md has the trade of DE against error.
+    int maxCarryFrames = 16;
     bool overRelaxation = true;  // over-relaxed sphere tracing (RenderSettings::overRelaxation); off: omega = 1
     int coneTile = 0;            // low-resolution cone pre-pass tile in pixels (0: off; 8 is typical)
     int coneSteps = 64;          // DE steps of a pre-pass cone
