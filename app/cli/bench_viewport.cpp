@@ -30,7 +30,8 @@ struct BenchViewportArgs {
     int maxCarry = viewport::ViewportOptions{}.maxCarryFrames;
     double degrees = 0.5;
     std::string dump;
-    bool noReproject = false, noOverRelaxation = false, noError = false, json = false, timePasses = false;
+    bool noReproject = false, noOverRelaxation = false, noError = false, noRest = false, json = false,
+         timePasses = false;
 };
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -61,6 +62,7 @@ int run(const BenchViewportArgs& a) {
     fs.options.maxCarryFrames = a.maxCarry;
     fs.options.timePasses = a.timePasses;
     fs.measureError = !a.noError;
+    fs.restAfterPath = !a.noRest;
     fs.dumpDirectory = a.dump;
     if (!a.dump.empty()) {
         if (a.noError) throw std::runtime_error("--dump needs the per-frame reference renders (drop --no-error)");
@@ -177,6 +179,7 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--no-reproject", args->noReproject, "restart every ray on camera motion");
     cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");
     cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");
+    cmd->add_flag("--no-rest", args->noRest, "stop after the path (no frames at rest until settled)");
     cmd->add_flag("--time-passes", args->timePasses, "GPU timestamps around each pass (per-frame pass_ms)");
     cmd->add_option("--dump", args->dump, "write each moving frame and its reference as PNGs into this folder");
     cmd->add_flag("--json", args->json, "one JSON object on stdout");

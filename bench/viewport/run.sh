@@ -1,20 +1,56 @@
 #!/usr/bin/env bash
-# Reproduces the "Viewport" table of bench/README.md: fraktal bench viewport on the orbit path,
-# with and without reprojection, at 640x360 and 1280x720 (timing runs skip the per-frame
-# reference renders), and one run with per-frame errors for PSNR and frames-to-40-dB.
-# Usage: bench/viewport/run.sh BUILD_DIR [PRESET...]
+# Reproduces the viewport tables of bench/README.md (issue 4), in one run so that the rows are
+# measured side by side under the same load:
+#   1. time: every shipped preset at 640x360 and 1280x720, orbit path at 1 degree per frame,
+#      reprojection against restarting every ray (no reference renders, no rest phase);
+#   2. error and work: every preset at 320x180 over 30 frames, each frame against the fully
+#      converged (16-sample) render of its view and against the converged centre sample, then the
+#      camera stops: frames until within 40 dB of the settled image;
+#   3. switches and paths on the Mandelbulb and the Menger sponge: over-relaxation off, the cone
+#      pre-pass on, the dolly and pan paths, restarting with 45 steps per frame.
+# Usage: bench/viewport/run.sh BUILD_DIR [PRESET...]   (default: every preset in presets/)
 set -euo pipefail
 build=${1:?build dir}; shift
-presets=("$@"); [ ${#presets[@]} -gt 0 ] || presets=(presets/mandelbulb.json)
+presets=("$@"); [ ${#presets[@]} -gt 0 ] || presets=(presets/*.json)
+fraktal="$build/app/fraktal"
+
+# Prints one table row from the JSON of `fraktal bench viewport`; frame 0 (the reset every mode
+# starts with) is left out of the timing means.
+row() {
+  python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+label = sys.argv[1]
+f = d["per_frame"][1:] or d["per_frame"]
+ms = sum(x["ms"] for x in f) / len(f)
+de = sum(x["de_evals_per_pixel"] for x in f) / len(f)
+name = d["preset"].split("/")[-1].replace(".json", "")
+def db(v): return "-" if v is None else "%.1f" % v
+print("| %s | %dx%d | %s | %.0f | %.2f | %.2f | %s | %s | %s |" % (name, d["width"], d["height"], label, ms,
+      d["mean_de_evals_per_pixel_per_frame"], de, db(d["mean_psnr_db"]), db(d["mean_psnr_centre_db"]),
+      d["rest_frames_to_40db"] if d["rest_frames_to_40db"] >= 0 else "-"))' "$1"
+}
+
+echo "| preset | size | mode | ms/frame (frames 1+) | DE/px/frame (all) | DE/px/frame (frames 1+) | PSNR vs converged AA | PSNR vs centre sample | frames to 40 dB after stop |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for p in "${presets[@]}"; do
   for size in 640x360 1280x720; do
-    for flag in "" --no-reproject; do
-      "$build/app/fraktal" bench viewport "$p" --size "$size" --frames 10 --no-error $flag --json |
-        python3 -c "import json,sys; d=json.load(sys.stdin); f=d['per_frame'][2:]; print('$p', '$size', 'reproject' if d['reproject'] else 'restart', 'ms/frame %.0f' % (sum(x['ms'] for x in f)/len(f)), 'DE/px/frame %.2f' % (sum(x['de_evals_per_pixel'] for x in f)/len(f)), 'rest frames to settle', d['rest_frames_to_settle'], 'settled DE/px', d['settled_de_evals_per_pixel'])"
-    done
+    "$fraktal" bench viewport "$p" --size "$size" --frames 12 --degrees 1 --no-error --no-rest --json | row reproject
+    "$fraktal" bench viewport "$p" --size "$size" --frames 12 --degrees 1 --no-error --no-rest --no-reproject --json | row restart
   done
-  for flag in "" --no-reproject; do
-    "$build/app/fraktal" bench viewport "$p" --size 320x180 --frames 10 $flag --json |
-      python3 -c "import json,sys; d=json.load(sys.stdin); print('$p', '320x180', 'reproject' if d['reproject'] else 'restart', 'mean PSNR %.1f dB' % d['mean_psnr_db'], 'DE/px/frame %.2f' % d['mean_de_evals_per_pixel_per_frame'], 'rest frames to 40 dB', d['rest_frames_to_40db'])"
+done
+for p in "${presets[@]}"; do
+  "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --json | row reproject
+  "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --no-reproject --json | row restart
+done
+for p in presets/mandelbulb.json presets/menger.json; do
+  for variant in "--no-over-relaxation:reproject, no over-relaxation" "--no-over-relaxation --no-reproject:restart, no over-relaxation" \
+                 "--cone-tile 8:reproject, cone pre-pass 8" "--cone-tile 8 --no-reproject:restart, cone pre-pass 8" \
+                 "--path dolly:reproject, dolly" "--path dolly --no-reproject:restart, dolly" \
+                 "--path pan:reproject, pan" "--path pan --no-reproject:restart, pan" \
+                 "--no-reproject --steps 45:restart, 45 steps/frame"; do
+    flags=${variant%%:*}; label=${variant#*:}
+    # shellcheck disable=SC2086
+    "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --no-rest $flags --json | row "$label"
   done
 done

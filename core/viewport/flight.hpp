@@ -25,7 +25,8 @@ struct FlightSettings {
     // from the centre sample by the pixel's aliasing, which the anti-aliased reference does not
     // count as error; the centre reference does, and favours restarting from the camera.
     bool measureError = true;
-    int maxRestFrames = 400;  // after the path: frames at rest until settled
+    int maxRestFrames = 400;    // after the path: frames at rest until settled
+    bool restAfterPath = true;  // false: stop after the moving frames (timing runs at large sizes)
     double restThresholdDb = 40.0;
     // When set: each moving frame and its reference as DIR/frame_NNN.png and frame_NNN_ref.png
     // (sRGB display of the scene-linear images), for looking at what an error figure means.
