@@ -27,17 +27,13 @@ uniform vec3 u_newCameraPosition, u_newRight, u_newUp, u_newForward;
 uniform float u_newTanHalfFovY;
 uniform int u_resolve;
 
-// The new pixel a world point projects into (the inverse of cameraRay with the new camera), and
-// its distance from the new camera; false when it is behind the camera or off-screen.
+// The new pixel a world point projects into, and its distance from the new camera; false when it
+// is behind the camera or off-screen.
 bool projectToNewView(vec3 world, out ivec2 target, out float t) {
-    vec3 v = world - u_newCameraPosition;
-    float z = dot(v, u_newForward);
-    t = length(v);
-    if (z <= 0.0) return false;
-    float aspect = float(u_size.x) / float(u_size.y);
-    float ndcX = dot(v, u_newRight) / (z * u_newTanHalfFovY * aspect);
-    float ndcY = dot(v, u_newUp) / (z * u_newTanHalfFovY);
-    vec2 imagePos = vec2(0.5 * (ndcX + 1.0) * float(u_size.x), 0.5 * (1.0 - ndcY) * float(u_size.y));
+    vec2 imagePos;
+    target = ivec2(0);
+    if (!projectToImage(world, u_newCameraPosition, u_newRight, u_newUp, u_newForward, u_newTanHalfFovY, imagePos, t))
+        return false;
     if (any(lessThan(imagePos, vec2(0.0))) || any(greaterThanEqual(imagePos, vec2(u_size)))) return false;
     target = ivec2(imagePos);
     return true;

@@ -30,8 +30,8 @@ struct BenchViewportArgs {
     int maxCarry = viewport::ViewportOptions{}.maxCarryFrames;
     double degrees = 0.5;
     std::string dump;
-    bool noReproject = false, noOverRelaxation = false, noError = false, noRest = false, json = false,
-         timePasses = false;
+    bool noReproject = false, noOverRelaxation = false, noMotionFilter = false, noError = false, noRest = false,
+         json = false, timePasses = false;
 };
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -58,6 +58,7 @@ int run(const BenchViewportArgs& a) {
     fs.options.maxSamples = a.samples;
     fs.options.reproject = !a.noReproject;
     fs.options.overRelaxation = !a.noOverRelaxation;
+    fs.options.motionFilter = !a.noMotionFilter;
     fs.options.coneTile = a.coneTile;
     fs.options.maxCarryFrames = a.maxCarry;
     fs.options.timePasses = a.timePasses;
@@ -82,6 +83,7 @@ int run(const BenchViewportArgs& a) {
         out["steps_per_frame"] = a.steps;
         out["reproject"] = fs.options.reproject;
         out["over_relaxation"] = fs.options.overRelaxation;
+        out["motion_filter"] = fs.options.motionFilter;
         out["cone_tile"] = fs.options.coneTile;
         out["max_carry_frames"] = fs.options.maxCarryFrames;
         out["frames"] = fs.frames;
@@ -178,6 +180,8 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_option("--degrees", args->degrees, "camera turn per frame, degrees")->capture_default_str();
     cmd->add_flag("--no-reproject", args->noReproject, "restart every ray on camera motion");
     cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");
+    cmd->add_flag("--no-motion-filter", args->noMotionFilter,
+                  "under motion show each pixel's one sample, not a reconstruction from its neighbours'");
     cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");
     cmd->add_flag("--no-rest", args->noRest, "stop after the path (no frames at rest until settled)");
     cmd->add_flag("--time-passes", args->timePasses, "GPU timestamps around each pass (per-frame pass_ms)");

@@ -14,4 +14,15 @@ void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const Fra
     imageBarrier();
 }
 
+// The image shown (shaders/viewport_resolve.comp).
+void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
+    const GLuint program = p.resolve.id();
+    glUseProgram(program);
+    setViewUniforms(program, c.camera, s.width(), s.height());
+    setInt(program, "u_atRest", c.atRest ? 1 : 0);
+    setInt(program, "u_motionFilter", c.options.motionFilter ? 1 : 0);
+    dispatchPixels(s.width(), s.height());
+    imageBarrier();
+}
+
 }  // namespace fraktal::viewport

@@ -8,7 +8,7 @@ void runDisplayPass(const ViewportPrograms& p, const MarchState& s, float exposu
     glUseProgram(program);
     setFloat(program, "u_exposure", exposure);
     setInt(program, "u_flipY", flipY ? 1 : 0);
-    glBindTextureUnit(0, s.image);
+    glBindTextureUnit(0, s.shown);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(vertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -28,12 +28,14 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
     image = makeTexture(GL_RGBA32F, width, height);
     centre = makeTexture(GL_RGBA32F, width, height);
     colourPoint = makeTexture(GL_RGBA32F, width, height);
+    shown = makeTexture(GL_RGBA32F, width, height);
     const float none[4] = {0, 0, 0, 0};
     glClearTexImage(colourPoint, 0, GL_RGBA, GL_FLOAT, none);
     const int tile = std::max(coneTile, 1);
     cone = makeTexture(GL_R32F, (width + tile - 1) / tile, (height + tile - 1) / tile);
     const float black[4] = {0, 0, 0, 1};
     glClearTexImage(image, 0, GL_RGBA, GL_FLOAT, black);
+    glClearTexImage(shown, 0, GL_RGBA, GL_FLOAT, black);
 
     reprojDistance = makeTexture(GL_RGBA32F, width, height);
     reprojColor = makeTexture(GL_RGBA32F, width, height);
@@ -45,8 +47,8 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
 
 MarchState::~MarchState() {
     glDeleteBuffers(1, &shadeList);
-    const GLuint textures[] = {rayState, rayInfo,     sampleColor,    accum,       image,        centre,
-                               cone,     colourPoint, reprojDistance, reprojColor, reprojCarried};
+    const GLuint textures[] = {rayState, rayInfo,     sampleColor, accum,          image,       centre,
+                               cone,     colourPoint, shown,       reprojDistance, reprojColor, reprojCarried};
     glDeleteTextures(GLsizei(std::size(textures)), textures);
 }
 
@@ -59,6 +61,7 @@ void MarchState::bindImages() const {
     glBindImageTexture(5, centre, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(6, cone, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     glBindImageTexture(10, colourPoint, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(11, shown, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, shadeList);
 }
 

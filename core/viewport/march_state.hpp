@@ -15,7 +15,7 @@ class MarchState {
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // Binds every state image at its unit (0..6 and 10, as the shaders declare them) and the shade list
+    // Binds every state image at its unit (0..6, 10 and 11, as the shaders declare them) and the shade list
     // at SSBO binding 2.
     void bindImages() const;
     // Empties the shade list (ShadeList in shaders/viewport_common.glsl): no pixels, no groups.
@@ -25,6 +25,9 @@ class MarchState {
     // xyz: the world point whose shading the pixel's sample-0 colour is (a carried colour keeps
     // its own point); w: 1 when there is one (a surface colour), 0 for background.
     GLuint colourPoint = 0;
+    // The image shown and read back: `image` at rest, a reconstruction from the scattered samples
+    // under motion (shaders/viewport_resolve.comp). Reprojection carries `image`, never this.
+    GLuint shown = 0;
     // Reprojection target (written by reproject_pass as images 7, 8 and 9): start distances,
     // carried colours (a: carry age + 1, 0: none) and each carried colour's point (xyz, and w: its
     // distance from the new camera).

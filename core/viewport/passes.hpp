@@ -44,6 +44,7 @@ void runNeighbourMinPass(const ViewportPrograms& p, const MarchState& s, const F
 void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
+void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 
 // Exposure and the sRGB curve, from the scene-linear image into the bound framebuffer.
 void runDisplayPass(const ViewportPrograms& p, const MarchState& s, float exposure, bool flipY, GLuint vertexArray);

@@ -72,6 +72,8 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     mark("shade");
     runAccumulatePass(*programs_, *state_, context);
     mark("accumulate");
+    runResolvePass(*programs_, *state_, context);
+    mark("resolve");
 
     FrameStats stats = summarize(counters_->read(), width, height, action);
     if (timed) stats.passTimes = timer_->read();
@@ -94,7 +96,7 @@ std::vector<float> Viewport::readState(GLuint MarchState::*texture) const {
     return pixels;
 }
 
-std::vector<float> Viewport::readImage() const { return readState(&MarchState::image); }
+std::vector<float> Viewport::readImage() const { return readState(&MarchState::shown); }
 
 std::vector<float> Viewport::readCentreRays() const { return readState(&MarchState::centre); }
 

@@ -58,13 +58,13 @@ class Viewport {
 
     // Every pixel has all its samples: further frames of this view cost nothing.
     bool settled() const { return settled_; }
-    GLuint imageTexture() const { return state_ ? state_->image : 0; }
+    GLuint imageTexture() const { return state_ ? state_->shown : 0; }
     int width() const { return state_ ? state_->width() : 0; }
     int height() const { return state_ ? state_->height() : 0; }
 
     // Exposure + sRGB into the bound framebuffer at the current glViewport (rows bottom-up).
     void drawDisplay(float exposure);
-    // The scene-linear image, RGBA floats, rows from the top.
+    // The scene-linear image shown (MarchState::shown), RGBA floats, rows from the top.
     std::vector<float> readImage() const;
     // The pixel-centre (sample 0) ray of every pixel, RGBA per pixel as the centre image holds it:
     // its distance t, its status (0 marching, 1 hit, 2 escaped), carry age, 0. Rows from the top.

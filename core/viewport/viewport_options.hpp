@@ -14,6 +14,9 @@ struct ViewportOptions {
     // own surface point, so its error does not grow with age; the cap bounds how stale the
     // view-dependent part (specular, fog) gets. bench/README.md has the trade of DE against error.
     int maxCarryFrames = 16;
+    // Under motion, show each pixel as a reconstruction from the samples scattered around it
+    // (shaders/viewport_resolve.comp) rather than its one sample.
+    bool motionFilter = true;
     bool overRelaxation = true;  // over-relaxed sphere tracing (RenderSettings::overRelaxation); off: omega = 1
     int coneTile = 0;            // low-resolution cone pre-pass tile in pixels (0: off; 8 is typical)
     int coneSteps = 64;          // DE steps of a pre-pass cone

@@ -46,6 +46,8 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
     const GeneratedFormula none;
     accumulate = gl::compileCompute(
         assembleShader(none, "viewport_accumulate.comp", concat({"viewport_common.glsl", "viewport_accumulate.comp"})));
+    resolve = gl::compileCompute(
+        assembleShader(none, "viewport_resolve.comp", concat({"viewport_common.glsl", "viewport_resolve.comp"})));
     reproject = gl::compileCompute(
         assembleShader(none, "viewport_reproject.comp", concat({"viewport_common.glsl", "viewport_reproject.comp"})));
     display = gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),

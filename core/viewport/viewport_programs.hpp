@@ -26,7 +26,7 @@ struct ViewportPrograms {
     explicit ViewportPrograms(const Formula& formula);  // throws naming the node on a GLSL error
     std::string structure;
     FormulaProgram march, shade, neighbourMin, cone;
-    gl::Program accumulate, reproject, display;
+    gl::Program accumulate, resolve, reproject, display;
 };
 
 // Sets viewport_common.glsl's camera uniforms on the bound program.
