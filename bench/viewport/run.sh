@@ -7,7 +7,8 @@
 #      converged (16-sample) render of its view and against the converged centre sample, then the
 #      camera stops: frames until within 40 dB of the settled image;
 #   3. switches and paths on the Mandelbulb and the Menger sponge: over-relaxation off, the cone
-#      pre-pass on, the dolly and pan paths, restarting with 45 steps per frame.
+#      pre-pass on, the dolly and pan paths, the motion filter off, restarting with 45 and 60
+#      steps per frame (restarting's error against its work, for comparisons at equal error).
 # Usage: bench/viewport/run.sh BUILD_DIR [PRESET...]   (default: every preset in presets/)
 set -euo pipefail
 build=${1:?build dir}; shift
@@ -48,7 +49,8 @@ for p in presets/mandelbulb.json presets/menger.json; do
                  "--cone-tile 8:reproject, cone pre-pass 8" "--cone-tile 8 --no-reproject:restart, cone pre-pass 8" \
                  "--path dolly:reproject, dolly" "--path dolly --no-reproject:restart, dolly" \
                  "--path pan:reproject, pan" "--path pan --no-reproject:restart, pan" \
-                 "--no-reproject --steps 45:restart, 45 steps/frame"; do
+                 "--no-motion-filter:reproject, no motion filter" \
+                 "--no-reproject --steps 45:restart, 45 steps/frame" "--no-reproject --steps 60:restart, 60 steps/frame"; do
     flags=${variant%%:*}; label=${variant#*:}
     # shellcheck disable=SC2086
     "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --no-rest $flags --json | row "$label"
