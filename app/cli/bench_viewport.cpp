@@ -31,7 +31,7 @@ struct BenchViewportArgs {
     double degrees = 0.5;
     std::string dump;
     bool noReproject = false, noOverRelaxation = false, noMotionFilter = false, noError = false, noRest = false,
-         json = false, timePasses = false;
+         fromRest = false, json = false, timePasses = false;
 };
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -64,6 +64,7 @@ int run(const BenchViewportArgs& a) {
     fs.options.timePasses = a.timePasses;
     fs.measureError = !a.noError;
     fs.restAfterPath = !a.noRest;
+    fs.fromRest = a.fromRest;
     fs.dumpDirectory = a.dump;
     if (!a.dump.empty()) {
         if (a.noError) throw std::runtime_error("--dump needs the per-frame reference renders (drop --no-error)");
@@ -84,6 +85,7 @@ int run(const BenchViewportArgs& a) {
         out["reproject"] = fs.options.reproject;
         out["over_relaxation"] = fs.options.overRelaxation;
         out["motion_filter"] = fs.options.motionFilter;
+        out["from_rest"] = fs.fromRest;
         out["cone_tile"] = fs.options.coneTile;
         out["max_carry_frames"] = fs.options.maxCarryFrames;
         out["frames"] = fs.frames;
@@ -183,6 +185,8 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--no-motion-filter", args->noMotionFilter,
                   "under motion show each pixel's one sample, not a reconstruction from its neighbours'");
     cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");
+    cmd->add_flag("--from-rest", args->fromRest,
+                  "start moving from the settled view (as a user's orbit does), not from an empty viewport");
     cmd->add_flag("--no-rest", args->noRest, "stop after the path (no frames at rest until settled)");
     cmd->add_flag("--time-passes", args->timePasses, "GPU timestamps around each pass (per-frame pass_ms)");
     cmd->add_option("--dump", args->dump, "write each moving frame and its reference as PNGs into this folder");

@@ -6,7 +6,9 @@
 #   2. error and work: every preset at 320x180 over 30 frames, each frame against the fully
 #      converged (16-sample) render of its view and against the converged centre sample, then the
 #      camera stops: frames until within 40 dB of the settled image;
-#   3. switches and paths on the Mandelbulb and the Menger sponge: over-relaxation off, the cone
+#   3. as 2, but the path starts from the view at rest (settled at the AA cap, as a user's orbit
+#      starts) instead of from an empty viewport;
+#   4. switches and paths on the Mandelbulb and the Menger sponge: over-relaxation off, the cone
 #      pre-pass on, the dolly and pan paths, the motion filter off, restarting with 45 and 60
 #      steps per frame (restarting's error against its work, for comparisons at equal error).
 # Usage: bench/viewport/run.sh BUILD_DIR [PRESET...]   (default: every preset in presets/)
@@ -16,7 +18,7 @@ presets=("$@"); [ ${#presets[@]} -gt 0 ] || presets=(presets/*.json)
 fraktal="$build/app/fraktal"
 
 # Prints one table row from the JSON of `fraktal bench viewport`; frame 0 (the reset every mode
-# starts with) is left out of the timing means.
+# starts with from an empty viewport) is left out of the "frames 1+" means.
 row() {
   python3 -c '
 import json, sys
@@ -43,6 +45,11 @@ done
 for p in "${presets[@]}"; do
   "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --json | row reproject
   "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --no-reproject --json | row restart
+done
+for p in "${presets[@]}"; do
+  "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --from-rest --json | row "reproject, from rest"
+  "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --from-rest --no-reproject --json |
+    row "restart, from rest"
 done
 for p in presets/mandelbulb.json presets/menger.json; do
   for variant in "--no-over-relaxation:reproject, no over-relaxation" "--no-over-relaxation --no-reproject:restart, no over-relaxation" \

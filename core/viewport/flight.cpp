@@ -37,8 +37,12 @@ FlightResult fly(const Preset& preset, const FlightSettings& fs) {
             .image;
     };
     Camera camera = preset.camera;
+    if (fs.fromRest)
+        renderUntilSettled(viewport, preset.formula, camera, preset.render, preset.shading, fs.width, fs.height,
+                           fs.maxRestFrames);
+    const int firstFrame = fs.fromRest ? 1 : 0;  // from rest, every counted frame moves
     double psnrSum = 0.0, psnrCentreSum = 0.0;
-    for (int f = 0; f < fs.frames; ++f) {
+    for (int f = firstFrame; f < firstFrame + fs.frames; ++f) {
         camera = cameraOnPath(preset.camera, fs.path, f, fs.degreesPerFrame);
         FlightFrame frame;
         frame.stats = timedFrame(viewport, preset, camera, fs.width, fs.height);

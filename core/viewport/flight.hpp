@@ -15,6 +15,9 @@ namespace fraktal::viewport {
 struct FlightSettings {
     CameraPath path = CameraPath::Orbit;
     int frames = 30;  // moving frames
+    // Start from the view at rest (settled at the AA cap, not counted), as a user's orbit does,
+    // rather than from an empty viewport whose first frame restarts every ray in every mode.
+    bool fromRest = false;
     double degreesPerFrame = 0.5;
     int width = 640, height = 360;
     ViewportOptions options;
