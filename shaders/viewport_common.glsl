@@ -7,12 +7,15 @@
 //                        w: cone coverage of the centre ray (start distance of the AA samples)
 //   rayInfo     rgba32i  status (MARCH_*), steps, AA sample index, FLAG_* bits
 //   sampleColor rgba32f  rgb: the current sample's colour (or the colour carried by reprojection);
-//                        a: distance of the carried hit along the new ray (-1: none)
+//                        a: distance of the carried colour's point from the camera (-1: none)
 //   accum       rgba32f  rgb: sum of the finished samples' colours; a: their count
 //   image       rgba32f  the scene-linear result shown (accum mean, carried colour, or the old image)
 //   centre      rgba32f  x: t of the sample-0 (pixel centre) ray; y: its status; z: carry age, the
 //                        frames its colour has been carried by reprojection without a fresh
 //                        shade (0: shaded for this view). Reprojection reads it.
+//   colourPoint rgba32f  xyz: the world point the pixel's sample-0 colour is the shading of (a
+//                        carried colour keeps its own); w: 1 for a surface colour, 0 otherwise
+//   shown       rgba32f  the image displayed and read back (viewport_resolve.comp)
 uniform ivec2 u_size;
 uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
 uniform float u_tanHalfFovY;

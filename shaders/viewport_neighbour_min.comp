@@ -4,9 +4,10 @@
 // one-pixel gaps), backed off by a margin and verified
 // with the DE (a start within the hit threshold of a surface may lie behind a thin shell: such a
 // ray restarts). Pixels nothing was reprojected onto (disoccluded, off-screen) restart from the
-// camera, or from the cone pre-pass distance. A reset (u_resetAll = 1) restarts every pixel and
-// keeps the old image until the new samples replace it. Needs the formula, march.glsl and
-// viewport_common.glsl.
+// camera, or from the cone pre-pass distance. The verifying DE is also the ray's first march step.
+// Carried colours (with the surface point each is the shading of) go to sampleColor and
+// colourPoint. A reset (u_resetAll = 1) restarts every pixel and keeps the old image until the new
+// samples replace it. Needs the formula, march.glsl and viewport_common.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;

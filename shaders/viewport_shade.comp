@@ -12,8 +12,8 @@ layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
 uniform int u_atRest;
-// A carried colour is reused for at most this many frames in a row, then shaded afresh: each
-// carry resamples the previous image at the nearest pixel, so its error grows with every frame.
+// A carried colour is reused for at most this many frames in a row, then shaded afresh: its
+// specular highlight and fog were computed for the view it was shaded in.
 uniform int u_maxCarryFrames;
 
 void main() {
