@@ -1,14 +1,13 @@
 // The editor's UI-independent rules: undo/redo restores every state exactly, value edits do
 // not recompile while structure edits do, and the fly-speed rule.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
-
-#include <unistd.h>
 
 #include "app/editor/actions.hpp"
 #include "app/editor/camera_controller.hpp"
@@ -106,6 +105,8 @@ TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
     Document doc = documentFrom("mandelbox.json");
     doc.view.aaCap = 5;
     doc.view.reprojection = false;
+    doc.view.maxCarryFrames = 7;
+    doc.view.motionFilter = false;
     // The Render and Shading tabs edit the preset's own sections: a saved preset carries them.
     doc.preset.shading.lightDirection = vec3(0.1, 0.2, 0.3);
     doc.preset.render.view = "ACES";
@@ -123,6 +124,7 @@ TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
     back.preset = loadPreset(file);
     loadEditorSection(back);
     EXPECT_EQ(fingerprint(back), fingerprint(doc));
+    EXPECT_TRUE(back.view == doc.view) << "every view setting comes back";
     EXPECT_EQ(back.preset.shading, doc.preset.shading);
     EXPECT_EQ(back.preset.render, doc.preset.render);
     EXPECT_EQ(back.view, doc.view);
@@ -284,9 +286,11 @@ TEST(EditorFiles, UnsavedMarkFollowsEditsAndSaves) {
 // A formula with a custom GLSL block (no CPU evaluation) must not break the fly rule: outside
 // the bound the distance to the bound sphere, inside a crawl.
 TEST(EditorFlySpeed, CustomGlslFormulaFallsBackToTheBound) {
-    const fraktal::Preset p = fraktal::loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/tests/custom_presets/twisted_mandelbulb.json");
+    const fraktal::Preset p =
+        fraktal::loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/tests/custom_presets/twisted_mandelbulb.json");
     ASSERT_FALSE(p.formula.cpuEvaluable());
-    EXPECT_NEAR(fraktal::editor::safeDistance(p.formula, fraktal::vec3(0.0, 0.0, 4.0)), 4.0 - p.formula.boundRadius, 1e-12);
+    EXPECT_NEAR(fraktal::editor::safeDistance(p.formula, fraktal::vec3(0.0, 0.0, 4.0)), 4.0 - p.formula.boundRadius,
+                1e-12);
     EXPECT_EQ(fraktal::editor::safeDistance(p.formula, fraktal::vec3(0.0, 0.0, 1.0)), 0.0);
     const fraktal::editor::FlyRule rule;
     EXPECT_EQ(fraktal::editor::flySpeed(p.formula, fraktal::vec3(0.0, 0.0, 1.0), rule), rule.escapeSpeed);

@@ -39,11 +39,10 @@ json editorSection(const Document& d) {
 }  // namespace
 
 json viewSettingsToJson(const ViewSettings& s) {
-    return {{"stepsPerFrame", s.stepsPerFrame},
-            {"renderScale", s.renderScale},
-            {"reprojection", s.reprojection},
-            {"aaCap", s.aaCap},
-            {"coneTile", s.coneTile}};
+    return {{"stepsPerFrame", s.stepsPerFrame}, {"renderScale", s.renderScale},
+            {"reprojection", s.reprojection},   {"aaCap", s.aaCap},
+            {"coneTile", s.coneTile},           {"maxCarryFrames", s.maxCarryFrames},
+            {"motionFilter", s.motionFilter}};
 }
 
 ViewSettings viewSettingsFromJson(const json& j) {
@@ -59,6 +58,9 @@ ViewSettings viewSettingsFromJson(const json& j) {
     if (reprojection.is_boolean()) s.reprojection = reprojection.get<bool>();
     s.aaCap = int(number("aaCap", s.aaCap, 1, 256));
     s.coneTile = int(number("coneTile", s.coneTile, 0, 64));
+    s.maxCarryFrames = int(number("maxCarryFrames", s.maxCarryFrames, 0, 1000));
+    const json& motionFilter = j.value("motionFilter", json());
+    if (motionFilter.is_boolean()) s.motionFilter = motionFilter.get<bool>();
     return s;
 }
 

@@ -66,6 +66,13 @@ void drawViewportSection(ViewSettings& v) {
     dragInt("Cone pre-pass tile", v.coneTile, 0, 32, 0.1f,
             "A low-resolution cone march in tiles of this many pixels finds where full-resolution rays may start "
             "(0: off).");
+    dragInt("Colour carry (frames)", v.maxCarryFrames, 0, 64, 0.1f,
+            "Under motion a reprojected hit keeps the colour carried with its surface point for at most this many "
+            "frames, then it is shaded again (specular and fog depend on the view). 0: shade every hit.");
+    ImGui::Checkbox("Motion filter", &v.motionFilter);
+    helpMarker(
+        "Under motion, show each pixel as a reconstruction from the samples scattered around it "
+        "(reprojected colours lie anywhere in their pixel) instead of its one sample.");
 }
 
 void drawMarchSection(RenderSettings& r) {

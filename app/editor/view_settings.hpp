@@ -1,5 +1,6 @@
 // How the editor's viewport works through a view, apart from what the preset says about the
-// image: the march budget per frame, the render resolution, reprojection and the AA cap.
+// image: the march budget per frame, the render resolution, reprojection, colour carry, the
+// motion filter and the AA cap.
 // Everything about the image itself (march steps per ray, detail, shading, exposure, OCIO view)
 // is the preset's `render` and `shading` sections (core/render/settings.hpp), which the viewport
 // and the still export both read. Plain data, part of the undoable document, saved in the
@@ -7,6 +8,8 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+
+#include "core/viewport/viewport_options.hpp"
 
 namespace fraktal::editor {
 
@@ -23,6 +26,11 @@ struct ViewSettings {
     int aaCap = 8;
     // Cone pre-pass tile in pixels (0: off).
     int coneTile = 0;
+    // Under motion a reprojected hit keeps its carried colour for at most this many frames
+    // (viewport::ViewportOptions::maxCarryFrames; 0: shade every hit).
+    int maxCarryFrames = viewport::ViewportOptions{}.maxCarryFrames;
+    // Under motion show a reconstruction from the scattered samples (ViewportOptions::motionFilter).
+    bool motionFilter = true;
 
     bool operator==(const ViewSettings&) const = default;
 };

@@ -15,6 +15,8 @@ viewport::ViewportOptions viewportOptions(const ViewSettings& v) {
     o.maxSamples = v.aaCap;
     o.reproject = v.reprojection;
     o.coneTile = v.coneTile;
+    o.maxCarryFrames = v.maxCarryFrames;
+    o.motionFilter = v.motionFilter;
     return o;
 }
 
@@ -32,7 +34,8 @@ namespace {
 
 bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOptions& b) {
     return a.stepsPerFrame == b.stepsPerFrame && a.maxSamples == b.maxSamples && a.reproject == b.reproject &&
-           a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile && a.coneSteps == b.coneSteps;
+           a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile && a.coneSteps == b.coneSteps &&
+           a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter;
 }
 
 }  // namespace
