@@ -100,18 +100,25 @@ TEST(CustomBlock, EditingItsGlslIsAStructureChange) {
     EXPECT_EQ(a.formula.structureKey(), again.formula.structureKey());
 }
 
+// A transform block with one float parameter "amount" (default 0.5, range 0..2), as the GLSL
+// block editor would build it.
+CustomBlock::Definition amountTransform(const std::string& id, const std::string& amountHelp, const std::string& glsl) {
+    CustomBlock::Definition d;
+    d.id = id;
+    d.category = Category::Transform;
+    d.help = "test";
+    d.params.push_back({"amount", amountHelp, ParamType::Float, vec3(0.5), 0.0, 2.0});
+    d.glsl = glsl;
+    return d;
+}
+
 // The editor's GLSL block editor applies a definition through upsertCustomBlock: a new block is
 // added, an edited one replaces the old everywhere it is used (values kept where the parameter
 // survives, clamped to its new range), and an unsound one is refused with the reason.
 TEST(CustomBlock, EditorAddsAndReplacesBlocksInTheFormula) {
     Formula f = loadPreset(test::sourceDir() / "presets/mandelbox.json").formula;
     const Formula original = f;
-    CustomBlock::Definition d;
-    d.id = "wobble";
-    d.category = Category::Transform;
-    d.help = "test";
-    d.params.push_back({"amount", "how much", ParamType::Float, vec3(0.5), 0.0, 2.0});
-    d.glsl = "p.x += amount * sin(p.y);\n";
+    const CustomBlock::Definition d = amountTransform("wobble", "how much", "p.x += amount * sin(p.y);\n");
 
     CustomBlock::Definition builtInId = d;
     builtInId.id = "box_fold";
@@ -163,12 +170,7 @@ TEST(CustomBlock, EditorAddsAndReplacesBlocksInTheFormula) {
 // must recompile too.
 TEST(CustomBlock, ChangingAParameterTypeIsAStructureChange) {
     Formula f = loadPreset(test::sourceDir() / "presets/mandelbox.json").formula;
-    CustomBlock::Definition d;
-    d.id = "shift";
-    d.category = Category::Transform;
-    d.help = "test";
-    d.params.push_back({"amount", "", ParamType::Float, vec3(0.5), 0.0, 2.0});
-    d.glsl = "p.xyz += amount;\n";
+    CustomBlock::Definition d = amountTransform("shift", "", "p.xyz += amount;\n");
     ASSERT_EQ(editor::upsertCustomBlock(f, d), "");
     ASSERT_TRUE(editor::addNode(f, f.customBlocks[0]->desc(), 0));
     const std::string before = f.structureKey();
