@@ -95,6 +95,9 @@ float extendConeCoverage(float covered, float t, float d, float tanHalfAngle) {
 // Mirror of fraktal::viewport::reprojectionMargin.
 float reprojectionMargin(float t, float pixelAngle, float detail) { return 2.0 * pixelAngle * t * max(detail, 1.0); }
 
+// Mirror of fraktal::viewport::parkedDistance.
+float parkedDistance(float cameraDistance, float boundRadius) { return cameraDistance + 2.0 * boundRadius; }
+
 // Whether a finished sample keeps the colour reprojection carried to its pixel instead of being
 // shaded (viewport_shade.comp; the march pass asks first, to skip refining such hits): only under
 // motion, only the centre sample, only for at most maxCarryFrames frames in a row (specular and

@@ -31,10 +31,9 @@ void main() {
     bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
     float tStart, tEnd;
     if (!clipToBound(ro, rd, tStart, tEnd)) {
-        // Misses the bound sphere: nothing anywhere along it. Park it beyond the sphere so that
-        // reprojection's neighbourhood minimum is not pulled toward the camera.
+        // Misses the bound sphere: nothing anywhere along it.
         s.status = MARCH_ESCAPED;
-        s.t = length(ro) + u_boundRadius;
+        s.t = parkedDistance(length(ro), u_boundRadius);
     } else {
         s.t = max(s.t, tStart);
         covered = max(covered, tStart);
@@ -57,6 +56,7 @@ void main() {
         if (s.status == MARCH_MARCHING && s.steps >= u_maxSteps)
             s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
     }
+    if (s.status == MARCH_ESCAPED && s.t > tEnd) s.t = parkedDistance(length(ro), u_boundRadius);
     // A hit is refined (march.glsl) unless its pixel keeps the colour reprojection carried to it.
     if (marchedToHit) {
         info.x = s.status;

@@ -69,7 +69,9 @@ TEST(EditorCompile, StructureEditsCompileOnASharedContextInTheBackground) {
     edited.formula.nodes.erase(edited.formula.nodes.begin());  // drop the abs fold
     ASSERT_NE(edited.formula.structureKey(), preset.formula.structureKey());
     background.render(edited, settings, kW, kH);
-    if (background.stats().compiling) EXPECT_EQ(readDisplay(background), before);
+    if (background.stats().compiling) {
+        EXPECT_EQ(readDisplay(background), before);
+    }
     ASSERT_GE(renderUntilCompiled(background, edited, settings), 0);
     for (int f = 0; f < 40; ++f) {
         background.render(edited, settings, kW, kH);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 
 #include "core/viewport/camera_path.hpp"
@@ -122,8 +123,9 @@ TEST(ViewportLogic, ConeCoverageStaysInFrontOfEveryRayInTheCone) {
             const vec3 r = normalize(rd + (side * std::cos(a) + up * std::sin(a)) * tanHalf);
             EXPECT_LE(covered, firstHit(ro, r) + 1e-9) << "offset " << offset << " direction " << k;
         }
-        if (std::isfinite(firstHit(ro, rd)) && offset < 0.9)  // not useless: near the centre ray's hit
+        if (std::isfinite(firstHit(ro, rd)) && offset < 0.9) {  // not useless: near the centre ray's hit
             EXPECT_GT(covered, 0.9 * firstHit(ro, rd));
+        }
     }
 }
 
@@ -139,6 +141,38 @@ TEST(ViewportLogic, ReprojectionMarginGrowsWithDistanceAndDetail) {
     EXPECT_GT(reprojectionMargin(1.0, 0.001, 2.0), reprojectionMargin(1.0, 0.001, 1.0));
     // At least the hit threshold (detail footprints): a hit may lie that far in front of the surface.
     EXPECT_GE(reprojectionMargin(1.0, 0.001, 3.0), 0.001 * 3.0);
+}
+
+// A ray that found nothing inside the bound sphere is parked so far along that, after the camera
+// moves by up to 0.4 bound radii (any direction, from inside or outside the sphere), the point
+// backed off by the reprojection margin still lies past the sphere's far side from the new
+// camera, whatever the new ray: the start pass then marches nothing for it. Parking one radius
+// out (just past the far side) does not have this property.
+TEST(ViewportLogic, ParkedRaysStayPastTheBoundSphereAfterACameraMove) {
+    const double radius = 2.0, pixelAngle = 0.003, detail = 1.0;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    auto direction = [&] {
+        vec3 v;
+        do v = vec3(uniform(rng), uniform(rng), uniform(rng)) * 2.0 - 1.0;
+        while (length(v) < 1e-3 || length(v) > 1.0);
+        return normalize(v);
+    };
+    auto pastFarSide = [&](const vec3& point, const vec3& camera) {
+        const double t = length(point - camera);
+        // Every ray's far side of the sphere lies within |camera| + radius of the camera.
+        return t - reprojectionMargin(t, pixelAngle, detail) >= length(camera) + radius;
+    };
+    int justPastFailed = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const vec3 camera = direction() * (5.0 * radius * uniform(rng));
+        const vec3 ray = direction();
+        const vec3 moved = camera + direction() * (0.4 * radius * uniform(rng));
+        const vec3 parked = camera + ray * parkedDistance(length(camera), radius);
+        ASSERT_TRUE(pastFarSide(parked, moved)) << "case " << i;
+        if (!pastFarSide(camera + ray * (length(camera) + radius), moved)) ++justPastFailed;
+    }
+    EXPECT_GT(justPastFailed, 1000);
 }
 
 TEST(ViewportLogic, SummarizeDividesByPixels) {

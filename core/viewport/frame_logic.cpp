@@ -86,6 +86,8 @@ double reprojectionMargin(double t, double pixelAngle, double detail) {
     return 2.0 * pixelAngle * t * std::max(detail, 1.0);
 }
 
+double parkedDistance(double cameraDistance, double boundRadius) { return cameraDistance + 2.0 * boundRadius; }
+
 FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction action) {
     FrameStats s;
     s.action = action;

@@ -85,6 +85,18 @@ double extendConeCoverage(double covered, double t, double d, double tanHalfAngl
 // Mirrored in shaders/viewport_common.glsl.
 double reprojectionMargin(double t, double pixelAngle, double detail);
 
+// Where the march pass leaves a ray that found nothing inside the bound sphere (radius
+// boundRadius about the origin; the camera cameraDistance from the origin): this far along the
+// ray, past every point of the sphere. Reprojection then carries "nothing along here" into the
+// next view as a start beyond the sphere's far side, which costs no DE, where a ray left just
+// past the far side would be started a margin in front of it, verified and marched out again
+// (about 1.4 DE per background pixel inside the sphere, every frame). The new far side is at
+// most |c'| + R <= |c| + R + |c' - c| from the new camera c', this point at least
+// |c| + 2R - |c' - c|: it stays beyond while the camera moves less than (R - margin) / 2 per
+// frame. Being far, it never pulls reprojection's neighbourhood minimum toward the camera.
+// Mirrored in shaders/viewport_common.glsl.
+double parkedDistance(double cameraDistance, double boundRadius);
+
 // Raw counters the GPU passes add to during one frame (one uint each, see viewport_common.glsl).
 struct FrameCounters {
     uint64_t deEvals = 0;       // every DE call: march, verification, cone pre-pass and shading
