@@ -26,6 +26,7 @@ const int FLAG_NEEDS_SHADE = 1;  // the sample finished marching and has no colo
 const int FLAG_CARRIED = 2;      // sampleColor holds the colour of a reprojected hit (tCarried in .a)
 const int FLAG_REUSED = 4;       // the sample's colour is the carried one, not shaded for this view
 const int FLAG_SHADED_NOW = 8;   // shaded this frame, not yet accumulated
+const int FLAG_COARSE_HIT = 16;  // a hit that stopped short of the surface under motion (isCoarseHit)
 
 // Frame statistics (core/viewport/gpu_counters.cpp reads them back).
 layout(std430, binding = 0) buffer ViewportCounters {
@@ -106,6 +107,22 @@ bool keepsCarriedColour(int atRest, ivec4 info, float carryAge, float t, float t
                         float detail) {
     return atRest == 0 && info.x == STATUS_HIT && (info.w & FLAG_CARRIED) != 0 && info.z == 0 &&
            carryAge <= float(maxCarryFrames) && abs(t - tCarried) <= reprojectionMargin(tCarried, u_pixelAngle, detail);
+}
+
+// Under motion, a ray that keeps a carried colour need not reach the hit threshold: it stops at
+// the first point within the reprojection margin of a surface (DE d < margin) whose depth matches
+// the carried colour's point as keepsCarriedColour asks. What it shows is the carried colour, and
+// its depth stays in front of the surface, which only makes the next frame's start more
+// conservative. Marching on to the hit threshold (detail footprints, half a pixel by default, from
+// a start two footprints in front of the nearest of 4x4 points) cost 3-4 more DE per such pixel
+// per frame on the fold fractals. The price: a ray passing within the margin of a thin part or a
+// silhouette keeps that part's colour where a full march would have gone past it and shaded what
+// lies behind, so thin parts look up to the margin thicker while the camera moves (bench/README.md
+// has the error this costs). At rest a coarse hit marches on to the surface
+// (viewport_march.comp), and is refined and shaded exactly.
+bool isCoarseHit(float d, float t, ivec4 info, float carryAge, float tCarried, int maxCarryFrames, float detail) {
+    return d < reprojectionMargin(t, u_pixelAngle, detail) &&
+           keepsCarriedColour(0, ivec4(STATUS_HIT, info.yzw), carryAge, t, tCarried, maxCarryFrames, detail);
 }
 
 // Half the diagonal of a pixel, as an angle: every AA sample of a pixel lies in this cone.

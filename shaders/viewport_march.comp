@@ -17,9 +17,14 @@ void main() {
     if (any(greaterThanEqual(px, u_size))) return;
     ivec4 info = imageLoad(u_rayInfo, px);
     if (info.x != STATUS_MARCHING) {
-        // At rest a colour reused from the previous view is shaded exactly once (viewport_shade.comp).
-        if (u_atRest != 0 && (info.w & FLAG_REUSED) != 0 && (info.w & FLAG_SHADED_NOW) == 0) appendToShadeList(px);
-        return;
+        if (u_atRest == 0 || (info.w & FLAG_COARSE_HIT) == 0) {
+            // At rest a colour reused from the previous view is shaded exactly once (viewport_shade.comp).
+            if (u_atRest != 0 && (info.w & FLAG_REUSED) != 0 && (info.w & FLAG_SHADED_NOW) == 0) appendToShadeList(px);
+            return;
+        }
+        // At rest a coarse hit marches on to the surface, and is then shaded like any hit.
+        info.x = STATUS_MARCHING;
+        info.w &= ~(FLAG_COARSE_HIT | FLAG_REUSED);
     }
     vec4 state = imageLoad(u_rayState, px);
     int sampleIndex = info.z;
@@ -29,6 +34,10 @@ void main() {
     float covered = state.w;
     float deEvals = 0.0;
     bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
+    // A ray that may keep a carried colour may stop at a coarse hit (viewport_common.glsl).
+    bool mayStopCoarse = u_atRest == 0 && sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0;
+    float tCarried = mayStopCoarse ? imageLoad(u_sampleColor, px).a : 0.0;
+    float carryAge = mayStopCoarse ? imageLoad(u_centre, px).z : 0.0;
     float tStart, tEnd;
     if (!clipToBound(ro, rd, tStart, tEnd)) {
         // Misses the bound sphere: nothing anywhere along it.
@@ -41,6 +50,17 @@ void main() {
         int budget = min(u_stepsPerFrame, u_maxSteps - s.steps);
         for (int i = 0; i < budget && s.status == MARCH_MARCHING; ++i) {
             float t0 = s.t;
+            // The last accepted step went omega * lastD from a point whose DE was lastD: up to
+            // lastD past that point the ray is certainly in front of any surface.
+            float tSafe = s.t - (s.omega - 1.0) * s.lastD;
+            if (mayStopCoarse && s.lastD > 0.0 &&
+                isCoarseHit(s.lastD, tSafe, info, carryAge, tCarried, u_maxCarryFrames, u_detail)) {
+                s.t = tSafe;
+                s.omega = 1.0;  // resumes (at rest) with plain steps from here
+                s.status = MARCH_HIT;
+                info.w |= FLAG_COARSE_HIT;
+                break;
+            }
             if (s.t > tEnd) {  // beyond the bound sphere nothing is left to find
                 s.status = MARCH_ESCAPED;
                 break;
@@ -58,10 +78,10 @@ void main() {
     }
     if (s.status == MARCH_ESCAPED && s.t > tEnd) s.t = parkedDistance(length(ro), u_boundRadius);
     // A hit is refined (march.glsl) unless its pixel keeps the colour reprojection carried to it.
-    if (marchedToHit) {
+    if (marchedToHit && (info.w & FLAG_COARSE_HIT) == 0) {
         info.x = s.status;
-        float tCarried = imageLoad(u_sampleColor, px).a;
-        if (!keepsCarriedColour(u_atRest, info, imageLoad(u_centre, px).z, s.t, tCarried, u_maxCarryFrames, u_detail))
+        if (!keepsCarriedColour(u_atRest, info, imageLoad(u_centre, px).z, s.t, imageLoad(u_sampleColor, px).a,
+                                u_maxCarryFrames, u_detail))
             refineHit(ro, rd, u_pixelAngle, s.lastD, s, deEvals);
     }
     atomicAdd(c_deEvals, uint(deEvals));

@@ -17,35 +17,12 @@ layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(r32f, binding = 6) uniform readonly image2D u_cone;
 layout(binding = 0) uniform sampler2D u_reprojDistance;  // x: t (<= 0: nothing), y: 1 near a hit
-layout(binding = 1) uniform sampler2D u_reprojColor;     // rgb, a: carry age + 1 (0: no colour)
-layout(binding = 2) uniform sampler2D u_reprojCarried;   // xyz: the carried colour's point, w: its t
+// u_size.x by 2 u_size.y: the colour whose point lies in the pixel, then the one near it
+layout(binding = 1) uniform sampler2D u_reprojColor;    // rgb, a: carry age + 1 (0: no colour)
+layout(binding = 2) uniform sampler2D u_reprojCarried;  // xyz: the carried colour's point, w: its t
 layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
 uniform int u_resetAll;
 uniform int u_coneTile;  // 0: no cone pre-pass
-
-// A pixel no carried colour landed on (a point scatter leaves gaps where points crowd into one
-// pixel and spread apart elsewhere) borrows the colour whose point lies nearest its centre ray
-// among its 3x3 neighbours, within a pixel's footprint; it keeps that colour's own point, so the
-// borrowed sample stays where it belongs on the surface. Returns where the colour came from.
-ivec2 nearestCarriedColour(ivec2 px, vec3 rd, out vec4 color) {
-    ivec2 from = px;
-    color = vec4(0.0);
-    float best = HALF_DIAGONAL * u_pixelAngle;  // angle between the ray and the direction to the point
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            ivec2 q = clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1);
-            vec4 c = texelFetch(u_reprojColor, q, 0);
-            if (c.a == 0.0) continue;
-            vec3 toPoint = normalize(texelFetch(u_reprojCarried, q, 0).xyz - u_cameraPosition);
-            float angle = length(cross(toPoint, rd));
-            if (angle < best) {
-                best = angle;
-                from = q;
-                color = c;
-            }
-        }
-    return from;
-}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -64,9 +41,15 @@ void main() {
     float carryAge = 0.0;
     float deEvals = 0.0;
     vec4 r = u_resetAll != 0 ? vec4(-1.0) : texelFetch(u_reprojDistance, px, 0);
+    // The colour whose point lies in this pixel, else the nearest of those that lie within half a
+    // pixel diagonal of its centre (viewport_reproject.comp): each keeps its own point, so the
+    // sample stays where it belongs on the surface.
     ivec2 colourFrom = px;
     vec4 carriedColor = u_resetAll != 0 ? vec4(0.0) : texelFetch(u_reprojColor, px, 0);
-    if (u_resetAll == 0 && carriedColor.a == 0.0) colourFrom = nearestCarriedColour(px, rd, carriedColor);
+    if (u_resetAll == 0 && carriedColor.a == 0.0) {
+        colourFrom = ivec2(px.x, u_size.y + px.y);
+        carriedColor = texelFetch(u_reprojColor, colourFrom, 0);
+    }
     vec4 colourPoint = vec4(0.0);
     if (carriedColor.a > 0.0) {
         vec4 point = texelFetch(u_reprojCarried, colourFrom, 0);

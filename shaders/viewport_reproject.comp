@@ -25,18 +25,20 @@ layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry
 layout(binding = 1) uniform sampler2D u_oldImage;
 layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's point, w: 1 if any
 layout(rgba32f, binding = 7) uniform writeonly image2D u_reprojDistance;  // x: t of the start point
+// Carried colours, u_size.x by 2 u_size.y: row y holds the colour whose point lies in pixel row y,
+// row u_size.y + y the one that pixel borrows when no point lies in it (see below).
 layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
 layout(rgba32f, binding = 9) uniform writeonly image2D u_reprojCarried;   // xyz: its point, w: its t
-// u_depth[0, n): distance keys of the start points; u_depth[n, 2n): of the carried hits.
+// u_depth[0, n): distance keys of the start points; u_depth[n, 2n): of the carried colours whose
+// point lies in the pixel; u_depth[2n, 3n): of those near it (n pixels).
 layout(std430, binding = 1) buffer ReprojectDepth { uint u_depth[]; };
 uniform vec3 u_newCameraPosition, u_newRight, u_newUp, u_newForward;
 uniform float u_newTanHalfFovY;
 uniform int u_resolve;
 
-// The new pixel a world point projects into, and its distance from the new camera; false when it
-// is behind the camera or off-screen.
-bool projectToNewView(vec3 world, out ivec2 target, out float t) {
-    vec2 imagePos;
+// The new pixel a world point projects into, where in the image (pixels from the top-left), and
+// its distance from the new camera; false when it is behind the camera or off-screen.
+bool projectToNewView(vec3 world, out ivec2 target, out vec2 imagePos, out float t) {
     target = ivec2(0);
     if (!projectToImage(world, u_newCameraPosition, u_newRight, u_newUp, u_newForward, u_newTanHalfFovY, imagePos, t))
         return false;
@@ -67,17 +69,37 @@ void main() {
     vec3 rd = cameraRay(vec2(px) + 1.0);
     uint pixels = uint(u_size.x * u_size.y);
     ivec2 target;
+    vec2 imagePos;
     float t;
-    if (projectToNewView(u_cameraPosition + rd * tMin, target, t)) {
+    if (projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t)) {
         uint index = uint(target.y * u_size.x + target.x);
         if (nearestWins(index, t)) imageStore(u_reprojDistance, target, vec4(t, 0.0, 0.0, 1.0));
     }
     vec4 colourPoint = texelFetch(u_oldColourPoint, px, 0);
-    if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, t)) {
-        uint index = pixels + uint(target.y * u_size.x + target.x);
-        if (nearestWins(index, t)) {
-            imageStore(u_reprojColor, target, vec4(texelFetch(u_oldImage, px, 0).rgb, own.z + 1.0));
-            imageStore(u_reprojCarried, target, vec4(colourPoint.xyz, t));
+    if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
+        vec4 color = vec4(texelFetch(u_oldImage, px, 0).rgb, own.z + 1.0);
+        vec4 carried = vec4(colourPoint.xyz, t);
+        if (nearestWins(pixels + uint(target.y * u_size.x + target.x), t)) {
+            imageStore(u_reprojColor, target, color);
+            imageStore(u_reprojCarried, target, carried);
+        }
+        // The point is also a sample of the neighbours whose centre lies within half a pixel
+        // diagonal of it: a point scatter leaves pixels that no point lands in (points crowd into
+        // one pixel and spread apart next to it), and such a pixel takes the nearest of these.
+        // Those include points that lost their own pixel to a nearer one, which would otherwise
+        // be dropped, and it is a sample from inside the pixel's circumscribed circle, so it
+        // stays a sample of what the pixel sees.
+        vec2 offset = imagePos - (vec2(target) + 0.5);  // in [-0.5, 0.5)
+        ivec2 toward = ivec2(offset.x < 0.0 ? -1 : 1, offset.y < 0.0 ? -1 : 1);
+        for (int k = 1; k < 4; ++k) {
+            ivec2 step = ivec2(k & 1, k >> 1) * toward;
+            ivec2 q = target + step;
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_size))) continue;
+            if (length(imagePos - (vec2(q) + 0.5)) >= HALF_DIAGONAL) continue;
+            if (nearestWins(2u * pixels + uint(q.y * u_size.x + q.x), t)) {
+                imageStore(u_reprojColor, ivec2(q.x, u_size.y + q.y), color);
+                imageStore(u_reprojCarried, ivec2(q.x, u_size.y + q.y), carried);
+            }
         }
     }
 }

@@ -38,8 +38,8 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
     glClearTexImage(shown, 0, GL_RGBA, GL_FLOAT, black);
 
     reprojDistance = makeTexture(GL_RGBA32F, width, height);
-    reprojColor = makeTexture(GL_RGBA32F, width, height);
-    reprojCarried = makeTexture(GL_RGBA32F, width, height);
+    reprojColor = makeTexture(GL_RGBA32F, width, 2 * height);
+    reprojCarried = makeTexture(GL_RGBA32F, width, 2 * height);
     glCreateBuffers(1, &shadeList);
     glNamedBufferStorage(shadeList, GLsizeiptr((4 + size_t(width) * size_t(height)) * sizeof(GLuint)), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);

@@ -30,7 +30,9 @@ class MarchState {
     GLuint shown = 0;
     // Reprojection target (written by reproject_pass as images 7, 8 and 9): start distances,
     // carried colours (a: carry age + 1, 0: none) and each carried colour's point (xyz, and w: its
-    // distance from the new camera).
+    // distance from the new camera). The colour images are twice as tall: row y holds the colour
+    // whose point lies in pixel row y, row height + y the one near it, which a pixel takes when
+    // no point lies in it (shaders/viewport_reproject.comp).
     GLuint reprojDistance = 0, reprojColor = 0, reprojCarried = 0;
     // The pixels to shade this frame: 4 uints of indirect-dispatch header and count, then one
     // pixel index per entry (room for every pixel).

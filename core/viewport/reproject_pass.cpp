@@ -1,7 +1,8 @@
 // Reprojection (seed 4.2) as a compute scatter (shaders/viewport_reproject.comp): every previous
 // pixel's point goes to the new pixel it projects into, nearest first. Pixels nothing lands on
 // stay at -1; the start pass fills one-pixel gaps from their neighbours and restarts the rest.
-// Hit colours take a second scatter keyed by their own hit point (why: the shader's header).
+// Hit colours take a second scatter keyed by their own hit point (why: the shader's header), into
+// the pixel each point lies in and, for pixels no point lies in, the nearest point around.
 #include <limits>
 
 #include "core/viewport/passes.hpp"
@@ -16,7 +17,7 @@ void ReprojectPass::run(const ViewportPrograms& p, const MarchState& s, const Ca
                         double /*boundRadius*/) {
     const int w = s.width(), h = s.height();
     if (w != width_ || h != height_) {
-        glNamedBufferData(depth_, GLsizeiptr(2 * size_t(w) * size_t(h) * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
+        glNamedBufferData(depth_, GLsizeiptr(3 * size_t(w) * size_t(h) * sizeof(GLuint)), nullptr, GL_DYNAMIC_COPY);
         width_ = w;
         height_ = h;
     }
