@@ -99,14 +99,36 @@ float reprojectionMargin(float t, float pixelAngle, float detail) { return 2.0 *
 // Mirror of fraktal::viewport::parkedDistance.
 float parkedDistance(float cameraDistance, float boundRadius) { return cameraDistance + 2.0 * boundRadius; }
 
+// pcg3d (Jarzynski and Olano, "Hash Functions for GPU Rendering", JCGT 9(3), 2020), to [0, 1).
+// Mirror of fraktal::viewport::hash01.
+float hash01(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z;
+    v.y += v.z * v.x;
+    v.z += v.x * v.y;
+    return float(v.x >> 8u) / 16777216.0;
+}
+
+// Mirror of fraktal::viewport::carriedColourExpires (why: there).
+bool carriedColourExpires(int carryAge, int maxCarryFrames, ivec2 px) {
+    if (carryAge <= maxCarryFrames - maxCarryFrames / 4) return false;
+    if (carryAge > maxCarryFrames) return true;
+    return hash01(uvec3(px, uint(carryAge))) * float(maxCarryFrames - carryAge + 2) < 1.0;
+}
+
 // Whether a finished sample keeps the colour reprojection carried to its pixel instead of being
 // shaded (viewport_shade.comp; the march pass asks first, to skip refining such hits): only under
-// motion, only the centre sample, only for at most maxCarryFrames frames in a row (specular and
-// fog depend on the view), and only when the ray hit where the colour's point lies.
+// motion, only the centre sample, only until the colour expires (specular and fog depend on the
+// view), and only when the ray hit where the colour's point lies.
 bool keepsCarriedColour(int atRest, ivec4 info, float carryAge, float t, float tCarried, int maxCarryFrames,
-                        float detail) {
+                        float detail, ivec2 px) {
     return atRest == 0 && info.x == STATUS_HIT && (info.w & FLAG_CARRIED) != 0 && info.z == 0 &&
-           carryAge <= float(maxCarryFrames) && abs(t - tCarried) <= reprojectionMargin(tCarried, u_pixelAngle, detail);
+           !carriedColourExpires(int(carryAge), maxCarryFrames, px) &&
+           abs(t - tCarried) <= reprojectionMargin(tCarried, u_pixelAngle, detail);
 }
 
 // Under motion, a ray that keeps a carried colour need not reach the hit threshold: it stops at
@@ -120,9 +142,10 @@ bool keepsCarriedColour(int atRest, ivec4 info, float carryAge, float t, float t
 // lies behind, so thin parts look up to the margin thicker while the camera moves (bench/README.md
 // has the error this costs). At rest a coarse hit marches on to the surface
 // (viewport_march.comp), and is refined and shaded exactly.
-bool isCoarseHit(float d, float t, ivec4 info, float carryAge, float tCarried, int maxCarryFrames, float detail) {
+bool isCoarseHit(float d, float t, ivec4 info, float carryAge, float tCarried, int maxCarryFrames, float detail,
+                 ivec2 px) {
     return d < reprojectionMargin(t, u_pixelAngle, detail) &&
-           keepsCarriedColour(0, ivec4(STATUS_HIT, info.yzw), carryAge, t, tCarried, maxCarryFrames, detail);
+           keepsCarriedColour(0, ivec4(STATUS_HIT, info.yzw), carryAge, t, tCarried, maxCarryFrames, detail, px);
 }
 
 // Half the diagonal of a pixel, as an angle: every AA sample of a pixel lies in this cone.

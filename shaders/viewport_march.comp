@@ -54,7 +54,7 @@ void main() {
             // lastD past that point the ray is certainly in front of any surface.
             float tSafe = s.t - (s.omega - 1.0) * s.lastD;
             if (mayStopCoarse && s.lastD > 0.0 &&
-                isCoarseHit(s.lastD, tSafe, info, carryAge, tCarried, u_maxCarryFrames, u_detail)) {
+                isCoarseHit(s.lastD, tSafe, info, carryAge, tCarried, u_maxCarryFrames, u_detail, px)) {
                 s.t = tSafe;
                 s.omega = 1.0;  // resumes (at rest) with plain steps from here
                 s.status = MARCH_HIT;
@@ -81,7 +81,7 @@ void main() {
     if (marchedToHit && (info.w & FLAG_COARSE_HIT) == 0) {
         info.x = s.status;
         if (!keepsCarriedColour(u_atRest, info, imageLoad(u_centre, px).z, s.t, imageLoad(u_sampleColor, px).a,
-                                u_maxCarryFrames, u_detail))
+                                u_maxCarryFrames, u_detail, px))
             refineHit(ro, rd, u_pixelAngle, s.lastD, s, deEvals);
     }
     atomicAdd(c_deEvals, uint(deEvals));

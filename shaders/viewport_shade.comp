@@ -12,8 +12,9 @@ layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
 uniform int u_atRest;
-// A carried colour is reused for at most this many frames in a row, then shaded afresh: its
-// specular highlight and fog were computed for the view it was shaded in.
+// A carried colour is reused for at most this many frames in a row (expiring over the last
+// quarter of them, carriedColourExpires), then shaded afresh: its specular highlight and fog
+// were computed for the view it was shaded in.
 uniform int u_maxCarryFrames;
 
 void main() {
@@ -35,7 +36,7 @@ void main() {
     info.w &= ~FLAG_REUSED;
     if (info.x == STATUS_HIT) {
         vec4 centre = imageLoad(u_centre, px);
-        if (keepsCarriedColour(u_atRest, info, centre.z, t, carried.a, u_maxCarryFrames, u_detail)) {
+        if (keepsCarriedColour(u_atRest, info, centre.z, t, carried.a, u_maxCarryFrames, u_detail, px)) {
             color = carried.rgb;
             info.w |= FLAG_REUSED;
         } else {

@@ -175,6 +175,29 @@ TEST(ViewportLogic, ParkedRaysStayPastTheBoundSphereAfterACameraMove) {
     EXPECT_GT(justPastFailed, 1000);
 }
 
+// Carried colours expire spread evenly over the last quarter of the carry limit, never later; so
+// colours shaded in the same frame are not all shaded again in one frame.
+TEST(ViewportLogic, CarriedColoursExpireSpreadOverTheLastQuarterOfTheCarryLimit) {
+    for (int maxCarry : {16, 7}) {
+        SCOPED_TRACE(maxCarry);
+        const int earliest = maxCarry - maxCarry / 4, kinds = maxCarry - earliest + 1;
+        std::vector<int> lifetimes(size_t(maxCarry) + 1, 0);
+        const int pixels = 200 * 100;
+        for (int y = 0; y < 100; ++y)
+            for (int x = 0; x < 200; ++x) {
+                int age = 1;
+                while (!carriedColourExpires(age, maxCarry, x, y)) ++age;
+                const int kept = age - 1;  // frames the colour was kept
+                ASSERT_GE(kept, earliest);
+                ASSERT_LE(kept, maxCarry);
+                ++lifetimes[size_t(kept)];
+            }
+        for (int kept = earliest; kept <= maxCarry; ++kept)
+            EXPECT_NEAR(double(lifetimes[size_t(kept)]) / pixels, 1.0 / kinds, 0.2 / kinds) << "kept " << kept;
+    }
+    EXPECT_TRUE(carriedColourExpires(1, 0, 3, 4));  // 0: never carried
+}
+
 TEST(ViewportLogic, SummarizeDividesByPixels) {
     FrameCounters c{1000, 25, 75, 50, 10};
     const FrameStats s = summarize(c, 10, 10, FrameAction::Reproject);

@@ -88,6 +88,26 @@ double reprojectionMargin(double t, double pixelAngle, double detail) {
 
 double parkedDistance(double cameraDistance, double boundRadius) { return cameraDistance + 2.0 * boundRadius; }
 
+double hash01(uint32_t x, uint32_t y, uint32_t z) {
+    x = x * 1664525u + 1013904223u;
+    y = y * 1664525u + 1013904223u;
+    z = z * 1664525u + 1013904223u;
+    x += y * z;
+    y += z * x;
+    z += x * y;
+    x ^= x >> 16u;
+    y ^= y >> 16u;
+    z ^= z >> 16u;
+    x += y * z;
+    return double(x >> 8u) / 16777216.0;
+}
+
+bool carriedColourExpires(int carryAge, int maxCarryFrames, int px, int py) {
+    if (carryAge <= maxCarryFrames - maxCarryFrames / 4) return false;
+    if (carryAge > maxCarryFrames) return true;
+    return hash01(uint32_t(px), uint32_t(py), uint32_t(carryAge)) * double(maxCarryFrames - carryAge + 2) < 1.0;
+}
+
 FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction action) {
     FrameStats s;
     s.action = action;
