@@ -10,7 +10,9 @@
 #      starts) instead of from an empty viewport;
 #   4. switches and paths on the Mandelbulb and the Menger sponge: over-relaxation off, the cone
 #      pre-pass on, the dolly and pan paths, the motion filter off, restarting with 45 and 60
-#      steps per frame (restarting's error against its work, for comparisons at equal error).
+#      steps per frame (restarting's error against its work, for comparisons at equal error);
+#   5. a 60-frame orbit from rest on three presets: the work and error of frames 31-60, long after
+#      the settled colours the orbit started with have been replaced (steady state).
 # Usage: bench/viewport/run.sh BUILD_DIR [PRESET...]   (default: every preset in presets/)
 set -euo pipefail
 build=${1:?build dir}; shift
@@ -62,4 +64,22 @@ for p in presets/mandelbulb.json presets/menger.json; do
     # shellcheck disable=SC2086
     "$fraktal" bench viewport "$p" --size 320x180 --frames 30 --degrees 1 --no-rest $flags --json | row "$label"
   done
+done
+
+# Section 5: frames 31-60 of a 60-frame orbit from rest.
+steady() {
+  python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+f = d["per_frame"][30:]
+name = d["preset"].split("/")[-1].replace(".json", "")
+print("| %s | %s | %.2f | %.1f dB | %.1f dB |" % (name, sys.argv[1], sum(x["de_evals_per_pixel"] for x in f) / len(f),
+      sum(x["psnr_db"] for x in f) / len(f), min(x["psnr_db"] for x in f)))' "$1"
+}
+echo
+echo "| preset | mode | DE evals/px/frame (frames 31-60) | mean PSNR vs converged AA (frames 31-60) | lowest |"
+echo "|---|---|---|---|---|"
+for p in presets/sierpinski_tetrahedron.json presets/menger.json presets/mandelbulb.json; do
+  "$fraktal" bench viewport "$p" --size 320x180 --frames 60 --degrees 1 --from-rest --json | steady reproject
+  "$fraktal" bench viewport "$p" --size 320x180 --frames 60 --degrees 1 --from-rest --no-reproject --json | steady restart
 done
