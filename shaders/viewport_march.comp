@@ -11,6 +11,7 @@ uniform int u_stepsPerFrame;
 uniform int u_maxCarryFrames;
 uniform int u_maxSteps;
 uniform int u_atRest;
+uniform int u_coarseHits;  // ViewportOptions::coarseHits
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -35,7 +36,7 @@ void main() {
     float deEvals = 0.0;
     bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
     // A ray that may keep a carried colour may stop at a coarse hit (viewport_common.glsl).
-    bool mayStopCoarse = u_atRest == 0 && sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0;
+    bool mayStopCoarse = u_coarseHits != 0 && u_atRest == 0 && sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0;
     float tCarried = mayStopCoarse ? imageLoad(u_sampleColor, px).a : 0.0;
     float carryAge = mayStopCoarse ? imageLoad(u_centre, px).z : 0.0;
     float tStart, tEnd;

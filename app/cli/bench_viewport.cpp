@@ -30,8 +30,8 @@ struct BenchViewportArgs {
     int maxCarry = viewport::ViewportOptions{}.maxCarryFrames;
     double degrees = 0.5;
     std::string dump;
-    bool noReproject = false, noOverRelaxation = false, noMotionFilter = false, noError = false, noRest = false,
-         fromRest = false, json = false, timePasses = false;
+    bool noReproject = false, noOverRelaxation = false, noMotionFilter = false, noCoarseHits = false, noError = false,
+         noRest = false, fromRest = false, json = false, timePasses = false;
 };
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -59,6 +59,7 @@ int run(const BenchViewportArgs& a) {
     fs.options.reproject = !a.noReproject;
     fs.options.overRelaxation = !a.noOverRelaxation;
     fs.options.motionFilter = !a.noMotionFilter;
+    fs.options.coarseHits = !a.noCoarseHits;
     fs.options.coneTile = a.coneTile;
     fs.options.maxCarryFrames = a.maxCarry;
     fs.options.timePasses = a.timePasses;
@@ -85,6 +86,7 @@ int run(const BenchViewportArgs& a) {
         out["reproject"] = fs.options.reproject;
         out["over_relaxation"] = fs.options.overRelaxation;
         out["motion_filter"] = fs.options.motionFilter;
+        out["coarse_hits"] = fs.options.coarseHits;
         out["from_rest"] = fs.fromRest;
         out["cone_tile"] = fs.options.coneTile;
         out["max_carry_frames"] = fs.options.maxCarryFrames;
@@ -184,6 +186,8 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");
     cmd->add_flag("--no-motion-filter", args->noMotionFilter,
                   "under motion show each pixel's one sample, not a reconstruction from its neighbours'");
+    cmd->add_flag("--no-coarse-hits", args->noCoarseHits,
+                  "under motion march rays that keep a carried colour on to the hit threshold");
     cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");
     cmd->add_flag("--from-rest", args->fromRest,
                   "start moving from the settled view (as a user's orbit does), not from an empty viewport");

@@ -73,6 +73,11 @@ void drawViewportSection(ViewSettings& v) {
     helpMarker(
         "Under motion, show each pixel as a reconstruction from the samples scattered around it "
         "(reprojected colours lie anywhere in their pixel) instead of its one sample.");
+    ImGui::Checkbox("Coarse hits", &v.coarseHits);
+    helpMarker(
+        "Under motion, a ray that keeps the colour carried to its pixel stops within two pixel footprints of the "
+        "surface instead of marching on: about a quarter fewer DE evaluations, and thin parts look slightly "
+        "thicker while the camera moves. At rest every ray marches on to the surface.");
 }
 
 void drawMarchSection(RenderSettings& r) {

@@ -17,6 +17,7 @@ viewport::ViewportOptions viewportOptions(const ViewSettings& v) {
     o.coneTile = v.coneTile;
     o.maxCarryFrames = v.maxCarryFrames;
     o.motionFilter = v.motionFilter;
+    o.coarseHits = v.coarseHits;
     return o;
 }
 
@@ -35,7 +36,7 @@ namespace {
 bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOptions& b) {
     return a.stepsPerFrame == b.stepsPerFrame && a.maxSamples == b.maxSamples && a.reproject == b.reproject &&
            a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile && a.coneSteps == b.coneSteps &&
-           a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter;
+           a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter && a.coarseHits == b.coarseHits;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     setInt(program, "u_maxSteps", c.maxSteps);
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
     setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);  // keepsCarriedColour skips refining
+    setInt(program, "u_coarseHits", c.options.coarseHits ? 1 : 0);
     s.clearShadeList();
     dispatchPixels(s.width(), s.height());
     imageBarrier();

@@ -17,6 +17,10 @@ struct ViewportOptions {
     // Under motion, show each pixel as a reconstruction from the samples scattered around it
     // (shaders/viewport_resolve.comp) rather than its one sample.
     bool motionFilter = true;
+    // Under motion, a ray that keeps its carried colour stops within the reprojection margin of the
+    // surface instead of marching on to the hit threshold (isCoarseHit, shaders/viewport_common.glsl):
+    // fewer DE, for thin parts that look up to the margin thicker while the camera moves.
+    bool coarseHits = true;
     bool overRelaxation = true;  // over-relaxed sphere tracing (RenderSettings::overRelaxation); off: omega = 1
     int coneTile = 0;            // low-resolution cone pre-pass tile in pixels (0: off; 8 is typical)
     int coneSteps = 64;          // DE steps of a pre-pass cone
