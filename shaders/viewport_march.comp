@@ -35,10 +35,12 @@ void main() {
     float covered = state.w;
     float deEvals = 0.0;
     bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
+    // The carried colour's depth and age (keepsCarriedColour asks only for a carried centre sample).
+    bool carries = sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0;
+    float tCarried = carries ? imageLoad(u_sampleColor, px).a : 0.0;
+    float carryAge = carries ? imageLoad(u_centre, px).z : 0.0;
     // A ray that may keep a carried colour may stop at a coarse hit (viewport_common.glsl).
-    bool mayStopCoarse = u_coarseHits != 0 && u_atRest == 0 && sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0;
-    float tCarried = mayStopCoarse ? imageLoad(u_sampleColor, px).a : 0.0;
-    float carryAge = mayStopCoarse ? imageLoad(u_centre, px).z : 0.0;
+    bool mayStopCoarse = carries && u_coarseHits != 0 && u_atRest == 0;
     float tStart, tEnd;
     if (!clipToBound(ro, rd, tStart, tEnd)) {
         // Misses the bound sphere: nothing anywhere along it.
@@ -81,8 +83,7 @@ void main() {
     // A hit is refined (march.glsl) unless its pixel keeps the colour reprojection carried to it.
     if (marchedToHit && (info.w & FLAG_COARSE_HIT) == 0) {
         info.x = s.status;
-        if (!keepsCarriedColour(u_atRest, info, imageLoad(u_centre, px).z, s.t, imageLoad(u_sampleColor, px).a,
-                                u_maxCarryFrames, u_detail, px))
+        if (!keepsCarriedColour(u_atRest, info, carryAge, s.t, tCarried, u_maxCarryFrames, u_detail, px))
             refineHit(ro, rd, u_pixelAngle, s.lastD, s, deEvals);
     }
     atomicAdd(c_deEvals, uint(deEvals));

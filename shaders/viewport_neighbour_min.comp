@@ -16,7 +16,7 @@ layout(rgba32f, binding = 3) uniform image2D u_accum;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(r32f, binding = 6) uniform readonly image2D u_cone;
-layout(binding = 0) uniform sampler2D u_reprojDistance;  // x: t (<= 0: nothing), y: 1 near a hit
+layout(binding = 0) uniform sampler2D u_reprojDistance;  // x: t (<= 0: nothing)
 // u_size.x by 2 u_size.y: the colour whose point lies in the pixel, then the one near it
 layout(binding = 1) uniform sampler2D u_reprojColor;    // rgb, a: carry age + 1 (0: no colour)
 layout(binding = 2) uniform sampler2D u_reprojCarried;  // xyz: the carried colour's point, w: its t

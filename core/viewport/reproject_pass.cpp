@@ -1,5 +1,6 @@
 // Reprojection (seed 4.2) as a compute scatter (shaders/viewport_reproject.comp): every previous
-// pixel's point goes to the new pixel it projects into, nearest first. Pixels nothing lands on
+// pixel corner's vertex (at the nearest distance of the four pixels around it) goes to the new
+// pixel it projects into, nearest first. Pixels nothing lands on
 // stay at -1; the start pass fills one-pixel gaps from their neighbours and restarts the rest.
 // Hit colours take a second scatter keyed by their own hit point (why: the shader's header), into
 // the pixel each point lies in and, for pixels no point lies in, the nearest point around.
