@@ -27,6 +27,7 @@ const int FLAG_CARRIED = 2;      // sampleColor holds the colour of a reprojecte
 const int FLAG_REUSED = 4;       // the sample's colour is the carried one, not shaded for this view
 const int FLAG_SHADED_NOW = 8;   // shaded this frame, not yet accumulated
 const int FLAG_COARSE_HIT = 16;  // a hit that stopped short of the surface under motion (isCoarseHit)
+const int FLAG_NEEDS_REFINE = 32; // a marched hit the shade pass refines first (rayState.y: the DE there)
 
 // Frame statistics (core/viewport/gpu_counters.cpp reads them back).
 layout(std430, binding = 0) buffer ViewportCounters {

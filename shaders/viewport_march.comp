@@ -1,12 +1,17 @@
 // shaders/viewport_march.comp — progressive marching (seed 4.1): advances every unfinished ray
-// by at most u_stepsPerFrame steps of march.glsl's marcher, resuming from the stored state, and
-// lists the pixels the shade pass has to shade (rays that finished; at rest, reused colours).
-// Needs the formula, march.glsl and viewport_common.glsl before it.
+// by at most u_stepsPerFrame steps of march.glsl's marcher, resuming from the stored state. A ray
+// that finished gets its colour here when that costs no DE (the background; a hit that keeps the
+// colour reprojection carried to it); the others go on the list of pixels the shade pass shades
+// (with, at rest, the reused colours to shade exactly). Shading them here would cost every pixel
+// the shading code: llvmpipe (Mesa 22) runs both sides of every branch for a SIMD group, skipping
+// nothing, so only a separate dispatch over a compacted list keeps shading off the other pixels.
+// Needs the formula, march.glsl, shade.glsl and viewport_common.glsl before it.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
+layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
 uniform int u_stepsPerFrame;
 uniform int u_maxCarryFrames;
 uniform int u_maxSteps;
@@ -80,18 +85,24 @@ void main() {
             s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
     }
     if (s.status == MARCH_ESCAPED && s.t > tEnd) s.t = parkedDistance(length(ro), u_boundRadius);
-    // A hit is refined (march.glsl) unless its pixel keeps the colour reprojection carried to it.
-    if (marchedToHit && (info.w & FLAG_COARSE_HIT) == 0) {
-        info.x = s.status;
-        if (!keepsCarriedColour(u_atRest, info, carryAge, s.t, tCarried, u_maxCarryFrames, u_detail, px))
-            refineHit(ro, rd, u_pixelAngle, s.lastD, s, deEvals);
-    }
+    info.x = s.status;
+    // A coarse hit keeps its carried colour (isCoarseHit asked). Any other hit that does not keep
+    // it is shaded, and a marched one is refined (march.glsl) first, in the shade pass: refining
+    // here would cost every pixel the refinement's DE code (llvmpipe, above).
+    bool keeps = (info.w & FLAG_COARSE_HIT) != 0 ||
+                 keepsCarriedColour(u_atRest, info, carryAge, s.t, tCarried, u_maxCarryFrames, u_detail, px);
     atomicAdd(c_deEvals, uint(deEvals));
-    if (s.status != MARCH_MARCHING) {
-        info.w |= FLAG_NEEDS_SHADE;
+    if (s.status == MARCH_ESCAPED) {
+        float tCarriedOrNone = imageLoad(u_sampleColor, px).a;  // kept with the colour
+        imageStore(u_sampleColor, px, vec4(shadeBackground(rd), tCarriedOrNone));
+        if (sampleIndex == 0) imageStore(u_colourPoint, px, vec4(0.0));
+        info.w = (info.w & ~FLAG_REUSED) | FLAG_SHADED_NOW;
+    } else if (s.status == MARCH_HIT && keeps) {
+        info.w |= FLAG_REUSED | FLAG_SHADED_NOW;  // sampleColor holds the carried colour
+    } else if (s.status == MARCH_HIT) {
+        info.w = (info.w & ~FLAG_REUSED) | FLAG_NEEDS_SHADE | (marchedToHit ? FLAG_NEEDS_REFINE : 0);
         appendToShadeList(px);
     }
-    info.x = s.status;
     info.y = s.steps;
     imageStore(u_rayState, px, vec4(s.t, s.lastD, s.omega, covered));
     imageStore(u_rayInfo, px, info);
