@@ -36,8 +36,8 @@ void FormulaProgram::use(const Formula& f, const ShadingParams& params) const {
 
 ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey()) {
     const GeneratedFormula g = generateFormulaGLSL(f);
-    march =
-        compileFormulaPass(f, g, "viewport_march.comp", {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_march.comp"});
+    march = compileFormulaPass(f, g, "viewport_march.comp",
+                               {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_march.comp"});
     shade = compileFormulaPass(f, g, "viewport_shade.comp",
                                {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_shade.comp"});
     neighbourMin = compileFormulaPass(f, g, "viewport_neighbour_min.comp",
