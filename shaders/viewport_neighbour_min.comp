@@ -16,13 +16,21 @@ layout(rgba32f, binding = 3) uniform image2D u_accum;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(r32f, binding = 6) uniform readonly image2D u_cone;
-layout(binding = 0) uniform sampler2D u_reprojDistance;  // x: t (<= 0: nothing)
+// The reprojection's nearest distance keys (viewport_reproject.comp); the first u_size.x *
+// u_size.y are the start points': a distance's float bits, all ones where nothing landed.
+layout(std430, binding = 1) readonly buffer ReprojectDepth { uint u_depth[]; };
 // u_size.x by 2 u_size.y: the colour whose point lies in the pixel, then the one near it
 layout(binding = 1) uniform sampler2D u_reprojColor;    // rgb, a: carry age + 1 (0: no colour)
 layout(binding = 2) uniform sampler2D u_reprojCarried;  // xyz: the carried colour's point, w: its t
 layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
 uniform int u_resetAll;
 uniform int u_coneTile;  // 0: no cone pre-pass
+
+// The distance of the reprojected point that won pixel q, or 1e30 when none landed there.
+float reprojectedDistance(ivec2 q) {
+    uint key = u_depth[q.y * u_size.x + q.x];
+    return key == 0xFFFFFFFFu ? 1e30 : uintBitsToFloat(key);
+}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -40,7 +48,6 @@ void main() {
     vec4 carried = vec4(0.0, 0.0, 0.0, -1.0);
     float carryAge = 0.0;
     float deEvals = 0.0;
-    vec4 r = u_resetAll != 0 ? vec4(-1.0) : texelFetch(u_reprojDistance, px, 0);
     // The colour whose point lies in this pixel, else the nearest of those that lie within half a
     // pixel diagonal of its centre (viewport_reproject.comp): each keeps its own point, so the
     // sample stays where it belongs on the surface.
@@ -61,13 +68,11 @@ void main() {
     }
     // The minimum over the neighbourhood also fills the one-pixel gaps the reprojection scatter
     // leaves where the view magnifies (nothing landed here, but on both sides).
-    float tMin = r.x > 0.0 ? r.x : 1e30;
+    float tMin = 1e30;
     if (u_resetAll == 0)
         for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                float n = texelFetch(u_reprojDistance, clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1), 0).x;
-                if (n > 0.0) tMin = min(tMin, n);
-            }
+            for (int dx = -1; dx <= 1; ++dx)
+                tMin = min(tMin, reprojectedDistance(clamp(px + ivec2(dx, dy), ivec2(0), u_size - 1)));
     float omega = max(u_overRelaxation, 1.0);
     float lastD = 0.0, covered = t;
     int steps = 0;

@@ -2,10 +2,12 @@
 // the previous frame puts its point (where its centre ray got to) into the new view, and the
 // nearest point per new pixel wins. This replaces rasterising a one-vertex-per-pixel grid mesh,
 // which llvmpipe runs through its single-threaded vertex pipeline (~300 ms at 640x360); the
-// scatter is two parallel passes. Pass u_resolve = 0: atomicMin of the new-camera distance
-// (positive floats order like their bit patterns as uints) into u_depth. Pass u_resolve = 1: the
-// winner writes its distances and colour. Gaps a point scatter leaves where the view magnifies
-// are filled by the start pass's neighbourhood minimum (viewport_neighbour_min.comp).
+// scatter is two parallel passes, compiled apart (CLAIM 1 and 0: llvmpipe runs a pass's whole
+// code for every invocation, so each holds only its own). The claim pass: atomicMin of the
+// new-camera distance (positive floats order like their bit patterns as uints) into u_depth,
+// which is all the start pass needs of the distances. The write pass: a colour whose point won
+// a pixel writes itself there. Gaps a point scatter leaves where the view magnifies are filled
+// by the start pass's neighbourhood minimum (viewport_neighbour_min.comp).
 // Erosion fix 1, as the seed has it (a vertex of the pixel-quad mesh reads the pixels around it):
 // the points are the mesh's vertices, one per pixel corner, each at the smallest distance of the
 // four pixels that share the corner, so silhouettes do not erode. With the start pass's 3x3
@@ -26,17 +28,15 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry age
 layout(binding = 1) uniform sampler2D u_oldImage;
 layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's point, w: 1 if any
-layout(rgba32f, binding = 7) uniform writeonly image2D u_reprojDistance;  // x: t of the start point
 // Carried colours, u_size.x by 2 u_size.y: row y holds the colour whose point lies in pixel row y,
 // row u_size.y + y the one that pixel borrows when no point lies in it (see below).
 layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
 layout(rgba32f, binding = 9) uniform writeonly image2D u_reprojCarried;   // xyz: its point, w: its t
 // u_depth[0, n): distance keys of the start points; u_depth[n, 2n): of the carried colours whose
-// point lies in the pixel; u_depth[2n, 3n): of those near it (n pixels).
+// point lies in the pixel; u_depth[2n, 3n): of those near it (n pixels). MarchState::reprojDepth.
 layout(std430, binding = 1) buffer ReprojectDepth { uint u_depth[]; };
 uniform vec3 u_newCameraPosition, u_newRight, u_newUp, u_newForward;
 uniform float u_newTanHalfFovY;
-uniform int u_resolve;
 
 // The new pixel a world point projects into, where in the image (pixels from the top-left), and
 // its distance from the new camera; false when it is behind the camera or off-screen.
@@ -49,37 +49,38 @@ bool projectToNewView(vec3 world, out ivec2 target, out vec2 imagePos, out float
     return true;
 }
 
-// Pass 0 claims the target with the nearest key; pass 1 tells whether this point won it.
+// The claim pass claims the target with the nearest key; the write pass tells whether this
+// point won it.
 bool nearestWins(uint index, float t) {
     uint key = floatBitsToUint(t);
-    if (u_resolve == 0) {
-        atomicMin(u_depth[index], key);
-        return false;
-    }
+#if CLAIM
+    atomicMin(u_depth[index], key);
+    return false;
+#else
     return u_depth[index] == key;  // equal keys write equal-enough data
+#endif
 }
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(px, u_size))) return;
-    vec4 own = texelFetch(u_oldCentre, px, 0);
-    // The vertex at this pixel's lower right corner, at the nearest distance of the four pixels
-    // that share the corner.
-    float tMin = own.x;
-    for (int k = 1; k < 4; ++k)
-        tMin = min(tMin, texelFetch(u_oldCentre, clamp(px + ivec2(k & 1, k >> 1), ivec2(0), u_size - 1), 0).x);
-    vec3 rd = cameraRay(vec2(px) + 1.0);
     uint pixels = uint(u_size.x * u_size.y);
     ivec2 target;
     vec2 imagePos;
     float t;
-    if (projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t)) {
-        uint index = uint(target.y * u_size.x + target.x);
-        if (nearestWins(index, t)) imageStore(u_reprojDistance, target, vec4(t, 0.0, 0.0, 1.0));
-    }
+#if CLAIM
+    // The vertex at this pixel's lower right corner, at the nearest distance of the four pixels
+    // that share the corner.
+    float tMin = texelFetch(u_oldCentre, px, 0).x;
+    for (int k = 1; k < 4; ++k)
+        tMin = min(tMin, texelFetch(u_oldCentre, clamp(px + ivec2(k & 1, k >> 1), ivec2(0), u_size - 1), 0).x);
+    vec3 rd = cameraRay(vec2(px) + 1.0);
+    if (projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t))
+        nearestWins(uint(target.y * u_size.x + target.x), t);
+#endif
     vec4 colourPoint = texelFetch(u_oldColourPoint, px, 0);
     if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
-        vec4 color = vec4(texelFetch(u_oldImage, px, 0).rgb, own.z + 1.0);
+        vec4 color = vec4(texelFetch(u_oldImage, px, 0).rgb, texelFetch(u_oldCentre, px, 0).z + 1.0);
         vec4 carried = vec4(colourPoint.xyz, t);
         if (nearestWins(pixels + uint(target.y * u_size.x + target.x), t)) {
             imageStore(u_reprojColor, target, color);

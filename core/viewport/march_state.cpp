@@ -37,7 +37,9 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
     glClearTexImage(image, 0, GL_RGBA, GL_FLOAT, black);
     glClearTexImage(shown, 0, GL_RGBA, GL_FLOAT, black);
 
-    reprojDistance = makeTexture(GL_RGBA32F, width, height);
+    glCreateBuffers(1, &reprojDepth);
+    glNamedBufferStorage(reprojDepth, GLsizeiptr(3 * size_t(width) * size_t(height) * sizeof(GLuint)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
     reprojColor = makeTexture(GL_RGBA32F, width, 2 * height);
     reprojCarried = makeTexture(GL_RGBA32F, width, 2 * height);
     glCreateBuffers(1, &shadeList);
@@ -47,8 +49,9 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
 
 MarchState::~MarchState() {
     glDeleteBuffers(1, &shadeList);
-    const GLuint textures[] = {rayState, rayInfo,     sampleColor, accum,          image,       centre,
-                               cone,     colourPoint, shown,       reprojDistance, reprojColor, reprojCarried};
+    glDeleteBuffers(1, &reprojDepth);
+    const GLuint textures[] = {rayState, rayInfo,     sampleColor, accum,       image,        centre,
+                               cone,     colourPoint, shown,       reprojColor, reprojCarried};
     glDeleteTextures(GLsizei(std::size(textures)), textures);
 }
 

@@ -28,12 +28,14 @@ class MarchState {
     // The image shown and read back: `image` at rest, a reconstruction from the scattered samples
     // under motion (shaders/viewport_resolve.comp). Reprojection carries `image`, never this.
     GLuint shown = 0;
-    // Reprojection target (written by reproject_pass as images 7, 8 and 9): start distances,
-    // carried colours (a: carry age + 1, 0: none) and each carried colour's point (xyz, and w: its
-    // distance from the new camera). The colour images are twice as tall: row y holds the colour
-    // whose point lies in pixel row y, row height + y the one near it, which a pixel takes when
-    // no point lies in it (shaders/viewport_reproject.comp).
-    GLuint reprojDistance = 0, reprojColor = 0, reprojCarried = 0;
+    // Reprojection target (written by reproject_pass): the nearest distance keys (SSBO binding 1,
+    // 3 width x height uints: start points, then carried colours in the pixel, then near it; a
+    // key is the distance's float bits, all ones for none), carried colours (image 8; a: carry
+    // age + 1, 0: none) and each carried colour's point (image 9; xyz, and w: its distance from
+    // the new camera). The colour images are twice as tall: row y holds the colour whose point
+    // lies in pixel row y, row height + y the one near it, which a pixel takes when no point lies
+    // in it (shaders/viewport_reproject.comp).
+    GLuint reprojDepth = 0, reprojColor = 0, reprojCarried = 0;
     // The pixels to shade this frame: 4 uints of indirect-dispatch header and count, then one
     // pixel index per entry (room for every pixel).
     GLuint shadeList = 0;

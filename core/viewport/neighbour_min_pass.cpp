@@ -10,7 +10,7 @@ void runNeighbourMinPass(const ViewportPrograms& p, const MarchState& s, const F
     setViewUniforms(program, c.camera, s.width(), s.height());
     setInt(program, "u_resetAll", resetAll ? 1 : 0);
     setInt(program, "u_coneTile", c.options.coneTile);
-    glBindTextureUnit(0, s.reprojDistance);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, s.reprojDepth);
     glBindTextureUnit(1, s.reprojColor);
     glBindTextureUnit(2, s.reprojCarried);
     dispatchPixels(s.width(), s.height());

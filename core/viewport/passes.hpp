@@ -21,22 +21,10 @@ struct FrameContext {
     bool atRest;  // FrameAction::Continue: the AA level may rise
 };
 
-// Reprojection (reproject_pass.cpp): scatters the previous frame's points into the reprojection
-// target (MarchState::reprojDistance / reprojColor). Owns the per-pixel depth buffer the nearest
-// point wins in (resized with the image).
-class ReprojectPass {
-   public:
-    ReprojectPass();
-    ~ReprojectPass();
-    ReprojectPass(const ReprojectPass&) = delete;
-    ReprojectPass& operator=(const ReprojectPass&) = delete;
-    void run(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current,
-             double boundRadius);
-
-   private:
-    GLuint depth_ = 0;
-    int width_ = 0, height_ = 0;
-};
+// Reprojection (reproject_pass.cpp): scatters the previous frame's points, seen from the
+// previous camera, into the reprojection target (MarchState::reprojDepth / reprojColor /
+// reprojCarried) for the current one.
+void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current);
 
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 // Starts the rays of a new view: resetAll restarts every pixel, otherwise from the reprojection.

@@ -3,7 +3,6 @@
 namespace fraktal::viewport {
 
 Viewport::Viewport(ViewportOptions options) : options_(options) {
-    reproject_ = std::make_unique<ReprojectPass>();
     counters_ = std::make_unique<GpuCounters>();
     timer_ = std::make_unique<PassTimer>();
     glCreateVertexArrays(1, &displayVertexArray_);
@@ -55,7 +54,7 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     counters_->clearAndBind();
     state_->bindImages();
     if (action == FrameAction::Reproject) {
-        reproject_->run(*programs_, *state_, previous_->camera, camera, formula.boundRadius);
+        runReprojectPass(*programs_, *state_, previous_->camera, camera);
         mark("reproject");
     }
     if (action != FrameAction::Continue) {

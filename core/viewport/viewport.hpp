@@ -78,7 +78,6 @@ class Viewport {
     ViewportOptions options_;
     std::unique_ptr<ViewportPrograms> programs_;
     std::unique_ptr<MarchState> state_;
-    std::unique_ptr<ReprojectPass> reproject_;
     std::unique_ptr<GpuCounters> counters_;
     std::unique_ptr<PassTimer> timer_;
     std::optional<FrameKey> previous_;

@@ -48,8 +48,9 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
         assembleShader(none, "viewport_accumulate.comp", concat({"viewport_common.glsl", "viewport_accumulate.comp"})));
     resolve = gl::compileCompute(
         assembleShader(none, "viewport_resolve.comp", concat({"viewport_common.glsl", "viewport_resolve.comp"})));
-    reproject = gl::compileCompute(
-        assembleShader(none, "viewport_reproject.comp", concat({"viewport_common.glsl", "viewport_reproject.comp"})));
+    const std::string reproject = concat({"viewport_common.glsl", "viewport_reproject.comp"});
+    reprojectClaim = gl::compileCompute(assembleShader(none, "viewport_reproject.comp", reproject, "#define CLAIM 1"));
+    reprojectWrite = gl::compileCompute(assembleShader(none, "viewport_reproject.comp", reproject, "#define CLAIM 0"));
     display = gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
                                   assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"})));
 }

@@ -26,7 +26,9 @@ struct ViewportPrograms {
     explicit ViewportPrograms(const Formula& formula);  // throws naming the node on a GLSL error
     std::string structure;
     FormulaProgram march, shade, neighbourMin, cone;
-    gl::Program accumulate, resolve, reproject, display;
+    gl::Program accumulate, resolve, display;
+    // The reprojection scatter's two passes (shaders/viewport_reproject.comp): claim, then write.
+    gl::Program reprojectClaim, reprojectWrite;
 };
 
 // Sets viewport_common.glsl's camera uniforms on the bound program.
