@@ -12,7 +12,6 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
-layout(rgba32f, binding = 3) uniform image2D u_accum;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(r32f, binding = 6) uniform readonly image2D u_cone;
@@ -98,7 +97,6 @@ void main() {
     imageStore(u_rayState, px, vec4(t, lastD, omega, covered));
     imageStore(u_rayInfo, px, ivec4(STATUS_MARCHING, steps, 0, flags));
     imageStore(u_sampleColor, px, carried);
-    imageStore(u_accum, px, vec4(0.0));
     imageStore(u_centre, px, vec4(t, float(STATUS_MARCHING), carryAge, 0.0));
     imageStore(u_colourPoint, px, colourPoint);
     atomicAdd(c_deEvals, uint(deEvals));

@@ -1,6 +1,6 @@
 // shaders/viewport_resolve.comp — the image shown (MarchState::shown) from the scene-linear
-// samples (MarchState::image). At rest it is the image itself (the accumulated AA mean). Under
-// camera motion each pixel holds one sample, and a reprojected one lies where its own surface
+// samples (MarchState::image) under camera motion (at rest, or with the filter off, it is a copy
+// of the image: runResolvePass). Under camera motion each pixel holds one sample, and a reprojected one lies where its own surface
 // point projects, anywhere in the pixel (viewport_reproject.comp), so neighbouring samples fall
 // at scattered positions around the pixel centre. The shown colour is then a reconstruction from
 // every sample of the 3x3 neighbourhood within RESOLVE_RADIUS pixels of the centre, tent-weighted
@@ -14,8 +14,6 @@ layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 layout(rgba32f, binding = 10) uniform image2D u_colourPoint;
 layout(rgba32f, binding = 11) uniform writeonly image2D u_shown;
-uniform int u_atRest;
-uniform int u_motionFilter;
 
 const float RESOLVE_RADIUS = 1.0;  // pixels: the tent of bilinear reconstruction
 
@@ -39,7 +37,7 @@ void main() {
     vec4 own = imageLoad(u_image, px);
     vec2 ownPosition;
     float ownDepth;
-    if (u_atRest != 0 || u_motionFilter == 0 || !sampleOf(px, ownPosition, ownDepth)) {
+    if (!sampleOf(px, ownPosition, ownDepth)) {
         imageStore(u_shown, px, own);
         return;
     }
