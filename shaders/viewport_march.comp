@@ -1,11 +1,14 @@
 // shaders/viewport_march.comp — progressive marching (seed 4.1): advances every unfinished ray
-// by at most u_stepsPerFrame steps of march.glsl's marcher, resuming from the stored state. A ray
-// that finished gets its colour here when that costs no DE (the background; a hit that keeps the
-// colour reprojection carried to it); the others go on the list of pixels the shade pass shades
-// (with, at rest, the reused colours to shade exactly). Shading them here would cost every pixel
-// the shading code: llvmpipe (Mesa 22) runs both sides of every branch for a SIMD group, skipping
-// nothing, so only a separate dispatch over a compacted list keeps shading off the other pixels.
-// Needs the formula, march.glsl, shade.glsl and viewport_common.glsl before it.
+// by at most u_stepsPerFrame steps of march.glsl's marcher, resuming from the stored state. The
+// START variant (#define START 1, on a reset or a reprojected frame) first starts every pixel's
+// ray for the new view (viewport_start.glsl) and marches on from there; its first DE verifies a
+// reprojected start. A ray that finished gets its colour here when that costs no DE (the
+// background; a hit that keeps the colour reprojection carried to it); the others go on the list
+// of pixels the shade pass shades (with, at rest, the reused colours to shade exactly). Shading
+// them here would cost every pixel the shading code: llvmpipe (Mesa 22) runs both sides of every
+// branch for a SIMD group, skipping nothing, so only a separate dispatch over a compacted list
+// keeps shading off the other pixels. Needs the formula, march.glsl, shade.glsl,
+// viewport_common.glsl and, for START, viewport_start.glsl before it.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
@@ -21,6 +24,17 @@ uniform int u_coarseHits;  // ViewportOptions::coarseHits
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(px, u_size))) return;
+    vec3 ro = u_cameraPosition;
+    float initialOmega = max(u_overRelaxation, 1.0);
+#if START
+    RayStart start = startRay(px, ro, cameraRay(vec2(px) + 0.5));
+    ivec4 info = ivec4(STATUS_MARCHING, 0, 0, start.flags);
+    vec4 state = vec4(start.t, 0.0, initialOmega, start.restartAt);
+    bool verifying = start.verify;
+    bool reprojected = start.reprojected;
+    float tCarried = start.carried.a;
+    float carryAge = start.carryAge;
+#else
     ivec4 info = imageLoad(u_rayInfo, px);
     if (info.x != STATUS_MARCHING) {
         if (u_atRest == 0 || (info.w & FLAG_COARSE_HIT) == 0) {
@@ -33,19 +47,20 @@ void main() {
         info.w &= ~(FLAG_COARSE_HIT | FLAG_REUSED);
     }
     vec4 state = imageLoad(u_rayState, px);
+    const bool verifying = false;
+    // The carried colour's depth and age (keepsCarriedColour asks only for a carried centre sample).
+    bool carried = info.z == 0 && (info.w & FLAG_CARRIED) != 0;
+    float tCarried = carried ? imageLoad(u_sampleColor, px).a : 0.0;
+    float carryAge = carried ? imageLoad(u_centre, px).z : 0.0;
+#endif
     int sampleIndex = info.z;
-    vec3 ro = u_cameraPosition;
     vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(sampleIndex));
     MarchState s = MarchState(state.x, state.y, state.z, MARCH_MARCHING, info.y);
     float covered = state.w;
     float deEvals = 0.0;
     bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
-    // The carried colour's depth and age (keepsCarriedColour asks only for a carried centre sample).
-    bool carries = sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0;
-    float tCarried = carries ? imageLoad(u_sampleColor, px).a : 0.0;
-    float carryAge = carries ? imageLoad(u_centre, px).z : 0.0;
     // A ray that may keep a carried colour may stop at a coarse hit (viewport_common.glsl).
-    bool mayStopCoarse = carries && u_coarseHits != 0 && u_atRest == 0;
+    bool mayStopCoarse = sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0 && u_coarseHits != 0 && u_atRest == 0;
     float tStart, tEnd;
     if (!clipToBound(ro, rd, tStart, tEnd)) {
         // Misses the bound sphere: nothing anywhere along it.
@@ -55,7 +70,8 @@ void main() {
         s.t = max(s.t, tStart);
         covered = max(covered, tStart);
         float tanHalf = HALF_DIAGONAL * u_pixelAngle;
-        int budget = min(u_stepsPerFrame, u_maxSteps - s.steps);
+        // The verifying DE does not count against this frame's budget.
+        int budget = verifying ? 1 + min(u_stepsPerFrame, u_maxSteps - 1) : min(u_stepsPerFrame, u_maxSteps - s.steps);
         for (int i = 0; i < budget && s.status == MARCH_MARCHING; ++i) {
             float t0 = s.t;
             // The last accepted step went omega * lastD from a point whose DE was lastD: up to
@@ -74,6 +90,21 @@ void main() {
                 break;
             }
             marchSteps(ro, rd, tEnd, u_pixelAngle, 1, s, deEvals);
+#if START
+            if (verifying) {
+                // The first step of a reprojected start verifies it: a start within the hit
+                // threshold of a surface may lie behind a thin shell, so the ray restarts.
+                verifying = false;
+                if (s.status == MARCH_HIT) {
+                    s = MarchState(start.restartAt, 0.0, initialOmega, MARCH_MARCHING, 0);
+                    budget = i + 1 + min(u_stepsPerFrame, u_maxSteps);
+                } else {
+                    covered = t0;  // reprojection vouches for the cone up to the start
+                    reprojected = true;
+                }
+                continue;
+            }
+#endif
             // An accepted step stored the DE at t0 in lastD (a fallback step moves t backward).
             if (sampleIndex == 0 && s.status == MARCH_MARCHING && s.t > t0)
                 covered = extendConeCoverage(covered, t0, s.lastD, tanHalf);
@@ -92,10 +123,19 @@ void main() {
     bool keeps = (info.w & FLAG_COARSE_HIT) != 0 ||
                  keepsCarriedColour(u_atRest, info, carryAge, s.t, tCarried, u_maxCarryFrames, u_detail, px);
     atomicAdd(c_deEvals, uint(deEvals));
+#if START
+    vec4 sampleColor = start.carried;
+    vec4 colourPoint = start.colourPoint;
+#endif
     if (s.status == MARCH_ESCAPED) {
+#if START
+        sampleColor.rgb = shadeBackground(rd);
+        colourPoint = vec4(0.0);
+#else
         float tCarriedOrNone = imageLoad(u_sampleColor, px).a;  // kept with the colour
         imageStore(u_sampleColor, px, vec4(shadeBackground(rd), tCarriedOrNone));
         if (sampleIndex == 0) imageStore(u_colourPoint, px, vec4(0.0));
+#endif
         info.w = (info.w & ~FLAG_REUSED) | FLAG_SHADED_NOW;
     } else if (s.status == MARCH_HIT && keeps) {
         info.w |= FLAG_REUSED | FLAG_SHADED_NOW;  // sampleColor holds the carried colour
@@ -106,5 +146,13 @@ void main() {
     info.y = s.steps;
     imageStore(u_rayState, px, vec4(s.t, s.lastD, s.omega, covered));
     imageStore(u_rayInfo, px, info);
+#if START
+    imageStore(u_sampleColor, px, sampleColor);
+    imageStore(u_colourPoint, px, colourPoint);
+    imageStore(u_centre, px, vec4(s.t, float(s.status), carryAge, 0.0));
+    if (reprojected) atomicAdd(c_reprojected, 1u);
+    else atomicAdd(c_restarted, 1u);
+#else
     if (sampleIndex == 0) imageStore(u_centre, px, vec4(s.t, float(s.status), imageLoad(u_centre, px).z, 0.0));
+#endif
 }

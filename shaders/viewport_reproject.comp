@@ -5,12 +5,12 @@
 // scatter is two parallel passes, compiled apart (CLAIM 1 and 0: llvmpipe runs a pass's whole
 // code for every invocation, so each holds only its own). The claim pass: atomicMin of the
 // new-camera distance (positive floats order like their bit patterns as uints) into u_depth,
-// which is all the start pass needs of the distances. The write pass: a colour whose point won
+// which is all the rays' starts need of the distances. The write pass: a colour whose point won
 // a pixel writes itself there. Gaps a point scatter leaves where the view magnifies are filled
-// by the start pass's neighbourhood minimum (viewport_neighbour_min.comp).
+// by the starts' neighbourhood minimum (viewport_start.glsl).
 // Erosion fix 1, as the seed has it (a vertex of the pixel-quad mesh reads the pixels around it):
 // the points are the mesh's vertices, one per pixel corner, each at the smallest distance of the
-// four pixels that share the corner, so silhouettes do not erode. With the start pass's 3x3
+// four pixels that share the corner, so silhouettes do not erode. With the starts' 3x3
 // minimum (erosion fix 2) a start is the nearest of 4x4 pixels. Until 2026-11 each pixel centre
 // took the minimum of its 3x3 neighbourhood, 5x5 in all, which started rays farther in front of
 // the surface for the same image (Sierpinski tetrahedron, 30 frames from rest at 320x180: 1.57

@@ -127,7 +127,7 @@ struct FrameCounters {
 
 // GPU time of one pass of a frame (core/viewport/pass_timer.hpp), when ViewportOptions::timePasses.
 struct PassTime {
-    const char* name = "";  // a string literal: "reproject", "start", "march", "shade", ...
+    const char* name = "";  // a string literal: "reproject", "march", "shade", ...
     double milliseconds = 0.0;
 };
 

@@ -1,17 +1,31 @@
-// Progressive marching (shaders/viewport_march.comp).
+// Progressive marching, and on a new view the rays' starts (shaders/viewport_march.comp with
+// shaders/viewport_start.glsl).
 #include "core/viewport/passes.hpp"
 
 namespace fraktal::viewport {
 
-void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
-    const GLuint program = p.march.program.id();
-    p.march.use(c.formula, c.shading);
+void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action) {
+    const bool newView = action != FrameAction::Continue;
+    const FormulaProgram& pass = newView ? p.marchFromStart : p.march;
+    const GLuint program = pass.program.id();
+    pass.use(c.formula, c.shading);
     setViewUniforms(program, c.camera, s.width(), s.height());
     setInt(program, "u_stepsPerFrame", c.options.stepsPerFrame);
     setInt(program, "u_maxSteps", c.maxSteps);
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
-    setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);  // keepsCarriedColour skips refining
+    setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);  // keepsCarriedColour
     setInt(program, "u_coarseHits", c.options.coarseHits ? 1 : 0);
+    if (newView) {
+        setInt(program, "u_resetAll", action == FrameAction::Reset ? 1 : 0);
+        setInt(program, "u_coneTile", c.options.coneTile);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, s.reprojDepth);
+        glBindTextureUnit(1, s.reprojColor);
+        glBindTextureUnit(2, s.reprojCarried);
+        // Every pixel starts a new sample 0. A clear, not a store in the shader: on llvmpipe each
+        // image store costs about 1.5 ms of a 640x360 frame.
+        const float none[4] = {0, 0, 0, 0};
+        glClearTexImage(s.accum, 0, GL_RGBA, GL_FLOAT, none);
+    }
     s.clearShadeList();
     dispatchPixels(s.width(), s.height());
     imageBarrier();

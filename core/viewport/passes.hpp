@@ -5,6 +5,7 @@
 #include "core/camera.hpp"
 #include "core/formula.hpp"
 #include "core/render/shading_params.hpp"
+#include "core/viewport/frame_logic.hpp"
 #include "core/viewport/march_state.hpp"
 #include "core/viewport/viewport_options.hpp"
 #include "core/viewport/viewport_programs.hpp"
@@ -27,9 +28,9 @@ struct FrameContext {
 void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current);
 
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
-// Starts the rays of a new view: resetAll restarts every pixel, otherwise from the reprojection.
-void runNeighbourMinPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, bool resetAll);
-void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
+// Advances the rays. On a new view (action Reset or Reproject) it first starts them: from the
+// camera on a reset, else from the reprojection.
+void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);

@@ -57,15 +57,11 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
         runReprojectPass(*programs_, *state_, previous_->camera, camera);
         mark("reproject");
     }
-    if (action != FrameAction::Continue) {
-        if (options_.coneTile > 0) {
-            runConePass(*programs_, *state_, context);
-            mark("cone");
-        }
-        runNeighbourMinPass(*programs_, *state_, context, action == FrameAction::Reset);
-        mark("start");
+    if (action != FrameAction::Continue && options_.coneTile > 0) {
+        runConePass(*programs_, *state_, context);
+        mark("cone");
     }
-    runMarchPass(*programs_, *state_, context);
+    runMarchPass(*programs_, *state_, context, action);
     mark("march");
     runShadePass(*programs_, *state_, context);
     mark("shade");

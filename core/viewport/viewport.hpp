@@ -4,9 +4,9 @@
 // through drawDisplay() or read it back. Needs a current GL 4.5 context (the editor's window or
 // gl::HeadlessContext).
 //
-// Frame: decideFrame() picks reset / reproject / continue; reproject_pass + neighbour_min_pass
-// (or a reset) start the rays of a new view; march_pass advances unfinished rays by
-// options.stepsPerFrame steps; shade_pass shades only samples that finished; accumulate_pass adds
+// Frame: decideFrame() picks reset / reproject / continue; on a new view march_pass starts the
+// rays (from reproject_pass's scatter, or from the camera on a reset); march_pass advances
+// unfinished rays by options.stepsPerFrame steps; shade_pass shades only samples that finished; accumulate_pass adds
 // them to the AA mean and starts the next jittered sample while the camera rests. A structure
 // change recompiles before anything else happens, and every reset keeps the old image on screen
 // per pixel until that pixel's new sample is shaded.

@@ -17,10 +17,10 @@ std::string concat(std::initializer_list<const char*> names) {
     return text;
 }
 
-FormulaProgram compileFormulaPass(const Formula& f, const GeneratedFormula& g, const char* name,
+FormulaProgram compileFormulaPass(const Formula& f, const GeneratedFormula& g, const char* name, const char* defines,
                                   std::initializer_list<const char*> sources) {
     FormulaProgram p;
-    p.program = gl::compileCompute(assembleShader(g, name, concat(sources)));
+    p.program = gl::compileCompute(assembleShader(g, name, concat(sources), defines));
     p.formula = gl::FormulaUniforms(p.program.id(), f);
     p.shading = gl::ShadingUniforms(p.program.id());
     return p;
@@ -36,13 +36,15 @@ void FormulaProgram::use(const Formula& f, const ShadingParams& params) const {
 
 ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey()) {
     const GeneratedFormula g = generateFormulaGLSL(f);
-    march = compileFormulaPass(f, g, "viewport_march.comp",
+    march = compileFormulaPass(f, g, "viewport_march.comp", "#define START 0",
                                {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_march.comp"});
-    shade = compileFormulaPass(f, g, "viewport_shade.comp",
+    marchFromStart = compileFormulaPass(
+        f, g, "viewport_march.comp", "#define START 1",
+        {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_start.glsl", "viewport_march.comp"});
+    shade = compileFormulaPass(f, g, "viewport_shade.comp", "",
                                {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_shade.comp"});
-    neighbourMin = compileFormulaPass(f, g, "viewport_neighbour_min.comp",
-                                      {"march.glsl", "viewport_common.glsl", "viewport_neighbour_min.comp"});
-    cone = compileFormulaPass(f, g, "viewport_cone.comp", {"march.glsl", "viewport_common.glsl", "viewport_cone.comp"});
+    cone = compileFormulaPass(f, g, "viewport_cone.comp", "",
+                              {"march.glsl", "viewport_common.glsl", "viewport_cone.comp"});
     const GeneratedFormula none;
     accumulate = gl::compileCompute(
         assembleShader(none, "viewport_accumulate.comp", concat({"viewport_common.glsl", "viewport_accumulate.comp"})));

@@ -25,7 +25,8 @@ struct FormulaProgram {
 struct ViewportPrograms {
     explicit ViewportPrograms(const Formula& formula);  // throws naming the node on a GLSL error
     std::string structure;
-    FormulaProgram march, shade, neighbourMin, cone;
+    // march resumes the rays; marchFromStart first starts them for a new view (reset or reprojected).
+    FormulaProgram march, marchFromStart, shade, cone;
     gl::Program accumulate, resolve, display;
     // The reprojection scatter's two passes (shaders/viewport_reproject.comp): claim, then write.
     gl::Program reprojectClaim, reprojectWrite;
