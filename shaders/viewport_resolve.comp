@@ -9,38 +9,24 @@
 // are left as they are: the radius is under a pixel, so only the pixel's own sample counts.
 // Needs viewport_common.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
-layout(rgba32f, binding = 4) uniform image2D u_image;
-layout(rgba32f, binding = 5) uniform image2D u_centre;
-layout(rgba32f, binding = 10) uniform image2D u_colourPoint;
+layout(rgba32f, binding = 4) uniform readonly image2D u_image;
+// Where each pixel's sample lies (xy, pixels from the top-left) and its depth (z, 1e30 for the
+// background); w: 0 when the pixel has no sample for this view yet (viewport_accumulate.comp).
+layout(rgba32f, binding = 7) uniform readonly image2D u_samplePosition;
 layout(rgba32f, binding = 11) uniform writeonly image2D u_shown;
 
 const float RESOLVE_RADIUS = 1.0;  // pixels: the tent of bilinear reconstruction
-
-// Where a pixel's sample lies in the image (pixels from the top-left) and how far its surface is:
-// a surface colour lies at its own point; a background colour at the pixel centre, infinitely far.
-// False when the pixel has no sample for this view yet (its ray is marching and nothing was carried).
-bool sampleOf(ivec2 q, out vec2 position, out float depth) {
-    ivec4 info = imageLoad(u_rayInfo, q);
-    vec4 point = imageLoad(u_colourPoint, q);
-    position = vec2(q) + 0.5;
-    depth = 1e30;
-    if (info.x == STATUS_MARCHING && (info.w & FLAG_CARRIED) == 0) return false;
-    if (point.w == 0.0) return info.x != STATUS_MARCHING;  // background (or a colour of unknown point)
-    return projectToImage(point.xyz, u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward, u_tanHalfFovY,
-                          position, depth);
-}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(px, u_size))) return;
     vec4 own = imageLoad(u_image, px);
-    vec2 ownPosition;
-    float ownDepth;
-    if (!sampleOf(px, ownPosition, ownDepth)) {
+    vec4 ownSample = imageLoad(u_samplePosition, px);
+    if (ownSample.w == 0.0) {
         imageStore(u_shown, px, own);
         return;
     }
+    float ownDepth = ownSample.z;
     vec2 centre = vec2(px) + 0.5;
     float sameSurface = ownDepth < 1e30 ? reprojectionMargin(ownDepth, u_pixelAngle, 1.0) : 0.0;
     vec3 sum = vec3(0.0);
@@ -49,9 +35,10 @@ void main() {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = px + ivec2(dx, dy);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_size))) continue;
-            vec2 position;
-            float depth;
-            if (!sampleOf(q, position, depth)) continue;
+            vec4 neighbour = imageLoad(u_samplePosition, q);
+            if (neighbour.w == 0.0) continue;
+            vec2 position = neighbour.xy;
+            float depth = neighbour.z;
             bool bothBackground = depth >= 1e30 && ownDepth >= 1e30;
             if (!bothBackground && abs(depth - ownDepth) > sameSurface) continue;
             float w = max(0.0, 1.0 - length(position - centre) / RESOLVE_RADIUS);

@@ -4,10 +4,9 @@
 namespace fraktal::viewport {
 
 void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
-    const GLuint program = p.accumulate.id();
+    const GLuint program = c.atRest ? p.accumulateAtRest.id() : p.accumulateMoving.id();
     glUseProgram(program);
     setViewUniforms(program, c.camera, s.width(), s.height());
-    setInt(program, "u_atRest", c.atRest ? 1 : 0);
     setInt(program, "u_maxSamples", c.options.maxSamples);
     setFloat(program, "u_initialOmega", float(std::max(c.shading.overRelaxation, 1.0)));
     dispatchPixels(s.width(), s.height());

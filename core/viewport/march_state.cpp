@@ -29,6 +29,7 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
     centre = makeTexture(GL_RGBA32F, width, height);
     colourPoint = makeTexture(GL_RGBA32F, width, height);
     shown = makeTexture(GL_RGBA32F, width, height);
+    samplePosition = makeTexture(GL_RGBA32F, width, height);
     const float none[4] = {0, 0, 0, 0};
     glClearTexImage(colourPoint, 0, GL_RGBA, GL_FLOAT, none);
     const int tile = std::max(coneTile, 1);
@@ -50,8 +51,8 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
 MarchState::~MarchState() {
     glDeleteBuffers(1, &shadeList);
     glDeleteBuffers(1, &reprojDepth);
-    const GLuint textures[] = {rayState, rayInfo,     sampleColor, accum,       image,        centre,
-                               cone,     colourPoint, shown,       reprojColor, reprojCarried};
+    const GLuint textures[] = {rayState, rayInfo,     sampleColor, accum,          image,       centre,
+                               cone,     colourPoint, shown,       samplePosition, reprojColor, reprojCarried};
     glDeleteTextures(GLsizei(std::size(textures)), textures);
 }
 
@@ -63,6 +64,7 @@ void MarchState::bindImages() const {
     glBindImageTexture(4, image, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(5, centre, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(6, cone, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    glBindImageTexture(7, samplePosition, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(10, colourPoint, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(11, shown, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, shadeList);

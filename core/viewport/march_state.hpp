@@ -15,7 +15,7 @@ class MarchState {
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // Binds every state image at its unit (0..6, 10 and 11, as the shaders declare them) and the shade list
+    // Binds every state image at its unit (0..7, 10 and 11, as the shaders declare them) and the shade list
     // at SSBO binding 2.
     void bindImages() const;
     // Empties the shade list (ShadeList in shaders/viewport_common.glsl): no pixels, no groups.
@@ -28,6 +28,9 @@ class MarchState {
     // The image shown and read back: `image` at rest, a reconstruction from the scattered samples
     // under motion (shaders/viewport_resolve.comp). Reprojection carries `image`, never this.
     GLuint shown = 0;
+    // Under motion, where each pixel's one sample lies (xy, pixels), its depth (z) and whether it
+    // has one (w): written by the accumulate pass for the resolve pass's reconstruction.
+    GLuint samplePosition = 0;
     // Reprojection target (written by reproject_pass): the nearest distance keys (SSBO binding 1,
     // 3 width x height uints: start points, then carried colours in the pixel, then near it; a
     // key is the distance's float bits, all ones for none), carried colours (image 8; a: carry

@@ -46,8 +46,11 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
     cone = compileFormulaPass(f, g, "viewport_cone.comp", "",
                               {"march.glsl", "viewport_common.glsl", "viewport_cone.comp"});
     const GeneratedFormula none;
-    accumulate = gl::compileCompute(
-        assembleShader(none, "viewport_accumulate.comp", concat({"viewport_common.glsl", "viewport_accumulate.comp"})));
+    const std::string accumulate = concat({"viewport_common.glsl", "viewport_accumulate.comp"});
+    accumulateAtRest =
+        gl::compileCompute(assembleShader(none, "viewport_accumulate.comp", accumulate, "#define AT_REST 1"));
+    accumulateMoving =
+        gl::compileCompute(assembleShader(none, "viewport_accumulate.comp", accumulate, "#define AT_REST 0"));
     resolve = gl::compileCompute(
         assembleShader(none, "viewport_resolve.comp", concat({"viewport_common.glsl", "viewport_resolve.comp"})));
     const std::string reproject = concat({"viewport_common.glsl", "viewport_reproject.comp"});

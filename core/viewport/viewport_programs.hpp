@@ -27,7 +27,8 @@ struct ViewportPrograms {
     std::string structure;
     // march resumes the rays; marchFromStart first starts them for a new view (reset or reprojected).
     FormulaProgram march, marchFromStart, shade, cone;
-    gl::Program accumulate, resolve, display;
+    // accumulateAtRest raises the AA level; accumulateMoving finds the samples' positions instead.
+    gl::Program accumulateAtRest, accumulateMoving, resolve, display;
     // The reprojection scatter's two passes (shaders/viewport_reproject.comp): claim, then write.
     gl::Program reprojectClaim, reprojectWrite;
 };
