@@ -15,8 +15,11 @@ layout(rgba32f, binding = 3) uniform image2D u_accum;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 #if !AT_REST
-layout(rgba32f, binding = 7) uniform writeonly image2D u_samplePosition;
-layout(rgba32f, binding = 10) uniform readonly image2D u_colourPoint;
+// No readonly / writeonly here: with u_colourPoint readonly, llvmpipe (Mesa 22.3) sent this
+// shader's u_samplePosition stores somewhere they corrupted the next frame's state (its DE
+// counts changed; with either qualifier dropped, or the image at another unit, they did not).
+layout(rgba32f, binding = 7) uniform image2D u_samplePosition;
+layout(rgba32f, binding = 10) uniform image2D u_colourPoint;
 
 // Where a pixel's sample lies in the image (pixels from the top-left) and how far its surface is:
 // a surface colour lies at its own point; a background colour at the pixel centre, infinitely far.

@@ -9,10 +9,10 @@
 // are left as they are: the radius is under a pixel, so only the pixel's own sample counts.
 // Needs viewport_common.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 4) uniform readonly image2D u_image;
+layout(rgba32f, binding = 4) uniform image2D u_image;
 // Where each pixel's sample lies (xy, pixels from the top-left) and its depth (z, 1e30 for the
 // background); w: 0 when the pixel has no sample for this view yet (viewport_accumulate.comp).
-layout(rgba32f, binding = 7) uniform readonly image2D u_samplePosition;
+layout(rgba32f, binding = 7) uniform image2D u_samplePosition;  // no qualifier: viewport_accumulate.comp
 layout(rgba32f, binding = 11) uniform writeonly image2D u_shown;
 
 const float RESOLVE_RADIUS = 1.0;  // pixels: the tent of bilinear reconstruction

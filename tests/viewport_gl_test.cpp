@@ -126,6 +126,43 @@ TEST(ViewportGL, ReprojectedSilhouettesHaveNoHoles) {
     }
 }
 
+// Every colour the viewport holds, fresh or carried by reprojection, is the shading of a point on
+// the surface: the point its colourPoint names lies within the hit band of the formula's CPU DE.
+// Reprojection scatters colours by these points and the motion filter places samples at them, so
+// a point off the surface (a store into the wrong image, a stale point kept with a new colour)
+// moves colours to where they do not belong.
+TEST(ViewportGL, ColourPointsLieOnTheSurface) {
+    test::glContext();
+    for (const char* name : {"menger.json", "mandelbulb.json"}) {
+        SCOPED_TRACE(name);
+        const Scene s = loadScene(test::sourceDir() / "presets" / name);
+        Viewport viewport;
+        for (int f = 0; f <= 3; ++f) {
+            const Camera camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, f, 2.0);
+            viewport.render(s.preset.formula, camera, s.render, s.preset.shading, kW, kH);
+            const double pixelAngle = 2.0 * std::tan(glm::radians(camera.fovY) * 0.5) / kH;
+            const double detail = std::max(s.render.detail, 1.0);
+            const std::vector<float> points = viewport.readColourPoints();
+            int surface = 0, within2 = 0;
+            double worst = 0.0;
+            for (size_t i = 0; i + 3 < points.size(); i += 4) {
+                if (points[i + 3] == 0.0f) continue;
+                const vec3 p(points[i], points[i + 1], points[i + 2]);
+                const double footprint = pixelAngle * glm::length(p - camera.position) * detail;
+                const double d = std::abs(distanceEstimate(s.preset.formula, p)) / footprint;
+                ++surface;
+                if (d < 2.0) ++within2;
+                worst = std::max(worst, d);
+            }
+            EXPECT_GT(surface, kW * kH / 10) << "frame " << f << ": few surface colours";
+            // Out-of-steps hits (a ray crawling along a grazing surface) may stop up to 10
+            // footprints away; refined hits lie within one.
+            EXPECT_GE(within2, 0.99 * surface) << "frame " << f;
+            EXPECT_LT(worst, 12.0) << "frame " << f;
+        }
+    }
+}
+
 // Speed as work: over the orbit path with 30 steps per frame, reprojection needs far fewer DE
 // evaluations per pixel per frame (shading included) than restarting every ray, with an image at
 // least as close to the fully converged (anti-aliased) render of each view. The target is

@@ -95,6 +95,8 @@ std::vector<float> Viewport::readImage() const { return readState(&MarchState::s
 
 std::vector<float> Viewport::readCentreRays() const { return readState(&MarchState::centre); }
 
+std::vector<float> Viewport::readColourPoints() const { return readState(&MarchState::colourPoint); }
+
 std::vector<uint8_t> Viewport::readDisplay(float exposure) {
     if (!state_) return {};
     const int w = state_->width(), h = state_->height();

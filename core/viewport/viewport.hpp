@@ -69,6 +69,9 @@ class Viewport {
     // The pixel-centre (sample 0) ray of every pixel, RGBA per pixel as the centre image holds it:
     // its distance t, its status (0 marching, 1 hit, 2 escaped), carry age, 0. Rows from the top.
     std::vector<float> readCentreRays() const;
+    // The world point each pixel's sample-0 colour is the shading of (xyz; w: 1 for a surface
+    // colour, 0 for background or none), MarchState::colourPoint. Rows from the top.
+    std::vector<float> readColourPoints() const;
     // The display-referred image, RGBA8, rows from the top.
     std::vector<uint8_t> readDisplay(float exposure);
 
