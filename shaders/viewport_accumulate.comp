@@ -15,9 +15,6 @@ layout(rgba32f, binding = 3) uniform image2D u_accum;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 5) uniform image2D u_centre;
 #if !AT_REST
-// No readonly / writeonly here: with u_colourPoint readonly, llvmpipe (Mesa 22.3) sent this
-// shader's u_samplePosition stores somewhere they corrupted the next frame's state (its DE
-// counts changed; with either qualifier dropped, or the image at another unit, they did not).
 layout(rgba32f, binding = 7) uniform image2D u_samplePosition;
 layout(rgba32f, binding = 10) uniform image2D u_colourPoint;
 

@@ -12,7 +12,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 // Where each pixel's sample lies (xy, pixels from the top-left) and its depth (z, 1e30 for the
 // background); w: 0 when the pixel has no sample for this view yet (viewport_accumulate.comp).
-layout(rgba32f, binding = 7) uniform image2D u_samplePosition;  // no qualifier: viewport_accumulate.comp
+layout(rgba32f, binding = 7) uniform image2D u_samplePosition;
 layout(rgba32f, binding = 11) uniform writeonly image2D u_shown;
 
 const float RESOLVE_RADIUS = 1.0;  // pixels: the tent of bilinear reconstruction
