@@ -49,9 +49,11 @@ void main() {
     vec4 state = imageLoad(u_rayState, px);
     const bool verifying = false;
     // The carried colour's depth and age (keepsCarriedColour asks only for a carried centre sample).
-    bool carried = info.z == 0 && (info.w & FLAG_CARRIED) != 0;
-    float tCarried = carried ? imageLoad(u_sampleColor, px).a : 0.0;
-    float carryAge = carried ? imageLoad(u_centre, px).z : 0.0;
+    // sampleColor.a is kept with whatever colour the pixel gets.
+    float sampleDepth = imageLoad(u_sampleColor, px).a;
+    bool carries = info.z == 0 && (info.w & FLAG_CARRIED) != 0;
+    float tCarried = carries ? sampleDepth : 0.0;
+    float carryAge = carries ? imageLoad(u_centre, px).z : 0.0;
 #endif
     int sampleIndex = info.z;
     vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(sampleIndex));
@@ -132,8 +134,7 @@ void main() {
         sampleColor.rgb = shadeBackground(rd);
         colourPoint = vec4(0.0);
 #else
-        float tCarriedOrNone = imageLoad(u_sampleColor, px).a;  // kept with the colour
-        imageStore(u_sampleColor, px, vec4(shadeBackground(rd), tCarriedOrNone));
+        imageStore(u_sampleColor, px, vec4(shadeBackground(rd), sampleDepth));
         if (sampleIndex == 0) imageStore(u_colourPoint, px, vec4(0.0));
 #endif
         info.w = (info.w & ~FLAG_REUSED) | FLAG_SHADED_NOW;

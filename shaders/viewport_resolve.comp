@@ -1,13 +1,13 @@
-// shaders/viewport_resolve.comp — the image shown (MarchState::shown) from the scene-linear
-// samples (MarchState::image) under camera motion (at rest, or with the filter off, it is a copy
-// of the image: runResolvePass). Under camera motion each pixel holds one sample, and a reprojected one lies where its own surface
-// point projects, anywhere in the pixel (viewport_reproject.comp), so neighbouring samples fall
-// at scattered positions around the pixel centre. The shown colour is then a reconstruction from
-// every sample of the 3x3 neighbourhood within RESOLVE_RADIUS pixels of the centre, tent-weighted
-// by distance, on the same surface as the pixel's own sample: a better estimate of the pixel's
-// anti-aliased value than any single sample. Samples all on the pixel grid (restarting every ray)
-// are left as they are: the radius is under a pixel, so only the pixel's own sample counts.
-// Needs viewport_common.glsl.
+// shaders/viewport_resolve.comp — the image shown (MarchState::shown) from the scene-linear samples
+// (MarchState::image) under camera motion (at rest, or with the filter off, it is a copy of the
+// image: runResolvePass). Under camera motion each pixel holds one sample, and a reprojected one
+// lies where its own surface point projects, anywhere in the pixel (viewport_reproject.comp), so
+// neighbouring samples fall at scattered positions around the pixel centre. The shown colour is
+// then a reconstruction from every sample of the 3x3 neighbourhood within RESOLVE_RADIUS pixels of
+// the centre, tent-weighted by distance, on the same surface as the pixel's own sample: a better
+// estimate of the pixel's anti-aliased value than any single sample. Samples all on the pixel grid
+// (restarting every ray) are left as they are: the radius is under a pixel, so only the pixel's own
+// sample counts. Needs viewport_common.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 4) uniform image2D u_image;
 // Where each pixel's sample lies (xy, pixels from the top-left) and its depth (z, 1e30 for the

@@ -156,7 +156,8 @@ TEST(ViewportGL, ColourPointsLieOnTheSurface) {
             }
             EXPECT_GT(surface, kW * kH / 10) << "frame " << f << ": few surface colours";
             // Out-of-steps hits (a ray crawling along a grazing surface) may stop up to 10
-            // footprints away; refined hits lie within one.
+            // footprints away. Measured at 320x180 over the same 4 frames: every point within
+            // 1.5 footprints (Menger) and 0.8 (Mandelbulb).
             EXPECT_GE(within2, 0.99 * surface) << "frame " << f;
             EXPECT_LT(worst, 12.0) << "frame " << f;
         }

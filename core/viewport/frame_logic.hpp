@@ -79,8 +79,8 @@ double extendConeCoverage(double covered, double t, double d, double tanHalfAngl
 // Reprojected starts are backed off toward the camera by this distance before the DE verifies
 // them: the hit test accepts points up to `detail` pixel footprints in front of the surface (the
 // refinement lands them half that), and the start is already the nearest of the 4x4 pixels'
-// points around it (viewport_reproject.comp), so two footprints cover both. (It was four; two costs ~0.5 fewer DE
-// evaluations per pixel per frame on the Mandelbulb orbit at 160x90, 22.4 and 22.5 dB; the
+// points around it (viewport_reproject.comp), so two footprints cover both. (It was four; two
+// costs ~0.5 fewer DE evaluations per pixel per frame on the Mandelbulb orbit at 160x90, 22.4 and 22.5 dB; the
 // no-holes test was written afterwards and has only run with two.)
 // Mirrored in shaders/viewport_common.glsl.
 double reprojectionMargin(double t, double pixelAngle, double detail);

@@ -1,36 +1,14 @@
 // Reprojection (seed 4.2) as a compute scatter (shaders/viewport_reproject.comp): every previous
 // pixel corner's vertex (at the nearest distance of the four pixels around it) goes to the new
-// pixel it projects into, nearest first. Pixels nothing lands on keep the key "none"; the start
-// pass fills one-pixel gaps from their neighbours and restarts the rest. Hit colours take a
-// second scatter keyed by their own hit point (why: the shader's header), into the pixel each
-// point lies in and, for pixels no point lies in, the nearest point around.
+// pixel it projects into, nearest first. Pixels nothing lands on keep the key "none"; the rays'
+// starts (viewport_start.glsl) fill one-pixel gaps from their neighbours and restart the rest.
+// Hit colours take a second scatter keyed by their own hit point (why: the shader's header), into
+// the pixel each point lies in and, for pixels no point lies in, the nearest point around.
 #include <limits>
 
 #include "core/viewport/passes.hpp"
 
 namespace fraktal::viewport {
-
-namespace {
-
-// The view uniforms of the previous camera (the points' rays) and the new camera's basis,
-// exactly as setViewUniforms builds it.
-void setCameraUniforms(GLuint program, const Camera& previous, const Camera& current, int width, int height) {
-    glUseProgram(program);
-    setViewUniforms(program, previous, width, height);
-    const vec3 forward = normalize(current.target - current.position);
-    const vec3 right = normalize(glm::cross(forward, current.up));
-    const vec3 up = glm::cross(right, forward);
-    auto set3 = [&](const char* name, const vec3& v) {
-        glUniform3f(glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
-    };
-    set3("u_newCameraPosition", current.position);
-    set3("u_newRight", right);
-    set3("u_newUp", up);
-    set3("u_newForward", forward);
-    setFloat(program, "u_newTanHalfFovY", float(std::tan(glm::radians(current.fovY) * 0.5)));
-}
-
-}  // namespace
 
 void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current) {
     const int w = s.width(), h = s.height();
@@ -45,7 +23,10 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Came
     glBindImageTexture(9, s.reprojCarried, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, s.reprojDepth);
     for (const gl::Program* pass : {&p.reprojectClaim, &p.reprojectWrite}) {
-        setCameraUniforms(pass->id(), previous, current, w, h);
+        glUseProgram(pass->id());
+        setViewUniforms(pass->id(), previous, w, h);  // the points' rays
+        setCameraUniforms(pass->id(), current,
+                          {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"});
         dispatchPixels(w, h);
         imageBarrier();
     }

@@ -6,8 +6,8 @@
 //
 // Frame: decideFrame() picks reset / reproject / continue; on a new view march_pass starts the
 // rays (from reproject_pass's scatter, or from the camera on a reset); march_pass advances
-// unfinished rays by options.stepsPerFrame steps; shade_pass shades only samples that finished; accumulate_pass adds
-// them to the AA mean and starts the next jittered sample while the camera rests. A structure
+// unfinished rays by options.stepsPerFrame steps; shade_pass shades only samples that finished;
+// accumulate_pass adds them to the AA mean and starts the next jittered sample while the camera rests. A structure
 // change recompiles before anything else happens, and every reset keeps the old image on screen
 // per pixel until that pixel's new sample is shaded.
 #pragma once

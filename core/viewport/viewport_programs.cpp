@@ -65,21 +65,25 @@ void setFloat(GLuint program, const char* name, float value) {
     glUniform1f(glGetUniformLocation(program, name), value);
 }
 
-void setViewUniforms(GLuint program, const Camera& camera, int width, int height) {
+void setCameraUniforms(GLuint program, const Camera& camera, const CameraUniformNames& names) {
     const vec3 forward = normalize(camera.target - camera.position);
     const vec3 right = normalize(glm::cross(forward, camera.up));
     const vec3 up = glm::cross(right, forward);
-    const double tanHalf = std::tan(glm::radians(camera.fovY) * 0.5);
     auto set3 = [&](const char* name, const vec3& v) {
         glUniform3f(glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
     };
+    set3(names.position, camera.position);
+    set3(names.right, right);
+    set3(names.up, up);
+    set3(names.forward, forward);
+    setFloat(program, names.tanHalfFovY, float(std::tan(glm::radians(camera.fovY) * 0.5)));
+}
+
+void setViewUniforms(GLuint program, const Camera& camera, int width, int height) {
+    setCameraUniforms(program, camera,
+                      {"u_cameraPosition", "u_cameraRight", "u_cameraUp", "u_cameraForward", "u_tanHalfFovY"});
     glUniform2i(glGetUniformLocation(program, "u_size"), width, height);
-    set3("u_cameraPosition", camera.position);
-    set3("u_cameraRight", right);
-    set3("u_cameraUp", up);
-    set3("u_cameraForward", forward);
-    setFloat(program, "u_tanHalfFovY", float(tanHalf));
-    setFloat(program, "u_pixelAngle", float(2.0 * tanHalf / height));
+    setFloat(program, "u_pixelAngle", float(2.0 * std::tan(glm::radians(camera.fovY) * 0.5) / height));
 }
 
 }  // namespace fraktal::viewport

@@ -35,6 +35,11 @@ struct ViewportPrograms {
 
 // Sets viewport_common.glsl's camera uniforms on the bound program.
 void setViewUniforms(GLuint program, const Camera& camera, int width, int height);
+// The uniforms a camera sets: its position, orthonormal basis and tan(fovY / 2).
+struct CameraUniformNames {
+    const char *position, *right, *up, *forward, *tanHalfFovY;
+};
+void setCameraUniforms(GLuint program, const Camera& camera, const CameraUniformNames& names);
 void setInt(GLuint program, const char* name, int value);
 void setFloat(GLuint program, const char* name, float value);
 
