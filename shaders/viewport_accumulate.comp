@@ -7,7 +7,7 @@
 // pixel rather than once per neighbour that reads it (9 projections per pixel cost 15 of the
 // resolve's 28 ms at 640x360 on llvmpipe). Writes the scene-linear image. Needs
 // viewport_common.glsl.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;

@@ -9,7 +9,7 @@
 // branch for a SIMD group, skipping nothing, so only a separate dispatch over a compacted list
 // keeps shading off the other pixels. Needs the formula, march.glsl, shade.glsl,
 // viewport_common.glsl and, for START, viewport_start.glsl before it.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;

@@ -24,7 +24,7 @@
 // hit: a carried colour then lands in the pixel its own point projects into, so it stays a true
 // sample from inside that pixel however often it is carried. Keyed by anything else the colour
 // drifts by up to half a pixel per carry, and the error grew with every carry (bench/README.md).
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
 layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry age
 layout(binding = 1) uniform sampler2D u_oldImage;
 layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's point, w: 1 if any

@@ -8,7 +8,7 @@
 // estimate of the pixel's anti-aliased value than any single sample. Samples all on the pixel grid
 // (restarting every ray) are left as they are: the radius is under a pixel, so only the pixel's own
 // sample counts. Needs viewport_common.glsl.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
 layout(rgba32f, binding = 4) uniform image2D u_image;
 // Where each pixel's sample lies (xy, pixels from the top-left) and its depth (z, 1e30 for the
 // background); w: 0 when the pixel has no sample for this view yet (viewport_accumulate.comp).

@@ -43,9 +43,8 @@ void setCameraUniforms(GLuint program, const Camera& camera, const CameraUniform
 void setInt(GLuint program, const char* name, int value);
 void setFloat(GLuint program, const char* name, float value);
 
-// Work groups of the 8x8 compute passes for an image.
-inline void dispatchPixels(int width, int height) {
-    glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
-}
+// Dispatches a per-pixel compute pass over a width x height image, in work groups of the size
+// its shader declares (local_size_x/y; viewport_common.glsl says why 32x8).
+void dispatchPixels(GLuint program, int width, int height);
 
 }  // namespace fraktal::viewport
