@@ -6,12 +6,18 @@ namespace fraktal {
 
 glm::dmat4 Camera::worldFromCamera() const { return glm::inverse(glm::lookAt(position, target, up)); }
 
+CameraBasis basisLookingAlong(const vec3& look, const vec3& upHint) {
+    const vec3 forward = normalize(look);
+    const vec3 right = normalize(glm::cross(forward, upHint));
+    return {right, glm::cross(right, forward), forward};
+}
+
+double Camera::tanHalfFovY() const { return std::tan(glm::radians(fovY) * 0.5); }
+
 vec3 Camera::rayDirection(double ndcX, double ndcY, double aspect) const {
-    const double t = std::tan(glm::radians(fovY) * 0.5);
-    const vec3 forward = normalize(target - position);
-    const vec3 right = normalize(glm::cross(forward, up));
-    const vec3 trueUp = glm::cross(right, forward);
-    return normalize(forward + right * (ndcX * t * aspect) + trueUp * (ndcY * t));
+    const double t = tanHalfFovY();
+    const CameraBasis b = basis();
+    return normalize(b.forward + b.right * (ndcX * t * aspect) + b.up * (ndcY * t));
 }
 
 }  // namespace fraktal

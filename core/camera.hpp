@@ -5,6 +5,15 @@
 
 namespace fraktal {
 
+// A right-handed orthonormal frame: the viewer looks along `forward`, with `up` toward the top of
+// the image and `right` toward its right edge.
+struct CameraBasis {
+    vec3 right, up, forward;
+};
+
+// The frame looking along `look` (any length) whose up is as close to `upHint` as the look allows.
+CameraBasis basisLookingAlong(const vec3& look, const vec3& upHint);
+
 struct Camera {
     vec3 position{0.0, 0.0, 4.0};
     vec3 target{0.0};
@@ -15,6 +24,11 @@ struct Camera {
     glm::dmat4 worldFromCamera() const;
     // Direction in world space of the ray through normalised device coordinates (-1..1).
     vec3 rayDirection(double ndcX, double ndcY, double aspect) const;
+    // The frame of every ray: rayDirection, the GLSL cameraRay (shaders) and the editor's controls.
+    CameraBasis basis() const { return basisLookingAlong(target - position, up); }
+    double tanHalfFovY() const;
+    // A pixel's footprint per unit distance along the ray, in an image `imageHeight` pixels tall.
+    double pixelAngle(double imageHeight) const { return 2.0 * tanHalfFovY() / imageHeight; }
 };
 
 }  // namespace fraktal

@@ -115,7 +115,7 @@ TEST(ViewportGL, ReprojectedSilhouettesHaveNoHoles) {
             EXPECT_GT(stats.shareReprojected, 0.3) << "frame " << f << ": reprojection carried little over";
             Viewport fresh(freshOptions);
             renderUntilSettled(fresh, s.preset.formula, camera, s.render, s.preset.shading, kW, kH, kMaxFrames);
-            const double pixelAngle = 2.0 * std::tan(glm::radians(camera.fovY) * 0.5) / kH;
+            const double pixelAngle = camera.pixelAngle(kH);
             const SurfaceDifferences d = compareSurfaces(moving.readCentreRays(), fresh.readCentreRays(), pixelAngle);
             EXPECT_LT(d.holes, 0.006) << "frame " << f;
             holes += d.holes;
@@ -140,7 +140,7 @@ TEST(ViewportGL, ColourPointsLieOnTheSurface) {
         for (int f = 0; f <= 3; ++f) {
             const Camera camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, f, 2.0);
             viewport.render(s.preset.formula, camera, s.render, s.preset.shading, kW, kH);
-            const double pixelAngle = 2.0 * std::tan(glm::radians(camera.fovY) * 0.5) / kH;
+            const double pixelAngle = camera.pixelAngle(kH);
             const double detail = std::max(s.render.detail, 1.0);
             const std::vector<float> points = viewport.readColourPoints();
             int surface = 0, within2 = 0;

@@ -42,12 +42,9 @@ bool orbitCamera(Camera& cam, const CameraInput& in, const CameraControls& c) {
     cam.position = cam.target + offset;
     if (in.panDrag != vec2(0.0)) {
         // One pixel moves the target plane by one pixel's footprint at the target distance.
-        const double worldPerPixel =
-            2.0 * length(offset) * std::tan(glm::radians(cam.fovY) * 0.5) / std::max(in.viewportHeight, 1.0);
-        const vec3 forward = normalize(-offset);
-        const vec3 right = normalize(glm::cross(forward, cam.up));
-        const vec3 up = glm::cross(right, forward);
-        const vec3 shift = (-right * in.panDrag.x + up * in.panDrag.y) * worldPerPixel;
+        const double worldPerPixel = length(offset) * cam.pixelAngle(std::max(in.viewportHeight, 1.0));
+        const CameraBasis b = cam.basis();
+        const vec3 shift = (-b.right * in.panDrag.x + b.up * in.panDrag.y) * worldPerPixel;
         cam.position += shift;
         cam.target += shift;
         changed = true;
@@ -63,16 +60,14 @@ bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const Camer
         look = turn(look, cam.up, -in.rotateDrag.x * c.degreesPerPixel, -in.rotateDrag.y * c.degreesPerPixel);
         changed = true;
     }
-    const vec3 forward = normalize(look);
-    const vec3 right = normalize(glm::cross(forward, cam.up));
-    const vec3 up = glm::cross(right, forward);
-    const vec3 dir = right * in.move.x + up * in.move.y + forward * in.move.z;
+    const CameraBasis b = basisLookingAlong(look, cam.up);
+    const vec3 dir = b.right * in.move.x + b.up * in.move.y + b.forward * in.move.z;
     const double boost = in.boost ? 4.0 : 1.0;
     const vec3 step = de ? flyStep(f, de, cam.position, dir, in.dt, boost, c.fly)
                          : flyStep(f, cam.position, dir, in.dt, boost, c.fly);
     if (step != vec3(0.0)) changed = true;
     cam.position += step;
-    cam.target = cam.position + forward * lookDistance;
+    cam.target = cam.position + b.forward * lookDistance;
     return changed;
 }
 

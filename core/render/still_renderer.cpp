@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/gl/camera_uniforms.hpp"
 #include "core/render/filter.hpp"
 #include "core/shader_library.hpp"
 
@@ -56,18 +57,7 @@ void StillRenderer::setScene(const Formula& formula, const Camera& camera, const
     glUseProgram(p);
     formulaUniforms_.upload(formula);
     shadingUniforms_.upload(shading);
-    // The same camera frame as Camera::rayDirection.
-    const vec3 forward = normalize(camera.target - camera.position);
-    const vec3 right = normalize(glm::cross(forward, camera.up));
-    const vec3 up = glm::cross(right, forward);
-    auto v3 = [&](const char* name, const vec3& v) {
-        glUniform3f(glGetUniformLocation(p, name), float(v.x), float(v.y), float(v.z));
-    };
-    v3("u_cameraPosition", camera.position);
-    v3("u_cameraRight", right);
-    v3("u_cameraUp", up);
-    v3("u_cameraForward", forward);
-    glUniform1f(glGetUniformLocation(p, "u_tanHalfFovY"), float(std::tan(glm::radians(camera.fovY) * 0.5)));
+    gl::setCameraUniforms(p, camera);
     glUniform2i(glGetUniformLocation(p, "u_imageSize"), render.width, render.height);
     glUniform1i(glGetUniformLocation(p, "u_spp"), render.spp);
     glUniform1i(glGetUniformLocation(p, "u_maxSteps"), render.maxSteps);
@@ -99,7 +89,8 @@ void StillRenderer::renderTile(const TileRect& tile, ImageStrip& strip) {
         // Framebuffer row j is image row tile.y + j (still.frag).
         for (int j = 0; j < tile.height; ++j) {
             const float* src = pixels.data() + size_t(j) * size_t(tile.width) * 4;
-            float* dst = outputs[i]->data() + (size_t(tile.y - strip.y0 + j) * size_t(strip.width) + size_t(tile.x)) * 4;
+            float* dst =
+                outputs[i]->data() + (size_t(tile.y - strip.y0 + j) * size_t(strip.width) + size_t(tile.x)) * 4;
             std::copy(src, src + size_t(tile.width) * 4, dst);
         }
     }

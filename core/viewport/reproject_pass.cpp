@@ -25,8 +25,8 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Came
     for (const gl::Program* pass : {&p.reprojectClaim, &p.reprojectWrite}) {
         glUseProgram(pass->id());
         setViewUniforms(pass->id(), previous, w, h);  // the points' rays
-        setCameraUniforms(pass->id(), current,
-                          {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"});
+        gl::setCameraUniforms(pass->id(), current,
+                              {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"});
         dispatchPixels(pass->id(), w, h);
         imageBarrier();
     }

@@ -71,25 +71,10 @@ void setFloat(GLuint program, const char* name, float value) {
     glUniform1f(glGetUniformLocation(program, name), value);
 }
 
-void setCameraUniforms(GLuint program, const Camera& camera, const CameraUniformNames& names) {
-    const vec3 forward = normalize(camera.target - camera.position);
-    const vec3 right = normalize(glm::cross(forward, camera.up));
-    const vec3 up = glm::cross(right, forward);
-    auto set3 = [&](const char* name, const vec3& v) {
-        glUniform3f(glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
-    };
-    set3(names.position, camera.position);
-    set3(names.right, right);
-    set3(names.up, up);
-    set3(names.forward, forward);
-    setFloat(program, names.tanHalfFovY, float(std::tan(glm::radians(camera.fovY) * 0.5)));
-}
-
 void setViewUniforms(GLuint program, const Camera& camera, int width, int height) {
-    setCameraUniforms(program, camera,
-                      {"u_cameraPosition", "u_cameraRight", "u_cameraUp", "u_cameraForward", "u_tanHalfFovY"});
+    gl::setCameraUniforms(program, camera);
     glUniform2i(glGetUniformLocation(program, "u_size"), width, height);
-    setFloat(program, "u_pixelAngle", float(2.0 * std::tan(glm::radians(camera.fovY) * 0.5) / height));
+    setFloat(program, "u_pixelAngle", float(camera.pixelAngle(height)));
 }
 
 }  // namespace fraktal::viewport

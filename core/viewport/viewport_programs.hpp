@@ -6,6 +6,7 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/gl/camera_uniforms.hpp"
 #include "core/gl/formula_uniforms.hpp"
 #include "core/gl/program.hpp"
 #include "core/render/shading_params.hpp"
@@ -35,11 +36,6 @@ struct ViewportPrograms {
 
 // Sets viewport_common.glsl's camera uniforms on the bound program.
 void setViewUniforms(GLuint program, const Camera& camera, int width, int height);
-// The uniforms a camera sets: its position, orthonormal basis and tan(fovY / 2).
-struct CameraUniformNames {
-    const char *position, *right, *up, *forward, *tanHalfFovY;
-};
-void setCameraUniforms(GLuint program, const Camera& camera, const CameraUniformNames& names);
 void setInt(GLuint program, const char* name, int value);
 void setFloat(GLuint program, const char* name, float value);
 
