@@ -2,6 +2,8 @@
 // `u_sampleBegin` of a low-discrepancy sequence, so that later passes refine earlier ones), summed
 // into two images: colour (rgb sum, sample count) and AOVs (inside count, smooth-iteration sum and
 // distance sum over outside samples, outside count). Scene-linear; display transforms come later.
+// 8x8 work groups: 32x8 (which made the viewport's passes ~17 % faster) rendered the Mandelbrot
+// and Sierpinski presets at 1920x1080 no faster on llvmpipe (6.9 s and 1.0 s either way).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(rgba32f, binding = 0) uniform image2D u_colour;

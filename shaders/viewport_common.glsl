@@ -17,12 +17,12 @@
 //                        carried colour keeps its own); w: 1 for a surface colour, 0 otherwise
 //   shown       rgba32f  the image displayed and read back (viewport_resolve.comp)
 //
-// The per-pixel passes run in 32x8 work groups (each shader's local_size; dispatchPixels reads it
-// back). llvmpipe runs a work group as one task of its thread pool, 8 lanes at a time, so larger
-// groups share each task's set-up among more pixels: against 8x8, 32x8 made the Mandelbulb orbit
-// at 640x360 ~17 % faster (march 71 -> 61 ms, accumulate 18 -> 11, resolve 11 -> 9; median of
-// 3-5 runs side by side), and 64x8 or 128x8 gained little more. 256 invocations is also a size a
-// GPU runs well without limiting the march shader's registers.
+// The per-pixel passes run in 32x8 work groups (each shader's local_size, which
+// gl::dispatchOver reads back). llvmpipe runs a work group as one task of its thread pool, 8
+// lanes at a time, so larger groups share each task's set-up among more pixels: against 8x8,
+// 32x8 made the Mandelbulb orbit at 640x360 ~17 % faster (march 71 -> 61 ms, accumulate 18 -> 11,
+// resolve 11 -> 9; median of 3-5 runs side by side), and 64x8 or 128x8 gained little more. 256
+// invocations is also a size a GPU runs well without limiting the march shader's registers.
 uniform ivec2 u_size;
 uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
 uniform float u_tanHalfFovY;

@@ -71,4 +71,10 @@ Program compileGraphics(const ShaderSource& vertex, const ShaderSource& fragment
     return link({vs, fs}, fragment.programName);
 }
 
+void dispatchOver(GLuint program, int width, int height) {
+    GLint group[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, group);
+    glDispatchCompute(GLuint((width + group[0] - 1) / group[0]), GLuint((height + group[1] - 1) / group[1]), 1);
+}
+
 }  // namespace fraktal::gl

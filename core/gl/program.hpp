@@ -11,7 +11,7 @@ namespace fraktal::gl {
 
 // An owned GL program object.
 class Program {
-public:
+   public:
     Program() = default;
     explicit Program(GLuint id) : id_(id) {}
     ~Program() { reset(); }
@@ -28,9 +28,13 @@ public:
     explicit operator bool() const { return id_ != 0; }
     void reset();
 
-private:
+   private:
     GLuint id_ = 0;
 };
+
+// Dispatches a 2D compute program (in use) over width x height invocations, in work groups of
+// the size its shader declares (local_size_x/y).
+void dispatchOver(GLuint program, int width, int height);
 
 // Throws std::runtime_error with the driver's log, rewritten to name nodes.
 Program compileCompute(const ShaderSource& source);

@@ -128,7 +128,7 @@ void PlaneRenderer::render(const PlaneFormula& formula, const PlaneColouring& co
 
     glBindImageTexture(0, target.colourTexture(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(1, target.aovTexture(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glDispatchCompute(GLuint((tile.width + 7) / 8), GLuint((tile.height + 7) / 8), 1);
+    gl::dispatchOver(p, tile.width, tile.height);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 

@@ -9,7 +9,7 @@ void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const Fra
     setViewUniforms(program, c.camera, s.width(), s.height());
     setInt(program, "u_maxSamples", c.options.maxSamples);
     setFloat(program, "u_initialOmega", float(std::max(c.shading.overRelaxation, 1.0)));
-    dispatchPixels(program, s.width(), s.height());
+    gl::dispatchOver(program, s.width(), s.height());
     imageBarrier();
 }
 
@@ -24,7 +24,7 @@ void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameC
     const GLuint program = p.resolve.id();
     glUseProgram(program);
     setViewUniforms(program, c.camera, s.width(), s.height());
-    dispatchPixels(program, s.width(), s.height());
+    gl::dispatchOver(program, s.width(), s.height());
     imageBarrier();
 }
 

@@ -10,7 +10,7 @@ void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameCont
     setInt(program, "u_coneTile", c.options.coneTile);
     setInt(program, "u_coneSteps", c.options.coneSteps);
     const int tile = c.options.coneTile;
-    dispatchPixels(program, (s.width() + tile - 1) / tile, (s.height() + tile - 1) / tile);
+    gl::dispatchOver(program, (s.width() + tile - 1) / tile, (s.height() + tile - 1) / tile);
     imageBarrier();
 }
 

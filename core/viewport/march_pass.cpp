@@ -25,7 +25,7 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
         // replaces the sum (viewport_accumulate.comp).
     }
     s.clearShadeList();
-    dispatchPixels(program, s.width(), s.height());
+    gl::dispatchOver(program, s.width(), s.height());
     imageBarrier();
 }
 

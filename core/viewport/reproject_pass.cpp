@@ -27,7 +27,7 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Came
         setViewUniforms(pass->id(), previous, w, h);  // the points' rays
         gl::setCameraUniforms(pass->id(), current,
                               {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"});
-        dispatchPixels(pass->id(), w, h);
+        gl::dispatchOver(pass->id(), w, h);
         imageBarrier();
     }
 }

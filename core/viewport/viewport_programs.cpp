@@ -60,12 +60,6 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
                                   assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"})));
 }
 
-void dispatchPixels(GLuint program, int width, int height) {
-    GLint group[3] = {1, 1, 1};
-    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, group);
-    glDispatchCompute(GLuint((width + group[0] - 1) / group[0]), GLuint((height + group[1] - 1) / group[1]), 1);
-}
-
 void setInt(GLuint program, const char* name, int value) { glUniform1i(glGetUniformLocation(program, name), value); }
 void setFloat(GLuint program, const char* name, float value) {
     glUniform1f(glGetUniformLocation(program, name), value);

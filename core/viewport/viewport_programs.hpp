@@ -39,8 +39,4 @@ void setViewUniforms(GLuint program, const Camera& camera, int width, int height
 void setInt(GLuint program, const char* name, int value);
 void setFloat(GLuint program, const char* name, float value);
 
-// Dispatches a per-pixel compute pass over a width x height image, in work groups of the size
-// its shader declares (local_size_x/y; viewport_common.glsl says why 32x8).
-void dispatchPixels(GLuint program, int width, int height);
-
 }  // namespace fraktal::viewport
