@@ -3,11 +3,11 @@
 // image: runResolvePass). Under camera motion each pixel holds one sample, and a reprojected one
 // lies where its own surface point projects, anywhere in the pixel (viewport_reproject.comp), so
 // neighbouring samples fall at scattered positions around the pixel centre. The shown colour is
-// then a reconstruction from every sample of the 3x3 neighbourhood within RESOLVE_RADIUS pixels of
+// then a reconstruction from every sample of the 3x3 neighbourhood within u_radius pixels of
 // the centre, tent-weighted by distance, on the same surface as the pixel's own sample: a better
-// estimate of the pixel's anti-aliased value than any single sample. Samples all on the pixel grid
-// (restarting every ray) are left as they are: the radius is under a pixel, so only the pixel's own
-// sample counts. Needs viewport_common.glsl.
+// estimate of the pixel's anti-aliased value than any single sample. At the default radius of one
+// pixel, samples all on the pixel grid (restarting every ray) are left as they are: only the
+// pixel's own sample is nearer than a pixel. Needs viewport_common.glsl.
 layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
 layout(rgba32f, binding = 4) uniform image2D u_image;
 // Where each pixel's sample lies (xy, pixels from the top-left) and its depth (z, 1e30 for the
@@ -15,7 +15,7 @@ layout(rgba32f, binding = 4) uniform image2D u_image;
 layout(rgba32f, binding = 7) uniform image2D u_samplePosition;
 layout(rgba32f, binding = 11) uniform writeonly image2D u_shown;
 
-const float RESOLVE_RADIUS = 1.0;  // pixels: the tent of bilinear reconstruction
+uniform float u_radius;  // pixels: the tent's radius (ViewportOptions::motionFilterRadius)
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -41,7 +41,7 @@ void main() {
             float depth = neighbour.z;
             bool bothBackground = depth >= 1e30 && ownDepth >= 1e30;
             if (!bothBackground && abs(depth - ownDepth) > sameSurface) continue;
-            float w = max(0.0, 1.0 - length(position - centre) / RESOLVE_RADIUS);
+            float w = max(0.0, 1.0 - length(position - centre) / u_radius);
             sum += w * imageLoad(u_image, q).rgb;
             weightSum += w;
         }

@@ -107,6 +107,7 @@ TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
     doc.view.reprojection = false;
     doc.view.maxCarryFrames = 7;
     doc.view.motionFilter = false;
+    doc.view.motionFilterRadius = 1.25;
     doc.view.coarseHits = false;
     // The Render and Shading tabs edit the preset's own sections: a saved preset carries them.
     doc.preset.shading.lightDirection = vec3(0.1, 0.2, 0.3);

@@ -2,6 +2,9 @@
 // holes, work saved by reprojection, and the cost of a settled frame. Small images: llvmpipe is slow.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/viewport/camera_path.hpp"
 #include "core/viewport/converge.hpp"
 #include "core/viewport/flight.hpp"
@@ -193,6 +196,50 @@ TEST(ViewportGL, ReprojectionCutsDeEvaluationsAtEqualOrBetterError) {
 
 // Once every pixel has its full AA (the cap), a frame of the unchanged view costs under 2 DE
 // evaluations per pixel (it costs none: nothing is marched or shaded again).
+// Restarting every ray, each finished sample lies at its pixel's centre. The motion filter at its
+// default radius (one pixel) must then show those samples exactly as they are; a wider one blends
+// each pixel with its neighbours, never outside the range of the 3x3 colours it reads.
+TEST(ViewportGL, MotionFilterRadiusOfOnePixelLeavesCentreSamplesAlone) {
+    test::glContext();
+    const Scene s = loadScene(test::sourceDir() / "presets" / "menger.json");
+    auto movingImage = [&](bool filter, double radius) {
+        ViewportOptions options;
+        options.reproject = false;
+        options.motionFilter = filter;
+        options.motionFilterRadius = radius;
+        Viewport v(options);
+        for (int f = 0; f <= 1; ++f)
+            v.render(s.preset.formula, cameraOnPath(s.preset.camera, CameraPath::Orbit, f, 1.0), s.render,
+                     s.preset.shading, kW, kH);
+        return v.readImage();
+    };
+    const std::vector<float> unfiltered = movingImage(false, 1.0);
+    const std::vector<float> onePixel = movingImage(true, 1.0);
+    const std::vector<float> wider = movingImage(true, 1.75);
+    ASSERT_EQ(onePixel.size(), unfiltered.size());
+    // A hit's sample lies where its refined point projects: at the centre up to float rounding
+    // (116 dB here), so its neighbours' weights are not exactly 0.
+    EXPECT_GE(displayPsnr(onePixel, unfiltered), 90.0) << "a one-pixel tent blended samples at pixel centres";
+    int blended = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x)
+            for (int c = 0; c < 3; ++c) {
+                float lo = 1e30f, hi = -1e30f;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int qx = std::clamp(x + dx, 0, kW - 1), qy = std::clamp(y + dy, 0, kH - 1);
+                        const float v = unfiltered[(size_t(qy) * kW + qx) * 4 + c];
+                        lo = std::min(lo, v);
+                        hi = std::max(hi, v);
+                    }
+                const float w = wider[(size_t(y) * kW + x) * 4 + c];
+                ASSERT_GE(w, lo - 1e-5f * std::abs(lo)) << "pixel " << x << "," << y;
+                ASSERT_LE(w, hi + 1e-5f * std::abs(hi)) << "pixel " << x << "," << y;
+                if (w != unfiltered[(size_t(y) * kW + x) * 4 + c]) ++blended;
+            }
+    EXPECT_GT(blended, kW * kH / 10) << "a 1.75-pixel tent should blend most pixels with their neighbours";
+}
+
 TEST(ViewportGL, SettledFrameCostsUnderTwoDeEvaluationsPerPixel) {
     test::glContext();
     const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbox.json");

@@ -29,6 +29,7 @@ struct BenchViewportArgs {
     int coneTile = 0;
     int maxCarry = viewport::ViewportOptions{}.maxCarryFrames;
     double degrees = 0.5;
+    double filterRadius = viewport::ViewportOptions{}.motionFilterRadius;
     std::string dump;
     bool noReproject = false, noOverRelaxation = false, noMotionFilter = false, noCoarseHits = false, noError = false,
          noRest = false, fromRest = false, json = false, timePasses = false;
@@ -59,6 +60,7 @@ int run(const BenchViewportArgs& a) {
     fs.options.reproject = !a.noReproject;
     fs.options.overRelaxation = !a.noOverRelaxation;
     fs.options.motionFilter = !a.noMotionFilter;
+    fs.options.motionFilterRadius = a.filterRadius;
     fs.options.coarseHits = !a.noCoarseHits;
     fs.options.coneTile = a.coneTile;
     fs.options.maxCarryFrames = a.maxCarry;
@@ -86,6 +88,7 @@ int run(const BenchViewportArgs& a) {
         out["reproject"] = fs.options.reproject;
         out["over_relaxation"] = fs.options.overRelaxation;
         out["motion_filter"] = fs.options.motionFilter;
+        out["motion_filter_radius"] = fs.options.motionFilterRadius;
         out["coarse_hits"] = fs.options.coarseHits;
         out["from_rest"] = fs.fromRest;
         out["cone_tile"] = fs.options.coneTile;
@@ -186,6 +189,9 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--no-over-relaxation", args->noOverRelaxation, "plain sphere tracing (omega = 1)");
     cmd->add_flag("--no-motion-filter", args->noMotionFilter,
                   "under motion show each pixel's one sample, not a reconstruction from its neighbours'");
+    cmd->add_option("--filter-radius", args->filterRadius, "radius of the motion filter's tent, pixels")
+        ->capture_default_str()
+        ->check(CLI::Range(viewport::ViewportOptions::kMinFilterRadius, viewport::ViewportOptions::kMaxFilterRadius));
     cmd->add_flag("--no-coarse-hits", args->noCoarseHits,
                   "under motion march rays that keep a carried colour on to the hit threshold");
     cmd->add_flag("--no-error", args->noError, "skip the per-frame reference renders (faster)");

@@ -42,7 +42,8 @@ json viewSettingsToJson(const ViewSettings& s) {
     return {{"stepsPerFrame", s.stepsPerFrame}, {"renderScale", s.renderScale},
             {"reprojection", s.reprojection},   {"aaCap", s.aaCap},
             {"coneTile", s.coneTile},           {"maxCarryFrames", s.maxCarryFrames},
-            {"motionFilter", s.motionFilter},   {"coarseHits", s.coarseHits}};
+            {"motionFilter", s.motionFilter},   {"motionFilterRadius", s.motionFilterRadius},
+            {"coarseHits", s.coarseHits}};
 }
 
 ViewSettings viewSettingsFromJson(const json& j) {
@@ -61,6 +62,9 @@ ViewSettings viewSettingsFromJson(const json& j) {
     s.maxCarryFrames = int(number("maxCarryFrames", s.maxCarryFrames, 0, 1000));
     const json& motionFilter = j.value("motionFilter", json());
     if (motionFilter.is_boolean()) s.motionFilter = motionFilter.get<bool>();
+    s.motionFilterRadius =
+        number("motionFilterRadius", s.motionFilterRadius, viewport::ViewportOptions::kMinFilterRadius,
+               viewport::ViewportOptions::kMaxFilterRadius);
     const json& coarseHits = j.value("coarseHits", json());
     if (coarseHits.is_boolean()) s.coarseHits = coarseHits.get<bool>();
     return s;

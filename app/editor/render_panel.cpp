@@ -73,6 +73,11 @@ void drawViewportSection(ViewSettings& v) {
     helpMarker(
         "Under motion, show each pixel as a reconstruction from the samples scattered around it "
         "(reprojected colours lie anywhere in their pixel) instead of its one sample.");
+    if (v.motionFilter)
+        dragDouble("Filter radius", v.motionFilterRadius, viewport::ViewportOptions::kMinFilterRadius,
+                   viewport::ViewportOptions::kMaxFilterRadius, 0.01f, "%.2f px",
+                   "The motion filter's reach. 1 px leaves samples at pixel centres as they are; wider is softer "
+                   "and closer to the anti-aliased image the view settles to.");
     ImGui::Checkbox("Coarse hits", &v.coarseHits);
     helpMarker(
         "Under motion, a ray that keeps the colour carried to its pixel stops within two pixel footprints of the "

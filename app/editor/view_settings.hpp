@@ -31,6 +31,7 @@ struct ViewSettings {
     int maxCarryFrames = viewport::ViewportOptions{}.maxCarryFrames;
     // Under motion show a reconstruction from the scattered samples (ViewportOptions::motionFilter).
     bool motionFilter = true;
+    double motionFilterRadius = viewport::ViewportOptions{}.motionFilterRadius;  // pixels
     // Under motion stop rays that keep a carried colour near the surface (ViewportOptions::coarseHits).
     bool coarseHits = true;
 

@@ -17,6 +17,7 @@ viewport::ViewportOptions viewportOptions(const ViewSettings& v) {
     o.coneTile = v.coneTile;
     o.maxCarryFrames = v.maxCarryFrames;
     o.motionFilter = v.motionFilter;
+    o.motionFilterRadius = v.motionFilterRadius;
     o.coarseHits = v.coarseHits;
     return o;
 }
@@ -36,7 +37,8 @@ namespace {
 bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOptions& b) {
     return a.stepsPerFrame == b.stepsPerFrame && a.maxSamples == b.maxSamples && a.reproject == b.reproject &&
            a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile && a.coneSteps == b.coneSteps &&
-           a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter && a.coarseHits == b.coarseHits;
+           a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter &&
+           a.motionFilterRadius == b.motionFilterRadius && a.coarseHits == b.coarseHits;
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameC
     const GLuint program = p.resolve.id();
     glUseProgram(program);
     setViewUniforms(program, c.camera, s.width(), s.height());
+    setFloat(program, "u_radius", float(c.options.motionFilterRadius));
     gl::dispatchOver(program, s.width(), s.height());
     imageBarrier();
 }

@@ -17,6 +17,11 @@ struct ViewportOptions {
     // Under motion, show each pixel as a reconstruction from the samples scattered around it
     // (shaders/viewport_resolve.comp) rather than its one sample.
     bool motionFilter = true;
+    // Its tent's radius in pixels. 1 leaves samples on the pixel grid (restarted rays) as they are;
+    // wider blurs more, which scores higher against the converged anti-aliased image in both modes
+    // (bench/README.md, "What changed in session 6"). In [kMinFilterRadius, kMaxFilterRadius].
+    double motionFilterRadius = 1.0;
+    static constexpr double kMinFilterRadius = 0.5, kMaxFilterRadius = 2.0;
     // Under motion, a ray that keeps its carried colour stops within the reprojection margin of the
     // surface instead of marching on to the hit threshold (isCoarseHit, shaders/viewport_common.glsl):
     // fewer DE, for thin parts that look up to the margin thicker while the camera moves.
