@@ -3,7 +3,7 @@
 // nearest point per new pixel wins. This replaces rasterising a one-vertex-per-pixel grid mesh,
 // which llvmpipe runs through its single-threaded vertex pipeline (~300 ms at 640x360); the
 // scatter is two parallel passes, compiled apart (CLAIM 1 and 0: llvmpipe runs a pass's whole
-// code for every invocation, so each holds only its own). The claim pass: atomicMin of the
+// code for every invocation, so each holds only its own). The claim pass: imageAtomicMin of the
 // new-camera distance (positive floats order like their bit patterns as uints) into u_depth,
 // which is all the rays' starts need of the distances. The write pass: a colour whose point won
 // a pixel writes itself there. Gaps a point scatter leaves where the view magnifies are filled
@@ -32,9 +32,10 @@ layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's po
 // row u_size.y + y the one that pixel borrows when no point lies in it (see below).
 layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
 layout(rgba32f, binding = 9) uniform writeonly image2D u_reprojCarried;   // xyz: its point, w: its t
-// u_depth[0, n): distance keys of the start points; u_depth[n, 2n): of the carried colours whose
-// point lies in the pixel; u_depth[2n, 3n): of those near it (n pixels). MarchState::reprojDepth.
-layout(std430, binding = 1) buffer ReprojectDepth { uint u_depth[]; };
+// Distance keys, u_size.x by 3 u_size.y (MarchState::reprojDepth): rows [0, h) of the start
+// points; rows [h, 2h) of the carried colours whose point lies in the pixel; rows [2h, 3h) of
+// those near it.
+layout(r32ui, binding = 12) uniform uimage2D u_depth;
 uniform vec3 u_newCameraPosition, u_newRight, u_newUp, u_newForward;
 uniform float u_newTanHalfFovY;
 
@@ -51,20 +52,19 @@ bool projectToNewView(vec3 world, out ivec2 target, out vec2 imagePos, out float
 
 // The claim pass claims the target with the nearest key; the write pass tells whether this
 // point won it.
-bool nearestWins(uint index, float t) {
+bool nearestWins(ivec2 texel, float t) {
     uint key = floatBitsToUint(t);
 #if CLAIM
-    atomicMin(u_depth[index], key);
+    imageAtomicMin(u_depth, texel, key);
     return false;
 #else
-    return u_depth[index] == key;  // equal keys write equal-enough data
+    return imageLoad(u_depth, texel).x == key;  // equal keys write equal-enough data
 #endif
 }
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(px, u_size))) return;
-    uint pixels = uint(u_size.x * u_size.y);
     ivec2 target;
     vec2 imagePos;
     float t;
@@ -76,13 +76,13 @@ void main() {
         tMin = min(tMin, texelFetch(u_oldCentre, clamp(px + ivec2(k & 1, k >> 1), ivec2(0), u_size - 1), 0).x);
     vec3 rd = cameraRay(vec2(px) + 1.0);
     if (projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t))
-        nearestWins(uint(target.y * u_size.x + target.x), t);
+        nearestWins(target, t);
 #endif
     vec4 colourPoint = texelFetch(u_oldColourPoint, px, 0);
     if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
         vec4 color = vec4(texelFetch(u_oldImage, px, 0).rgb, texelFetch(u_oldCentre, px, 0).z + 1.0);
         vec4 carried = vec4(colourPoint.xyz, t);
-        if (nearestWins(pixels + uint(target.y * u_size.x + target.x), t)) {
+        if (nearestWins(ivec2(target.x, u_size.y + target.y), t)) {
             imageStore(u_reprojColor, target, color);
             imageStore(u_reprojCarried, target, carried);
         }
@@ -99,7 +99,7 @@ void main() {
             ivec2 q = target + step;
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_size))) continue;
             if (length(imagePos - (vec2(q) + 0.5)) >= HALF_DIAGONAL) continue;
-            if (nearestWins(2u * pixels + uint(q.y * u_size.x + q.x), t)) {
+            if (nearestWins(ivec2(q.x, 2 * u_size.y + q.y), t)) {
                 imageStore(u_reprojColor, ivec2(q.x, u_size.y + q.y), color);
                 imageStore(u_reprojCarried, ivec2(q.x, u_size.y + q.y), carried);
             }

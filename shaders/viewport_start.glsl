@@ -15,9 +15,9 @@
 // or not a pixel needs it. Needs the formula, march.glsl and viewport_common.glsl.
 layout(rgba32f, binding = 4) uniform writeonly image2D u_image;
 layout(r32f, binding = 6) uniform readonly image2D u_cone;
-// The reprojection's nearest distance keys (viewport_reproject.comp); the first u_size.x *
-// u_size.y are the start points': a distance's float bits, all ones where nothing landed.
-layout(std430, binding = 1) readonly buffer ReprojectDepth { uint u_depth[]; };
+// The reprojection's nearest distance keys (viewport_reproject.comp); the first u_size.y rows are
+// the start points': a distance's float bits, all ones where nothing landed.
+layout(r32ui, binding = 12) uniform uimage2D u_depth;
 // u_size.x by 2 u_size.y: the colour whose point lies in the pixel, then the one near it
 layout(binding = 1) uniform sampler2D u_reprojColor;    // rgb, a: carry age + 1 (0: no colour)
 layout(binding = 2) uniform sampler2D u_reprojCarried;  // xyz: the carried colour's point, w: its t
@@ -37,7 +37,7 @@ struct RayStart {
 
 // The distance of the reprojected point that won pixel q, or 1e30 when none landed there.
 float reprojectedDistance(ivec2 q) {
-    uint key = u_depth[q.y * u_size.x + q.x];
+    uint key = imageLoad(u_depth, q).x;
     return key == 0xFFFFFFFFu ? 1e30 : uintBitsToFloat(key);
 }
 

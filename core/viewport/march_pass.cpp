@@ -18,7 +18,7 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     if (newView) {
         setInt(program, "u_resetAll", action == FrameAction::Reset ? 1 : 0);
         setInt(program, "u_coneTile", c.options.coneTile);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, s.reprojDepth);
+        glBindImageTexture(12, s.reprojDepth, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
         glBindTextureUnit(1, s.reprojColor);
         glBindTextureUnit(2, s.reprojCarried);
         // MarchState::accum needs no reset: every pixel starts a new sample 0, whose colour

@@ -38,9 +38,7 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
     glClearTexImage(image, 0, GL_RGBA, GL_FLOAT, black);
     glClearTexImage(shown, 0, GL_RGBA, GL_FLOAT, black);
 
-    glCreateBuffers(1, &reprojDepth);
-    glNamedBufferStorage(reprojDepth, GLsizeiptr(3 * size_t(width) * size_t(height) * sizeof(GLuint)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
+    reprojDepth = makeTexture(GL_R32UI, width, 3 * height);
     reprojColor = makeTexture(GL_RGBA32F, width, 2 * height);
     reprojCarried = makeTexture(GL_RGBA32F, width, 2 * height);
     glCreateBuffers(1, &shadeList);
@@ -50,9 +48,8 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
 
 MarchState::~MarchState() {
     glDeleteBuffers(1, &shadeList);
-    glDeleteBuffers(1, &reprojDepth);
-    const GLuint textures[] = {rayState, rayInfo,     sampleColor, accum,          image,       centre,
-                               cone,     colourPoint, shown,       samplePosition, reprojColor, reprojCarried};
+    const GLuint textures[] = {rayState,    rayInfo, sampleColor,    accum,       image,         centre,     cone,
+                               colourPoint, shown,   samplePosition, reprojColor, reprojCarried, reprojDepth};
     glDeleteTextures(GLsizei(std::size(textures)), textures);
 }
 

@@ -31,9 +31,11 @@ class MarchState {
     // Under motion, where each pixel's one sample lies (xy, pixels), its depth (z) and whether it
     // has one (w): written by the accumulate pass for the resolve pass's reconstruction.
     GLuint samplePosition = 0;
-    // Reprojection target (written by reproject_pass): the nearest distance keys (SSBO binding 1,
-    // 3 width x height uints: start points, then carried colours in the pixel, then near it; a
-    // key is the distance's float bits, all ones for none), carried colours (image 8; a: carry
+    // Reprojection target (written by reproject_pass): the nearest distance keys (r32ui image 12,
+    // width x 3 height: rows of the start points, then of the carried colours in the pixel, then
+    // of those near it; a key is the distance's float bits, all ones for none; an image rather
+    // than a buffer because llvmpipe loads a buffer lane by lane: the starts' 9 reads per pixel
+    // cost 7-8 ms more of the march pass at 640x360), carried colours (image 8; a: carry
     // age + 1, 0: none) and each carried colour's point (image 9; xyz, and w: its distance from
     // the new camera). The colour images are twice as tall: row y holds the colour whose point
     // lies in pixel row y, row height + y the one near it, which a pixel takes when no point lies

@@ -13,7 +13,7 @@ namespace fraktal::viewport {
 void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current) {
     const int w = s.width(), h = s.height();
     const GLuint none = std::numeric_limits<GLuint>::max();
-    glClearNamedBufferData(s.reprojDepth, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    glClearTexImage(s.reprojDepth, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     const float noColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // a = 0: nothing carried
     glClearTexImage(s.reprojColor, 0, GL_RGBA, GL_FLOAT, noColor);
     glBindTextureUnit(0, s.centre);
@@ -21,7 +21,7 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Came
     glBindTextureUnit(2, s.colourPoint);
     glBindImageTexture(8, s.reprojColor, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(9, s.reprojCarried, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, s.reprojDepth);
+    glBindImageTexture(12, s.reprojDepth, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     for (const gl::Program* pass : {&p.reprojectClaim, &p.reprojectWrite}) {
         glUseProgram(pass->id());
         setViewUniforms(pass->id(), previous, w, h);  // the points' rays
