@@ -36,9 +36,11 @@ const int FLAG_SHADED_NOW = 8;   // shaded this frame, not yet accumulated
 const int FLAG_COARSE_HIT = 16;  // a hit that stopped short of the surface under motion (isCoarseHit)
 const int FLAG_NEEDS_REFINE = 32; // a marched hit the shade pass refines first (rayState.y: the DE there)
 
-// Frame statistics (core/viewport/gpu_counters.cpp reads them back).
+// Frame statistics (core/viewport/gpu_counters.cpp reads them back). Each atomicAdd in a
+// full-screen pass costs every pixel (llvmpipe loops over the SIMD lanes, active or not), so what
+// can be derived is: on a new view, the pixels that restarted are those not reprojected.
 layout(std430, binding = 0) buffer ViewportCounters {
-    uint c_deEvals, c_reprojected, c_restarted, c_converged, c_shaded, c_busy;
+    uint c_deEvals, c_reprojected, c_converged, c_shaded, c_busy;
     uint c_shadeDeEvals;  // the part of c_deEvals spent shading (normals, albedo, AO, shadows)
 };
 
@@ -46,7 +48,7 @@ layout(std430, binding = 0) buffer ViewportCounters {
 // of 64-wide groups (MarchState::shadeList, core/viewport/shade_pass.cpp): on a SIMD CPU rasteriser (llvmpipe) a
 // full-screen shading dispatch where ~1% of pixels shade runs each shaded pixel with its SIMD
 // neighbours idle; a compacted list keeps every lane busy. groupsX counts the groups the list
-// needs (it grows when a pixel opens a new group); groupsY and groupsZ stay 1.
+// needs (set from the count by viewport_list_groups.comp); groupsY and groupsZ stay 1.
 const uint SHADE_GROUP = 64u;
 layout(std430, binding = 2) buffer ShadeList {
     uint sl_groupsX, sl_groupsY, sl_groupsZ, sl_count;
@@ -54,10 +56,23 @@ layout(std430, binding = 2) buffer ShadeList {
 };
 
 void appendToShadeList(ivec2 px) {
-    uint slot = atomicAdd(sl_count, 1u);
-    sl_pixels[slot] = uint(px.y * u_size.x + px.x);
-    if (slot % SHADE_GROUP == 0u) atomicAdd(sl_groupsX, 1u);
+    sl_pixels[atomicAdd(sl_count, 1u)] = uint(px.y * u_size.x + px.x);
 }
+
+// The rays the full-screen march pass left marching with steps of the frame's budget left, for
+// the march pass's FROM_LIST variant (viewport_march.comp: why): x the pixel index, y the steps
+// left. The header is the shade list's, for an indirect dispatch of SHADE_GROUP-wide groups.
+layout(std430, binding = 3) buffer MarchList {
+    uint ml_groupsX, ml_groupsY, ml_groupsZ, ml_count;
+    uvec2 ml_entries[];
+};
+
+void appendToMarchList(ivec2 px, int stepsLeft) {
+    ml_entries[atomicAdd(ml_count, 1u)] = uvec2(px.y * u_size.x + px.x, stepsLeft);
+}
+
+// The pixel of a list entry's index.
+ivec2 listedPixel(uint index) { return ivec2(int(index) % u_size.x, int(index) / u_size.x); }
 
 // Mirror of fraktal::viewport::aaJitter (R2 sequence, Roberts 2018).
 vec2 aaJitter(int sampleIndex) {

@@ -9,7 +9,19 @@
 // branch for a SIMD group, skipping nothing, so only a separate dispatch over a compacted list
 // keeps shading off the other pixels. Needs the formula, march.glsl, shade.glsl,
 // viewport_common.glsl and, for START, viewport_start.glsl before it.
+//
+// The same holds for the march loop itself: a SIMD group of 8 pixels steps until its last ray
+// finishes, so one ray that needs the whole budget (restarted, or grazing past a silhouette)
+// costs its 7 neighbours that many DE too, although under motion most rays finish in a few
+// steps. So the full-screen pass marches at most u_deferAfter steps; a ray still marching then
+// goes, with the rest of its budget, on the march list, and the FROM_LIST variant (one
+// invocation per entry, 64-wide groups, dispatched indirectly) marches it on, with its SIMD
+// neighbours also long rays. The rays take the same steps either way, bit for bit.
+#if FROM_LIST
+layout(local_size_x = 64) in;  // SHADE_GROUP entries per group, as the list's header counts them
+#else
 layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
+#endif
 layout(rgba32f, binding = 0) uniform image2D u_rayState;
 layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
 layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
@@ -20,10 +32,17 @@ uniform int u_maxCarryFrames;
 uniform int u_maxSteps;
 uniform int u_atRest;
 uniform int u_coarseHits;  // ViewportOptions::coarseHits
+uniform int u_deferAfter;  // the full-screen pass's steps before a ray goes on the march list
 
 void main() {
+#if FROM_LIST
+    uint entry = gl_GlobalInvocationID.x;
+    if (entry >= ml_count) return;
+    ivec2 px = listedPixel(ml_entries[entry].x);
+#else
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(px, u_size))) return;
+#endif
     vec3 ro = u_cameraPosition;
     float initialOmega = max(u_overRelaxation, 1.0);
 #if START
@@ -36,6 +55,7 @@ void main() {
     float carryAge = start.carryAge;
 #else
     ivec4 info = imageLoad(u_rayInfo, px);
+#if !FROM_LIST  // a listed ray is marching
     if (info.x != STATUS_MARCHING) {
         if (u_atRest == 0 || (info.w & FLAG_COARSE_HIT) == 0) {
             // At rest a colour reused from the previous view is shaded exactly once (viewport_shade.comp).
@@ -46,6 +66,7 @@ void main() {
         info.x = STATUS_MARCHING;
         info.w &= ~(FLAG_COARSE_HIT | FLAG_REUSED);
     }
+#endif
     vec4 state = imageLoad(u_rayState, px);
     const bool verifying = false;
     // The carried colour's depth and age (keepsCarriedColour asks only for a carried centre sample).
@@ -64,6 +85,7 @@ void main() {
     // A ray that may keep a carried colour may stop at a coarse hit (viewport_common.glsl).
     bool mayStopCoarse = sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0 && u_coarseHits != 0 && u_atRest == 0;
     float tStart, tEnd;
+    int i = 0, budget = 0;  // steps taken here, of the frame's budget
     if (!clipToBound(ro, rd, tStart, tEnd)) {
         // Misses the bound sphere: nothing anywhere along it.
         s.status = MARCH_ESCAPED;
@@ -72,9 +94,15 @@ void main() {
         s.t = max(s.t, tStart);
         covered = max(covered, tStart);
         float tanHalf = HALF_DIAGONAL * u_pixelAngle;
+#if FROM_LIST
+        budget = int(ml_entries[entry].y);
+        int stepsHere = budget;
+#else
         // The verifying DE does not count against this frame's budget.
-        int budget = verifying ? 1 + min(u_stepsPerFrame, u_maxSteps - 1) : min(u_stepsPerFrame, u_maxSteps - s.steps);
-        for (int i = 0; i < budget && s.status == MARCH_MARCHING; ++i) {
+        budget = verifying ? 1 + min(u_stepsPerFrame, u_maxSteps - 1) : min(u_stepsPerFrame, u_maxSteps - s.steps);
+        int stepsHere = u_deferAfter;
+#endif
+        for (; i < budget && i < stepsHere && s.status == MARCH_MARCHING; ++i) {
             float t0 = s.t;
             // The last accepted step went omega * lastD from a point whose DE was lastD: up to
             // lastD past that point the ray is certainly in front of any surface.
@@ -114,7 +142,7 @@ void main() {
         marchedToHit = s.status == MARCH_HIT;
         // Out of steps: as the still renderer (still.frag), a ray crawling along a grazing surface
         // is a hit; anything else is background.
-        if (s.status == MARCH_MARCHING && s.steps >= u_maxSteps)
+        if (s.status == MARCH_MARCHING && i == budget && s.steps >= u_maxSteps)
             s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
     }
     if (s.status == MARCH_ESCAPED && s.t > tEnd) s.t = parkedDistance(length(ro), u_boundRadius);
@@ -144,6 +172,8 @@ void main() {
         info.w = (info.w & ~FLAG_REUSED) | FLAG_NEEDS_SHADE | (marchedToHit ? FLAG_NEEDS_REFINE : 0);
         appendToShadeList(px);
     }
+    // Still marching with budget left: the rest of the frame's steps are the march list's.
+    if (s.status == MARCH_MARCHING && i < budget) appendToMarchList(px, budget - i);
     info.y = s.steps;
     imageStore(u_rayState, px, vec4(s.t, s.lastD, s.omega, covered));
     imageStore(u_rayInfo, px, info);
@@ -151,8 +181,7 @@ void main() {
     imageStore(u_sampleColor, px, sampleColor);
     imageStore(u_colourPoint, px, colourPoint);
     imageStore(u_centre, px, vec4(s.t, float(s.status), carryAge, 0.0));
-    if (reprojected) atomicAdd(c_reprojected, 1u);
-    else atomicAdd(c_restarted, 1u);
+    if (reprojected) atomicAdd(c_reprojected, 1u);  // the others restarted (Viewport::render counts them)
 #else
     if (sampleIndex == 0) imageStore(u_centre, px, vec4(s.t, float(s.status), imageLoad(u_centre, px).z, 0.0));
 #endif

@@ -18,7 +18,7 @@ uniform int u_maxCarryFrames;  // keepsCarriedColour
 void main() {
     uint entry = gl_GlobalInvocationID.x;
     if (entry >= sl_count) return;
-    ivec2 px = ivec2(int(sl_pixels[entry]) % u_size.x, int(sl_pixels[entry]) / u_size.x);
+    ivec2 px = listedPixel(sl_pixels[entry]);
     ivec4 info = imageLoad(u_rayInfo, px);
     if (info.x != STATUS_HIT) return;
     bool finished = (info.w & FLAG_NEEDS_SHADE) != 0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/viewport/camera_path.hpp"
 #include "core/viewport/converge.hpp"
@@ -238,6 +239,53 @@ TEST(ViewportGL, MotionFilterRadiusOfOnePixelLeavesCentreSamplesAlone) {
                 if (w != unfiltered[(size_t(y) * kW + x) * 4 + c]) ++blended;
             }
     EXPECT_GT(blended, kW * kH / 10) << "a 1.75-pixel tent should blend most pixels with their neighbours";
+}
+
+// The march list (ViewportOptions::deferAfterSteps) only moves where a ray's later steps run:
+// from empty, under motion and while the AA level rises at rest, every frame's counts and image
+// must be the same, bit for bit, however many steps the full-screen pass takes first.
+TEST(ViewportGL, MarchListTakesTheSameStepsAsOneFullScreenPass) {
+    test::glContext();
+    const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbulb.json");
+    struct Run {
+        std::vector<FrameStats> stats;
+        std::vector<std::vector<float>> images;
+        double meanListed = 0.0;
+    };
+    auto renderFrames = [&](int deferAfterSteps) {
+        ViewportOptions options;
+        options.maxSamples = 4;
+        options.deferAfterSteps = deferAfterSteps;
+        Viewport v(options);
+        Run run;
+        constexpr int kMoving = 5, kFrames = 12;
+        for (int f = 0; f < kFrames; ++f) {
+            const Camera camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, std::min(f, kMoving), 1.0);
+            run.stats.push_back(v.render(s.preset.formula, camera, s.render, s.preset.shading, kW, kH));
+            run.images.push_back(v.readImage());
+            run.meanListed += run.stats.back().shareMarchListed / kFrames;
+        }
+        return run;
+    };
+    const Run whole = renderFrames(0);
+    EXPECT_EQ(whole.meanListed, 0.0) << "with deferAfterSteps 0 no ray goes on the march list";
+    for (int deferAfter : {1, 6}) {
+        const Run split = renderFrames(deferAfter);
+        EXPECT_GT(split.meanListed, 0.0) << "no ray went on the march list after " << deferAfter << " steps";
+        for (size_t f = 0; f < whole.stats.size(); ++f) {
+            SCOPED_TRACE("defer after " + std::to_string(deferAfter) + ", frame " + std::to_string(f));
+            const FrameStats &a = whole.stats[f], &b = split.stats[f];
+            EXPECT_EQ(a.action, b.action);
+            EXPECT_EQ(a.deEvalsPerPixel, b.deEvalsPerPixel);
+            EXPECT_EQ(a.shadeDeEvalsPerPixel, b.shadeDeEvalsPerPixel);
+            EXPECT_EQ(a.shareReprojected, b.shareReprojected);
+            EXPECT_EQ(a.shareRestarted, b.shareRestarted);
+            EXPECT_EQ(a.shareConverged, b.shareConverged);
+            EXPECT_EQ(a.shareShaded, b.shareShaded);
+            EXPECT_EQ(a.settled, b.settled);
+            EXPECT_TRUE(whole.images[f] == split.images[f]) << "the images differ";
+        }
+    }
 }
 
 TEST(ViewportGL, SettledFrameCostsUnderTwoDeEvaluationsPerPixel) {

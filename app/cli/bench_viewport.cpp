@@ -25,6 +25,7 @@ struct BenchViewportArgs {
     std::string size = "640x360";
     int frames = 30;
     int steps = 30;
+    int deferAfter = viewport::ViewportOptions{}.deferAfterSteps;
     int samples = 16;
     int coneTile = 0;
     int maxCarry = viewport::ViewportOptions{}.maxCarryFrames;
@@ -56,6 +57,7 @@ int run(const BenchViewportArgs& a) {
     fs.degreesPerFrame = a.degrees;
     std::tie(fs.width, fs.height) = parseSize(a.size);
     fs.options.stepsPerFrame = a.steps;
+    fs.options.deferAfterSteps = a.deferAfter;
     fs.options.maxSamples = a.samples;
     fs.options.reproject = !a.noReproject;
     fs.options.overRelaxation = !a.noOverRelaxation;
@@ -85,6 +87,7 @@ int run(const BenchViewportArgs& a) {
         out["width"] = fs.width;
         out["height"] = fs.height;
         out["steps_per_frame"] = a.steps;
+        out["defer_after_steps"] = a.deferAfter;
         out["reproject"] = fs.options.reproject;
         out["over_relaxation"] = fs.options.overRelaxation;
         out["motion_filter"] = fs.options.motionFilter;
@@ -116,6 +119,7 @@ int run(const BenchViewportArgs& a) {
                               {"restarted", f.stats.shareRestarted},
                               {"converged", f.stats.shareConverged},
                               {"shaded", f.stats.shareShaded},
+                              {"march_listed", f.stats.shareMarchListed},
                               {"psnr_db", number(f.psnrDb)},
                               {"psnr_centre_db", number(f.psnrCentreDb)}});
             if (a.timePasses) {
@@ -174,6 +178,10 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_option("--steps", args->steps, "march steps per ray per frame")
         ->capture_default_str()
         ->check(CLI::Range(1, 10000));
+    cmd->add_option("--defer-after", args->deferAfter,
+                    "steps of the full-screen march pass before a ray moves to the compacted march list (0: never)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 10000));
     cmd->add_option("--samples", args->samples, "AA cap, samples per pixel")
         ->capture_default_str()
         ->check(CLI::Range(1, kMaxSpp));

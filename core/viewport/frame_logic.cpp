@@ -120,6 +120,7 @@ FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction 
     s.shareRestarted = double(c.restarted) / pixels;
     s.shareConverged = double(c.converged) / pixels;
     s.shareShaded = double(c.shaded) / pixels;
+    s.shareMarchListed = double(c.marchListed) / pixels;
     return s;
 }
 

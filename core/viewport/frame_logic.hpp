@@ -123,6 +123,7 @@ struct FrameCounters {
     uint64_t converged = 0;     // pixels whose current sample is finished after this frame's march
     uint64_t shaded = 0;        // pixels shaded this frame (a shading cache miss)
     uint64_t shadeDeEvals = 0;  // the part of deEvals spent shading
+    uint64_t marchListed = 0;   // rays the full-screen march pass left to the march list
 };
 
 // GPU time of one pass of a frame (core/viewport/pass_timer.hpp), when ViewportOptions::timePasses.
@@ -137,6 +138,7 @@ struct FrameStats {
     double deEvalsPerPixel = 0.0;
     double shadeDeEvalsPerPixel = 0.0;  // the part of deEvalsPerPixel spent shading
     double shareReprojected = 0.0, shareRestarted = 0.0, shareConverged = 0.0, shareShaded = 0.0;
+    double shareMarchListed = 0.0;    // rays marched on from the march list (ViewportOptions::deferAfterSteps)
     int samplesAtRest = 0;            // the AA sample index the frame worked on (0 under motion)
     bool settled = false;             // every pixel is finished at the AA cap: further frames cost nothing
     double milliseconds = 0.0;        // wall time incl. glFinish; filled in by whoever times the frame

@@ -5,7 +5,7 @@
 namespace fraktal::viewport {
 
 namespace {
-constexpr int kCounters = 7;  // deEvals, reprojected, restarted, converged, shaded, busy, shadeDeEvals
+constexpr int kCounters = 6;  // deEvals, reprojected, converged, shaded, busy, shadeDeEvals
 }
 
 GpuCounters::GpuCounters() {
@@ -25,8 +25,8 @@ FrameCounters GpuCounters::read() const {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::array<uint32_t, kCounters> v{};
     glGetNamedBufferSubData(buffer_, 0, sizeof v, v.data());
-    busy_ = v[5];
-    return FrameCounters{v[0], v[1], v[2], v[3], v[4], v[6]};
+    busy_ = v[4];
+    return FrameCounters{v[0], v[1], 0, v[2], v[3], v[5]};
 }
 
 }  // namespace fraktal::viewport

@@ -15,8 +15,9 @@ class GpuCounters {
     GpuCounters(const GpuCounters&) = delete;
     GpuCounters& operator=(const GpuCounters&) = delete;
 
-    void clearAndBind();         // zeroes the counters and binds them at SSBO binding 0
-    FrameCounters read() const;  // waits for the frame's passes
+    void clearAndBind();  // zeroes the counters and binds them at SSBO binding 0
+    // Waits for the frame's passes. FrameCounters::restarted is left 0: the passes do not count it.
+    FrameCounters read() const;
     uint32_t busyPixels() const { return busy_; }
 
    private:

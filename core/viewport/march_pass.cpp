@@ -1,12 +1,15 @@
 // Progressive marching, and on a new view the rays' starts (shaders/viewport_march.comp with
-// shaders/viewport_start.glsl).
+// shaders/viewport_start.glsl); then the rays left on the march list.
+#include <climits>
+
 #include "core/viewport/passes.hpp"
 
 namespace fraktal::viewport {
 
-void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action) {
-    const bool newView = action != FrameAction::Continue;
-    const FormulaProgram& pass = newView ? p.marchFromStart : p.march;
+namespace {
+
+// The uniforms every variant of viewport_march.comp reads.
+void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const FrameContext& c) {
     const GLuint program = pass.program.id();
     pass.use(c.formula, c.shading);
     setViewUniforms(program, c.camera, s.width(), s.height());
@@ -15,6 +18,16 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
     setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);  // keepsCarriedColour
     setInt(program, "u_coarseHits", c.options.coarseHits ? 1 : 0);
+    setInt(program, "u_deferAfter", c.options.deferAfterSteps > 0 ? c.options.deferAfterSteps : INT_MAX);
+}
+
+}  // namespace
+
+void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action) {
+    const bool newView = action != FrameAction::Continue;
+    const FormulaProgram& pass = newView ? p.marchFromStart : p.march;
+    const GLuint program = pass.program.id();
+    setMarchUniforms(pass, s, c);
     if (newView) {
         setInt(program, "u_resetAll", action == FrameAction::Reset ? 1 : 0);
         setInt(program, "u_coneTile", c.options.coneTile);
@@ -25,8 +38,15 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
         // replaces the sum (viewport_accumulate.comp).
     }
     s.clearShadeList();
+    s.clearMarchList();
     gl::dispatchOver(program, s.width(), s.height());
     imageBarrier();
+}
+
+void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
+    if (c.options.deferAfterSteps <= 0) return;  // the list stays empty
+    setMarchUniforms(p.marchFromList, s, c);
+    dispatchOverList(p, p.marchFromList.program.id(), s.marchList);
 }
 
 }  // namespace fraktal::viewport

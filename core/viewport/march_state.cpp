@@ -41,13 +41,16 @@ MarchState::MarchState(int width, int height, int coneTile) : width_(width), hei
     reprojDepth = makeTexture(GL_R32UI, width, 3 * height);
     reprojColor = makeTexture(GL_RGBA32F, width, 2 * height);
     reprojCarried = makeTexture(GL_RGBA32F, width, 2 * height);
+    const size_t pixels = size_t(width) * size_t(height);
     glCreateBuffers(1, &shadeList);
-    glNamedBufferStorage(shadeList, GLsizeiptr((4 + size_t(width) * size_t(height)) * sizeof(GLuint)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(shadeList, GLsizeiptr((4 + pixels) * sizeof(GLuint)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glCreateBuffers(1, &marchList);
+    glNamedBufferStorage(marchList, GLsizeiptr((4 + 2 * pixels) * sizeof(GLuint)), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 MarchState::~MarchState() {
     glDeleteBuffers(1, &shadeList);
+    glDeleteBuffers(1, &marchList);
     const GLuint textures[] = {rayState,    rayInfo, sampleColor,    accum,       image,         centre,     cone,
                                colourPoint, shown,   samplePosition, reprojColor, reprojCarried, reprojDepth};
     glDeleteTextures(GLsizei(std::size(textures)), textures);
@@ -65,11 +68,26 @@ void MarchState::bindImages() const {
     glBindImageTexture(10, colourPoint, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(11, shown, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, shadeList);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, marchList);
 }
 
-void MarchState::clearShadeList() const {
+namespace {
+
+void clearPixelList(GLuint list) {
     const GLuint empty[4] = {0, 1, 1, 0};  // groups x, y, z; count
-    glNamedBufferSubData(shadeList, 0, sizeof empty, empty);
+    glNamedBufferSubData(list, 0, sizeof empty, empty);
+}
+
+}  // namespace
+
+void MarchState::clearShadeList() const { clearPixelList(shadeList); }
+
+void MarchState::clearMarchList() const { clearPixelList(marchList); }
+
+uint32_t MarchState::marchListCount() const {
+    GLuint count = 0;
+    glGetNamedBufferSubData(marchList, 3 * sizeof(GLuint), sizeof count, &count);  // after groups x, y, z
+    return count;
 }
 
 }  // namespace fraktal::viewport

@@ -4,6 +4,8 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
+
 namespace fraktal::viewport {
 
 class MarchState {
@@ -15,11 +17,15 @@ class MarchState {
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // Binds every state image at its unit (0..7, 10 and 11, as the shaders declare them) and the shade list
-    // at SSBO binding 2.
+    // Binds every state image at its unit (0..7, 10 and 11, as the shaders declare them), the shade list
+    // at SSBO binding 2 and the march list at 3.
     void bindImages() const;
     // Empties the shade list (ShadeList in shaders/viewport_common.glsl): no pixels, no groups.
     void clearShadeList() const;
+    // Empties the march list (MarchList in shaders/viewport_common.glsl) the same way.
+    void clearMarchList() const;
+    // The entries on the march list (waits for the passes that append).
+    uint32_t marchListCount() const;
 
     GLuint rayState = 0, rayInfo = 0, sampleColor = 0, accum = 0, image = 0, centre = 0, cone = 0;
     // xyz: the world point whose shading the pixel's sample-0 colour is (a carried colour keeps
@@ -44,6 +50,9 @@ class MarchState {
     // The pixels to shade this frame: 4 uints of indirect-dispatch header and count, then one
     // pixel index per entry (room for every pixel).
     GLuint shadeList = 0;
+    // The rays left marching after the full-screen march pass's first steps, with the steps they
+    // have left (shaders/viewport_march.comp): the same header, then two uints per entry.
+    GLuint marchList = 0;
 
    private:
     int width_, height_;

@@ -30,7 +30,10 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Came
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 // Advances the rays. On a new view (action Reset or Reproject) it first starts them: from the
 // camera on a reset, else from the reprojection.
+// Rays it leaves marching with steps left (ViewportOptions::deferAfterSteps) go on the march
+// list, which runMarchListPass marches on.
 void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
+void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
@@ -42,6 +45,21 @@ void runDisplayPass(const ViewportPrograms& p, const MarchState& s, float exposu
 inline void imageBarrier() {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                     GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+// Runs a program once per entry of a pixel list (MarchState::shadeList or marchList): sets the
+// lists' group counts (p.listGroups), then an indirect dispatch of as many groups, then an image
+// barrier.
+inline void dispatchOverList(const ViewportPrograms& p, GLuint program, GLuint list) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(p.listGroups.id());
+    glDispatchCompute(1, 1, 1);
+    glUseProgram(program);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list);
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    imageBarrier();
 }
 
 }  // namespace fraktal::viewport

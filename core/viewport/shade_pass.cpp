@@ -10,11 +10,7 @@ void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     setViewUniforms(program, c.camera, s.width(), s.height());
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
     setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);
-    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, s.shadeList);
-    glDispatchComputeIndirect(0);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    imageBarrier();
+    dispatchOverList(p, program, s.shadeList);
 }
 
 }  // namespace fraktal::viewport

@@ -63,6 +63,8 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     }
     runMarchPass(*programs_, *state_, context, action);
     mark("march");
+    runMarchListPass(*programs_, *state_, context);
+    mark("march_list");
     runShadePass(*programs_, *state_, context);
     mark("shade");
     runAccumulatePass(*programs_, *state_, context);
@@ -70,7 +72,11 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     runResolvePass(*programs_, *state_, context);
     mark("resolve");
 
-    FrameStats stats = summarize(counters_->read(), width, height, action);
+    FrameCounters counts = counters_->read();
+    // On a new view every pixel either reprojected or restarted; the march pass counts only the first.
+    if (action != FrameAction::Continue) counts.restarted = uint64_t(width) * height - counts.reprojected;
+    counts.marchListed = state_->marchListCount();
+    FrameStats stats = summarize(counts, width, height, action);
     if (timed) stats.passTimes = timer_->read();
     settled_ = action == FrameAction::Continue && counters_->busyPixels() == 0;
     stats.settled = settled_;

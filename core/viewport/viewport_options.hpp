@@ -7,8 +7,12 @@ namespace fraktal::viewport {
 
 struct ViewportOptions {
     int stepsPerFrame = 30;  // march steps per ray per frame (the seed's 30)
-    int maxSamples = 16;     // progressive AA cap, samples per pixel
-    bool reproject = true;   // carry distances over on camera motion (seed 4.2); off: restart
+    // The full-screen march pass takes at most this many of them; rays still marching then take
+    // the rest in a dispatch over a compacted list (shaders/viewport_march.comp: why). The same
+    // steps either way; 0: all in the full-screen pass. bench/README.md has the measurements.
+    int deferAfterSteps = 8;
+    int maxSamples = 16;    // progressive AA cap, samples per pixel
+    bool reproject = true;  // carry distances over on camera motion (seed 4.2); off: restart
     // Under motion a reprojected hit on the same surface keeps its carried colour for at most this
     // many frames in a row before it is shaded again (0: always shade). A carried colour keeps its
     // own surface point, so its error does not grow with age; the cap bounds how stale the

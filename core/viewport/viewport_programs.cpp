@@ -17,6 +17,12 @@ std::string concat(std::initializer_list<const char*> names) {
     return text;
 }
 
+// A compute pass without the formula, from viewport_common.glsl and its own file.
+gl::Program compileViewportPass(const char* name, const char* defines = "") {
+    const GeneratedFormula none;
+    return gl::compileCompute(assembleShader(none, name, concat({"viewport_common.glsl", name}), defines));
+}
+
 FormulaProgram compileFormulaPass(const Formula& f, const GeneratedFormula& g, const char* name, const char* defines,
                                   std::initializer_list<const char*> sources) {
     FormulaProgram p;
@@ -36,26 +42,24 @@ void FormulaProgram::use(const Formula& f, const ShadingParams& params) const {
 
 ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey()) {
     const GeneratedFormula g = generateFormulaGLSL(f);
-    march = compileFormulaPass(f, g, "viewport_march.comp", "#define START 0",
-                               {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_march.comp"});
+    const std::initializer_list<const char*> resume = {"march.glsl", "shade.glsl", "viewport_common.glsl",
+                                                       "viewport_march.comp"};
+    march = compileFormulaPass(f, g, "viewport_march.comp", "#define START 0\n#define FROM_LIST 0", resume);
+    marchFromList = compileFormulaPass(f, g, "viewport_march.comp", "#define START 0\n#define FROM_LIST 1", resume);
     marchFromStart = compileFormulaPass(
-        f, g, "viewport_march.comp", "#define START 1",
+        f, g, "viewport_march.comp", "#define START 1\n#define FROM_LIST 0",
         {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_start.glsl", "viewport_march.comp"});
     shade = compileFormulaPass(f, g, "viewport_shade.comp", "",
                                {"march.glsl", "shade.glsl", "viewport_common.glsl", "viewport_shade.comp"});
     cone = compileFormulaPass(f, g, "viewport_cone.comp", "",
                               {"march.glsl", "viewport_common.glsl", "viewport_cone.comp"});
+    accumulateAtRest = compileViewportPass("viewport_accumulate.comp", "#define AT_REST 1");
+    accumulateMoving = compileViewportPass("viewport_accumulate.comp", "#define AT_REST 0");
+    resolve = compileViewportPass("viewport_resolve.comp");
+    listGroups = compileViewportPass("viewport_list_groups.comp");
+    reprojectClaim = compileViewportPass("viewport_reproject.comp", "#define CLAIM 1");
+    reprojectWrite = compileViewportPass("viewport_reproject.comp", "#define CLAIM 0");
     const GeneratedFormula none;
-    const std::string accumulate = concat({"viewport_common.glsl", "viewport_accumulate.comp"});
-    accumulateAtRest =
-        gl::compileCompute(assembleShader(none, "viewport_accumulate.comp", accumulate, "#define AT_REST 1"));
-    accumulateMoving =
-        gl::compileCompute(assembleShader(none, "viewport_accumulate.comp", accumulate, "#define AT_REST 0"));
-    resolve = gl::compileCompute(
-        assembleShader(none, "viewport_resolve.comp", concat({"viewport_common.glsl", "viewport_resolve.comp"})));
-    const std::string reproject = concat({"viewport_common.glsl", "viewport_reproject.comp"});
-    reprojectClaim = gl::compileCompute(assembleShader(none, "viewport_reproject.comp", reproject, "#define CLAIM 1"));
-    reprojectWrite = gl::compileCompute(assembleShader(none, "viewport_reproject.comp", reproject, "#define CLAIM 0"));
     display = gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
                                   assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"})));
 }

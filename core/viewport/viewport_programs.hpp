@@ -26,10 +26,13 @@ struct FormulaProgram {
 struct ViewportPrograms {
     explicit ViewportPrograms(const Formula& formula);  // throws naming the node on a GLSL error
     std::string structure;
-    // march resumes the rays; marchFromStart first starts them for a new view (reset or reprojected).
-    FormulaProgram march, marchFromStart, shade, cone;
+    // march resumes the rays; marchFromStart first starts them for a new view (reset or reprojected);
+    // marchFromList marches on the rays either left on the march list.
+    FormulaProgram march, marchFromStart, marchFromList, shade, cone;
     // accumulateAtRest raises the AA level; accumulateMoving finds the samples' positions instead.
     gl::Program accumulateAtRest, accumulateMoving, resolve, display;
+    // Sets the shade and march lists' group counts from their entry counts (dispatchOverList).
+    gl::Program listGroups;
     // The reprojection scatter's two passes (shaders/viewport_reproject.comp): claim, then write.
     gl::Program reprojectClaim, reprojectWrite;
 };
