@@ -12,11 +12,13 @@
 //
 // The same holds for the march loop itself: a SIMD group of 8 pixels steps until its last ray
 // finishes, so one ray that needs the whole budget (restarted, or grazing past a silhouette)
-// costs its 7 neighbours that many DE too, although under motion most rays finish in a few
-// steps. So the full-screen pass marches at most u_deferAfter steps; a ray still marching then
-// goes, with the rest of its budget, on the march list, and the FROM_LIST variant (one
-// invocation per entry, 64-wide groups, dispatched indirectly) marches it on, with its SIMD
-// neighbours also long rays. The rays take the same steps either way, bit for bit.
+// costs its 7 neighbours that many DE too, although after a reprojection most rays finish in a
+// few steps. So on such a frame the full-screen pass marches at most u_deferAfter steps; a ray
+// still marching then goes, with the rest of its budget, on the march list, and the FROM_LIST
+// variant (one invocation per entry, 64-wide groups, dispatched indirectly) marches it on, with
+// its SIMD neighbours also long rays. The rays take the same steps either way, bit for bit.
+// (When most rays need many steps, on a reset or at rest, the list's loads and stores cost more
+// than the idle lanes: core/viewport/march_pass.cpp does not defer there.)
 #if FROM_LIST
 layout(local_size_x = 64) in;  // SHADE_GROUP entries per group, as the list's header counts them
 #else

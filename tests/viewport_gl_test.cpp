@@ -241,9 +241,10 @@ TEST(ViewportGL, MotionFilterRadiusOfOnePixelLeavesCentreSamplesAlone) {
     EXPECT_GT(blended, kW * kH / 10) << "a 1.75-pixel tent should blend most pixels with their neighbours";
 }
 
-// The march list (ViewportOptions::deferAfterSteps) only moves where a ray's later steps run:
-// from empty, under motion and while the AA level rises at rest, every frame's counts and image
-// must be the same, bit for bit, however many steps the full-screen pass takes first.
+// The march list (ViewportOptions::deferAfterSteps) only moves where a ray's later steps run on
+// reprojected frames: from empty, under motion and while the AA level rises at rest, every
+// frame's counts and image must be the same, bit for bit, however many steps the full-screen
+// pass takes first.
 TEST(ViewportGL, MarchListTakesTheSameStepsAsOneFullScreenPass) {
     test::glContext();
     const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbulb.json");

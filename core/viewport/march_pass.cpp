@@ -1,5 +1,6 @@
 // Progressive marching, and on a new view the rays' starts (shaders/viewport_march.comp with
 // shaders/viewport_start.glsl); then the rays left on the march list.
+#include <algorithm>
 #include <climits>
 
 #include "core/viewport/passes.hpp"
@@ -8,8 +9,13 @@ namespace fraktal::viewport {
 
 namespace {
 
+// The steps the full-screen pass takes before a ray goes on the march list; 0: it takes them all.
+int stepsBeforeList(const FrameContext& c, FrameAction action) {
+    return action == FrameAction::Reproject ? std::max(c.options.deferAfterSteps, 0) : 0;
+}
+
 // The uniforms every variant of viewport_march.comp reads.
-void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const FrameContext& c) {
+void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const FrameContext& c, FrameAction action) {
     const GLuint program = pass.program.id();
     pass.use(c.formula, c.shading);
     setViewUniforms(program, c.camera, s.width(), s.height());
@@ -18,7 +24,8 @@ void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const Fra
     setInt(program, "u_atRest", c.atRest ? 1 : 0);
     setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);  // keepsCarriedColour
     setInt(program, "u_coarseHits", c.options.coarseHits ? 1 : 0);
-    setInt(program, "u_deferAfter", c.options.deferAfterSteps > 0 ? c.options.deferAfterSteps : INT_MAX);
+    const int deferAfter = stepsBeforeList(c, action);
+    setInt(program, "u_deferAfter", deferAfter > 0 ? deferAfter : INT_MAX);
 }
 
 }  // namespace
@@ -27,7 +34,7 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     const bool newView = action != FrameAction::Continue;
     const FormulaProgram& pass = newView ? p.marchFromStart : p.march;
     const GLuint program = pass.program.id();
-    setMarchUniforms(pass, s, c);
+    setMarchUniforms(pass, s, c, action);
     if (newView) {
         setInt(program, "u_resetAll", action == FrameAction::Reset ? 1 : 0);
         setInt(program, "u_coneTile", c.options.coneTile);
@@ -43,9 +50,9 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     imageBarrier();
 }
 
-void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
-    if (c.options.deferAfterSteps <= 0) return;  // the list stays empty
-    setMarchUniforms(p.marchFromList, s, c);
+void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action) {
+    if (stepsBeforeList(c, action) == 0) return;  // the list is empty
+    setMarchUniforms(p.marchFromList, s, c, action);
     dispatchOverList(p, p.marchFromList.program.id(), s.marchList);
 }
 

@@ -29,11 +29,11 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Came
 
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 // Advances the rays. On a new view (action Reset or Reproject) it first starts them: from the
-// camera on a reset, else from the reprojection.
-// Rays it leaves marching with steps left (ViewportOptions::deferAfterSteps) go on the march
-// list, which runMarchListPass marches on.
+// camera on a reset, else from the reprojection. On a reprojected frame, rays it leaves marching
+// with steps left (ViewportOptions::deferAfterSteps) go on the march list, which
+// runMarchListPass marches on.
 void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
-void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
+void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);

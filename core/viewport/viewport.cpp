@@ -63,7 +63,7 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     }
     runMarchPass(*programs_, *state_, context, action);
     mark("march");
-    runMarchListPass(*programs_, *state_, context);
+    runMarchListPass(*programs_, *state_, context, action);
     mark("march_list");
     runShadePass(*programs_, *state_, context);
     mark("shade");

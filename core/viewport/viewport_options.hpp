@@ -7,9 +7,11 @@ namespace fraktal::viewport {
 
 struct ViewportOptions {
     int stepsPerFrame = 30;  // march steps per ray per frame (the seed's 30)
-    // The full-screen march pass takes at most this many of them; rays still marching then take
-    // the rest in a dispatch over a compacted list (shaders/viewport_march.comp: why). The same
-    // steps either way; 0: all in the full-screen pass. bench/README.md has the measurements.
+    // On a reprojected frame the full-screen march pass takes at most this many of them; rays
+    // still marching then take the rest in a dispatch over a compacted list
+    // (shaders/viewport_march.comp: why). The same steps either way; 0: all in the full-screen
+    // pass. A reset or a frame at rest marches in one pass: there most rays need many steps, and
+    // the list only adds its loads and stores (bench/README.md has the measurements).
     int deferAfterSteps = 8;
     int maxSamples = 16;    // progressive AA cap, samples per pixel
     bool reproject = true;  // carry distances over on camera motion (seed 4.2); off: restart
