@@ -106,6 +106,7 @@ int run(const BenchViewportArgs& a) {
         out["final_psnr_centre_db"] = number(r.frames.empty() ? NAN : r.frames.back().psnrCentreDb);
         out["rest_frames_to_40db"] = r.restFramesToThreshold;
         out["rest_frames_to_settle"] = r.restFramesToSettle;
+        out["rest_ms_to_settle"] = r.restMillisecondsToSettle;
         out["settled_de_evals_per_pixel"] = r.settledDeEvalsPerPixel;
         nlohmann::json frames = nlohmann::json::array();
         for (size_t i = 0; i < r.frames.size(); ++i) {
@@ -152,9 +153,9 @@ int run(const BenchViewportArgs& a) {
         "mean: %.1f ms/frame, %.2f DE evals/pixel/frame (%.2f shading), %.1f dB (%.1f dB against the centre sample)\n",
         r.meanMilliseconds, r.meanDeEvalsPerPixel, r.meanShadeDeEvalsPerPixel, r.meanPsnrDb, r.meanPsnrCentreDb);
     std::printf(
-        "after the stop: %d frames to within 40 dB of the settled image, %d to settle; settled frame %.3f "
-        "DE evals/pixel\n",
-        r.restFramesToThreshold, r.restFramesToSettle, r.settledDeEvalsPerPixel);
+        "after the stop: %d frames to within 40 dB of the settled image, %d to settle (%.0f ms); settled frame "
+        "%.3f DE evals/pixel\n",
+        r.restFramesToThreshold, r.restFramesToSettle, r.restMillisecondsToSettle, r.settledDeEvalsPerPixel);
     return 0;
 }
 

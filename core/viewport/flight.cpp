@@ -78,7 +78,7 @@ FlightResult fly(const Preset& preset, const FlightSettings& fs) {
     // The camera stops: record every image until settled, then compare them with the settled one.
     std::vector<std::vector<float>> rest;
     for (int f = 0; fs.restAfterPath && f < fs.maxRestFrames && !viewport.settled(); ++f) {
-        timedFrame(viewport, preset, camera, fs.width, fs.height);
+        result.restMillisecondsToSettle += timedFrame(viewport, preset, camera, fs.width, fs.height).milliseconds;
         if (fs.measureError) rest.push_back(viewport.readImage());
         result.restFramesToSettle = f + 1;
     }

@@ -47,8 +47,9 @@ struct FlightResult {
     double meanDeEvalsPerPixel = 0.0, meanShadeDeEvalsPerPixel = 0.0, meanMilliseconds = 0.0;
     double meanPsnrDb = 0.0, meanPsnrCentreDb = 0.0;
     // After the camera stops: frames until the image is within restThresholdDb of the settled
-    // image, frames until settled, and the DE cost of a frame once settled.
+    // image, frames until settled (and their wall time), and the DE cost of a frame once settled.
     int restFramesToThreshold = -1, restFramesToSettle = -1;
+    double restMillisecondsToSettle = 0.0;
     double settledDeEvalsPerPixel = 0.0;
 };
 
