@@ -143,7 +143,8 @@ void main() {
         }
         marchedToHit = s.status == MARCH_HIT;
         // Out of steps: as the still renderer (still.frag), a ray crawling along a grazing surface
-        // is a hit; anything else is background.
+        // is a hit; anything else is background. (With i < budget the ray has steps left, on the
+        // march list.)
         if (s.status == MARCH_MARCHING && i == budget && s.steps >= u_maxSteps)
             s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
     }
