@@ -1,4 +1,4 @@
-// Session recovery (issue 6): the autosave rule, the crash/clean-exit decision, and the file
+// Session recovery: the autosave rule, the crash/clean-exit decision, and the file
 // round trip through a simulated crash.
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// The editor's 2D documents (issue 7), without a window: undo/redo of a scripted sequence of 2D
+// The editor's 2D documents, without a window: undo/redo of a scripted sequence of 2D
 // edits restores every state exactly; pan and zoom keep the plane point under the cursor where
 // it is; 2D presets and 2D stills open as 2D documents, save atomically and autosave; compile
 // errors name the 2D node.

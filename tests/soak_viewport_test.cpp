@@ -1,4 +1,4 @@
-// Soak test of the viewport (issue 6): random parameter edits, structure edits (a block toggled,
+// Soak test of the viewport: random parameter edits, structure edits (a block toggled,
 // which recompiles), camera moves and resizes with frames in between, for a bounded time
 // (FRAKTAL_SOAK_SECONDS, default 60 s in CI; set it higher for a long soak). Resident memory
 // after a warm-up must not grow steadily (a leak), nor by much at all, and GL must raise no error.
@@ -128,7 +128,7 @@ TEST(SoakViewport, RandomEditsKeepMemoryFlatAndRaiseNoGlError) {
     EXPECT_GT(edits, 10);
     // Run alone this stays within 1 MB over 110 s and 23000 frames, but it has grown without a
     // leak being found: 19 and 40 MB under load (before the mallopt calls above), and 34 MB in CI
-    // right after the parallel ctest (session 4; alone, the same build stayed flat, twice). The
+    // right after the parallel ctest (alone, the same build stayed flat, twice). The
     // assumption here: a leak per frame or per edit grows the resident set steadily, so in both
     // halves of the run, while such growth (a cache filling, the heap fragmenting) is not steady.
     // So at least one half must stay within 12 MB, which a leak of 12 MB per 30 s (about 10 KB per

@@ -1,4 +1,4 @@
-// Session recovery (issue 6): while the editor runs, the document is saved every minute to a
+// Session recovery: while the editor runs, the document is saved every minute to a
 // recovery file in the editor's config folder (atomically: core/image/atomic_file.hpp). A clean
 // exit removes it and marks the session "clean"; so when the next start finds the recovery file
 // and a session marker that does not say "clean", the last session crashed (or was killed) and

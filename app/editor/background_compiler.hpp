@@ -1,4 +1,4 @@
-// Structure edits compile off the UI thread (issue 5): the viewport's programs for a new formula
+// Structure edits compile off the UI thread: the viewport's programs for a new formula
 // structure are built on a worker thread whose GL context shares objects with the editor's (GL
 // programs are shared objects), so the window keeps drawing the last good image meanwhile. Only
 // the newest requested structure matters: requests made while one compiles replace the queued one.

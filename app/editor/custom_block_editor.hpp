@@ -1,4 +1,4 @@
-// The editor's GLSL block editor (issue 6: users write their own blocks): what the dialog edits,
+// The editor's GLSL block editor (users write their own blocks): what the dialog edits,
 // as plain data owned by EditorState. The definition it produces goes through
 // upsertCustomBlock (formula_edits.hpp), which validates it like a preset's block.
 #pragma once

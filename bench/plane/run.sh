@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# 2D benchmark (issue 7), side by side in one run on this machine:
+# 2D benchmark, side by side in one run on this machine:
 #  1. `fraktal render` of every 2D preset at 1920x1080 and 3840x2160, SPP samples per pixel:
 #     wall time end to end (start-up, GL, EXR and PNG writing) and Msamples/s;
 #  2. the renderer alone (bench/plane/plane_bench.cpp, linked against BUILD_DIR's core): GL in

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reproduces the viewport tables of bench/README.md (issue 4), in one run so that the rows are
+# Reproduces the viewport tables of bench/README.md, in one run so that the rows are
 # measured side by side under the same load:
 #   1. time: every shipped preset at 640x360 and 1280x720, orbit path at 1 degree per frame,
 #      reprojection against restarting every ray (no reference renders, no rest phase);

@@ -25,7 +25,7 @@ struct ViewportOptions {
     bool motionFilter = true;
     // Its tent's radius in pixels. 1 leaves samples on the pixel grid (restarted rays) as they are;
     // wider blurs more, which scores higher against the converged anti-aliased image in both modes
-    // (bench/README.md, "What changed in session 6"). In [kMinFilterRadius, kMaxFilterRadius].
+    // (bench/README.md, "What we tried in the viewport"). In [kMinFilterRadius, kMaxFilterRadius].
     double motionFilterRadius = 1.0;
     static constexpr double kMinFilterRadius = 0.5, kMaxFilterRadius = 2.0;
     // Under motion, a ray that keeps its carried colour stops within the reprojection margin of the
