@@ -7,6 +7,7 @@ packages=(
   libimgui-dev libepoxy-dev libegl-dev libegl1-mesa-dev libgles-dev libgl1-mesa-dri mesa-utils
   nlohmann-json3-dev libcli11-dev libstb-dev libgtest-dev glslang-tools
   xvfb xauth imagemagick
+  xdotool jq
   clang libclang-rt-14-dev
 )
 missing=()

@@ -19,6 +19,8 @@ struct EditOptions {
     std::string screenshot;
     std::string tab;
     int width = 1280, height = 800;
+    std::string stateFile;
+    int slowFrameMs = 0;
 };
 
 int runEdit(const EditOptions& o) {
@@ -30,10 +32,12 @@ int runEdit(const EditOptions& o) {
     e.width = o.width;
     e.height = o.height;
     e.sidebarTab = o.tab;
+    e.stateFile = o.stateFile;
+    e.slowFrameMs = o.slowFrameMs;
     // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
     e.useIniFile = o.frames == 0;
     // Nor autosave or a restore prompt: a scripted run is not a session to recover.
-    e.sessionRecovery = o.frames == 0;
+    e.sessionRecovery = o.frames == 0 && o.stateFile.empty();
     return editor::runEditor(e);
 #else
     std::fputs("fraktal: this build has no editor (FRAKTAL_BUILD_EDITOR=OFF); use `fraktal render`.\n", stderr);
@@ -54,6 +58,9 @@ void addEditCommand(CLI::App& app, Action& action) {
         ->check(CLI::IsMember({"Camera", "Render", "Shading", "Presets", "View", "Colouring"}));
     cmd->add_option("--width", o->width, "Window width")->check(CLI::Range(320, 16384));
     cmd->add_option("--height", o->height, "Window height")->check(CLI::Range(240, 16384));
+    cmd->add_option("--state-file", o->stateFile, "Write the editor's state as JSON after every frame (for tests)");
+    cmd->add_option("--slow-frames", o->slowFrameMs, "Make every frame at least this many ms longer (for tests)")
+        ->check(CLI::Range(0, 10000));
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });
 }
 

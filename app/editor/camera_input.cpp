@@ -7,56 +7,60 @@
 
 namespace fraktal::editor {
 
-bool gatherCameraInput(const EditorState& s, CameraInput& in) {
+namespace {
+
+ViewportRect viewportRect(const Layout& l) { return {l.viewportX, l.viewportY, l.viewportW, l.viewportH}; }
+
+// The frame's viewport drag from the queued mouse events; a press that a panel or popup took
+// (ImGui owns the mouse this frame) starts none.
+DragMotion takeDrag(EditorState& s) {
+    const DragMotion m =
+        consumePointerEvents(s.drag, s.pointerEvents, viewportRect(s.layout), ImGui::GetIO().WantCaptureMouse);
+    s.pointerEvents.clear();
+    return m;
+}
+
+bool cursorOverViewport(const EditorState& s) {
     const ImGuiIO& io = ImGui::GetIO();
-    const Layout& l = s.layout;
-    const bool overViewport = io.MousePos.x >= l.viewportX && io.MousePos.x < l.viewportX + l.viewportW &&
-                              io.MousePos.y >= l.viewportY && io.MousePos.y < l.viewportY + l.viewportH;
-    // A drag belongs to the viewport when it started there and no ImGui window took it.
-    const bool mouseFree = !io.WantCaptureMouse;
+    return !io.WantCaptureMouse && viewportRect(s.layout).contains(io.MousePos.x, io.MousePos.y);
+}
+
+}  // namespace
+
+bool viewportHasKeyboard(const EditorState& s) {
+    return !ImGui::GetIO().WantTextInput && (cursorOverViewport(s) || s.drag.focused);
+}
+
+bool gatherCameraInput(EditorState& s, CameraInput& in) {
+    const ImGuiIO& io = ImGui::GetIO();
     in.dt = io.DeltaTime;
-    in.viewportHeight = l.viewportH;
-    bool gesture = false;
-    if (mouseFree) {
-        const vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
-        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) in.rotateDrag = delta, gesture = true;
-        if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
-            in.panDrag = delta, gesture = true;
-        if (overViewport) in.scroll = io.MouseWheel;
-    }
-    if (s.cameraControls.mode == CameraMode::Fly && !io.WantTextInput && !io.KeyCtrl) {
-        auto down = [](int key) { return ImGui::IsKeyDown(key) ? 1.0 : 0.0; };
-        in.move = vec3(down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
-                       down(GLFW_KEY_W) - down(GLFW_KEY_S));
-        in.boost = io.KeyShift;
-        if (in.move != vec3(0.0)) gesture = true;
-    }
-    return gesture;
+    in.viewportHeight = s.layout.viewportH;
+    const DragMotion drag = takeDrag(s);
+    in.rotateDrag = drag.rotate;
+    in.panDrag = drag.pan;
+    if (cursorOverViewport(s)) in.scroll = io.MouseWheel;
+    const bool fly = s.cameraControls.mode == CameraMode::Fly;
+    const auto seconds = takeFlyKeySeconds(s.flyKeys, s.now, fly && viewportHasKeyboard(s));
+    double duration = 0.0;
+    flyMotion(seconds, in.move, duration);
+    if (in.move != vec3(0.0)) in.dt = duration;
+    in.boost = io.KeyShift;
+    return drag.held || in.move != vec3(0.0);
 }
 
 void updatePlaneView(EditorState& s, int imageWidth, int imageHeight) {
     if (!s.doc.plane) return;
     const ImGuiIO& io = ImGui::GetIO();
     const Layout& l = s.layout;
-    s.cameraGesture = false;
-    if (io.WantCaptureMouse) return;  // over a panel, or a drag that a panel took
+    const DragMotion drag = takeDrag(s);
+    s.cameraGesture = drag.held;  // one undo step per drag
     PlaneInput in;
     in.cursorX = io.MousePos.x - l.viewportX;
     in.cursorY = io.MousePos.y - l.viewportY;
-    const bool overViewport =
-        in.cursorX >= 0 && in.cursorX < l.viewportW && in.cursorY >= 0 && in.cursorY < l.viewportH;
-    for (int button = 0; button < 3; ++button) {
-        if (!ImGui::IsMouseDown(button)) continue;
-        s.cameraGesture = true;  // one undo step per drag
-        // The frame the button goes down, the delta is the move before the press (frames are
-        // slow while a pass renders): a drag starts counting from the next frame.
-        if (!ImGui::IsMouseClicked(button)) {
-            in.dragX = io.MouseDelta.x;
-            in.dragY = io.MouseDelta.y;
-        }
-        break;
-    }
-    if (overViewport) in.wheel = io.MouseWheel;
+    // Any button pans the 2D view.
+    in.dragX = drag.rotate.x + drag.pan.x;
+    in.dragY = drag.rotate.y + drag.pan.y;
+    if (cursorOverViewport(s)) in.wheel = io.MouseWheel;
     s.doc.plane->view = navigatePlane(s.doc.plane->view, in, imageWidth, imageHeight, l.viewportW);
 }
 

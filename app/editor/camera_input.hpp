@@ -1,5 +1,5 @@
-// Gathers one frame of viewport camera input from ImGui's IO (mouse over the viewport and not
-// captured by a panel; fly keys when no text field has focus).
+// Gathers one frame of viewport camera input: drags from the window's mouse events
+// (pointer_input.hpp), the wheel over the viewport, fly keys while the viewport has the keyboard.
 #pragma once
 
 #include "app/editor/camera_controller.hpp"
@@ -7,8 +7,13 @@
 
 namespace fraktal::editor {
 
-// Fills `in` and says whether a gesture (drag or fly key) is in progress.
-bool gatherCameraInput(const EditorState& s, CameraInput& in);
+// Fills `in` from the frame's queued events (consuming them) and says whether a gesture (drag
+// or fly key) is in progress.
+bool gatherCameraInput(EditorState& s, CameraInput& in);
+
+// Camera keys act only while the viewport is hovered or was clicked last, never while a text
+// field has focus.
+bool viewportHasKeyboard(const EditorState& s);
 
 // Gathers input and moves the document's camera by the active controller.
 void updateCamera(EditorState& s);

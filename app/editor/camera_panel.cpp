@@ -18,7 +18,7 @@ void drawCameraTab(EditorState& s) {
     ImGui::SameLine();
     ImGui::RadioButton("Fly", &mode, int(CameraMode::Fly));
     ImGui::SameLine();
-    ImGui::TextDisabled("(Tab)");
+    ImGui::TextDisabled("(V over the viewport)");
     s.cameraControls.mode = CameraMode(mode);
     ImGui::PushTextWrapPos(0.0f);
     if (s.cameraControls.mode == CameraMode::Orbit)

@@ -10,8 +10,10 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <thread>
 
 #include "app/editor/actions.hpp"
 #include "app/editor/background_compiler.hpp"
@@ -20,6 +22,7 @@
 #include "app/editor/panels.hpp"
 #include "app/editor/preset_files.hpp"
 #include "app/editor/screenshot.hpp"
+#include "app/editor/state_dump.hpp"
 #include "app/editor/thumbnails.hpp"
 
 namespace fraktal::editor {
@@ -51,6 +54,41 @@ void onClose(GLFWwindow* w) {
     if (!isDirty(s)) return;
     glfwSetWindowShouldClose(w, GLFW_FALSE);
     requestAction(s, {PendingKind::Quit, {}});
+}
+
+// Mouse and key events go to the viewport's queues with the cursor position they happened at;
+// ImGui's backend, installed after these, calls them before its own handlers.
+void onCursorPos(GLFWwindow* w, double x, double y) {
+    stateOf(w)->pointerEvents.push_back({PointerEvent::Kind::Move, 0, x, y});
+    stateOf(w)->cursorAt = vec2(x, y);
+}
+
+// GLFW's X11 glfwGetCursorPos asks the server where the pointer is now, which can be past the
+// press still waiting in the queue: a press takes the position of the last motion event before it.
+void onMouseButton(GLFWwindow* w, int button, int action, int /*mods*/) {
+    std::vector<PointerEvent>& events = stateOf(w)->pointerEvents;
+    vec2& at = stateOf(w)->cursorAt;
+    const auto kind = action == GLFW_PRESS ? PointerEvent::Kind::Press : PointerEvent::Kind::Release;
+    events.push_back({kind, button, at.x, at.y});
+}
+
+void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
+    if (action == GLFW_REPEAT) return;
+    if (action == GLFW_PRESS) stateOf(w)->keyPresses.push_back({key, mods});
+    FlyKey fly = kFlyKeys;
+    switch (key) {
+        case GLFW_KEY_D: fly = FlyRight; break;
+        case GLFW_KEY_A: fly = FlyLeft; break;
+        case GLFW_KEY_E: fly = FlyUp; break;
+        case GLFW_KEY_Q: fly = FlyDown; break;
+        case GLFW_KEY_W: fly = FlyForward; break;
+        case GLFW_KEY_S: fly = FlyBack; break;
+        default: return;
+    }
+    // Ctrl+S, Ctrl+D, ... are commands, not moves (a release always ends a move).
+    const bool press = action == GLFW_PRESS;
+    if (press && (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER))) return;
+    flyKeyEvent(stateOf(w)->flyKeys, fly, press, glfwGetTime());
 }
 
 void onGlfwError(int code, const char* text) { std::fprintf(stderr, "fraktal: GLFW error %d: %s\n", code, text); }
@@ -148,6 +186,10 @@ int runEditor(const EditorOptions& o) {
     glfwSetWindowUserPointer(window, &s);
     glfwSetDropCallback(window, onDrop);
     glfwSetWindowCloseCallback(window, onClose);
+    glfwGetCursorPos(window, &s.cursorAt.x, &s.cursorAt.y);
+    glfwSetCursorPosCallback(window, onCursorPos);
+    glfwSetMouseButtonCallback(window, onMouseButton);
+    glfwSetKeyCallback(window, onKey);
 
     const fs::path config = configFolder();
     std::error_code ec;
@@ -192,14 +234,16 @@ int runEditor(const EditorOptions& o) {
         }
         s.panels.selectTab = o.sidebarTab;
         if (o.sessionRecovery && !beginSession(s.autosave, config, glfwGetTime())) setStatus(s, s.autosave.error, true);
-        std::string title;
-        int frame = 0;
+        std::string title, lastState;
+        int frame = 0, framesDrawn = 0;
         while (!s.quit && !glfwWindowShouldClose(window)) {
             // Idle when the image is converged and nothing happens: no busy loop on a laptop.
             const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
             const bool compiling = !s.doc.plane && viewport->stats().compiling;
             const bool busy =
                 o.frames > 0 || !settled || compiling || exportActive(s.exportJob) || ImGui::IsAnyMouseDown();
+            s.keyPresses.clear();
+            s.pointerEvents.clear();
             if (busy)
                 glfwPollEvents();
             else
@@ -258,6 +302,15 @@ int runEditor(const EditorOptions& o) {
                 break;
             }
             glfwSwapBuffers(window);
+            ++framesDrawn;
+            if (!o.stateFile.empty()) {
+                try {
+                    writeStateFile(o.stateFile, stateJson(s, framesDrawn, compileError), lastState);
+                } catch (const std::exception& e) {
+                    std::fprintf(stderr, "fraktal: %s\n", e.what());
+                }
+            }
+            if (o.slowFrameMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.slowFrameMs));
 
             // One undo step per finished gesture: commit only when nothing is being dragged.
             if (!ImGui::IsAnyItemActive() && !s.cameraGesture) s.history.commit(s.doc);

@@ -12,6 +12,7 @@
 #include "app/editor/custom_block_editor.hpp"
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
+#include "app/editor/pointer_input.hpp"
 #include "app/editor/undo_history.hpp"
 #include "core/color/color_pipeline.hpp"
 
@@ -109,6 +110,11 @@ struct EditorState {
     bool quit = false;
     double now = 0.0;                            // seconds, for status fades and frame time
     std::vector<std::filesystem::path> dropped;  // files dropped on the window this frame
+    std::vector<PointerEvent> pointerEvents;     // mouse events since the last frame (GLFW callbacks)
+    vec2 cursorAt{0.0};                          // the last cursor position GLFW reported
+    ViewportDrag drag;                           // the viewport's drag, from those events
+    FlyKeys flyKeys;                             // fly keys, from key events
+    std::vector<KeyPress> keyPresses;            // key presses since the last frame (shortcuts)
 };
 
 bool isDirty(const EditorState& s);

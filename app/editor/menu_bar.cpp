@@ -40,7 +40,7 @@ void drawMenuBar(EditorState& s) {
         ImGui::MenuItem("Stats overlay", "F4", &s.panels.stats);
         ImGui::Separator();
         bool fly = s.cameraControls.mode == CameraMode::Fly;
-        if (ImGui::MenuItem("Fly camera", "Tab", &fly, !s.doc.plane))
+        if (ImGui::MenuItem("Fly camera", "V", &fly, !s.doc.plane))
             s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
         if (ImGui::MenuItem("Reset view", "Home")) {
             if (s.doc.plane)

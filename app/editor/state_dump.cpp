@@ -1,0 +1,33 @@
+#include "app/editor/state_dump.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "core/image/atomic_file.hpp"
+
+namespace fraktal::editor {
+
+using nlohmann::json;
+
+std::string stateJson(const EditorState& s, int frame, const std::string& compileError) {
+    const Camera& c = s.doc.preset.camera;
+    json j;
+    j["frame"] = frame;
+    j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},
+                   {"target", {c.target.x, c.target.y, c.target.z}}};
+    j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;
+    j["undoDepth"] = s.history.undoDepth();
+    j["redoDepth"] = s.history.redoDepth();
+    j["viewport"] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW, s.layout.viewportH};
+    j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
+    j["compileError"] = compileError;
+    j["document"] = json::parse(fingerprint(s.doc));
+    return j.dump(1);
+}
+
+void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last) {
+    if (text == last) return;
+    writeFileAtomically(file, text);
+    last = text;
+}
+
+}  // namespace fraktal::editor

@@ -1,0 +1,18 @@
+// The editor's state as JSON, written after every frame to a file that a test driving the real
+// editor (tests/editor_user_stories.sh) reads: camera, modes, undo list, layout, status line and
+// the document itself.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "app/editor/editor_state.hpp"
+
+namespace fraktal::editor {
+
+std::string stateJson(const EditorState& s, int frame, const std::string& compileError);
+
+// Writes `text` to `file` atomically when it differs from `last` (then updates `last`).
+void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last);
+
+}  // namespace fraktal::editor

@@ -1,0 +1,138 @@
+#!/bin/sh
+# User stories: starts the real editor under Xvfb and drives it with real X input events
+# (xdotool), the way a person does, then asserts on the state the editor writes after every
+# frame (--state-file, JSON) and on screenshots.
+# Usage: editor_user_stories.sh FRAKTAL PRESET_DIR OUT_DIR
+set -eu
+if [ -z "${FRAKTAL_STORIES_UNDER_XVFB:-}" ]; then
+    FRAKTAL_STORIES_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
+fi
+fraktal=$1
+presets=$2
+out=$3
+mkdir -p "$out"
+# A private HOME: the editor's ini and recent list must not leak in or out.
+home=$(mktemp -d)
+state="$home/state.json"
+pid=
+cleanup() {
+    [ -z "$pid" ] || kill "$pid" 2>/dev/null || true
+    rm -rf "$home"
+}
+trap cleanup EXIT
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+q() { jq -r "$1" "$state"; }
+frame() { if [ -f "$state" ]; then q .frame; else echo 0; fi; }
+# Waits until the editor has drawn N more frames (events are handled at the start of a frame).
+wait_frames() {
+    target=$(($(frame) + $1))
+    tries=0
+    while [ "$(frame)" -lt "$target" ]; do
+        tries=$((tries + 1))
+        [ $tries -lt 600 ] || { echo "the editor stopped drawing frames"; exit 1; }
+        sleep 0.1
+    done
+}
+# start PRESET [OPTIONS...]: the editor in the background, after its first frames.
+start() {
+    rm -f "$state"
+    preset=$1
+    shift
+    HOME="$home" "$fraktal" edit "$preset" --state-file "$state" "$@" &
+    pid=$!
+    wait_frames 3
+    window=$(xdotool search --sync --onlyvisible --name "fraktal" | head -1)
+}
+stop() {
+    kill "$pid" 2>/dev/null || true
+    wait "$pid" 2>/dev/null || true
+    pid=
+}
+camera() { q '.camera.position | map(tostring) | join(" ")'; }
+# Move the pointer to window coordinates.
+to() { xdotool mousemove --window "$window" "$1" "$2"; }
+# drag X Y DX DY STEPS: left-drag from (X, Y) by (DX, DY) in STEPS moves.
+drag() {
+    to "$1" "$2"
+    xdotool mousedown 1
+    i=1
+    while [ $i -le "$5" ]; do
+        to $(($1 + $3 * i / $5)) $(($2 + $4 * i / $5))
+        i=$((i + 1))
+    done
+    xdotool mouseup 1
+}
+# Relative difference of two camera positions (0: the same place).
+moved() { awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, r, " "); d = 0; n = 0;
+    for (i = 1; i <= 3; i++) { d += (p[i] - r[i]) ^ 2; n += r[i] ^ 2 } print sqrt(d / n) }'; }
+check() { awk "BEGIN { exit !($1) }"; }
+
+# Viewport centre and panel points at the default 1280x800 layout (from the state file).
+viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1] + .viewport[3] / 2 | floor)"'; }
+
+# 1. Frames of 400 ms: a click in the viewport after using a panel leaves the camera where it
+#    is, and so does a press that wobbles by 2 pixels; a drag ends where the same drag ends at
+#    full speed.
+start "$presets/mandelbulb.json" --slow-frames 400
+set -- $(viewport_centre)
+cx=$1 cy=$2
+before=$(camera)
+to 100 600
+wait_frames 2
+xdotool mousemove --window "$window" "$cx" "$cy" click 1
+wait_frames 3
+[ "$(camera)" = "$before" ] || fail "click without drag moved the camera: $before -> $(camera)"
+to "$cx" "$cy"
+xdotool mousedown 1
+to $((cx + 2)) $((cy + 1))
+xdotool mouseup 1
+wait_frames 3
+[ "$(camera)" = "$before" ] || fail "a 2-pixel wobble moved the camera: $before -> $(camera)"
+drag "$cx" "$cy" 160 60 8
+wait_frames 3
+slow_drag=$(camera)
+stop
+
+start "$presets/mandelbulb.json"
+set -- $(viewport_centre)
+drag "$cx" "$cy" 160 60 8
+wait_frames 3
+fast_drag=$(camera)
+d=$(moved "$fast_drag" "$before")
+check "$d > 0.1" || fail "a 160 px drag did not orbit the camera (moved $d)"
+d=$(moved "$slow_drag" "$fast_drag")
+check "$d < 1e-6" || fail "the same drag at 400 ms frames ends elsewhere ($slow_drag vs $fast_drag, $d)"
+echo "drag: full speed $fast_drag; slow frames $slow_drag"
+
+# 2. Keys: V over the viewport switches to fly mode; "wasd" typed into the preset name field
+#    goes into the name and moves no camera; a W tap over the viewport moves it.
+to "$cx" "$cy"
+wait_frames 1
+xdotool key v
+wait_frames 2
+[ "$(q .flyMode)" = true ] || fail "V over the viewport did not switch to fly mode"
+before=$(camera)
+to 180 62
+xdotool click 1
+wait_frames 1
+xdotool type --delay 30 wasd
+wait_frames 3
+[ "$(camera)" = "$before" ] || fail "typing wasd into a text field moved the camera"
+q .document.name | grep -q wasd || fail "the name field did not get the typed text: $(q .document.name)"
+xdotool key Escape
+to "$cx" "$cy"
+xdotool click 1
+wait_frames 2
+before=$(camera)
+xdotool key w
+wait_frames 2
+d=$(moved "$(camera)" "$before")
+check "$d > 0" || fail "a W tap over the viewport in fly mode did not move the camera"
+xdotool key v
+wait_frames 1
+echo "keys: W tap moved the camera by $d (relative)"
+stop
+
+[ $failures -eq 0 ] && echo "editor_user_stories: all OK" || { echo "editor_user_stories: $failures failure(s)"; exit 1; }
