@@ -14,7 +14,8 @@ echo "== tests (Release)"
     ctest --output-on-failure --timeout 900 -R '^SoakViewport')
 
 echo "== tests under AddressSanitizer + UBSan"
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DFRAKTAL_SANITIZE=ON -DFRAKTAL_BUILD_EDITOR=OFF >/dev/null
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DFRAKTAL_SANITIZE=ON -DFRAKTAL_BUILD_EDITOR=OFF \
+  $(command -v ccache >/dev/null && echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache) >/dev/null
 cmake --build build-asan --parallel "$(nproc)" --target fraktal_tests fraktal
 # Leak detection is off: Mesa (uninstrumented) keeps allocations until exit, and even the GL-free
 # tests end with 240 bytes held by an unsymbolised runtime module (3 allocations), which LSan
