@@ -135,4 +135,61 @@ wait_frames 1
 echo "keys: W tap moved the camera by $d (relative)"
 stop
 
+# 3. A new formula from three blocks: from the Mandelbulb template, delete its power node and add
+#    Box fold, Sphere fold and Scale after its Add c from the "Add block..." menu (a Mandelbox,
+#    iterated from another point). The estimator, bailout and bound follow the blocks and
+#    the viewport shows an object; F frames it (the camera moves outside the surface, the object
+#    fills more of the view).
+start "$presets/mandelbulb.json"
+to 330 235; xdotool click 1; wait_frames 2
+# add_block ROW_Y CATEGORY_ROW ITEM_ROW: the menu opens at the cursor; rows are 19 px apart.
+add_block() {
+    to 58 "$1"; xdotool click 1; wait_frames 2
+    to 90 $(($1 + 16 + 19 * $2)); wait_frames 2
+    to 120 $(($1 + 16 + 19 * $2)); wait_frames 2
+    to 275 $(($1 + 16 + 19 * $2 + 19 * $3)); xdotool click 1; wait_frames 2
+}
+add_block 281 0 2 # fold / Box fold
+add_block 308 0 3 # fold / Sphere fold
+add_block 335 1 0 # transform / Scale
+to 1100 700
+wait_frames 6
+nodes=$(q '[.document.formula.nodes[].block] | join(" ")')
+[ "$nodes" = "add_c box_fold sphere_fold scale escape_linear" ] || fail "the node list is '$nodes', not the three blocks added"
+echo "new formula: $nodes, estimator $(q .document.formula.estimator.block), bailout $(q .document.formula.bailout), bound $(q .document.formula.boundRadius)"
+set -- $(q '.viewport | map(floor) | join(" ")')
+crop="$3x$4+$1+$2"
+# An object in view: surface detail (edge pixels) on at least 2% of the viewport,
+# and lit (a camera inside the surface sees a dark cave, mean < 0.1; the sky alone has no edges).
+coverage() { convert "$1" -crop "$crop" +repage -colorspace Gray -edge 1 -threshold 8% -format "%[fx:mean]" info:; }
+brightness() { convert "$1" -crop "$crop" +repage -colorspace Gray -format "%[fx:mean]" info:; }
+shows_object() {
+    import -window root "$out/$1.png"
+    cov=$(coverage "$out/$1.png")
+    mean=$(brightness "$out/$1.png")
+    echo "$1: edge coverage $cov, mean $mean; camera $(camera)"
+    check "$cov > 0.02 && $mean > 0.15"
+}
+shows_object story_new_formula || fail "the new formula's viewport shows no object"
+eye=$(q .eyeDistance)
+bound=$(q .document.formula.boundRadius)
+check "$eye > 0.01 * $bound" || fail "after the formula edit the camera is not outside the surface (DE at the eye $eye)"
+to "$cx" "$cy"
+xdotool key f
+wait_frames 8
+shows_object story_framed || fail "after F the viewport shows no object"
+framed=$(camera)
+# Zoom into the object with the wheel, then F frames it again: the same view (F keeps the
+# viewing direction), outside the surface.
+xdotool click --repeat 30 --delay 20 4
+wait_frames 4
+zoomed_eye=$(q .eyeDistance)
+xdotool key f
+wait_frames 4
+eye=$(q .eyeDistance)
+echo "F: DE at the eye zoomed in $zoomed_eye, framed $eye"
+check "$eye > 0.01 * $bound && $eye > 10 * $zoomed_eye" || fail "F did not move the camera out from the surface ($zoomed_eye -> $eye)"
+d=$(moved "$(camera)" "$framed")
+check "$d < 1e-6" || fail "F from the same direction frames differently ($(camera) vs $framed)"
+stop
 [ $failures -eq 0 ] && echo "editor_user_stories: all OK" || { echo "editor_user_stories: $failures failure(s)"; exit 1; }

@@ -2,6 +2,7 @@
 #include <imgui.h>
 
 #include "app/editor/actions.hpp"
+#include "app/editor/camera_input.hpp"
 #include "app/editor/panels.hpp"
 
 namespace fraktal::editor {
@@ -42,6 +43,7 @@ void drawMenuBar(EditorState& s) {
         bool fly = s.cameraControls.mode == CameraMode::Fly;
         if (ImGui::MenuItem("Fly camera", "V", &fly, !s.doc.plane))
             s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
+        if (ImGui::MenuItem("Frame object", "F", false, !s.doc.plane)) frameObject(s);
         if (ImGui::MenuItem("Reset view", "Home")) {
             if (s.doc.plane)
                 resetPlaneView(s);
