@@ -64,6 +64,21 @@ drag() {
     done
     xdotool mouseup 1
 }
+# The same, a frame per step: ImGui 1.86 polls the cursor once a frame, so its widgets need to
+# see the button down and the cursor move in separate frames, as with a person's hand.
+drag_frames() {
+    to "$1" "$2"
+    wait_frames 1
+    xdotool mousedown 1
+    wait_frames 1
+    i=1
+    while [ $i -le "$5" ]; do
+        to $(($1 + $3 * i / $5)) $(($2 + $4 * i / $5))
+        wait_frames 1
+        i=$((i + 1))
+    done
+    xdotool mouseup 1
+}
 # Relative difference of two camera positions (0: the same place).
 moved() { awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, r, " "); d = 0; n = 0;
     for (i = 1; i <= 3; i++) { d += (p[i] - r[i]) ^ 2; n += r[i] ^ 2 } print sqrt(d / n) }'; }
@@ -105,6 +120,23 @@ check "$d > 0.1" || fail "a 160 px drag did not orbit the camera (moved $d)"
 d=$(moved "$slow_drag" "$fast_drag")
 check "$d < 1e-6" || fail "the same drag at 400 ms frames ends elsewhere ($slow_drag vs $fast_drag, $d)"
 echo "drag: full speed $fast_drag; slow frames $slow_drag"
+[ "$(q .undoDepth)" = 0 ] || fail "orbiting the camera added an undo step ($(q .undoLabel))"
+
+# 4. Undo after a slider drag: the whole drag is one step, the Edit menu's label names it, and
+#    one Ctrl+Z returns the value.
+power() { q '.document.formula.nodes[0].params.power // 8'; }
+drag_frames 150 477 60 0 6
+# The release is seen at the start of a frame, the step committed at its end, written after the next.
+wait_frames 3
+dragged=$(power)
+[ "$dragged" != 8 ] || fail "dragging the power slider did not change the power"
+[ "$(q .undoDepth)" = 1 ] || fail "a slider drag made $(q .undoDepth) undo steps, not 1"
+[ "$(q .undoLabel)" = "change of power" ] || fail "Undo would do '$(q .undoLabel)', not 'change of power'"
+xdotool key ctrl+z
+wait_frames 3
+[ "$(power)" = 8 ] || fail "one Ctrl+Z after the slider drag left the power at $(power) (dragged to $dragged)"
+[ "$(q .undoDepth)" = 0 ] || fail "undo left $(q .undoDepth) steps"
+echo "undo: power 8 -> $dragged -> $(power) in one step"
 
 # 2. Keys: V over the viewport switches to fly mode; "wasd" typed into the preset name field
 #    goes into the name and moves no camera; a W tap over the viewport moves it.

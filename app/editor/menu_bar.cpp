@@ -31,8 +31,11 @@ void drawMenuBar(EditorState& s) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, s.history.canUndo())) undo(s);
-        if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, s.history.canRedo())) redo(s);
+        // Says what it will do: "Undo change of scale", "Redo add Box fold".
+        s.history.commit(s.doc);
+        const std::string undoText = "Undo " + s.history.undoLabel(), redoText = "Redo " + s.history.redoLabel();
+        if (ImGui::MenuItem(undoText.c_str(), "Ctrl+Z", false, s.history.canUndo())) undo(s);
+        if (ImGui::MenuItem(redoText.c_str(), "Ctrl+Shift+Z", false, s.history.canRedo())) redo(s);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
