@@ -215,8 +215,10 @@ TEST(EditorFormulaEdits, ParametersAreClampedToTheDeclaredRange) {
 }
 
 TEST(EditorFormulaEdits, CompileErrorNamesTheNode) {
-    EXPECT_EQ(nodeNamedInLog("GLSL compile error in x:\nnode 3 (box_fold), GLSL line 2: error: ...", 5), 3);
-    EXPECT_EQ(nodeNamedInLog("estimator (box), GLSL line 1: error", 5), 5);
+    // The log numbers nodes from 1, as the list shows them.
+    EXPECT_EQ(nodeNamedInLog("GLSL compile error in x:\nnode 3 \"Box fold\" (box_fold), GLSL line 2: error: ...", 5),
+              2);
+    EXPECT_EQ(nodeNamedInLog("estimator \"Box\" (box), GLSL line 1: error", 5), 5);
     EXPECT_EQ(nodeNamedInLog("link error", 5), -1);
 }
 

@@ -224,4 +224,21 @@ check "$eye > 0.01 * $bound && $eye > 10 * $zoomed_eye" || fail "F did not move 
 d=$(moved "$(camera)" "$framed")
 check "$d < 1e-6" || fail "F from the same direction frames differently ($(camera) vs $framed)"
 stop
+# 5. A custom GLSL block that does not compile, at position 2 of the node list: the error the
+#    editor reports names it as the list shows it (number from 1 and label).
+broken="$home/broken_fold.json"
+jq '.formula.customBlocks = [{"id": "broken_fold", "label": "Broken fold", "category": "fold",
+      "params": [{"name": "amount", "default": 1, "min": 0, "max": 2, "help": "x"}],
+      "glsl": "p.xyz *= amount;\np.xyz += not_declared_anywhere;\n"}]
+    | .formula.nodes |= .[:1] + [{"block": "broken_fold"}] + .[1:]' "$presets/mandelbox.json" >"$broken"
+start "$broken"
+tries=0
+while [ -z "$(q .compileError)" ] && [ $tries -lt 30 ]; do wait_frames 1; tries=$((tries + 1)); done
+error=$(q .compileError)
+echo "$error" | grep -q 'node 2 "Broken fold" (broken_fold), GLSL line 2' ||
+    fail "the compile error does not name node 2 \"Broken fold\" as the list shows it: $error"
+import -window root "$out/story_compile_error.png"
+echo "compile error: $(echo "$error" | grep -m1 'node 2')"
+stop
+
 [ $failures -eq 0 ] && echo "editor_user_stories: all OK" || { echo "editor_user_stories: $failures failure(s)"; exit 1; }
