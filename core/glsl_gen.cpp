@@ -91,11 +91,11 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     GlslEmitter e;
     e.out = tmpl.substr(0, nodesAt);
     for (size_t k = 0; k < f.nodes.size(); ++k) {
-        g.nodeNames.push_back("node " + std::to_string(k) + " (" + std::string(f.nodes[k].block->id) + ")");
+        g.nodeNames.push_back(listedNodeName("node ", int(k), *f.nodes[k].block));
         if (f.nodes[k].enabled) emitNodeFunction(e, int(k), f.nodes[k], g.nodeNames.back(), false);
     }
     const int est = int(f.nodes.size());
-    g.nodeNames.push_back("estimator (" + std::string(f.estimator.block->id) + ")");
+    g.nodeNames.push_back(listedNodeName("estimator", -1, *f.estimator.block));
     emitNodeFunction(e, est, f.estimator, g.nodeNames.back(), true);
 
     std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);

@@ -21,8 +21,18 @@ inline constexpr int kNodeLineStride = 10000;
 struct GeneratedFormula {
     std::string
         code;  // defines formulaEval(vec3, out vec4, out int, out bool), formulaDE(vec3, out vec4, out int), DE(vec3)
-    std::vector<std::string> nodeNames;  // index k: "node 3 (box_fold)"
+    std::vector<std::string> nodeNames;  // index k: listedNodeName, e.g. `node 3 "Box fold" (box_fold)`
 };
+
+// How compile errors name a node: as the editor's node list shows it, numbered from 1 with its
+// label, then the id a preset file uses: `node 2 "Box fold" (box_fold)`; with index < 0 no number
+// (`estimator "Box" (box)`). `what` is "node ", "start node " or "estimator".
+template <class Desc>
+std::string listedNodeName(std::string_view what, int index, const Desc& block) {
+    std::string name(what);
+    if (index >= 0) name += std::to_string(index + 1);
+    return name + " \"" + std::string(block.label) + "\" (" + std::string(block.id) + ")";
+}
 
 GeneratedFormula generateFormulaGLSL(const Formula& f);
 

@@ -214,7 +214,8 @@ TEST(CustomBlock, CompileErrorNamesTheBlockAndItsLine) {
                                                         "p.xyz += not_declared_anywhere;\n"));
     const test::CliRun r = test::runCli("check --rays 4 --grid 4 " + file.string());
     EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find("node 0 (my_box_fold), GLSL line 2"), std::string::npos) << r.output;
+    // Numbered from 1 with the label, as the editor's node list shows it (no label: the id).
+    EXPECT_NE(r.output.find("node 1 \"my_box_fold\" (my_box_fold), GLSL line 2"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("not_declared_anywhere"), std::string::npos) << r.output;
 }
 

@@ -42,7 +42,6 @@ std::vector<std::function<void(Document&)>> scriptedEdits() {
         [](Document& d) { d.preset.formula.nodes[1].period = 2; },
         [](Document& d) { setEstimator(d.preset.formula, *findBlock("escape_linear")); },
         [](Document& d) { removeNode(d.preset.formula, 3); },
-        [](Document& d) { d.preset.camera.position = vec3(0.3, 2.5, 1.0 / 3.0); },
         [](Document& d) { d.preset.camera.fovY = 61.5; },
         [](Document& d) { d.viewSlots[2] = d.preset.camera; },
         [](Document& d) { d.preset.render.exposure = -1.25; },
@@ -84,7 +83,43 @@ TEST(EditorUndo, ScriptedSequenceUndoesAndRedoesToEveryStateExactly) {
     EXPECT_FALSE(history.redo(doc));
     // Exact doubles, not just a matching text form.
     EXPECT_EQ(doc.preset.formula.bailout, 1.0 / 7.0);
-    EXPECT_EQ(doc.preset.camera.position.z, 1.0 / 3.0);
+    EXPECT_EQ(doc.preset.camera.fovY, 61.5);
+}
+
+TEST(EditorUndo, CameraMovesRecordNoStepAndUndoKeepsTheCamera) {
+    Document doc = documentFrom("mandelbulb.json");
+    UndoHistory history;
+    history.reset(doc);
+    setParam(doc.preset.formula, 0, 0, vec3(5.5, 0, 0));
+    ASSERT_TRUE(history.commit(doc));
+    doc.preset.camera.position = vec3(0.3, 2.5, 1.0 / 3.0);
+    doc.preset.camera.target = vec3(0.1, 0.0, 0.0);
+    EXPECT_FALSE(history.commit(doc)) << "an orbit is not an edit";
+    EXPECT_EQ(history.undoDepth(), 1u);
+    EXPECT_EQ(history.undoLabel(), "change of power");
+    ASSERT_TRUE(history.undo(doc));
+    EXPECT_EQ(doc.preset.formula.nodes[0].values[0].x, 8.0);
+    EXPECT_EQ(doc.preset.camera.position, vec3(0.3, 2.5, 1.0 / 3.0)) << "undo keeps where one looks";
+    EXPECT_EQ(history.redoLabel(), "change of power");
+}
+
+TEST(EditorUndo, LabelsSayWhatUndoAndRedoWillDo) {
+    Document doc = documentFrom("mandelbox.json");
+    UndoHistory history;
+    history.reset(doc);
+    addNode(doc.preset.formula, *findBlock("rotate"), 1);
+    history.commit(doc);
+    EXPECT_EQ(history.undoLabel(), "add Rotate");
+    removeNode(doc.preset.formula, 0);
+    history.commit(doc);
+    EXPECT_EQ(history.undoLabel(), "remove Box fold");
+    doc.preset.formula.bailout = 50.0;
+    doc.preset.render.exposure = 0.5;
+    history.commit(doc);
+    EXPECT_EQ(history.undoLabel(), "change of bailout and exposure");
+    history.undo(doc);
+    EXPECT_EQ(history.redoLabel(), "change of bailout and exposure");
+    EXPECT_EQ(history.undoLabel(), "remove Box fold");
 }
 
 TEST(EditorUndo, NewEditAfterUndoDropsTheRedoBranch) {
@@ -180,8 +215,10 @@ TEST(EditorFormulaEdits, ParametersAreClampedToTheDeclaredRange) {
 }
 
 TEST(EditorFormulaEdits, CompileErrorNamesTheNode) {
-    EXPECT_EQ(nodeNamedInLog("GLSL compile error in x:\nnode 3 (box_fold), GLSL line 2: error: ...", 5), 3);
-    EXPECT_EQ(nodeNamedInLog("estimator (box), GLSL line 1: error", 5), 5);
+    // The log numbers nodes from 1, as the list shows them.
+    EXPECT_EQ(nodeNamedInLog("GLSL compile error in x:\nnode 3 \"Box fold\" (box_fold), GLSL line 2: error: ...", 5),
+              2);
+    EXPECT_EQ(nodeNamedInLog("estimator \"Box\" (box), GLSL line 1: error", 5), 5);
     EXPECT_EQ(nodeNamedInLog("link error", 5), -1);
 }
 

@@ -63,19 +63,6 @@ std::vector<std::function<void(Document&)>> scriptedPlaneEdits() {
         [](Document& d) { d.plane->colouring.edgeWidth = 0.0; },
         [](Document& d) { d.plane->render.exposure = -0.5; },
         [](Document& d) { d.plane->render.view = "ACES"; },
-        [](Document& d) {
-            PlaneInput in;
-            in.dragX = 13.0;
-            in.dragY = -7.0;
-            d.plane->view = navigatePlane(d.plane->view, in, 640, 480, 640.0);
-        },
-        [](Document& d) {
-            PlaneInput in;
-            in.cursorX = 100.5;
-            in.cursorY = 50.25;
-            in.wheel = 3.0;
-            d.plane->view = navigatePlane(d.plane->view, in, 640, 480, 640.0);
-        },
         [](Document& d) { d.plane->name = "edited"; },
     };
 }
@@ -112,6 +99,25 @@ TEST(EditorPlaneUndo, ScriptedSequenceUndoesAndRedoesToEveryStateExactly) {
     }
     EXPECT_FALSE(history.redo(doc));
     EXPECT_EQ(doc.plane->formula.bailout, 1.0 / 3.0);
+}
+
+TEST(EditorPlaneUndo, PanAndZoomRecordNoStepAndUndoKeepsTheView) {
+    Document doc = planeDocument("mandelbrot.json");
+    UndoHistory history;
+    history.reset(doc);
+    doc.plane->formula.iterations = 77;
+    ASSERT_TRUE(history.commit(doc));
+    PlaneInput in;
+    in.dragX = 13.0;
+    in.wheel = 3.0;
+    doc.plane->view = navigatePlane(doc.plane->view, in, 640, 480, 640.0);
+    const PlaneViewRect moved = doc.plane->view;
+    EXPECT_FALSE(history.commit(doc)) << "panning and zooming are not edits";
+    EXPECT_EQ(history.undoDepth(), 1u);
+    ASSERT_TRUE(history.undo(doc));
+    EXPECT_NE(doc.plane->formula.iterations, 77);
+    EXPECT_EQ(doc.plane->view.center, moved.center) << "undo keeps where one looks";
+    EXPECT_EQ(doc.plane->view.width, moved.width);
 }
 
 TEST(EditorPlaneNavigation, WheelZoomKeepsThePointUnderTheCursorFixed) {

@@ -64,6 +64,21 @@ drag() {
     done
     xdotool mouseup 1
 }
+# The same, a frame per step: ImGui 1.86 polls the cursor once a frame, so its widgets need to
+# see the button down and the cursor move in separate frames, as with a person's hand.
+drag_frames() {
+    to "$1" "$2"
+    wait_frames 1
+    xdotool mousedown 1
+    wait_frames 1
+    i=1
+    while [ $i -le "$5" ]; do
+        to $(($1 + $3 * i / $5)) $(($2 + $4 * i / $5))
+        wait_frames 1
+        i=$((i + 1))
+    done
+    xdotool mouseup 1
+}
 # Relative difference of two camera positions (0: the same place).
 moved() { awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, r, " "); d = 0; n = 0;
     for (i = 1; i <= 3; i++) { d += (p[i] - r[i]) ^ 2; n += r[i] ^ 2 } print sqrt(d / n) }'; }
@@ -105,6 +120,23 @@ check "$d > 0.1" || fail "a 160 px drag did not orbit the camera (moved $d)"
 d=$(moved "$slow_drag" "$fast_drag")
 check "$d < 1e-6" || fail "the same drag at 400 ms frames ends elsewhere ($slow_drag vs $fast_drag, $d)"
 echo "drag: full speed $fast_drag; slow frames $slow_drag"
+[ "$(q .undoDepth)" = 0 ] || fail "orbiting the camera added an undo step ($(q .undoLabel))"
+
+# 4. Undo after a slider drag: the whole drag is one step, the Edit menu's label names it, and
+#    one Ctrl+Z returns the value.
+power() { q '.document.formula.nodes[0].params.power // 8'; }
+drag_frames 150 477 60 0 6
+# The release is seen at the start of a frame, the step committed at its end, written after the next.
+wait_frames 3
+dragged=$(power)
+[ "$dragged" != 8 ] || fail "dragging the power slider did not change the power"
+[ "$(q .undoDepth)" = 1 ] || fail "a slider drag made $(q .undoDepth) undo steps, not 1"
+[ "$(q .undoLabel)" = "change of power" ] || fail "Undo would do '$(q .undoLabel)', not 'change of power'"
+xdotool key ctrl+z
+wait_frames 3
+[ "$(power)" = 8 ] || fail "one Ctrl+Z after the slider drag left the power at $(power) (dragged to $dragged)"
+[ "$(q .undoDepth)" = 0 ] || fail "undo left $(q .undoDepth) steps"
+echo "undo: power 8 -> $dragged -> $(power) in one step"
 
 # 2. Keys: V over the viewport switches to fly mode; "wasd" typed into the preset name field
 #    goes into the name and moves no camera; a W tap over the viewport moves it.
@@ -133,6 +165,80 @@ check "$d > 0" || fail "a W tap over the viewport in fly mode did not move the c
 xdotool key v
 wait_frames 1
 echo "keys: W tap moved the camera by $d (relative)"
+stop
+
+# 3. A new formula from three blocks: from the Mandelbulb template, delete its power node and add
+#    Box fold, Sphere fold and Scale after its Add c from the "Add block..." menu (a Mandelbox,
+#    iterated from another point). The estimator, bailout and bound follow the blocks and
+#    the viewport shows an object; F frames it (the camera moves outside the surface, the object
+#    fills more of the view).
+start "$presets/mandelbulb.json"
+to 330 235; xdotool click 1; wait_frames 2
+# add_block ROW_Y CATEGORY_ROW ITEM_ROW: the menu opens at the cursor; rows are 19 px apart.
+add_block() {
+    to 58 "$1"; xdotool click 1; wait_frames 2
+    to 90 $(($1 + 16 + 19 * $2)); wait_frames 2
+    to 120 $(($1 + 16 + 19 * $2)); wait_frames 2
+    to 275 $(($1 + 16 + 19 * $2 + 19 * $3)); xdotool click 1; wait_frames 2
+}
+add_block 281 0 2 # fold / Box fold
+add_block 308 0 3 # fold / Sphere fold
+add_block 335 1 0 # transform / Scale
+to 1100 700
+wait_frames 6
+nodes=$(q '[.document.formula.nodes[].block] | join(" ")')
+[ "$nodes" = "add_c box_fold sphere_fold scale escape_linear" ] || fail "the node list is '$nodes', not the three blocks added"
+echo "new formula: $nodes, estimator $(q .document.formula.estimator.block), bailout $(q .document.formula.bailout), bound $(q .document.formula.boundRadius)"
+set -- $(q '.viewport | map(floor) | join(" ")')
+crop="$3x$4+$1+$2"
+# An object in view: surface detail (edge pixels) on at least 2% of the viewport,
+# and lit (a camera inside the surface sees a dark cave, mean < 0.1; the sky alone has no edges).
+coverage() { convert "$1" -crop "$crop" +repage -colorspace Gray -edge 1 -threshold 8% -format "%[fx:mean]" info:; }
+brightness() { convert "$1" -crop "$crop" +repage -colorspace Gray -format "%[fx:mean]" info:; }
+shows_object() {
+    import -window root "$out/$1.png"
+    cov=$(coverage "$out/$1.png")
+    mean=$(brightness "$out/$1.png")
+    echo "$1: edge coverage $cov, mean $mean; camera $(camera)"
+    check "$cov > 0.02 && $mean > 0.15"
+}
+shows_object story_new_formula || fail "the new formula's viewport shows no object"
+eye=$(q .eyeDistance)
+bound=$(q .document.formula.boundRadius)
+check "$eye > 0.01 * $bound" || fail "after the formula edit the camera is not outside the surface (DE at the eye $eye)"
+to "$cx" "$cy"
+xdotool key f
+wait_frames 8
+shows_object story_framed || fail "after F the viewport shows no object"
+framed=$(camera)
+# Zoom into the object with the wheel, then F frames it again: the same view (F keeps the
+# viewing direction), outside the surface.
+xdotool click --repeat 30 --delay 20 4
+wait_frames 4
+zoomed_eye=$(q .eyeDistance)
+xdotool key f
+wait_frames 4
+eye=$(q .eyeDistance)
+echo "F: DE at the eye zoomed in $zoomed_eye, framed $eye"
+check "$eye > 0.01 * $bound && $eye > 10 * $zoomed_eye" || fail "F did not move the camera out from the surface ($zoomed_eye -> $eye)"
+d=$(moved "$(camera)" "$framed")
+check "$d < 1e-6" || fail "F from the same direction frames differently ($(camera) vs $framed)"
+stop
+# 5. A custom GLSL block that does not compile, at position 2 of the node list: the error the
+#    editor reports names it as the list shows it (number from 1 and label).
+broken="$home/broken_fold.json"
+jq '.formula.customBlocks = [{"id": "broken_fold", "label": "Broken fold", "category": "fold",
+      "params": [{"name": "amount", "default": 1, "min": 0, "max": 2, "help": "x"}],
+      "glsl": "p.xyz *= amount;\np.xyz += not_declared_anywhere;\n"}]
+    | .formula.nodes |= .[:1] + [{"block": "broken_fold"}] + .[1:]' "$presets/mandelbox.json" >"$broken"
+start "$broken"
+tries=0
+while [ -z "$(q .compileError)" ] && [ $tries -lt 30 ]; do wait_frames 1; tries=$((tries + 1)); done
+error=$(q .compileError)
+echo "$error" | grep -q 'node 2 "Broken fold" (broken_fold), GLSL line 2' ||
+    fail "the compile error does not name node 2 \"Broken fold\" as the list shows it: $error"
+import -window root "$out/story_compile_error.png"
+echo "compile error: $(echo "$error" | grep -m1 'node 2')"
 stop
 
 [ $failures -eq 0 ] && echo "editor_user_stories: all OK" || { echo "editor_user_stories: $failures failure(s)"; exit 1; }

@@ -83,7 +83,7 @@ TEST(GlslCompile, ErrorNamesTheNodeOnTheDriver) {
         FAIL() << "a shader using an undeclared variable compiled";
     } catch (const std::runtime_error& e) {
         const std::string message = e.what();
-        EXPECT_NE(message.find("node 1 (broken_block), GLSL line 2"), std::string::npos) << message;
+        EXPECT_NE(message.find("node 2 \"Broken\" (broken_block), GLSL line 2"), std::string::npos) << message;
         EXPECT_NE(message.find("no_such_variable"), std::string::npos) << message;
     }
 }
@@ -95,7 +95,7 @@ TEST(GlslCompile, ErrorNamesTheNodeWithGlslang) {
     const ToolResult r = glslang(s, "broken");
     EXPECT_NE(r.status, 0);
     const std::string explained = s.explainLog(r.output);
-    EXPECT_NE(explained.find("node 1 (broken_block), GLSL line 2"), std::string::npos) << explained;
+    EXPECT_NE(explained.find("node 2 \"Broken\" (broken_block), GLSL line 2"), std::string::npos) << explained;
 }
 
 // Parameters are uniforms: values do not change the generated code; structure does.

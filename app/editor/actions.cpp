@@ -175,12 +175,16 @@ bool saveDocument(EditorState& s) {
 }
 
 void undo(EditorState& s) {
-    if (s.history.undo(s.doc)) setStatus(s, "Undo");
+    s.history.commit(s.doc);
+    const std::string what = s.history.undoLabel();
+    if (s.history.undo(s.doc)) setStatus(s, "Undo " + what);
     clampSelection(s);
 }
 
 void redo(EditorState& s) {
-    if (s.history.redo(s.doc)) setStatus(s, "Redo");
+    s.history.commit(s.doc);
+    const std::string what = s.history.redoLabel();
+    if (s.history.redo(s.doc)) setStatus(s, "Redo " + what);
     clampSelection(s);
 }
 

@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "app/editor/formula_fit.hpp"
 #include "app/editor/plane_edits.hpp"
 
 namespace fraktal::editor {
@@ -80,6 +81,14 @@ void updateCamera(EditorState& s) {
         rest.viewportHeight = in.viewportHeight;
         orbitCamera(cam, rest, s.cameraControls);
     }
+}
+
+void frameObject(EditorState& s) {
+    Camera& cam = s.doc.preset.camera;
+    const Formula& f = s.doc.preset.formula;
+    // Custom GLSL has no CPU body, and a GL probe per march step would stall the frame: the
+    // bound sphere frames it.
+    cam = f.cpuEvaluable() ? framedCamera(f, cpuDistance(f), cam) : defaultViewFor(f, cam);
 }
 
 }  // namespace fraktal::editor

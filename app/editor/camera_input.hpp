@@ -18,6 +18,10 @@ bool viewportHasKeyboard(const EditorState& s);
 // Gathers input and moves the document's camera by the active controller.
 void updateCamera(EditorState& s);
 
+// "Frame object" (F): the camera outside the surface with the whole object in view, found from
+// the DE (formula_fit.hpp).
+void frameObject(EditorState& s);
+
 // The 2D document's navigation: a drag (any button) pans, the wheel zooms about the cursor.
 // The image is imageWidth x imageHeight pixels shown over the viewport.
 void updatePlaneView(EditorState& s, int imageWidth, int imageHeight);

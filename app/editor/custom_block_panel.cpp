@@ -127,7 +127,7 @@ void libraryButtons(EditorState& s) {
 
 }  // namespace
 
-void drawCustomBlockEditor(EditorState& s) {
+void drawCustomBlockEditor(EditorState& s, const std::string& compileError) {
     CustomBlockEditor& e = s.customBlockEditor;
     if (!e.open || s.doc.plane) return;
     ImGui::SetNextWindowSize(ImVec2(620, 560), ImGuiCond_FirstUseEver);
@@ -171,6 +171,12 @@ void drawCustomBlockEditor(EditorState& s) {
     ImGui::SameLine();
     ImGui::TextDisabled("Loops and the preprocessor are not allowed: every call is bounded.");
     if (!e.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", e.error.c_str());
+    // The viewport's compile error, when it is about this block (the last good image stays).
+    if (compileError.find("(" + d.id + ")") != std::string::npos) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", compileError.c_str());
+        ImGui::PopStyleColor();
+    }
     sectionHeader("Block library");
     libraryButtons(s);
     ImGui::End();

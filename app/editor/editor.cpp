@@ -269,7 +269,7 @@ int runEditor(const EditorOptions& o) {
             const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);
             drawStatusLine(s);
             drawExportDialog(s);
-            drawCustomBlockEditor(s);
+            drawCustomBlockEditor(s, compileError);
             drawFileDialogs(s);
             drawRecoveryDialog(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);

@@ -139,10 +139,10 @@ void resetParam(Formula& f, int index, int param) {
 }
 
 int nodeNamedInLog(const std::string& log, int nodeCount) {
-    const std::regex node(R"(node (\d+) \()");
+    const std::regex node(R"(node (\d+) ")");
     std::smatch m;
-    if (std::regex_search(log, m, node)) return std::stoi(m[1]);
-    if (log.find("estimator (") != std::string::npos) return nodeCount;
+    if (std::regex_search(log, m, node)) return std::stoi(m[1]) - 1;  // numbered from 1, as listed
+    if (log.find("estimator \"") != std::string::npos) return nodeCount;
     return -1;
 }
 

@@ -53,8 +53,8 @@ struct ProgramTracker {
     }
 };
 
-// The node a compile-error log talks about ("node 3 (box_fold)..." as ShaderSource::explainLog
-// writes it), or -1 when it names none. The estimator is index nodes.size().
+// The node index a compile-error log talks about (`node 3 "Box fold" (box_fold)...`, numbered
+// from 1 as ShaderSource::explainLog writes it), or -1 when it names none. The estimator is index nodes.size().
 int nodeNamedInLog(const std::string& log, int nodeCount);
 
 }  // namespace fraktal::editor

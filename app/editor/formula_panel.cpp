@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/editor/formula_edits.hpp"
+#include "app/editor/formula_fit.hpp"
 #include "app/editor/node_list_widgets.hpp"
 #include "app/editor/panels.hpp"
 
@@ -25,7 +26,10 @@ void addBlockMenu(EditorState& s) {
         for (const BlockDesc* b : customBlocksIn(f, c)) blocks.push_back(b);  // the formula's GLSL blocks
         if (const BlockDesc* b = blockMenuItems(blocks)) {
             const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
-            if (addNode(f, *b, at)) s.selectedNode = at;
+            if (addNode(f, *b, at)) {
+                s.selectedNode = at;
+                fitFormulaAfterEdit(f, s.doc.preset.camera);
+            }
         }
         ImGui::EndMenu();
     }
@@ -129,8 +133,10 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     // Apply list edits after drawing the list, so no row is drawn from a moved vector.
     if (req.moveFrom >= 0 && moveNode(f, req.moveFrom, req.moveTo)) s.selectedNode = req.moveTo;
     if (req.duplicate >= 0 && duplicateNode(f, req.duplicate)) s.selectedNode = req.duplicate + 1;
-    if (req.remove >= 0 && removeNode(f, req.remove))
+    if (req.remove >= 0 && removeNode(f, req.remove)) {
         s.selectedNode = std::max(0, std::min(req.remove, int(f.nodes.size()) - 1));
+        fitFormulaAfterEdit(f, s.doc.preset.camera);
+    }
     s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
 
     ImGui::Spacing();

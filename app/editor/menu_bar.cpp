@@ -2,6 +2,7 @@
 #include <imgui.h>
 
 #include "app/editor/actions.hpp"
+#include "app/editor/camera_input.hpp"
 #include "app/editor/panels.hpp"
 
 namespace fraktal::editor {
@@ -30,8 +31,11 @@ void drawMenuBar(EditorState& s) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, s.history.canUndo())) undo(s);
-        if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, s.history.canRedo())) redo(s);
+        // Says what it will do: "Undo change of scale", "Redo add Box fold".
+        s.history.commit(s.doc);
+        const std::string undoText = "Undo " + s.history.undoLabel(), redoText = "Redo " + s.history.redoLabel();
+        if (ImGui::MenuItem(undoText.c_str(), "Ctrl+Z", false, s.history.canUndo())) undo(s);
+        if (ImGui::MenuItem(redoText.c_str(), "Ctrl+Shift+Z", false, s.history.canRedo())) redo(s);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -42,6 +46,7 @@ void drawMenuBar(EditorState& s) {
         bool fly = s.cameraControls.mode == CameraMode::Fly;
         if (ImGui::MenuItem("Fly camera", "V", &fly, !s.doc.plane))
             s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
+        if (ImGui::MenuItem("Frame object", "F", false, !s.doc.plane)) frameObject(s);
         if (ImGui::MenuItem("Reset view", "Home")) {
             if (s.doc.plane)
                 resetPlaneView(s);

@@ -29,7 +29,7 @@ void drawExportDialog(EditorState& s);                                        //
 void drawFileDialogs(EditorState& s);                                         // file_dialogs.cpp
 void drawStatusLine(EditorState& s);                                          // stats_overlay.cpp
 void drawRecoveryDialog(EditorState& s);                                      // recovery_dialog.cpp
-void drawCustomBlockEditor(EditorState& s);                                   // custom_block_panel.cpp
+void drawCustomBlockEditor(EditorState& s, const std::string& compileError);  // custom_block_panel.cpp
 
 void applyEditorStyle(float scale);  // style.cpp
 

@@ -61,11 +61,12 @@ bool setPlaneParam(PlaneFormula& f, const PlaneSelection& sel, int param, double
 
 std::optional<PlaneSelection> planeNodeNamedInLog(const std::string& log) {
     std::smatch m;
-    if (std::regex_search(log, m, std::regex(R"(start node (\d+) \()")))
-        return PlaneSelection{PlaneList::Start, std::stoi(m[1])};
-    if (std::regex_search(log, m, std::regex(R"(node (\d+) \()")))
-        return PlaneSelection{PlaneList::Loop, std::stoi(m[1])};
-    if (log.find("estimator (") != std::string::npos) return PlaneSelection{PlaneList::Estimator, 0};
+    // Numbered from 1, as the lists show them (listedNodeName).
+    if (std::regex_search(log, m, std::regex(R"(start node (\d+) ")")))
+        return PlaneSelection{PlaneList::Start, std::stoi(m[1]) - 1};
+    if (std::regex_search(log, m, std::regex(R"(node (\d+) ")")))
+        return PlaneSelection{PlaneList::Loop, std::stoi(m[1]) - 1};
+    if (log.find("estimator \"") != std::string::npos) return PlaneSelection{PlaneList::Estimator, 0};
     return std::nullopt;
 }
 

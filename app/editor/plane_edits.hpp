@@ -29,8 +29,8 @@ PlaneSelection addPlaneBlock(PlaneFormula& f, const PlaneBlockDesc& block, Plane
 // Sets parameter `param` of the selected node, clamped to the declared range.
 bool setPlaneParam(PlaneFormula& f, const PlaneSelection& sel, int param, double value);
 
-// The node a 2D compile-error log names ("start node 2 (rotate)", "node 0 (power)",
-// "estimator (escape)", as generatePlaneGLSL names them), or nullopt when it names none.
+// The node a 2D compile-error log names (`start node 2 "Rotate" (rotate)`, `node 1 "Power"
+// (power)`, numbered from 1 as generatePlaneGLSL names them), or nullopt when it names none.
 std::optional<PlaneSelection> planeNodeNamedInLog(const std::string& log);
 
 // The zoom factor of `wheelSteps` mouse-wheel notches (positive: in), 1.25x a notch.

@@ -9,6 +9,7 @@
 #include "app/editor/actions.hpp"
 #include "app/editor/camera_input.hpp"
 #include "app/editor/formula_edits.hpp"
+#include "app/editor/formula_fit.hpp"
 #include "app/editor/node_list_edits.hpp"
 #include "app/editor/panels.hpp"
 #include "app/editor/plane_edits.hpp"
@@ -74,6 +75,7 @@ void handleShortcuts(EditorState& s) {
         if (pressed(GLFW_KEY_V))
             s.cameraControls.mode = s.cameraControls.mode == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
         if (pressed(GLFW_KEY_HOME)) s.doc.preset.camera = defaultViewFor(f, s.doc.preset.camera);
+        if (pressed(GLFW_KEY_F)) frameObject(s);
         for (int i = 0; i < kViewSlots; ++i) {
             auto& slot = s.doc.viewSlots[size_t(i)];
             if (pressed(GLFW_KEY_1 + i, true))
@@ -84,8 +86,10 @@ void handleShortcuts(EditorState& s) {
     }
     if (!io.WantCaptureKeyboard || !ImGui::IsAnyItemActive()) {
         if (pressed(GLFW_KEY_D, true) && duplicateNode(f, s.selectedNode)) ++s.selectedNode;
-        if (pressed(GLFW_KEY_DELETE) && removeNode(f, s.selectedNode))
+        if (pressed(GLFW_KEY_DELETE) && removeNode(f, s.selectedNode)) {
             s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
+            fitFormulaAfterEdit(f, s.doc.preset.camera);
+        }
     }
 }
 

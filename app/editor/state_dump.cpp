@@ -14,9 +14,15 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["frame"] = frame;
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},
                    {"target", {c.target.x, c.target.y, c.target.z}}};
+    // The CPU DE at the eye: > 0 outside the surface (null for formulas with GLSL blocks).
+    const Formula& f = s.doc.preset.formula;
+    j["eyeDistance"] = f.cpuEvaluable() ? json(distanceEstimate(f, c.position)) : json();
+    j["cameraGesture"] = s.cameraGesture;
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;
     j["undoDepth"] = s.history.undoDepth();
     j["redoDepth"] = s.history.redoDepth();
+    j["undoLabel"] = s.history.undoLabel();
+    j["redoLabel"] = s.history.redoLabel();
     j["viewport"] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW, s.layout.viewportH};
     j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
     j["compileError"] = compileError;

@@ -2,6 +2,8 @@
 // banners and the status line (bottom of the viewport).
 #include <imgui.h>
 
+#include <regex>
+
 #include "app/editor/panels.hpp"
 
 namespace fraktal::editor {
@@ -11,14 +13,27 @@ constexpr ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGui
                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                            ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
 
+// The node a compile log names, as the node list shows it (`node 2 "Box fold"`), or empty.
+std::string nodeInLog(const std::string& log) {
+    std::smatch m;
+    if (std::regex_search(log, m, std::regex(R"(((start )?node \d+|estimator) "[^"]*")"))) return m[0];
+    return "";
+}
+
 // Banners over the viewport: a compile error (the last good image stays) and a display error.
+// They sit at the bottom of the viewport, never in front of a window, and let clicks through, so
+// they hide no control (the GLSL block editor's close button included).
 void drawErrorBanners(const Layout& l, const std::string& compileError, const std::string& displayError) {
+    constexpr ImGuiWindowFlags kBannerFlags =
+        kOverlayFlags | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoBringToFrontOnFocus;
     if (!compileError.empty()) {
-        ImGui::SetNextWindowPos(ImVec2(l.viewportX + l.viewportW * 0.5f, l.viewportY + 10), ImGuiCond_Always,
-                                ImVec2(0.5f, 0));
+        ImGui::SetNextWindowPos(ImVec2(l.viewportX + l.viewportW * 0.5f, l.viewportY + l.viewportH - 80),
+                                ImGuiCond_Always, ImVec2(0.5f, 1));
         ImGui::SetNextWindowBgAlpha(0.85f);
-        ImGui::Begin("##compile_error", nullptr, kOverlayFlags);
-        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "Compile error: showing the last good image.");
+        ImGui::Begin("##compile_error", nullptr, kBannerFlags);
+        const std::string node = nodeInLog(compileError);
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "Compile error%s%s: showing the last good image.",
+                           node.empty() ? "" : " in ", node.c_str());
         ImGui::TextDisabled("Details under the node in the Formula panel.");
         ImGui::End();
     }
@@ -26,7 +41,7 @@ void drawErrorBanners(const Layout& l, const std::string& compileError, const st
         ImGui::SetNextWindowPos(ImVec2(l.viewportX + l.viewportW * 0.5f, l.viewportY + l.viewportH - 40),
                                 ImGuiCond_Always, ImVec2(0.5f, 1));
         ImGui::SetNextWindowBgAlpha(0.85f);
-        ImGui::Begin("##display_error", nullptr, kOverlayFlags);
+        ImGui::Begin("##display_error", nullptr, kBannerFlags);
         ImGui::PushTextWrapPos(l.viewportW * 0.8f);
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "Display: %s", displayError.c_str());
         ImGui::PopTextWrapPos();

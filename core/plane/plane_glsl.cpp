@@ -48,7 +48,7 @@ GeneratedFormula generatePlaneGLSL(const PlaneFormula& f) {
     std::string startCalls, loopCalls;
     int k = 0;
     for (const PlaneNode& n : f.start) {
-        g.nodeNames.push_back("start node " + std::to_string(k) + " (" + std::string(n.block->id) + ")");
+        g.nodeNames.push_back(listedNodeName("start node ", k, *n.block));
         if (n.enabled) {
             emitNodeFunction(e, k, n, g.nodeNames.back(), false);
             startCalls += "    " + nodeCall(k, n) + ";\n";
@@ -57,7 +57,7 @@ GeneratedFormula generatePlaneGLSL(const PlaneFormula& f) {
     }
     for (size_t i = 0; i < f.nodes.size(); ++i, ++k) {
         const PlaneNode& n = f.nodes[i];
-        g.nodeNames.push_back("node " + std::to_string(i) + " (" + std::string(n.block->id) + ")");
+        g.nodeNames.push_back(listedNodeName("node ", int(i), *n.block));
         if (!n.enabled) continue;
         emitNodeFunction(e, k, n, g.nodeNames.back(), false);
         const std::string call = nodeCall(k, n) + ";";
@@ -67,7 +67,7 @@ GeneratedFormula generatePlaneGLSL(const PlaneFormula& f) {
         else
             loopCalls += "            " + call + "\n";
     }
-    g.nodeNames.push_back("estimator (" + std::string(f.estimator.block->id) + ")");
+    g.nodeNames.push_back(listedNodeName("estimator", -1, *f.estimator.block));
     emitNodeFunction(e, k, f.estimator, g.nodeNames.back(), true);
 
     std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
