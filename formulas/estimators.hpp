@@ -97,12 +97,7 @@ struct EscapeLinearEstimator {
     static constexpr Category category = Category::Estimator;
     static constexpr Membership membership = Membership::EscapeTime;
     static constexpr std::array params{
-        ParamDecl{"offset",
-                  ParamType::Float,
-                  {0.0, 0.0, 0.0},
-                  0.0,
-                  10.0,
-                  "Subtracted from r (Mandelbulber's linear DE constant)."},
+        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 10.0, "Subtracted from r (Mandelbulber's linear DE constant)."},
     };
 
     static constexpr std::string_view glsl = R"(
