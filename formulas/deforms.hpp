@@ -30,7 +30,7 @@ struct ModTile {
 // Twist about the y axis: rotate x,z by k y radians. The Jacobian is R (I + u e_y^T) with
 // |u| = |k| rxz, so its norm is at most 1 + |k| rxz.
 struct Twist {
-    static constexpr std::string_view id = "twist";
+    static constexpr std::string_view id = "twist_y";
     static constexpr std::string_view label = "Twist";
     static constexpr std::string_view help = "Twist about the y axis by `rate` radians per unit of y.";
     static constexpr Category category = Category::Transform;
@@ -54,7 +54,7 @@ struct Twist {
 
 // Bend about the z axis: rotate x,y by k x radians; the same bound as the twist, with rxy.
 struct Bend {
-    static constexpr std::string_view id = "bend";
+    static constexpr std::string_view id = "bend_z";
     static constexpr std::string_view label = "Bend";
     static constexpr std::string_view help = "Bend in the x-y plane by `rate` radians per unit of x.";
     static constexpr Category category = Category::Transform;
