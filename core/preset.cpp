@@ -36,7 +36,24 @@ const BlockDesc* lookUpBlock(const std::string& id, const CustomBlocks& custom) 
     return findBlock(id);
 }
 
-Node parseNode(const ReadContext& context, const json& j, const std::string& path, const CustomBlocks& custom) {
+// An escape-time estimate needs orbits that leave: some enabled power, fold or scale must push
+// points outside the set away. A stack of translations and rotations alone keeps every orbit
+// bounded (or none), so the estimate bounds no object.
+void checkEscapeIsBounded(const std::vector<Node>& nodes, const Node& estimator, size_t listNumber,
+                          const std::string& file, const std::string& path) {
+    if (estimator.block->membership != Membership::EscapeTime || estimator.block->custom) return;
+    for (const Node& n : nodes)
+        if (n.enabled && (n.block->custom || n.block->category == Category::Power ||
+                          n.block->category == Category::Fold || n.block->id == "scale"))
+            return;
+    throw PresetError(file, path,
+                      "block " + std::to_string(listNumber) + " '" + std::string(estimator.block->id) +
+                          "': an escape-time estimator needs an enabled power, fold or scale block before it; "
+                          "nothing here bounds the object");
+}
+
+Node parseNode(const ReadContext& context, const json& j, const std::string& path, const CustomBlocks& custom,
+               size_t listNumber) {
     FieldReader r(context, j, path);
     const json& id = r.at("block");
     if (!id.is_string()) r.fail("expected a block id string, found " + FieldReader::typeName(id), "block");
@@ -45,26 +62,32 @@ Node parseNode(const ReadContext& context, const json& j, const std::string& pat
         std::string known;
         for (const BlockDesc& b : allBlocks()) known += (known.empty() ? "" : ", ") + std::string(b.id);
         for (const auto& b : custom) known += ", " + std::string(b->desc().id);
-        r.fail("unknown block '" + id.get<std::string>() + "' (known blocks: " + known + ")", "block");
+        r.fail("block " + std::to_string(listNumber) + ": unknown block '" + id.get<std::string>() +
+                   "' (known blocks: " + known + ")",
+               "block");
     }
     Node n = Node::make(*block);
     readNodeSchedule(r, n);
-    if (r.has("params")) {
-        FieldReader params(context, r.at("params"), r.child("params"));
-        std::string known;
-        for (size_t i = 0; i < block->params.size(); ++i) {
-            const ParamDecl& d = block->params[i];
-            const std::string key(d.name);
-            known += (known.empty() ? "" : ", ") + key;
-            if (d.type == ParamType::Float)
-                n.values[i].x = params.number(key, d.defaultValue.x, d.min, d.max);
-            else
-                n.values[i] = params.vector<3>(key, d.defaultValue, d.min, d.max);
-            if (d.direction && length(n.values[i]) < 1e-9) params.fail("a direction must not be zero", key);
+    // Parameter errors name the block as the editor's list shows it: 1-based number and id.
+    const std::string listed = "block " + std::to_string(listNumber) + " '" + std::string(block->id) + "': ";
+    if (r.has("params")) try {
+            FieldReader params(context, r.at("params"), r.child("params"));
+            std::string known;
+            for (size_t i = 0; i < block->params.size(); ++i) {
+                const ParamDecl& d = block->params[i];
+                const std::string key(d.name);
+                known += (known.empty() ? "" : ", ") + key;
+                if (d.type == ParamType::Float)
+                    n.values[i].x = params.number(key, d.defaultValue.x, d.min, d.max);
+                else
+                    n.values[i] = params.vector<3>(key, d.defaultValue, d.min, d.max);
+                if (d.direction && length(n.values[i]) < 1e-9) params.fail("a direction must not be zero", key);
+            }
+            params.finish("unknown parameter of block '" + std::string(block->id) +
+                          "' (it has: " + (known.empty() ? "none" : known) + ")");
+        } catch (const PresetError& e) {
+            throw PresetError(e.file(), e.field(), listed + e.reason());
         }
-        params.finish("unknown parameter of block '" + std::string(block->id) +
-                      "' (it has: " + (known.empty() ? "none" : known) + ")");
-    }
     r.finish();
     return n;
 }
@@ -123,7 +146,7 @@ Formula parseFormula(const ReadContext& context, const json& j) {
                "nodes");
     for (size_t i = 0; i < nodes.size(); ++i) {
         const std::string nodePath = path + "[" + std::to_string(i) + "]";
-        Node n = parseNode(context, nodes[i], nodePath, f.customBlocks);
+        Node n = parseNode(context, nodes[i], nodePath, f.customBlocks, i + 1);
         const bool last = i + 1 == nodes.size();
         if (n.block->isEstimator() && !last)
             throw PresetError(context.file, nodePath,
@@ -135,6 +158,7 @@ Formula parseFormula(const ReadContext& context, const json& j) {
                                   std::string(n.block->id) + "'");
         if (last) {
             checkEstimatorSchedule(n, context.file, nodePath);
+            checkEscapeIsBounded(f.nodes, n, i + 1, context.file, nodePath);
             f.estimator = std::move(n);
         } else {
             f.nodes.push_back(std::move(n));

@@ -2,16 +2,28 @@
 // compile here (see the concepts in core/block.hpp).
 #include "formulas/abs_fold.hpp"
 #include "formulas/add_c.hpp"
+#include "formulas/amazing_surf.hpp"
 #include "formulas/box_fold.hpp"
+#include "formulas/deforms.hpp"
 #include "formulas/estimators.hpp"
+#include "formulas/kifs_icosahedral.hpp"
+#include "formulas/kifs_octahedral.hpp"
+#include "formulas/kifs_tetrahedral.hpp"
+#include "formulas/kleinian.hpp"
 #include "formulas/mandelbulb.hpp"
+#include "formulas/mandelbulb_variants.hpp"
 #include "formulas/menger_fold.hpp"
+#include "formulas/menger_rotate.hpp"
 #include "formulas/octahedral_fold.hpp"
 #include "formulas/plane_fold.hpp"
+#include "formulas/primitives.hpp"
+#include "formulas/pseudo_kleinian.hpp"
 #include "formulas/rotate.hpp"
 #include "formulas/scale.hpp"
 #include "formulas/sierpinski_fold.hpp"
+#include "formulas/smooth_box_fold.hpp"
 #include "formulas/sphere_fold.hpp"
+#include "formulas/sphere_invert.hpp"
 #include "formulas/translate.hpp"
 
 namespace fraktal {
@@ -31,11 +43,31 @@ constexpr std::array kBlocks{
     describe<Rotate>(),
     describe<AddC>(),
     describe<Mandelbulb>(),
+    describe<SphereInvert>(),
+    describe<AmazingSurf>(),
+    describe<SmoothBoxFold>(),
+    describe<KifsTetrahedral>(),
+    describe<KifsOctahedral>(),
+    describe<KifsIcosahedral>(),
+    describe<MengerRotate>(),
+    describe<PseudoKleinian>(),
+    describe<Kleinian>(),
+    describe<ModTile>(),
+    describe<Twist>(),
+    describe<Bend>(),
+    describe<MandelbulbPhase>(),
+    describe<MandelbulbSine>(),
+    describe<MandelbulbCosine>(),
+    describe<Bristorbrot>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),
     describe<EscapeLogEstimator>(),
     describe<EscapeLinearEstimator>(),
+    describe<PseudoKleinianEstimator>(),
+    describe<PlaneCombine>(),
+    describe<SphereCombine>(),
+    describe<BoxCombine>(),
 };
 }  // namespace
 

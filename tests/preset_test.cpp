@@ -71,9 +71,14 @@ struct BadPreset {
 };
 
 const BadPreset kBadPresets[] = {
-    {"unknown_block.json", "formula.nodes[0].block", "unknown block 'warp_drive'"},
+    {"unknown_block.json", "formula.nodes[0].block", "block 1: unknown block 'warp_drive'"},
     {"missing_block_field.json", "formula.nodes[0].block", "missing required field"},
-    {"param_out_of_range.json", "formula.nodes[0].params.limit", "outside the range [0, 4]"},
+    {"param_out_of_range.json", "formula.nodes[0].params.limit",
+     "block 1 'box_fold': value 7 is outside the range [0, 4]"},
+    {"param_out_of_range_third_block.json", "formula.nodes[2].params.power",
+     "block 3 'mandelbulb_phase': value 40 is outside the range [1, 32]"},
+    {"escape_unbounded.json", "formula.nodes[2]",
+     "block 3 'escape_log': an escape-time estimator needs an enabled power, fold or scale block"},
     {"param_wrong_type.json", "formula.nodes[0].params.limit", "expected a number, found a string"},
     {"vector_wrong_length.json", "formula.nodes[0].params.offset", "expected an array of 3 numbers"},
     {"unknown_param.json", "formula.nodes[0].params.limt", "unknown parameter of block 'box_fold'"},

@@ -1,0 +1,62 @@
+#pragma once
+#include "core/block.hpp"
+
+namespace fraktal::blocks {
+
+// Jos Leys' Kleinian group limit set (Fragmentarium "Kleinian", after Knighty): wrap x (sheared
+// by b/a y) and z into the box, rotate half a turn about (-b/2, a/2) above the separation line,
+// then apply the Mobius generator: invert in the unit sphere, v -> (-b - x, a + y, z) after
+// v -> -v / |v|^2. Wraps and the half turn keep distances; the inversion scales them by
+// 1 / |v|^2, and so does the running derivative.
+struct Kleinian {
+    static constexpr std::string_view id = "kleinian";
+    static constexpr std::string_view label = "Kleinian (Jos Leys)";
+    static constexpr std::string_view help =
+        "Jos Leys' Kleinian limit set step: wrap, half turn above the separation line, Mobius inversion.";
+    static constexpr Category category = Category::Fold;
+    static constexpr std::array params{
+        ParamDecl{"klein_r", ParamType::Float, {1.94, 0.0, 0.0}, 1.5, 2.1, "Real part a of the generator's trace."},
+        ParamDecl{
+            "klein_i", ParamType::Float, {0.03, 0.0, 0.0}, -0.5, 0.5, "Imaginary part b of the generator's trace."},
+        ParamDecl{"box_size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.1, 4.0, "Wrap half-widths in x and z (y unused)."},
+        ParamDecl{
+            "separation", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 1.0, "Bend of the separation line (0: straight)."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float a = klein_r, b = klein_i;
+    p.x += b / a * p.y;
+    p.xz = p.xz + box_size.xz - 2.0 * box_size.xz * floor((p.xz + box_size.xz) / (2.0 * box_size.xz)) - box_size.xz;
+    p.x -= b / a * p.y;
+    float u = p.x + b * 0.5;
+    if (p.y >= a * 0.5 + separation * (2.0 * a - 1.95) / 4.0 * sign(u) * (1.0 - exp(-(7.2 - (1.95 - a) * 15.0) * abs(u))))
+        p.xyz = vec3(-b, a, 0.0) - p.xyz;
+    float ir = 1.0 / max(dot(p.xyz, p.xyz), 1e-12);
+    p.xyz *= -ir;
+    p.x = -b - p.x;
+    p.y = a + p.y;
+    p.w *= ir;
+)";
+    static void apply(P4& p, const vec3&, Args args) {
+        const double klein_r = args.f(0), klein_i = args.f(1), separation = args.f(3);
+        const vec3 box_size = args.v3(2);
+        double a = klein_r, b = klein_i;
+        p.xyz.x += b / a * p.xyz.y;
+        p.xyz.x = p.xyz.x + box_size.x - 2.0 * box_size.x * std::floor((p.xyz.x + box_size.x) / (2.0 * box_size.x)) -
+                  box_size.x;
+        p.xyz.z = p.xyz.z + box_size.z - 2.0 * box_size.z * std::floor((p.xyz.z + box_size.z) / (2.0 * box_size.z)) -
+                  box_size.z;
+        p.xyz.x -= b / a * p.xyz.y;
+        double u = p.xyz.x + b * 0.5;
+        if (p.xyz.y >= a * 0.5 + separation * (2.0 * a - 1.95) / 4.0 * glm::sign(u) *
+                                     (1.0 - std::exp(-(7.2 - (1.95 - a) * 15.0) * abs(u))))
+            p.xyz = vec3(-b, a, 0.0) - p.xyz;
+        double ir = 1.0 / std::max(dot(p.xyz, p.xyz), 1e-12);
+        p.xyz *= -ir;
+        p.xyz.x = -b - p.xyz.x;
+        p.xyz.y = a + p.xyz.y;
+        p.w *= ir;
+    }
+};
+
+}  // namespace fraktal::blocks

@@ -1,0 +1,64 @@
+#pragma once
+#include "core/block.hpp"
+
+namespace fraktal::blocks {
+
+// Knighty's pseudo-Kleinian (Fragmentarium "PseudoKleinian"): a box fold into [-C, C], then an
+// inversion in the sphere of radius sqrt(size) applied only inside it,
+// k = max(size / |v|^2, 1). Both keep or scale distances conformally: the running derivative is
+// multiplied by k. Close with the pseudo_kleinian estimator.
+struct PseudoKleinian {
+    static constexpr std::string_view id = "pseudo_kleinian";
+    static constexpr std::string_view label = "Pseudo-Kleinian";
+    static constexpr std::string_view help =
+        "Knighty's pseudo-Kleinian step: box fold into [-C, C], then invert where |v|^2 < size.";
+    static constexpr Category category = Category::Fold;
+    static constexpr std::array params{
+        ParamDecl{"box_size", ParamType::Vec3, {0.92436, 0.90756, 0.92436}, 0.1, 4.0, "Half-size C of the fold box."},
+        ParamDecl{"size", ParamType::Float, {1.0, 0.0, 0.0}, 0.1, 4.0, "Squared radius of the inversion sphere."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    p.xyz = 2.0 * clamp(p.xyz, -box_size, box_size) - p.xyz;
+    float k = max(size / max(dot(p.xyz, p.xyz), 1e-12), 1.0);
+    p *= k;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const vec3 box_size = a.v3(0);
+        const double size = a.f(1);
+        p.xyz = 2.0 * clamp(p.xyz, -box_size, box_size) - p.xyz;
+        double k = max(size / std::max(dot(p.xyz, p.xyz), 1e-12), 1.0);
+        p.xyz *= k, p.w *= k;
+    }
+};
+
+// Knighty's pseudo-Kleinian distance: the orbit's end point against a thin cylinder about the
+// z axis, max(rxy - thickness, |rxy z| / r) - offset, over the running derivative.
+struct PseudoKleinianEstimator {
+    static constexpr std::string_view id = "pseudo_kleinian_de";
+    static constexpr std::string_view label = "Pseudo-Kleinian distance";
+    static constexpr std::string_view help = "Knighty's pseudo-Kleinian estimate, over the running derivative.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::Distance;
+    static constexpr std::array params{
+        ParamDecl{"thickness", ParamType::Float, {0.01, 0.0, 0.0}, 0.0, 1.0, "Thickness of the limit set's sheets."},
+        ParamDecl{"offset",
+                  ParamType::Float,
+                  {0.002, 0.0, 0.0},
+                  0.0,
+                  0.1,
+                  "Subtracted before the division (Knighty's DEoffset): gives the sheets an inside."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float rxy = length(p.xy);
+    return (max(rxy - thickness, abs(rxy * p.z) / max(length(p.xyz), 1e-12)) - offset) / abs(p.w);
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const double thickness = a.f(0), offset = a.f(1);
+        double rxy = std::hypot(p.xyz.x, p.xyz.y);
+        return (max(rxy - thickness, abs(rxy * p.xyz.z) / std::max(length(p.xyz), 1e-12)) - offset) / abs(p.w);
+    }
+};
+
+}  // namespace fraktal::blocks
