@@ -19,6 +19,7 @@ struct EditOptions {
     std::string screenshot;
     std::string tab;
     int width = 1280, height = 800;
+    std::string frameLog;
 };
 
 int runEdit(const EditOptions& o) {
@@ -30,6 +31,7 @@ int runEdit(const EditOptions& o) {
     e.width = o.width;
     e.height = o.height;
     e.sidebarTab = o.tab;
+    e.frameLog = o.frameLog;
     // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
     e.useIniFile = o.frames == 0;
     // Nor autosave or a restore prompt: a scripted run is not a session to recover.
@@ -54,6 +56,8 @@ void addEditCommand(CLI::App& app, Action& action) {
         ->check(CLI::IsMember({"Camera", "Render", "Shading", "Presets", "View", "Colouring"}));
     cmd->add_option("--width", o->width, "Window width")->check(CLI::Range(320, 16384));
     cmd->add_option("--height", o->height, "Window height")->check(CLI::Range(240, 16384));
+    cmd->add_option("--frame-log", o->frameLog,
+                    "Append one JSON line per frame (frame time, viewport scale and size, camera) to this file");
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });
 }
 
