@@ -28,11 +28,15 @@ layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32
 layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry age
 layout(binding = 1) uniform sampler2D u_oldImage;
 layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's point, w: 1 if any
-// Carried colours, u_size.x by 2 u_size.y: row y holds the colour whose point lies in pixel row y,
-// row u_size.y + y the one that pixel borrows when no point lies in it (see below).
+// The previous frame's images are u_size (the points' grid, whose pixels this pass runs over); the
+// new frame's are u_newSize, which differs when dynamic resolution changes the grid between the
+// frames: the points are world points, so they scatter into any grid.
+uniform ivec2 u_newSize;
+// Carried colours, u_newSize.x by 2 u_newSize.y: row y holds the colour whose point lies in pixel row y,
+// row u_newSize.y + y the one that pixel borrows when no point lies in it (see below).
 layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
 layout(rgba32f, binding = 9) uniform writeonly image2D u_reprojCarried;   // xyz: its point, w: its t
-// Distance keys, u_size.x by 3 u_size.y (MarchState::reprojDepth): rows [0, h) of the start
+// Distance keys, u_newSize.x by 3 u_newSize.y (MarchState::reprojDepth): rows [0, h) of the start
 // points; rows [h, 2h) of the carried colours whose point lies in the pixel; rows [2h, 3h) of
 // those near it.
 layout(r32ui, binding = 12) uniform uimage2D u_depth;
@@ -43,9 +47,10 @@ uniform float u_newTanHalfFovY;
 // its distance from the new camera; false when it is behind the camera or off-screen.
 bool projectToNewView(vec3 world, out ivec2 target, out vec2 imagePos, out float t) {
     target = ivec2(0);
-    if (!projectToImage(world, u_newCameraPosition, u_newRight, u_newUp, u_newForward, u_newTanHalfFovY, imagePos, t))
+    if (!projectToImageOfSize(world, u_newCameraPosition, u_newRight, u_newUp, u_newForward, u_newTanHalfFovY,
+                              u_newSize, imagePos, t))
         return false;
-    if (any(lessThan(imagePos, vec2(0.0))) || any(greaterThanEqual(imagePos, vec2(u_size)))) return false;
+    if (any(lessThan(imagePos, vec2(0.0))) || any(greaterThanEqual(imagePos, vec2(u_newSize)))) return false;
     target = ivec2(imagePos);
     return true;
 }
@@ -82,7 +87,7 @@ void main() {
     if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
         vec4 color = vec4(texelFetch(u_oldImage, px, 0).rgb, texelFetch(u_oldCentre, px, 0).z + 1.0);
         vec4 carried = vec4(colourPoint.xyz, t);
-        if (nearestWins(ivec2(target.x, u_size.y + target.y), t)) {
+        if (nearestWins(ivec2(target.x, u_newSize.y + target.y), t)) {
             imageStore(u_reprojColor, target, color);
             imageStore(u_reprojCarried, target, carried);
         }
@@ -97,11 +102,11 @@ void main() {
         for (int k = 1; k < 4; ++k) {
             ivec2 step = ivec2(k & 1, k >> 1) * toward;
             ivec2 q = target + step;
-            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_size))) continue;
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_newSize))) continue;
             if (length(imagePos - (vec2(q) + 0.5)) >= HALF_DIAGONAL) continue;
-            if (nearestWins(ivec2(q.x, 2 * u_size.y + q.y), t)) {
-                imageStore(u_reprojColor, ivec2(q.x, u_size.y + q.y), color);
-                imageStore(u_reprojCarried, ivec2(q.x, u_size.y + q.y), carried);
+            if (nearestWins(ivec2(q.x, 2 * u_newSize.y + q.y), t)) {
+                imageStore(u_reprojColor, ivec2(q.x, u_newSize.y + q.y), color);
+                imageStore(u_reprojCarried, ivec2(q.x, u_newSize.y + q.y), carried);
             }
         }
     }

@@ -195,6 +195,53 @@ TEST(ViewportGL, ReprojectionCutsDeEvaluationsAtEqualOrBetterError) {
         << "reproject " << withReprojection.meanPsnrDb << " dB vs restart " << withRestarts.meanPsnrDb << " dB";
 }
 
+// Dynamic resolution changes the grid's size while the camera moves: down by any factor (a slow
+// frame drops the scale at once), up by one step of the controller at a time (1/16 of the full
+// size; here 8 to 9). The previous grid's points are world points, so they scatter into the new
+// grid: the frame after a size change costs far fewer DE evaluations than restarting every ray,
+// and once the camera stops the view still converges to a fresh render. (A 2x magnification,
+// which the controller never makes under motion, costs about half a restart: 3 in 4 pixels then
+// get no carried colour and are shaded afresh.)
+TEST(ViewportGL, SizeChangeUnderMotionReprojectsIntoTheNewGrid) {
+    test::glContext();
+    const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbulb.json");
+    ViewportOptions options;
+    options.maxSamples = 4;
+    Viewport moving(options);
+    Camera camera = s.preset.camera;
+    int frame = 0;
+    auto step = [&](int w, int h) {
+        camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, frame++, 1.0);
+        return moving.render(s.preset.formula, camera, s.render, s.preset.shading, w, h);
+    };
+    auto restartCost = [&](int w, int h) {
+        Viewport fresh(options);
+        return fresh.render(s.preset.formula, camera, s.render, s.preset.shading, w, h).deEvalsPerPixel;
+    };
+    const int fullW = 2 * kW, fullH = 2 * kH, upW = kW * 9 / 8, upH = kH * 9 / 8;
+    for (int f = 0; f < 8; ++f) step(fullW, fullH);
+    const FrameStats down = step(kW, kH);  // scale 1 to 0.5
+    EXPECT_EQ(down.action, FrameAction::Reproject);
+    const double downRestart = restartCost(kW, kH);
+    for (int f = 0; f < 6; ++f) step(kW, kH);
+    const FrameStats up = step(upW, upH);  // 0.5 to 0.5625
+    EXPECT_EQ(up.action, FrameAction::Reproject);
+    const double upRestart = restartCost(upW, upH);
+    std::printf("DE per pixel after a size change: down %.2f (restart %.2f), up %.2f (restart %.2f)\n",
+                down.deEvalsPerPixel, downRestart, up.deEvalsPerPixel, upRestart);
+    EXPECT_LE(down.deEvalsPerPixel, 0.4 * downRestart);
+    EXPECT_LE(up.deEvalsPerPixel, 0.4 * upRestart);
+    // At rest at full size: the same image as a fresh render of the view.
+    Converged settled =
+        renderUntilSettled(moving, s.preset.formula, camera, s.render, s.preset.shading, fullW, fullH, kMaxFrames);
+    ASSERT_TRUE(settled.settled);
+    Viewport fresh(options);
+    Converged reference =
+        renderUntilSettled(fresh, s.preset.formula, camera, s.render, s.preset.shading, fullW, fullH, kMaxFrames);
+    ASSERT_TRUE(reference.settled);
+    EXPECT_GE(displayPsnr(settled.image, reference.image), 40.0);
+}
+
 // Once every pixel has its full AA (the cap), a frame of the unchanged view costs under 2 DE
 // evaluations per pixel (it costs none: nothing is marched or shaded again).
 // Restarting every ray, each finished sample lies at its pixel's centre. The motion filter at its

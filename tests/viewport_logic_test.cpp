@@ -52,6 +52,24 @@ TEST(ViewportLogic, CameraMoveReprojectsOnlyWhenEnabled) {
     EXPECT_EQ(decideFrame(&a, b, false), FrameAction::Reset);
 }
 
+// Dynamic resolution: a new grid size under motion reprojects (world points scatter into any
+// grid); a new size with the camera still, or with an edit, resets.
+TEST(ViewportLogic, ResizeDuringCameraMoveReprojects) {
+    const FrameKey a = baseKey();
+    FrameKey b = a;
+    b.width = 32;
+    b.height = 24;
+    b.camera.position.x += 0.01;
+    EXPECT_EQ(decideFrame(&a, b, true), FrameAction::Reproject);
+    EXPECT_EQ(decideFrame(&a, b, false), FrameAction::Reset);
+    b.values = "9";
+    EXPECT_EQ(decideFrame(&a, b, true), FrameAction::Reset);
+    b = a;
+    b.width = 128;
+    EXPECT_EQ(decideFrame(&a, b, true, FrameAction::Reproject), FrameAction::Reset);
+    EXPECT_EQ(decideFrame(&a, b, true, FrameAction::Continue), FrameAction::Reset);
+}
+
 TEST(ViewportLogic, StillCameraContinuesButRestartsOnceAfterMotion) {
     const FrameKey a = baseKey();
     EXPECT_EQ(decideFrame(&a, a, true, FrameAction::Continue), FrameAction::Continue);

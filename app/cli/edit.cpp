@@ -21,6 +21,7 @@ struct EditOptions {
     int width = 1280, height = 800;
     std::string stateFile;
     int slowFrameMs = 0;
+    std::string frameLog;
 };
 
 int runEdit(const EditOptions& o) {
@@ -34,6 +35,7 @@ int runEdit(const EditOptions& o) {
     e.sidebarTab = o.tab;
     e.stateFile = o.stateFile;
     e.slowFrameMs = o.slowFrameMs;
+    e.frameLog = o.frameLog;
     // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
     e.useIniFile = o.frames == 0;
     // Nor autosave or a restore prompt: a scripted run is not a session to recover.
@@ -61,6 +63,8 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--state-file", o->stateFile, "Write the editor's state as JSON after every frame (for tests)");
     cmd->add_option("--slow-frames", o->slowFrameMs, "Make every frame at least this many ms longer (for tests)")
         ->check(CLI::Range(0, 10000));
+    cmd->add_option("--frame-log", o->frameLog,
+                    "Append one JSON line per frame (frame time, viewport scale and size, camera) to this file");
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });
 }
 

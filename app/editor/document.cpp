@@ -43,7 +43,7 @@ json viewSettingsToJson(const ViewSettings& s) {
             {"reprojection", s.reprojection},   {"aaCap", s.aaCap},
             {"coneTile", s.coneTile},           {"maxCarryFrames", s.maxCarryFrames},
             {"motionFilter", s.motionFilter},   {"motionFilterRadius", s.motionFilterRadius},
-            {"coarseHits", s.coarseHits}};
+            {"coarseHits", s.coarseHits},       {"frameTimeTargetMs", s.frameTimeTargetMs}};
 }
 
 ViewSettings viewSettingsFromJson(const json& j) {
@@ -56,6 +56,7 @@ ViewSettings viewSettingsFromJson(const json& j) {
     const json& reprojection = j.value("reprojection", json());
     s.stepsPerFrame = int(number("stepsPerFrame", s.stepsPerFrame, 1, 1000));
     s.renderScale = number("renderScale", s.renderScale, 0.1, 1.0);
+    s.frameTimeTargetMs = number("frameTimeTargetMs", s.frameTimeTargetMs, 0.0, 1000.0);
     if (reprojection.is_boolean()) s.reprojection = reprojection.get<bool>();
     s.aaCap = int(number("aaCap", s.aaCap, 1, 256));
     s.coneTile = int(number("coneTile", s.coneTile, 0, 64));

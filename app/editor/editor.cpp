@@ -18,6 +18,8 @@
 #include "app/editor/actions.hpp"
 #include "app/editor/background_compiler.hpp"
 #include "app/editor/camera_input.hpp"
+#include "app/editor/export_frame.hpp"
+#include "app/editor/frame_log.hpp"
 #include "app/editor/panel_ini.hpp"
 #include "app/editor/panels.hpp"
 #include "app/editor/preset_files.hpp"
@@ -115,6 +117,33 @@ void drawViewportImage(const EditorState& s, GLuint displayTexture) {
                      ImVec2(1, 1));
 }
 
+// The export frame of the export dialog's size in the viewport (export_frame.hpp).
+ExportFrame exportFrameOf(const EditorState& s) {
+    const ExportOptions& o = s.exportJob.options;
+    const double viewAspect = double(s.layout.viewportW) / std::max(double(s.layout.viewportH), 1.0);
+    // "Viewport size" exports the viewport's own pixels (export_dialog.cpp).
+    const double exportAspect = kExportSizes[o.sizeIndex].width == 0
+                                    ? double(int(s.layout.viewportW)) / std::max(int(s.layout.viewportH), 1)
+                                    : double(o.width) / std::max(o.height, 1);
+    return exportFrameInView(viewAspect, exportAspect, s.doc.preset.camera.fovY);
+}
+
+// The guide: what lies outside the export frame is dimmed, the frame outlined.
+void drawExportGuide(const EditorState& s, const ExportFrame& f) {
+    if (f.wholeView()) return;
+    const Layout& l = s.layout;
+    ImDrawList* bg = ImGui::GetBackgroundDrawList();
+    const ImVec2 a(l.viewportX, l.viewportY), b(l.viewportX + l.viewportW, l.viewportY + l.viewportH);
+    const ImVec2 g0(l.viewportX + float(f.left) * l.viewportW, l.viewportY + float(f.top) * l.viewportH);
+    const ImVec2 g1(l.viewportX + float(f.right) * l.viewportW, l.viewportY + float(f.bottom) * l.viewportH);
+    const ImU32 dim = IM_COL32(0, 0, 0, 140);
+    bg->AddRectFilled(a, ImVec2(b.x, g0.y), dim);
+    bg->AddRectFilled(ImVec2(a.x, g1.y), b, dim);
+    bg->AddRectFilled(ImVec2(a.x, g0.y), ImVec2(g0.x, g1.y), dim);
+    bg->AddRectFilled(ImVec2(g1.x, g0.y), ImVec2(b.x, g1.y), dim);
+    bg->AddRect(ImVec2(g0.x - 1, g0.y - 1), ImVec2(g1.x + 1, g1.y + 1), IM_COL32(255, 255, 255, 110));
+}
+
 // The viewport of the current document: the 3D one, or the 2D view for a 2D document. Returns
 // the compile error to report (empty when none).
 const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, PlaneViewport& plane) {
@@ -130,8 +159,16 @@ const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, 
         return plane.compileError();
     }
     updateCamera(s);
-    viewport.render(s.doc.preset, s.doc.view, width, height);
+    const ExportFrame frame = exportFrameOf(s);
+    if (frame.viewFovY == s.doc.preset.camera.fovY) {
+        viewport.render(s.doc.preset, s.doc.view, width, height);
+    } else {  // a wider export: the viewport widens its view to hold the whole export frame
+        Preset shown = s.doc.preset;
+        shown.camera.fovY = frame.viewFovY;
+        viewport.render(shown, s.doc.view, width, height);
+    }
     drawViewportImage(s, viewport.displayTexture());
+    drawExportGuide(s, frame);
     drawStatsOverlay(s, viewport);
     return viewport.compileError();
 }
@@ -236,6 +273,14 @@ int runEditor(const EditorOptions& o) {
         if (o.sessionRecovery && !beginSession(s.autosave, config, glfwGetTime())) setStatus(s, s.autosave.error, true);
         std::string title, lastState;
         int frame = 0, framesDrawn = 0;
+        FrameLog frameLog;
+        if (!o.frameLog.empty()) try {
+                openFrameLog(frameLog, o.frameLog);
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "fraktal: error: %s\n", e.what());
+                status = 2;
+                s.quit = true;
+            }
         while (!s.quit && !glfwWindowShouldClose(window)) {
             // Idle when the image is converged and nothing happens: no busy loop on a laptop.
             const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
@@ -311,6 +356,9 @@ int runEditor(const EditorOptions& o) {
                 }
             }
             if (o.slowFrameMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.slowFrameMs));
+            const float viewportRect[4] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW,
+                                           s.layout.viewportH};
+            if (!s.doc.plane) logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect);
 
             // One undo step per finished gesture: commit only when nothing is being dragged.
             if (!ImGui::IsAnyItemActive() && !s.cameraGesture) s.history.commit(s.doc);
@@ -324,6 +372,7 @@ int runEditor(const EditorOptions& o) {
                 glfwSetWindowTitle(window, title.c_str());
             }
         }
+        closeFrameLog(frameLog);
         finishExport(s.exportJob);
         releaseThumbnails(s.browser);
         endSession(s.autosave);

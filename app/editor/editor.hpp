@@ -16,6 +16,7 @@ struct EditorOptions {
     bool sessionRecovery = true;      // autosave and the restore prompt (off for scripted runs)
     std::filesystem::path stateFile;  // set: the editor state as JSON after every frame (tests)
     int slowFrameMs = 0;              // > 0: every frame sleeps this long (tests of input timing)
+    std::filesystem::path frameLog;   // non-empty: one JSON line per frame (frame_log.hpp)
 };
 
 // Returns the process exit status. With no display it prints why and points to

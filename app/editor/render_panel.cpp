@@ -59,6 +59,9 @@ void drawViewportSection(ViewSettings& v) {
             "responsive on a CPU renderer.");
     dragDouble("Resolution", v.renderScale, 0.1, 1.0, 0.005f, "%.2f x",
                "Share of the window's pixels the viewport renders (upscaled for display).");
+    dragDouble("Frame-time target", v.frameTimeTargetMs, 0.0, 1000.0, 0.5f, "%.0f ms",
+               "While the camera or a parameter moves, the viewport renders fewer pixels to hold this frame time, "
+               "then refines at full resolution when the view rests. 0: always full resolution.");
     ImGui::Checkbox("Reprojection", &v.reprojection);
     helpMarker("Carry march distances over when the camera moves (seed 4.2). Off: every move restarts the rays.");
     dragInt("AA cap (spp)", v.aaCap, 1, 256, 0.1f,

@@ -70,6 +70,7 @@ void drawStatsOverlay(EditorState& s, const ViewportView& v) {
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::Text("%.0f fps   %.1f ms viewport", io.Framerate, st.renderMs);
     ImGui::Text("%d x %d px   %.1f DE evals / px", st.width, st.height, st.deEvaluationsPerPixel);
+    ImGui::Text("internal scale %.2f%s", st.internalScale, st.internalScale < 1.0 ? " (moving)" : "");
     ImGui::Text("reprojected %.0f%%   converged %.0f%%", 100.0 * st.reprojectedShare, 100.0 * st.convergedShare);
     ImGui::Text("AA %d / %d spp%s   %s", st.aaLevel, st.aaCap, st.settled ? " (settled)" : "",
                 s.cameraControls.mode == CameraMode::Fly ? "FLY" : "ORBIT");

@@ -20,6 +20,10 @@ struct ViewSettings {
     int stepsPerFrame = 30;
     // Fraction of the window's pixels the viewport renders (upscaled for display).
     double renderScale = 0.75;
+    // Dynamic resolution: while the camera or a parameter moves, the viewport renders at the share
+    // of renderScale's size that holds this frame time (viewport::ResolutionController), and
+    // refines at full size once the view rests. 0: always full size.
+    double frameTimeTargetMs = 33.0;
     // Carry march distances over when the camera moves (seed 4.2); off: every move restarts.
     bool reprojection = true;
     // Progressive anti-aliasing cap: jittered samples per pixel while the camera rests.

@@ -1,6 +1,7 @@
 #include "app/editor/viewport_adapter.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 namespace fraktal::editor {
@@ -108,7 +109,8 @@ bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& set
     stats_.convergedShare = frame.shareConverged;
     stats_.action = viewport::toString(frame.action);
     stats_.aaCap = settings.aaCap;
-    stats_.settled = frame.settled;
+    // Settled only at full size: a view at rest refines there.
+    stats_.settled = frame.settled && resolution_.scale() == 1.0;
     stats_.aaLevel = frame.settled ? settings.aaCap : frame.samplesAtRest + 1;
     stats_.width = width;
     stats_.height = height;
@@ -155,9 +157,32 @@ void CoreViewportView::redisplay(const Preset& preset) {
     imageChanged_ = false;
 }
 
-void CoreViewportView::render(const Preset& preset, const ViewSettings& settings, int width, int height) {
-    width = std::max(width, 2);
-    height = std::max(height, 2);
+double CoreViewportView::chooseScale(const Preset& preset, const ViewSettings& settings) {
+    // The view a frame shows, as far as motion goes: the camera, the formula and the shading.
+    viewport::FrameKey view;
+    view.structure = preset.formula.structureKey();
+    view.values = viewport::formulaValuesKey(preset.formula);
+    view.camera = preset.camera;
+    const bool changed = lastView_ && (lastView_->structure != view.structure || lastView_->values != view.values ||
+                                       !viewport::sameCamera(lastView_->camera, view.camera) ||
+                                       !(shadingKey_ && shadingKey_->first == preset.shading));
+    lastView_ = std::move(view);
+    // The editor's frame time: from the start of the previous frame's render to this one's.
+    const auto now = std::chrono::steady_clock::now();
+    const double frameMs =
+        lastFrameStart_ ? std::chrono::duration<double, std::milli>(now - *lastFrameStart_).count() : 0.0;
+    lastFrameStart_ = now;
+    viewport::ResolutionControl control = resolution_.control();
+    control.targetMs = settings.frameTimeTargetMs;
+    resolution_.setControl(control);
+    return resolution_.next(changed, frameMs);
+}
+
+void CoreViewportView::render(const Preset& preset, const ViewSettings& settings, int fullWidth, int fullHeight) {
+    const double scale = chooseScale(preset, settings);
+    const int width = std::max(int(std::lround(fullWidth * scale)), 2);
+    const int height = std::max(int(std::lround(fullHeight * scale)), 2);
+    stats_.internalScale = scale;
     try {
         if (renderFrame(preset, settings, width, height)) imageChanged_ = true;
     } catch (const std::exception& e) {

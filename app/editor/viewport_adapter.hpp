@@ -3,12 +3,14 @@
 // image scene-linear in the preset's working space; only the display pass leaves it.
 #pragma once
 
+#include <chrono>
 #include <optional>
 
 #include "app/editor/background_compiler.hpp"
 #include "app/editor/formula_edits.hpp"
 #include "app/editor/ocio_display_pass.hpp"
 #include "app/editor/viewport_view.hpp"
+#include "core/viewport/resolution_control.hpp"
 #include "core/viewport/viewport.hpp"
 
 namespace fraktal::editor {
@@ -48,6 +50,8 @@ class CoreViewportView final : public ViewportView {
     // Asks the compiler for the formula's programs; true once the viewport has them (or when
     // there is no compiler: render() compiles). False while compiling or when it failed.
     bool programsReady(const Formula& formula);
+    // Dynamic resolution: the share of (width, height) to render this frame at.
+    double chooseScale(const Preset& preset, const ViewSettings& settings);
 
     const ColorPipeline& color_;
     BackgroundCompiler* compiler_ = nullptr;
@@ -65,6 +69,10 @@ class CoreViewportView final : public ViewportView {
     bool imageChanged_ = false;
     std::optional<std::pair<DisplayKey, double>> shownDisplay_;
     ViewportStats stats_;
+    // Dynamic resolution: what the last frame showed (a change means motion) and when it began.
+    viewport::ResolutionController resolution_;
+    std::optional<viewport::FrameKey> lastView_;
+    std::optional<std::chrono::steady_clock::time_point> lastFrameStart_;
 };
 
 }  // namespace fraktal::editor

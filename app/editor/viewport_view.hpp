@@ -24,10 +24,11 @@ struct ViewportStats {
     const char* action = "reset";   // what the last frame did: reset, reproject or continue
     int aaLevel = 0;                // samples per pixel being worked on (the cap once settled)
     int aaCap = 1;
-    bool settled = false;       // every pixel has all its samples: frames cost nothing now
-    int width = 0, height = 0;  // render resolution
-    int compiles = 0;           // formula programs built so far (a value edit must not add one)
-    bool compiling = false;     // a new structure compiles in the background; the old image stays
+    bool settled = false;        // every pixel has all its samples: frames cost nothing now
+    int width = 0, height = 0;   // render resolution
+    double internalScale = 1.0;  // dynamic resolution: the share of the full size rendered (1 at rest)
+    int compiles = 0;            // formula programs built so far (a value edit must not add one)
+    bool compiling = false;      // a new structure compiles in the background; the old image stays
 };
 
 class ViewportView {

@@ -49,13 +49,15 @@ bool sameCamera(const Camera& a, const Camera& b) {
 FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool reprojectEnabled,
                         FrameAction previousAction) {
     if (!previous) return FrameAction::Reset;
-    if (previous->width != current.width || previous->height != current.height) return FrameAction::Reset;
+    const bool resized = previous->width != current.width || previous->height != current.height;
     if (previous->structure != current.structure || previous->values != current.values) return FrameAction::Reset;
     if (!(previous->shading.s == current.shading.s) || previous->shading.detail != current.shading.detail ||
         previous->shading.overRelaxation != current.shading.overRelaxation || previous->maxSteps != current.maxSteps)
         return FrameAction::Reset;
-    if (sameCamera(previous->camera, current.camera))
+    if (sameCamera(previous->camera, current.camera)) {
+        if (resized) return FrameAction::Reset;
         return previousAction == FrameAction::Reproject ? FrameAction::Reset : FrameAction::Continue;
+    }
     return reprojectEnabled ? FrameAction::Reproject : FrameAction::Reset;
 }
 

@@ -48,6 +48,9 @@ bool sameCamera(const Camera& a, const Camera& b);
 // textures with sub-pixel detail that alone costs ~20 dB against a fresh render (measured: 22 dB
 // on mandelbox). Re-marching the still view from the camera makes the settled image exactly the
 // fresh one; the reprojected image stays on screen until each pixel's new sample replaces it.
+// A new size (dynamic resolution changing the grid) with a moved camera reprojects too: the
+// scatter works in world points, so the previous grid's points land in the new one. A new size
+// with the camera still resets (the view came to rest and refines at its full size).
 FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool reprojectEnabled,
                         FrameAction previousAction = FrameAction::Continue);
 

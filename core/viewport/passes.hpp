@@ -22,10 +22,12 @@ struct FrameContext {
     bool atRest;  // FrameAction::Continue: the AA level may rise
 };
 
-// Reprojection (reproject_pass.cpp): scatters the previous frame's points, seen from the
-// previous camera, into the reprojection target (MarchState::reprojDepth / reprojColor /
-// reprojCarried) for the current one.
-void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current);
+// Reprojection (reproject_pass.cpp): scatters the previous frame's points (`from`'s images, seen
+// from the previous camera) into the reprojection target of `to` (MarchState::reprojDepth /
+// reprojColor / reprojCarried) for the current one. `from` and `to` are the same state unless
+// the grid's size changed between the frames (dynamic resolution).
+void runReprojectPass(const ViewportPrograms& p, const MarchState& from, const MarchState& to, const Camera& previous,
+                      const Camera& current);
 
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 // Advances the rays. On a new view (action Reset or Reproject) it first starts them: from the

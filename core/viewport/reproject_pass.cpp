@@ -10,21 +10,23 @@
 
 namespace fraktal::viewport {
 
-void runReprojectPass(const ViewportPrograms& p, const MarchState& s, const Camera& previous, const Camera& current) {
-    const int w = s.width(), h = s.height();
+void runReprojectPass(const ViewportPrograms& p, const MarchState& from, const MarchState& s, const Camera& previous,
+                      const Camera& current) {
+    const int w = from.width(), h = from.height();
     const GLuint none = std::numeric_limits<GLuint>::max();
     glClearTexImage(s.reprojDepth, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     const float noColor[4] = {0.0f, 0.0f, 0.0f, 0.0f};  // a = 0: nothing carried
     glClearTexImage(s.reprojColor, 0, GL_RGBA, GL_FLOAT, noColor);
-    glBindTextureUnit(0, s.centre);
-    glBindTextureUnit(1, s.image);
-    glBindTextureUnit(2, s.colourPoint);
+    glBindTextureUnit(0, from.centre);
+    glBindTextureUnit(1, from.image);
+    glBindTextureUnit(2, from.colourPoint);
     glBindImageTexture(8, s.reprojColor, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(9, s.reprojCarried, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(12, s.reprojDepth, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     for (const gl::Program* pass : {&p.reprojectClaim, &p.reprojectWrite}) {
         glUseProgram(pass->id());
         setViewUniforms(pass->id(), previous, w, h);  // the points' rays
+        glUniform2i(glGetUniformLocation(pass->id(), "u_newSize"), s.width(), s.height());
         gl::setCameraUniforms(pass->id(), current,
                               {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"});
         gl::dispatchOver(pass->id(), w, h);

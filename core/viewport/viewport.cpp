@@ -9,6 +9,7 @@ Viewport::Viewport(ViewportOptions options) : options_(options) {
 }
 
 Viewport::~Viewport() {
+    glDeleteFramebuffers(2, resampleFramebuffers_);
     glDeleteFramebuffers(1, &displayFramebuffer_);
     glDeleteTextures(1, &displayTexture_);
     glDeleteVertexArrays(1, &displayVertexArray_);
@@ -33,8 +34,17 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     FrameKey key{width, height, formula.structureKey(), formulaValuesKey(formula), params, render.maxSteps, camera};
     // Compile first: if it fails, the old programs and image stay.
     if (!programs_ || programs_->structure != key.structure) programs_ = std::make_unique<ViewportPrograms>(formula);
-    if (!state_ || state_->width() != width || state_->height() != height)
+    // A new size keeps the previous grid for this frame: a reprojected frame scatters its points
+    // into the new grid, and every pixel not yet finished shows the previous image, upsampled.
+    std::unique_ptr<MarchState> previousGrid;
+    if (!state_ || state_->width() != width || state_->height() != height) {
+        previousGrid = std::move(state_);
         state_ = std::make_unique<MarchState>(width, height, options_.coneTile);
+        if (previousGrid) {
+            resampleInto(*previousGrid, &MarchState::image, *state_);
+            resampleInto(*previousGrid, &MarchState::shown, *state_);
+        }
+    }
 
     FrameAction action = decideFrame(previous_ ? &*previous_ : nullptr, key, options_.reproject, previousAction_);
     if (forceReset_) action = FrameAction::Reset;
@@ -54,7 +64,7 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     counters_->clearAndBind();
     state_->bindImages();
     if (action == FrameAction::Reproject) {
-        runReprojectPass(*programs_, *state_, previous_->camera, camera);
+        runReprojectPass(*programs_, previousGrid ? *previousGrid : *state_, *state_, previous_->camera, camera);
         mark("reproject");
     }
     if (action != FrameAction::Continue && options_.coneTile > 0) {
@@ -83,6 +93,14 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     previous_ = std::move(key);
     previousAction_ = action;
     return stats;
+}
+
+void Viewport::resampleInto(const MarchState& from, GLuint MarchState::*texture, const MarchState& to) {
+    if (!resampleFramebuffers_[0]) glCreateFramebuffers(2, resampleFramebuffers_);
+    glNamedFramebufferTexture(resampleFramebuffers_[0], GL_COLOR_ATTACHMENT0, from.*texture, 0);
+    glNamedFramebufferTexture(resampleFramebuffers_[1], GL_COLOR_ATTACHMENT0, to.*texture, 0);
+    glBlitNamedFramebuffer(resampleFramebuffers_[0], resampleFramebuffers_[1], 0, 0, from.width(), from.height(), 0, 0,
+                           to.width(), to.height(), GL_COLOR_BUFFER_BIT, GL_LINEAR);
 }
 
 void Viewport::drawDisplay(float exposure) {

@@ -77,6 +77,8 @@ class Viewport {
 
    private:
     std::vector<float> readState(GLuint MarchState::*texture) const;  // an RGBA32F state image
+    // One state image of `from` into `to`'s, bilinearly resampled to its size.
+    void resampleInto(const MarchState& from, GLuint MarchState::*texture, const MarchState& to);
 
     ViewportOptions options_;
     std::unique_ptr<ViewportPrograms> programs_;
@@ -87,6 +89,7 @@ class Viewport {
     FrameAction previousAction_ = FrameAction::Reset;
     bool settled_ = false;
     bool forceReset_ = false;
+    GLuint resampleFramebuffers_[2] = {0, 0};
     GLuint displayVertexArray_ = 0, displayTexture_ = 0, displayFramebuffer_ = 0;
     int displayWidth_ = 0, displayHeight_ = 0;
 };
