@@ -164,6 +164,12 @@ d=$(moved "$(camera)" "$before")
 check "$d > 0" || fail "a W tap over the viewport in fly mode did not move the camera"
 xdotool key v
 wait_frames 1
+xdotool key F1
+wait_frames 2
+[ "$(q .shortcutHelp)" = true ] || fail "F1 did not open the shortcut list"
+wait_frames 1
+import -window root "$out/story_shortcuts.png"
+xdotool key F1
 echo "keys: W tap moved the camera by $d (relative)"
 stop
 

@@ -317,6 +317,7 @@ int runEditor(const EditorOptions& o) {
             drawCustomBlockEditor(s, compileError);
             drawFileDialogs(s);
             drawRecoveryDialog(s);
+            drawShortcutHelp(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);
             if (s.browser.visible) renderNextThumbnail(thumbnails, s.browser, *s.color);
 

@@ -30,6 +30,7 @@ struct PanelVisibility {
     bool sidebar = true;  // camera, render, presets
     bool stats = true;
     bool demo = false;      // ImGui's own metrics, for bug reports
+    bool help = false;      // the shortcut list (F1)
     std::string selectTab;  // a Scene tab to bring to front on the next frame ("Render", ...)
 };
 

@@ -57,6 +57,10 @@ void drawMenuBar(EditorState& s) {
         ImGui::MenuItem("ImGui metrics", nullptr, &s.panels.demo);
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Help")) {
+        ImGui::MenuItem("Shortcuts", "F1", &s.panels.help);
+        ImGui::EndMenu();
+    }
     // The document's name and unsaved mark, right-aligned.
     const std::string title =
         (isDirty(s) ? "* " : "") + (s.file.path.empty() ? std::string("untitled") : s.file.path.filename().string());

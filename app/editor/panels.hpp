@@ -31,6 +31,8 @@ void drawStatusLine(EditorState& s);                                          //
 void drawRecoveryDialog(EditorState& s);                                      // recovery_dialog.cpp
 void drawCustomBlockEditor(EditorState& s, const std::string& compileError);  // custom_block_panel.cpp
 
+void drawShortcutHelp(EditorState& s);  // help_window.cpp
+
 void applyEditorStyle(float scale);  // style.cpp
 
 }  // namespace fraktal::editor

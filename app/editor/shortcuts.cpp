@@ -60,6 +60,7 @@ void handleShortcuts(EditorState& s) {
     if (pressed(GLFW_KEY_N, true, true)) requestAction(s, {PendingKind::NewPlane, {}});
     if (pressed(GLFW_KEY_Q, true)) requestAction(s, {PendingKind::Quit, {}});
     if (pressed(GLFW_KEY_F12)) s.dialogs.exportStill = true;
+    if (pressed(GLFW_KEY_F1)) s.panels.help = !s.panels.help;
     if (pressed(GLFW_KEY_F2)) s.panels.formula = !s.panels.formula;
     if (pressed(GLFW_KEY_F3)) s.panels.sidebar = !s.panels.sidebar;
     if (pressed(GLFW_KEY_F4)) s.panels.stats = !s.panels.stats;

@@ -18,6 +18,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     const Formula& f = s.doc.preset.formula;
     j["eyeDistance"] = f.cpuEvaluable() ? json(distanceEstimate(f, c.position)) : json();
     j["cameraGesture"] = s.cameraGesture;
+    j["shortcutHelp"] = s.panels.help;
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;
     j["undoDepth"] = s.history.undoDepth();
     j["redoDepth"] = s.history.redoDepth();
