@@ -43,6 +43,7 @@ struct RenderOptions {
     int tile = 256;
     bool quiet = false;
     std::string frames;  // an image sequence of an animated preset: FIRST-LAST[:STEP]
+    std::string part;    // one part of a still: "i/n"
 };
 
 bool isExrPath(const std::string& input) {
@@ -162,6 +163,13 @@ int runRender(const RenderOptions& o) {
     if (!o.png.empty()) job.png = std::filesystem::path(o.png);
     job.fullFloat = o.fullFloat;
     job.tileSize = o.tile;
+    if (!o.part.empty()) {
+        std::smatch m;
+        if (!std::regex_match(o.part, m, std::regex(R"((\d{1,6})/(\d{1,6}))")))
+            throw std::runtime_error("--part '" + o.part + "': expected i/n, e.g. 2/8 (part i of n, from 1)");
+        job.partIndex = std::stoi(m[1]) - 1;
+        job.partCount = std::stoi(m[2]);
+    }
 
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     std::optional<SequenceJob> sequence;
@@ -232,6 +240,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
+    cmd->add_option("--part", o->part,
+                    "Render only part i of n (1-based; horizontal bands) of the still, for `fraktal merge`");
     cmd->add_option("--frames", o->frames,
                     "Render frames FIRST-LAST[:STEP] of an animated preset; -o is then a pattern whose run of # is "
                     "the frame number (out/frame_####.exr); frames already complete are skipped");
