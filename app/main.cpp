@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     fraktal::cli::addRenderCommand(app, action);
     fraktal::cli::addInfoCommand(app, action);
     fraktal::cli::addBenchViewportCommand(app, action);
+    fraktal::cli::addMergeCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -224,8 +224,9 @@ ShadingSettings parseShading(const ReadContext& context, const json& j) {
     return s;
 }
 
-const char* const kKnownSections[] = {"format",  "version", "dimension", "name",    "description",
-                                      "formula", "camera",  "render",    "shading", "colorManagement"};
+const char* const kKnownSections[] = {"format",      "version",         "dimension", "name",
+                                      "description", "formula",         "camera",    "render",
+                                      "shading",     "colorManagement", "animation"};
 
 Preset readPreset(const PresetDocument& doc, const std::string& file) {
     Preset p;
@@ -245,6 +246,7 @@ Preset readPreset(const PresetDocument& doc, const std::string& file) {
     if (r.has("render")) parseRender(context, r.at("render"), p.render);
     if (r.has("colorManagement")) parseColorManagement(context, r.at("colorManagement"), p.render);
     if (r.has("shading")) p.shading = parseShading(context, r.at("shading"));
+    if (r.has("animation")) p.animation = parseAnimation(context, r.at("animation"), p);
     for (const auto& [key, value] : doc.json.items())
         if (std::find(std::begin(kKnownSections), std::end(kKnownSections), key) == std::end(kKnownSections))
             p.extra[key] = value;
@@ -383,6 +385,7 @@ json presetToJson(const Preset& p) {
     if (json r = renderJson(p.render); !r.empty()) j["render"] = r;
     if (json c = colorManagementJson(p.render); !c.empty()) j["colorManagement"] = c;
     if (json s = shadingJson(p.shading); !s.empty()) j["shading"] = s;
+    if (!p.animation.empty()) j["animation"] = animationJson(p.animation);
     p.unknownFields.writeBack(j);
     for (const auto& [key, value] : p.extra.items())
         if (!j.contains(key)) j[key] = value;

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/anim/animation.hpp"
 #include "core/camera.hpp"
 #include "core/formula.hpp"
 #include "core/json_reader.hpp"
@@ -16,9 +17,10 @@
 
 namespace fraktal {
 
-// Version 2 moved the colour-management settings out of "render" (presets/README.md, "Versions").
-// Older files are migrated on load (core/preset_migrate.hpp), with a note.
-inline constexpr int kPresetVersion = 2;
+// Version 2 moved the colour-management settings out of "render"; version 3 added the optional
+// "animation" section (presets/README.md, "Versions"). Older files are migrated on load
+// (core/preset_migrate.hpp), with a note.
+inline constexpr int kPresetVersion = 3;
 inline constexpr std::string_view kPresetFormat = "fraktal-preset";
 
 struct Preset {
@@ -28,6 +30,7 @@ struct Preset {
     Camera camera;
     RenderSettings render;    // "render" and "colorManagement" sections (optional)
     ShadingSettings shading;  // "shading" section (optional)
+    Animation animation;      // "animation" section (optional; empty: a still)
     // Top-level sections this version does not know (from a newer fraktal, or the editor's own
     // "editor" section), kept on save.
     nlohmann::json extra = nlohmann::json::object();

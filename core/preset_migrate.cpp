@@ -45,8 +45,14 @@ MigrationStepResult moveColorManagementOutOfRender(json& preset) {
     return result;
 }
 
+// Version 2 -> 3: the optional "animation" section is new; nothing already in a file changes.
+MigrationStepResult addAnimationSection(json&) {
+    return {"nothing to change (version 3 added the optional animation section)", {}};
+}
+
 constexpr PresetMigration kPresetMigrations[] = {
     {1, &moveColorManagementOutOfRender},
+    {2, &addAnimationSection},
 };
 
 // `field` equals `path` or lies inside it.

@@ -397,48 +397,54 @@ TEST(PresetMigration, StepsAcceptAnyObject) {
     }
 }
 
-// Every preset in tests/legacy_presets/v1 migrates, with a note, to exactly its current
-// counterpart: tests/legacy_presets/v2/<same name> where one exists, else presets/<same name>.
+// Every preset in tests/legacy_presets/vN (N older than the current version) migrates, with one
+// note per version, to exactly its current counterpart: tests/legacy_presets/v<current>/<same
+// name> where one exists, else presets/<same name>.
 TEST(PresetMigration, LegacyPresetsMigrateToTheirCurrentCounterpart) {
-    const auto legacy = test::sourceDir() / "tests/legacy_presets/v1";
     int count3d = 0, count2d = 0;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(legacy)) {
-        if (e.path().extension() != ".json") continue;
-        const auto relative = std::filesystem::relative(e.path(), legacy);
-        auto counterpart = test::sourceDir() / "tests/legacy_presets/v2" / relative;
-        if (!std::filesystem::exists(counterpart)) counterpart = test::sourceDir() / "presets" / relative;
-        SCOPED_TRACE(relative.string() + " -> " + counterpart.string());
-        ASSERT_TRUE(std::filesystem::exists(counterpart));
-        EXPECT_EQ(readJsonFile(e.path())["version"], 1);
-        EXPECT_EQ(readJsonFile(counterpart)["version"], kPresetVersion);
-        if (isPlanePresetFile(e.path())) {
-            ++count2d;
-            const PlanePreset old = loadPlanePreset(e.path()), now = loadPlanePreset(counterpart);
-            ASSERT_EQ(old.migrationNotes.size(), size_t(kPresetVersion - 1));
-            EXPECT_EQ(old.migrationNotes[0].rfind("version 1 -> 2: ", 0), 0u) << old.migrationNotes[0];
-            EXPECT_TRUE(now.migrationNotes.empty());
-            EXPECT_EQ(old.render, now.render);
-            EXPECT_EQ(old.formula.structureKey(), now.formula.structureKey());
-            EXPECT_EQ(planePresetToJson(old), planePresetToJson(now));
-        } else {
-            ++count3d;
-            const Preset old = loadPreset(e.path()), now = loadPreset(counterpart);
-            ASSERT_EQ(old.migrationNotes.size(), size_t(kPresetVersion - 1));
-            EXPECT_EQ(old.migrationNotes[0].rfind("version 1 -> 2: ", 0), 0u) << old.migrationNotes[0];
-            EXPECT_TRUE(now.migrationNotes.empty());
-            expectSameFormula(old.formula, now.formula, relative.string());
-            EXPECT_EQ(old.camera.position, now.camera.position);
-            EXPECT_EQ(old.camera.target, now.camera.target);
-            EXPECT_EQ(old.camera.up, now.camera.up);
-            EXPECT_EQ(old.camera.fovY, now.camera.fovY);
-            EXPECT_EQ(old.render, now.render);
-            EXPECT_EQ(old.shading, now.shading);
-            EXPECT_EQ(old.name, now.name);
-            EXPECT_EQ(presetToJson(old), presetToJson(now));
+    for (int version = 1; version < kPresetVersion; ++version) {
+        const auto legacy = test::sourceDir() / ("tests/legacy_presets/v" + std::to_string(version));
+        const std::string firstNote =
+            "version " + std::to_string(version) + " -> " + std::to_string(version + 1) + ": ";
+        for (const auto& e : std::filesystem::recursive_directory_iterator(legacy)) {
+            if (e.path().extension() != ".json") continue;
+            const auto relative = std::filesystem::relative(e.path(), legacy);
+            auto counterpart =
+                test::sourceDir() / ("tests/legacy_presets/v" + std::to_string(kPresetVersion)) / relative;
+            if (!std::filesystem::exists(counterpart)) counterpart = test::sourceDir() / "presets" / relative;
+            SCOPED_TRACE(relative.string() + " -> " + counterpart.string());
+            ASSERT_TRUE(std::filesystem::exists(counterpart));
+            EXPECT_EQ(readJsonFile(e.path())["version"], version);
+            EXPECT_EQ(readJsonFile(counterpart)["version"], kPresetVersion);
+            if (isPlanePresetFile(e.path())) {
+                ++count2d;
+                const PlanePreset old = loadPlanePreset(e.path()), now = loadPlanePreset(counterpart);
+                ASSERT_EQ(old.migrationNotes.size(), size_t(kPresetVersion - version));
+                EXPECT_EQ(old.migrationNotes[0].rfind(firstNote, 0), 0u) << old.migrationNotes[0];
+                EXPECT_TRUE(now.migrationNotes.empty());
+                EXPECT_EQ(old.render, now.render);
+                EXPECT_EQ(old.formula.structureKey(), now.formula.structureKey());
+                EXPECT_EQ(planePresetToJson(old), planePresetToJson(now));
+            } else {
+                ++count3d;
+                const Preset old = loadPreset(e.path()), now = loadPreset(counterpart);
+                ASSERT_EQ(old.migrationNotes.size(), size_t(kPresetVersion - version));
+                EXPECT_EQ(old.migrationNotes[0].rfind(firstNote, 0), 0u) << old.migrationNotes[0];
+                EXPECT_TRUE(now.migrationNotes.empty());
+                expectSameFormula(old.formula, now.formula, relative.string());
+                EXPECT_EQ(old.camera.position, now.camera.position);
+                EXPECT_EQ(old.camera.target, now.camera.target);
+                EXPECT_EQ(old.camera.up, now.camera.up);
+                EXPECT_EQ(old.camera.fovY, now.camera.fovY);
+                EXPECT_EQ(old.render, now.render);
+                EXPECT_EQ(old.shading, now.shading);
+                EXPECT_EQ(old.name, now.name);
+                EXPECT_EQ(presetToJson(old), presetToJson(now));
+            }
         }
     }
-    EXPECT_GE(count3d, 2);
-    EXPECT_GE(count2d, 2);
+    EXPECT_GE(count3d, 3);
+    EXPECT_GE(count2d, 3);
 }
 
 TEST(PresetMigration, MovedColourFieldsKeepTheirValues) {

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 
 namespace fraktal::cli {
@@ -16,5 +15,6 @@ Action defaultEditorAction();
 void addRenderCommand(CLI::App& app, Action& action);
 void addInfoCommand(CLI::App& app, Action& action);
 void addBenchViewportCommand(CLI::App& app, Action& action);
+void addMergeCommand(CLI::App& app, Action& action);
 
 }  // namespace fraktal::cli

@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/plane_render.hpp"
+#include "cli/render_sequence.hpp"
 #include "core/color/color_pipeline.hpp"
 #include "core/gl/context.hpp"
 #include "core/image/exr_writer.hpp"
@@ -41,6 +42,8 @@ struct RenderOptions {
     int threads = 0;
     int tile = 256;
     bool quiet = false;
+    std::string frames;  // an image sequence of an animated preset: FIRST-LAST[:STEP]
+    std::string part;    // one part of a still: "i/n"
 };
 
 bool isExrPath(const std::string& input) {
@@ -116,6 +119,18 @@ struct ProgressPrinter {
     }
 };
 
+// The command line's overrides of the preset's render and colour settings.
+void applyRenderOptions(const RenderOptions& o, RenderSettings& r) {
+    if (!o.size.empty()) parseSize(o.size, r);
+    if (o.spp) r.spp = o.spp;
+    if (o.maxSteps) r.maxSteps = o.maxSteps;
+    if (o.detail > 0) r.detail = o.detail;
+    if (o.exposure) r.exposure = *o.exposure;
+    if (!o.view.empty()) r.view = o.view;
+    if (!o.display.empty()) r.display = o.display;
+    if (!o.workingSpace.empty()) r.workingSpace = o.workingSpace;
+}
+
 int runRender(const RenderOptions& o) {
     if (std::optional<PlanePreset> plane = loadPlaneInput(o.input)) {  // 2D: the 2D renderer, same options
         PlaneRenderRequest q{o.input,
@@ -143,32 +158,46 @@ int runRender(const RenderOptions& o) {
     StillJob job;
     job.preset = loadInput(o.input);
     RenderSettings& r = job.preset.render;
-    if (!o.size.empty()) parseSize(o.size, r);
-    if (o.spp) r.spp = o.spp;
-    if (o.maxSteps) r.maxSteps = o.maxSteps;
-    if (o.detail > 0) r.detail = o.detail;
-    if (o.exposure) r.exposure = *o.exposure;
-    if (!o.view.empty()) r.view = o.view;
-    if (!o.display.empty()) r.display = o.display;
-    if (!o.workingSpace.empty()) r.workingSpace = o.workingSpace;
+    applyRenderOptions(o, r);
     job.exr = o.output;
     if (!o.png.empty()) job.png = std::filesystem::path(o.png);
     job.fullFloat = o.fullFloat;
     job.tileSize = o.tile;
+    if (!o.part.empty()) {
+        std::smatch m;
+        if (!std::regex_match(o.part, m, std::regex(R"((\d{1,6})/(\d{1,6}))")))
+            throw std::runtime_error("--part '" + o.part + "': expected i/n, e.g. 2/8 (part i of n, from 1)");
+        job.partIndex = std::stoi(m[1]) - 1;
+        job.partCount = std::stoi(m[2]);
+    }
 
     const ColorPipeline color = ColorPipeline::fromEnvironment();
-    validateStillJob(job, color);  // before the (slow) GL start-up: bad input fails fast
+    std::optional<SequenceJob> sequence;
+    if (!o.frames.empty()) {
+        if (job.png) throw std::runtime_error("--png is for stills; a sequence is encoded with `fraktal encode`");
+        sequence = SequenceJob{job.preset, o.input, o.output, parseFrameRange(o.frames), o.fullFloat, o.tile, o.quiet};
+        validateSequenceJob(*sequence, color);
+    } else {
+        validateStillJob(job, color);  // before the (slow) GL start-up: bad input fails fast
+    }
 
     // llvmpipe reads its thread count when the context is made.
     if (o.threads > 0) ::setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
     auto context = gl::HeadlessContext::create();
-
-    ProgressPrinter printer;
-    if (!o.quiet) job.onProgress = [&printer](const StillProgress& p) { printer(p); };
     gCancelRequested = false;
     job.cancel = &gCancelRequested;
     std::signal(SIGINT, requestCancel);
     std::signal(SIGTERM, requestCancel);
+    if (sequence) {
+        sequence->cancel = &gCancelRequested;
+        if (!o.quiet)
+            std::fprintf(stderr, "rendering frames %s of %s: %dx%d, %d spp, %s\n", o.frames.c_str(), o.input.c_str(),
+                         r.width, r.height, r.spp, context->renderer().c_str());
+        return renderSequence(*sequence, color);
+    }
+
+    ProgressPrinter printer;
+    if (!o.quiet) job.onProgress = [&printer](const StillProgress& p) { printer(p); };
     if (!o.quiet)
         std::fprintf(stderr, "rendering %s: %dx%d, %d spp, %s, OCIO config %s\n", o.input.c_str(), r.width, r.height,
                      r.spp, context->renderer().c_str(), color.configPath().c_str());
@@ -211,6 +240,11 @@ void addRenderCommand(CLI::App& app, Action& action) {
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
+    cmd->add_option("--part", o->part,
+                    "Render only part i of n (1-based; horizontal bands) of the still, for `fraktal merge`");
+    cmd->add_option("--frames", o->frames,
+                    "Render frames FIRST-LAST[:STEP] of an animated preset; -o is then a pattern whose run of # is "
+                    "the frame number (out/frame_####.exr); frames already complete are skipped");
     cmd->callback([&action, o] { action = [o] { return runRender(*o); }; });
 }
 

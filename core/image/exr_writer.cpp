@@ -95,9 +95,17 @@ Imath::M44f worldToCamera(const Camera& camera) {
 }  // namespace
 
 ExrStripWriter::ExrStripWriter(const std::filesystem::path& path, int width, int height, bool fullFloat,
-                               const ExrMetadata& meta, int compressionThreads)
-    : path_(path), width_(width), height_(height), fullFloat_(fullFloat) {
-    Imf::Header header(width, height);
+                               const ExrMetadata& meta, int compressionThreads, int firstRow, int rowCount)
+    : path_(path),
+      width_(width),
+      height_(height),
+      fullFloat_(fullFloat),
+      nextRow_(firstRow),
+      endRow_(rowCount < 0 ? height : firstRow + rowCount) {
+    if (firstRow < 0 || endRow_ > height || endRow_ <= firstRow)
+        throw std::logic_error("ExrStripWriter: rows outside the image");
+    Imf::Header header(Imath::Box2i(Imath::V2i(0, 0), Imath::V2i(width - 1, height - 1)),
+                       Imath::Box2i(Imath::V2i(0, firstRow), Imath::V2i(width - 1, endRow_ - 1)));
     header.compression() = Imf::ZIP_COMPRESSION;
     // zlib level 1 instead of OpenEXR's default 4: lossless either way; measured with
     // bench/stills/exr_write.sh it takes 1.25x (a noisy Mandelbulb) to 1.8x (a mostly empty frame)
@@ -119,6 +127,7 @@ ExrStripWriter::ExrStripWriter(const std::filesystem::path& path, int width, int
     header.insert(kExrWorkingSpaceAttribute, Imf::StringAttribute(meta.workingSpace));
     header.insert(kExrPresetAttribute, Imf::StringAttribute(meta.presetJson));
     header.insert("software", Imf::StringAttribute("fraktal"));
+    if (!meta.part.empty()) header.insert(kExrPartAttribute, Imf::StringAttribute(meta.part));
     // ZIP compresses each block of 16 scanlines independently; OpenEXR runs those blocks on its
     // global thread pool (the pool is OpenEXR's own process-wide state; it has no threads unless
     // asked). Without it, compression is single-threaded and dominates large renders.
@@ -136,7 +145,7 @@ ExrStripWriter::~ExrStripWriter() = default;
 
 void ExrStripWriter::write(const ImageStrip& strip) {
     if (!file_) throw std::logic_error("ExrStripWriter::write after close");
-    if (strip.y0 != nextRow_ || strip.width != width_ || strip.y0 + strip.rows > height_)
+    if (strip.y0 != nextRow_ || strip.width != width_ || strip.y0 + strip.rows > endRow_)
         throw std::logic_error("ExrStripWriter: strips must cover the rows in order");
     // Slices point into interleaved buffers (4 values per pixel) instead of planar copies:
     // OpenEXR de-interleaves while it fills each line buffer, inside its compression tasks on the
@@ -171,7 +180,7 @@ void ExrStripWriter::write(const ImageStrip& strip) {
 }
 
 void ExrStripWriter::close() {
-    if (nextRow_ != height_) throw std::logic_error("ExrStripWriter::close before every row was written");
+    if (nextRow_ != endRow_) throw std::logic_error("ExrStripWriter::close before every row was written");
     try {
         file_.reset();  // the destructor writes the line offset table
     } catch (const std::exception& e) {

@@ -26,6 +26,8 @@ inline constexpr const char* kExrPresetAttribute = "fraktal.preset";
 inline constexpr const char* kExrSppAttribute = "fraktal.spp";
 inline constexpr const char* kExrWorkingSpaceAttribute = "fraktal.workingSpace";
 inline constexpr const char* kExrFovAttribute = "fraktal.camera.fovY";
+// "i/n" in the part of a still rendered with `fraktal render --part i/n` (absent in a whole image).
+inline constexpr const char* kExrPartAttribute = "fraktal.part";
 
 struct ExrMetadata {
     std::string presetJson;  // the whole preset, as written by serializePreset
@@ -33,6 +35,7 @@ struct ExrMetadata {
     int spp = 1;
     std::string workingSpace;
     std::optional<Chromaticities> chromaticities;
+    std::string part;  // kExrPartAttribute; empty: a whole image
 };
 
 // Where each EXR channel comes from: which of the strip's four interleaved buffers (in
@@ -50,8 +53,10 @@ class ExrStripWriter {
    public:
     // Opens `path` for writing (the caller passes an AtomicFile's temporary path). Compression
     // runs on `compressionThreads` threads (0: one per core).
+    // With `rowCount` >= 0, the file holds only rows [firstRow, firstRow + rowCount) of the
+    // width x height image (its data window; a part to be merged).
     ExrStripWriter(const std::filesystem::path& path, int width, int height, bool fullFloat, const ExrMetadata& meta,
-                   int compressionThreads = 0);
+                   int compressionThreads = 0, int firstRow = 0, int rowCount = -1);
     ~ExrStripWriter();
     // Strips must arrive in order, covering every row exactly once. Strips of a multiple of 16
     // rows let OpenEXR compress whole ZIP blocks in parallel within the call.
@@ -64,6 +69,7 @@ class ExrStripWriter {
     int width_, height_;
     bool fullFloat_;
     int nextRow_ = 0;
+    int endRow_ = 0;
     std::unique_ptr<Imf::OutputFile> file_;
     // Interleaved half copies of the strip's buffers, reused from strip to strip.
     std::array<std::vector<half>, 4> halfBuffers_;

@@ -21,6 +21,10 @@ bool hasExtension(const std::filesystem::path& p, const char* ext) {
 
 }  // namespace
 
+std::pair<int, int> partRows(int height, int index, int count) {
+    return {int((long long)height * index / count), int((long long)height * (index + 1) / count)};
+}
+
 void validateStillJob(const StillJob& job, const ColorPipeline& color) {
     const RenderSettings& r = job.preset.render;
     if (r.width < 1 || r.height < 1 || r.width > kMaxImageSide || r.height > kMaxImageSide)
@@ -31,6 +35,11 @@ void validateStillJob(const StillJob& job, const ColorPipeline& color) {
     if (r.spp < 1 || r.spp > kMaxSpp)
         throw std::runtime_error("samples per pixel " + std::to_string(r.spp) + " is outside 1.." +
                                  std::to_string(kMaxSpp));
+    if (job.partCount < 1 || job.partCount > r.height || job.partIndex < 0 || job.partIndex >= job.partCount)
+        throw std::runtime_error("part " + std::to_string(job.partIndex + 1) + "/" + std::to_string(job.partCount) +
+                                 " of an image " + std::to_string(r.height) +
+                                 " rows tall: expected 1 <= i <= n <= " + std::to_string(r.height));
+    if (job.partCount > 1 && job.png) throw std::runtime_error("a part (--part) has no PNG preview; merge the parts");
     if (job.tileSize < 16 || job.tileSize > 4096) throw std::runtime_error("tile size must be within 16..4096");
     if (!hasExtension(job.exr, ".exr"))
         throw std::runtime_error(job.exr.string() + ": unknown output extension '" + job.exr.extension().string() +
@@ -71,11 +80,14 @@ void renderStillJob(const StillJob& job, const ColorPipeline& color) {
     meta.spp = r.spp;
     meta.workingSpace = workingSpace;
     meta.chromaticities = color.chromaticities(workingSpace);
-    ExrStripWriter exr(exrFile.tempPath(), r.width, r.height, job.fullFloat, meta);
+    const auto [firstRow, endRow] = partRows(r.height, job.partIndex, job.partCount);
+    if (job.partCount > 1) meta.part = std::to_string(job.partIndex + 1) + "/" + std::to_string(job.partCount);
+    ExrStripWriter exr(exrFile.tempPath(), r.width, r.height, job.fullFloat, meta, 0, firstRow, endRow - firstRow);
     std::vector<uint8_t> preview;
     if (job.png) preview.resize(size_t(r.width) * size_t(r.height) * 3);
 
-    const std::vector<TileRect> strips = stripsOf(r.width, r.height, stillStripRows(r.width, tileSize));
+    std::vector<TileRect> strips = stripsOf(r.width, endRow - firstRow, stillStripRows(r.width, tileSize));
+    for (TileRect& s : strips) s.y += firstRow;
     StillProgress progress;
     for (const TileRect& s : strips) progress.tilesTotal += int(tilesOf(s, tileSize).size());
     const auto start = std::chrono::steady_clock::now();

@@ -14,7 +14,7 @@
 namespace fraktal {
 
 class RenderCancelled : public std::runtime_error {
-public:
+   public:
     RenderCancelled() : std::runtime_error("render cancelled") {}
 };
 
@@ -36,8 +36,16 @@ struct StillJob {
     bool fullFloat = false;
     int tileSize = 256;
     std::function<void(const StillProgress&)> onProgress;  // after every tile
-    const std::atomic<bool>* cancel = nullptr;              // polled between tiles
+    const std::atomic<bool>* cancel = nullptr;             // polled between tiles
+    // Part `partIndex` (0-based) of `partCount` horizontal bands of the image (`fraktal render
+    // --part i/n`), for `fraktal merge`; 1: the whole image. Every pixel's samples depend only
+    // on its image position, so merged parts equal a whole render.
+    int partIndex = 0;
+    int partCount = 1;
 };
+
+// Rows [first, end) of part `index` of `count` of an image `height` rows tall.
+std::pair<int, int> partRows(int height, int index, int count);
 
 // Checks sizes, outputs and colour settings before any rendering, so that bad input fails fast
 // and nothing is touched; throws std::runtime_error saying what is wrong.

@@ -1,0 +1,74 @@
+// Keyframe animation of a preset: tracks of keys on any numeric field of the formula (block
+// parameters by node and name), the camera (position, target, up, field of view, and orientation
+// as a quaternion) and the shading and colour settings. Format: presets/README.md, "Animation".
+#pragma once
+
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace fraktal {
+
+struct Preset;
+struct ReadContext;
+
+enum class Interpolation { Constant, Linear, Smooth };
+
+struct Key {
+    double frame = 0.0;
+    std::vector<double> value;  // 1 (a number), 3 (a vector) or 4 (an orientation quaternion w, x, y, z)
+    bool operator==(const Key&) const = default;
+};
+
+// The target of an orientation track: a unit quaternion (w, x, y, z) rotating camera space (x right,
+// y up, looking down -z) into world space. It sets the camera's target (at the keyed distance) and up.
+inline constexpr const char* kCameraOrientationTarget = "camera.orientation";
+
+struct Track {
+    std::string target;  // a field path as in error messages, e.g. "formula.nodes[0].params.power"
+    Interpolation interpolation = Interpolation::Smooth;
+    std::vector<Key> keys;  // sorted by frame, at least one
+    bool operator==(const Track&) const = default;
+};
+
+struct Animation {
+    int firstFrame = 0;
+    int lastFrame = 0;
+    double fps = 24.0;
+    // Camera tracks are re-timed so that the camera moves at a constant speed along its position
+    // path between the position track's first and last key (the path's shape is unchanged).
+    bool evenCameraSpeed = false;
+    std::vector<Track> tracks;
+    bool operator==(const Animation&) const = default;
+    bool empty() const { return tracks.empty(); }
+    int frameCount() const { return lastFrame - firstFrame + 1; }
+};
+
+// The value of `track` at `frame`: keys hold before the first and after the last one. Smooth:
+// cubic Hermite with Catmull-Rom tangents over the keys' frames (C1 in time, through every key).
+// Orientation tracks interpolate quaternions (linear: slerp; smooth: squad), always along the
+// shorter arc, so the camera never flips.
+std::vector<double> evaluateTrack(const Track& track, double frame);
+
+// The frame (in key time) at which the camera tracks are evaluated for output frame `frame`: the
+// frame itself, or when evenCameraSpeed, the key time at which the position path has covered the
+// same share of its length as `frame` has of the position track's frame span.
+double cameraTime(const Animation& animation, double frame);
+
+// Unit quaternion helpers (w, x, y, z in glm::dquat).
+glm::dquat orientationOf(const vec3& forward, const vec3& up);
+glm::dquat slerpShortest(glm::dquat a, glm::dquat b, double t);
+
+// The "animation" section: reads and checks it (keys sorted, values of one size per track,
+// targets within the sections that can be keyed, and every key value accepted by the preset's
+// own reader at that field). `still` is the rest of the preset, already read.
+Animation parseAnimation(const ReadContext& context, const nlohmann::json& j, const Preset& still);
+nlohmann::json animationJson(const Animation& animation);
+
+// The still preset at `frame` (no animation section): the tracks applied to `animated`.
+Preset presetAtFrame(const Preset& animated, double frame);
+
+}  // namespace fraktal

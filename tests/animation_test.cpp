@@ -1,0 +1,212 @@
+// Keyframe tracks: interpolation through the keys, smoothness, even camera speed, quaternion
+// orientation without flips, the "animation" section's round trip and its errors.
+#include "core/anim/animation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/preset.hpp"
+#include "test_support.hpp"
+
+using namespace fraktal;
+
+namespace {
+
+Track scalarTrack(Interpolation how, std::vector<std::pair<double, double>> keys) {
+    Track t;
+    t.target = "formula.nodes[0].params.power";
+    t.interpolation = how;
+    for (auto [f, v] : keys) t.keys.push_back({f, {v}});
+    return t;
+}
+
+Track positionTrack(std::vector<std::pair<double, vec3>> keys) {
+    Track t;
+    t.target = "camera.position";
+    for (auto [f, p] : keys) t.keys.push_back({f, {p.x, p.y, p.z}});
+    return t;
+}
+
+vec3 asVec(const std::vector<double>& v) { return vec3(v[0], v[1], v[2]); }
+
+const char* const kAnimatedMandelbulb = R"({
+  "format": "fraktal-preset", "version": 3,
+  "formula": {"nodes": [{"block": "mandelbulb", "params": {"power": 8}}, {"block": "escape_log"}]},
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+  "animation": {"lastFrame": 10, "fps": 30, "tracks": [
+    {"target": "formula.nodes[0].params.power", "interpolation": "linear",
+     "keys": [{"frame": 0, "value": 4}, {"frame": 10, "value": 9}]},
+    {"target": "camera.orientation", "keys": [{"frame": 0, "value": [1, 0, 0, 0]},
+                                               {"frame": 10, "value": [0.7071068, 0, 0.7071068, 0]}]},
+    {"target": "camera.fovY", "interpolation": "constant", "keys": [{"frame": 0, "value": 40}, {"frame": 5, "value": 60}]}
+  ]}
+})";
+
+}  // namespace
+
+TEST(Animation, EveryInterpolationPassesThroughItsKeysAndHoldsOutside) {
+    for (Interpolation how : {Interpolation::Constant, Interpolation::Linear, Interpolation::Smooth}) {
+        const Track t = scalarTrack(how, {{0, 1.0}, {4, 3.0}, {10, -2.0}, {12, 5.0}});
+        for (const Key& k : t.keys) EXPECT_DOUBLE_EQ(evaluateTrack(t, k.frame)[0], k.value[0]);
+        EXPECT_DOUBLE_EQ(evaluateTrack(t, -5)[0], 1.0);
+        EXPECT_DOUBLE_EQ(evaluateTrack(t, 50)[0], 5.0);
+    }
+    EXPECT_DOUBLE_EQ(evaluateTrack(scalarTrack(Interpolation::Constant, {{0, 1.0}, {4, 3.0}}), 3.99)[0], 1.0);
+    EXPECT_DOUBLE_EQ(evaluateTrack(scalarTrack(Interpolation::Linear, {{0, 1.0}, {4, 3.0}}), 1.0)[0], 1.5);
+}
+
+TEST(Animation, SmoothTracksAreContinuousWithContinuousSlopeAtKeys) {
+    const Track t = scalarTrack(Interpolation::Smooth, {{0, 1.0}, {3, 4.0}, {10, -2.0}, {12, 5.0}});
+    const double h = 1e-5;
+    for (double f : {3.0, 10.0}) {
+        const double left = evaluateTrack(t, f - h)[0], at = evaluateTrack(t, f)[0], right = evaluateTrack(t, f + h)[0];
+        EXPECT_NEAR(left, at, 1e-3);
+        EXPECT_NEAR(right, at, 1e-3);
+        const double slopeLeft = (at - left) / h, slopeRight = (right - at) / h;
+        EXPECT_NEAR(slopeLeft, slopeRight, 1e-3) << "slope jumps at key " << f;
+    }
+    // Not linear: the curve bends between keys (a linear track would give 2.5 at frame 1.5).
+    EXPECT_GT(std::abs(evaluateTrack(t, 1.5)[0] - 2.5), 1e-3);
+}
+
+TEST(Animation, EvenCameraSpeedKeepsEqualStepsAlongThePath) {
+    Animation a;
+    a.lastFrame = 60;
+    // Keys unevenly spaced in distance: a short hop then a long leg.
+    a.tracks.push_back(
+        positionTrack({{0, vec3(0, 0, 5)}, {20, vec3(0.2, 0, 4.8)}, {40, vec3(3, 1, 2)}, {60, vec3(6, 0, -3)}}));
+    // Distance travelled along the path from frame f to f + 1 (fine chords in key time: a chord
+    // between frames would cut corners where the path turns).
+    auto travelled = [&](int f) {
+        const double t0 = cameraTime(a, f), t1 = cameraTime(a, f + 1);
+        double d = 0.0;
+        for (int s = 0; s < 50; ++s)
+            d += length(asVec(evaluateTrack(a.tracks[0], t0 + (t1 - t0) * (s + 1) / 50)) -
+                        asVec(evaluateTrack(a.tracks[0], t0 + (t1 - t0) * s / 50)));
+        return d;
+    };
+    a.evenCameraSpeed = false;
+    double keyedMin = 1e9, keyedMax = 0;
+    for (int f = 0; f < 60; ++f) {
+        keyedMin = std::min(keyedMin, travelled(f));
+        keyedMax = std::max(keyedMax, travelled(f));
+    }
+    EXPECT_GT(keyedMax / keyedMin, 3.0) << "the keyed path should lurch, or the test shows nothing";
+    a.evenCameraSpeed = true;
+    double previousTime = -1, stepMin = 1e9, stepMax = 0;
+    for (int f = 0; f <= 60; ++f) {
+        const double t = cameraTime(a, f);
+        EXPECT_GT(t, previousTime) << "camera time must increase";
+        previousTime = t;
+        if (f < 60) {
+            stepMin = std::min(stepMin, travelled(f));
+            stepMax = std::max(stepMax, travelled(f));
+        }
+    }
+    EXPECT_LT(stepMax / stepMin, 1.02);
+    EXPECT_DOUBLE_EQ(cameraTime(a, 0), 0.0);
+    EXPECT_DOUBLE_EQ(cameraTime(a, 60), 60.0);
+}
+
+TEST(Animation, OrientationNeverFlips) {
+    // Keys a quarter turn apart about y, one written with the opposite sign (the same rotation):
+    // interpolating it as written would turn the long way round.
+    Track t;
+    t.target = kCameraOrientationTarget;
+    const vec3 forwards[] = {vec3(0, 0, -1), vec3(-1, 0, 0), vec3(0, 0, 1), vec3(1, 0.3, 0)};
+    for (int k = 0; k < 4; ++k) {
+        glm::dquat q = orientationOf(forwards[k], vec3(0, 1, 0));
+        if (k == 2) q = -q;
+        t.keys.push_back({double(k * 10), {q.w, q.x, q.y, q.z}});
+    }
+    for (Interpolation how : {Interpolation::Linear, Interpolation::Smooth}) {
+        t.interpolation = how;
+        glm::dquat previous(1, 0, 0, 0);
+        for (int step = 0; step <= 300; ++step) {
+            const std::vector<double> v = evaluateTrack(t, step * 0.1);
+            const glm::dquat q(v[0], v[1], v[2], v[3]);
+            EXPECT_NEAR(glm::length(q), 1.0, 1e-9);
+            const vec3 up = q * vec3(0, 1, 0);
+            EXPECT_GT(up.y, 0.9) << "the camera rolled over at frame " << step * 0.1;
+            if (step > 0) {
+                const double turn = 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(q, previous))));
+                EXPECT_LT(turn, 0.05) << "jump at frame " << step * 0.1;
+            }
+            previous = q;
+        }
+        for (int k = 0; k < 4; ++k) {  // through every key
+            const std::vector<double> v = evaluateTrack(t, k * 10.0);
+            const vec3 forward = glm::dquat(v[0], v[1], v[2], v[3]) * vec3(0, 0, -1);
+            EXPECT_NEAR(dot(forward, normalize(forwards[k])), 1.0, 1e-9);
+        }
+    }
+}
+
+TEST(Animation, PresetRoundTripsAndFramesApplyTheTracks) {
+    const Preset p = parsePreset(kAnimatedMandelbulb, "anim.json");
+    ASSERT_EQ(p.animation.tracks.size(), 3u);
+    EXPECT_EQ(p.animation.lastFrame, 10);
+    EXPECT_EQ(p.animation.fps, 30.0);
+    const std::string saved = serializePreset(p);
+    const Preset again = parsePreset(saved, "saved");
+    EXPECT_EQ(again.animation, p.animation);
+    EXPECT_EQ(serializePreset(again), saved);
+
+    const Preset f0 = presetAtFrame(p, 0), f4 = presetAtFrame(p, 4), f10 = presetAtFrame(p, 10);
+    EXPECT_TRUE(f4.animation.empty());
+    EXPECT_DOUBLE_EQ(f0.formula.nodes[0].values[0].x, 4.0);
+    EXPECT_DOUBLE_EQ(f4.formula.nodes[0].values[0].x, 6.0);
+    EXPECT_DOUBLE_EQ(f10.formula.nodes[0].values[0].x, 9.0);
+    EXPECT_EQ(f4.camera.fovY, 40.0);
+    EXPECT_EQ(f10.camera.fovY, 60.0);
+    // A quarter turn about y: from looking down -z to looking down -x, at the same distance.
+    EXPECT_NEAR(length(f10.camera.target - f10.camera.position), 3.0, 1e-9);
+    EXPECT_NEAR(dot(normalize(f10.camera.target - f10.camera.position), vec3(-1, 0, 0)), 1.0, 1e-6);
+    EXPECT_NEAR(dot(normalize(f0.camera.target - f0.camera.position), vec3(0, 0, -1)), 1.0, 1e-9);
+}
+
+TEST(Animation, BadTracksNameFileFieldAndReason) {
+    struct Case {
+        const char* track;
+        const char* field;
+        const char* reason;
+    };
+    const Case cases[] = {
+        {R"({"target": "formula.nodes[0].params.powr", "keys": [{"frame": 0, "value": 3}]})",
+         "animation.tracks[0].target", "unknown parameter of block 'mandelbulb'"},
+        {R"({"target": "formula.nodes[5].params.power", "keys": [{"frame": 0, "value": 3}]})",
+         "animation.tracks[0].target", "no such field"},
+        {R"({"target": "render.width", "keys": [{"frame": 0, "value": 3}]})", "animation.tracks[0].target",
+         "cannot be keyed"},
+        {R"({"target": "camera.position", "keys": [{"frame": 0, "value": 3}]})", "animation.tracks[0].keys[0].value",
+         "expected an array of 3 numbers"},
+        {R"({"target": "formula.nodes[0].params.power", "keys": [{"frame": 0, "value": 3000}]})",
+         "animation.tracks[0].keys[0].value", "outside the range"},
+        {R"({"target": "camera.fovY", "keys": [{"frame": 4, "value": 30}, {"frame": 2, "value": 40}]})",
+         "animation.tracks[0].keys[1].frame", "increasing frame order"},
+        {R"({"target": "camera.fovY", "interpolation": "cubic", "keys": [{"frame": 0, "value": 30}]})",
+         "animation.tracks[0].interpolation", "expected \"constant\""},
+        {R"({"target": "camera.orientation", "keys": [{"frame": 0, "value": [0, 0, 0, 0]}]})",
+         "animation.tracks[0].keys[0].value", "zero quaternion"},
+    };
+    for (const Case& c : cases) {
+        nlohmann::json j = nlohmann::json::parse(kAnimatedMandelbulb);
+        j["animation"]["tracks"] = nlohmann::json::array({nlohmann::json::parse(c.track)});
+        try {
+            parsePreset(j.dump(), "bad_anim.json");
+            ADD_FAILURE() << "accepted: " << c.track;
+        } catch (const PresetError& e) {
+            EXPECT_EQ(e.file(), "bad_anim.json");
+            EXPECT_EQ(e.field(), c.field) << e.what();
+            EXPECT_NE(e.reason().find(c.reason), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(Animation, StillPresetsHaveNoAnimationSection) {
+    for (const auto& path : test::shippedPresets()) {
+        const Preset p = loadPreset(path);
+        EXPECT_EQ(presetToJson(p).contains("animation"), !p.animation.empty()) << path;
+    }
+}
