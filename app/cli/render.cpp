@@ -40,6 +40,7 @@ struct RenderOptions {
     bool fullFloat = false;
     int threads = 0;
     int tile = 256;
+    std::optional<double> adaptiveTolerance;
     bool quiet = false;
 };
 
@@ -155,6 +156,7 @@ int runRender(const RenderOptions& o) {
     if (!o.png.empty()) job.png = std::filesystem::path(o.png);
     job.fullFloat = o.fullFloat;
     job.tileSize = o.tile;
+    if (o.adaptiveTolerance) job.adaptiveTolerance = *o.adaptiveTolerance;
 
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     validateStillJob(job, color);  // before the (slow) GL start-up: bad input fails fast
@@ -210,6 +212,9 @@ void addRenderCommand(CLI::App& app, Action& action) {
     cmd->add_option("--threads", o->threads, "Rendering threads (llvmpipe; default: all cores)")
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
+    cmd->add_option("--adaptive-tolerance", o->adaptiveTolerance,
+                    "A pixel stops sampling when its samples agree within this (sqrt colour); 0: all spp")
+        ->check(CLI::Range(0.0, 1.0));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
     cmd->callback([&action, o] { action = [o] { return runRender(*o); }; });
 }

@@ -14,7 +14,7 @@
 namespace fraktal {
 
 class RenderCancelled : public std::runtime_error {
-public:
+   public:
     RenderCancelled() : std::runtime_error("render cancelled") {}
 };
 
@@ -28,6 +28,8 @@ struct StillProgress {
 inline constexpr long long kMaxPngPixels = 1LL << 28;
 // Biggest image at all (EXR rows are streamed; this keeps the strip of a pathological aspect sane).
 inline constexpr long long kMaxImagePixels = 1LL << 32;
+// Adaptive sampling's default tolerance (shaders/still.frag); bench/stills measures its error.
+inline constexpr double kDefaultAdaptiveTolerance = 0.01;
 
 struct StillJob {
     Preset preset;  // preset.render holds the size, spp and colour settings actually used
@@ -36,8 +38,18 @@ struct StillJob {
     bool fullFloat = false;
     int tileSize = 256;
     std::function<void(const StillProgress&)> onProgress;  // after every tile
-    const std::atomic<bool>* cancel = nullptr;              // polled between tiles
+    const std::atomic<bool>* cancel = nullptr;             // polled between tiles
+    // Spread of sqrt(colour) under which a pixel stops sampling (shaders/still.frag; 0: all spp).
+    double adaptiveTolerance = kDefaultAdaptiveTolerance;
+    long long memoryLimitBytes = 0;  // 0: the memory available when the job is checked
 };
+
+// Peak memory of renderStillJob for `job`, from the buffers it allocates (one strip of floats and
+// its half copies, the PNG preview, the GL tile targets and their read-back) plus the process's
+// own base (the GL driver and libraries), known before anything is allocated.
+long long estimateStillMemoryBytes(const StillJob& job);
+// MemAvailable of /proc/meminfo, else the physical memory.
+long long availableMemoryBytes();
 
 // Checks sizes, outputs and colour settings before any rendering, so that bad input fails fast
 // and nothing is touched; throws std::runtime_error saying what is wrong.
