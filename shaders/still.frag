@@ -8,6 +8,15 @@
 // per-pixel random rotation (Cranley-Patterson), seeded by the pixel's image coordinates so that
 // tiles do not show. One sample per pixel goes through the pixel centre (the CPU reference does too).
 //
+// Adaptive sampling: a pixel stops early once its samples agree. After ADAPTIVE_MIN_SAMPLES
+// samples, and after each one from then on, it stops when every sample so far has the same
+// coverage (all hit or all missed) and the spread of their colours, max - min per channel of
+// sqrt(colour) (roughly perceptual), is within u_adaptiveTolerance. Flat sky and smooth surfaces
+// stop at the minimum; edges and sub-pixel detail, where samples disagree, take all u_spp. The
+// test is conservative in the sense of Mitchell's adaptive sampling ("Generating antialiased images
+// at low sampling densities", SIGGRAPH 1987): a contrast test on the samples taken, never on
+// fewer than two. u_adaptiveTolerance = 0 turns it off.
+//
 // Framebuffer row j of a tile is image row u_tileOrigin.y + j, counted from the top, so a
 // glReadPixels of the tile gives the image's rows in file order.
 //
@@ -19,7 +28,9 @@
 //   float u_filterRadius                 filter radius in pixels
 //   float u_filterInverseCdf[FILTER_TABLE_SIZE]   inverse CDF of the 1D filter over [0, 1]
 //   int   u_transparentBackground        1: background contributes nothing (premultiplied RGBA)
+//   float u_adaptiveTolerance            spread of sqrt(colour) under which a pixel stops (0: off)
 #define FILTER_TABLE_SIZE 65
+#define ADAPTIVE_MIN_SAMPLES 2
 uniform ivec2 u_imageSize;
 uniform ivec2 u_tileOrigin;
 uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
@@ -29,11 +40,12 @@ uniform int u_maxSteps;
 uniform float u_filterRadius;
 uniform float u_filterInverseCdf[FILTER_TABLE_SIZE];
 uniform int u_transparentBackground;
+uniform float u_adaptiveTolerance;
 
 layout(location = 0) out vec4 outColor;       // scene-linear RGB, alpha = coverage
 layout(location = 1) out vec4 outNormalDepth; // world normal (coverage-weighted), depth: nearest hit
 layout(location = 2) out vec4 outAlbedoAO;    // orbit-trap albedo, ambient occlusion (coverage-weighted)
-layout(location = 3) out vec4 outStats;       // DE evaluations per sample, march steps per ray
+layout(location = 3) out vec4 outStats;       // DE evaluations / u_spp, march steps per ray, samples taken
 
 uint hashPixel(uvec2 p) {  // PCG-style integer hash (Jarzynski and Olano 2020)
     uint v = p.x * 1664525u + p.y * 22695477u + 1013904223u;
@@ -59,6 +71,8 @@ void main() {
     vec3 color = vec3(0.0), normal = vec3(0.0), albedo = vec3(0.0);
     float coverage = 0.0, ao = 0.0, depth = 1e30, deEvals = 0.0, steps = 0.0;
     int spp = max(u_spp, 1);
+    vec3 sampleMin = vec3(1e30), sampleMax = vec3(-1e30);
+    int taken = 0;
     for (int k = 0; k < spp; ++k) {
         vec2 offset = vec2(0.0);
         if (spp > 1) {
@@ -83,21 +97,32 @@ void main() {
                   (s.status == MARCH_MARCHING && s.lastD < 10.0 * pixelAngle * s.t * u_detail);
             steps += float(s.steps);
         }
+        vec3 sampleColor = vec3(0.0);
         if (hit) {
             SurfaceSample surface = shadeSurface(ro + rd * s.t, rd, s.t, pixelAngle, deEvals);
-            color += surface.color;
+            sampleColor = surface.color;
             normal += surface.normal;
             albedo += surface.albedo;
             ao += surface.ao;
             coverage += 1.0;
             depth = min(depth, s.t);
         } else if (u_transparentBackground == 0) {
-            color += shadeBackground(rd);
+            sampleColor = shadeBackground(rd);
         }
+        color += sampleColor;
+        taken = k + 1;
+        vec3 perceptual = sqrt(max(sampleColor, vec3(0.0)));
+        sampleMin = min(sampleMin, perceptual);
+        sampleMax = max(sampleMax, perceptual);
+        bool sameCoverage = coverage == 0.0 || coverage == float(taken);
+        if (u_adaptiveTolerance > 0.0 && taken >= ADAPTIVE_MIN_SAMPLES && sameCoverage &&
+            all(lessThanEqual(sampleMax - sampleMin, vec3(u_adaptiveTolerance))))
+            break;
     }
-    float w = 1.0 / float(spp);
+    float w = 1.0 / float(taken);
     outColor = vec4(color * w, coverage * w);
     outNormalDepth = vec4(normal * w, depth);
     outAlbedoAO = vec4(albedo * w, ao * w);
-    outStats = vec4(deEvals * w, steps * w, 0.0, 0.0);
+    // DE evaluations over the nominal spp, so that (this) x spp is the pixel's total (bench/stills/de_count.cpp).
+    outStats = vec4(deEvals / float(spp), steps * w, float(taken), 0.0);
 }

@@ -6,6 +6,7 @@
 
 #include "core/color/color_pipeline.hpp"
 #include "core/cpu_render/cpu_renderer.hpp"
+#include "core/render/still_job.hpp"
 #include "core/render/still_renderer.hpp"
 #include "test_support.hpp"
 
@@ -46,10 +47,11 @@ double standardDeviation(const std::vector<float>& v) {
     return std::sqrt(sq / double(v.size()));
 }
 
-ImageStrip renderGL(const Preset& preset, const RenderSettings& r, const ShadingParams& shading) {
+ImageStrip renderGL(const Preset& preset, const RenderSettings& r, const ShadingParams& shading,
+                    double adaptiveTolerance = 0.0) {
     test::glContext();
     gl::StillRenderer renderer(preset.formula, 128);
-    renderer.setScene(preset.formula, preset.camera, r, shading);
+    renderer.setScene(preset.formula, preset.camera, r, shading, adaptiveTolerance);
     ImageStrip image;
     image.resize(r.width, 0, r.height);
     for (const TileRect& tile : tilesOf({0, 0, r.width, r.height}, 128)) renderer.renderTile(tile, image);
@@ -85,6 +87,40 @@ TEST_P(GoldenTest, GlMatchesCpuReference) {
 INSTANTIATE_TEST_SUITE_P(ShippedPresets, GoldenTest, ::testing::ValuesIn(test::shippedPresets()),
                          [](const auto& info) { return info.param.stem().string(); });
 
+// Adaptive sampling (shaders/still.frag) stops where a pixel's samples agree: flat sky and smooth
+// surface stop at two samples, edges take all of them, and the image stays that of fixed sampling.
+TEST(StillAdaptive, StopsWhereSamplesAgreeAndKeepsTheImage) {
+    const Preset preset = loadPreset(test::sourceDir() / "presets" / "mandelbulb.json");
+    RenderSettings r = preset.render;
+    r.width = 96;
+    r.height = 64;
+    r.spp = 8;
+    const ShadingParams shading = resolveShading(preset.shading, r, preset.formula);
+    const ImageStrip fixed = renderGL(preset, r, shading, 0.0);
+    const ImageStrip adaptive = renderGL(preset, r, shading, kDefaultAdaptiveTolerance);
+    double samplesFixed = 0.0, samplesAdaptive = 0.0, deFixed = 0.0, deAdaptive = 0.0;
+    float fewest = 1e9f, most = 0.0f;
+    for (size_t i = 0; i < fixed.stats.size(); i += 4) {
+        samplesFixed += fixed.stats[i + 2];
+        samplesAdaptive += adaptive.stats[i + 2];
+        deFixed += fixed.stats[i];
+        deAdaptive += adaptive.stats[i];
+        fewest = std::min(fewest, adaptive.stats[i + 2]);
+        most = std::max(most, adaptive.stats[i + 2]);
+    }
+    const double pixels = double(r.width) * r.height;
+    std::printf("samples per pixel: fixed %.2f, adaptive %.2f; DE evaluations: adaptive / fixed %.2f\n",
+                samplesFixed / pixels, samplesAdaptive / pixels, deAdaptive / deFixed);
+    EXPECT_EQ(samplesFixed / pixels, 8.0);
+    EXPECT_EQ(fewest, 2.0f);  // ADAPTIVE_MIN_SAMPLES
+    EXPECT_EQ(most, 8.0f);    // some pixel (an edge) took every sample
+    EXPECT_LT(samplesAdaptive / pixels, 6.0);
+    EXPECT_LT(deAdaptive, 0.9 * deFixed);  // the pixels that stop early are mostly cheap sky
+    const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
+    const DisplayTransform display(color, "scene_linear", "sRGB", "Standard", 0.0);
+    EXPECT_GE(psnr(toDisplay(adaptive, display).rgb, toDisplay(fixed, display).rgb), 35.0);
+}
+
 // The reference really depends on the shading: turning shadows off changes the image (so the
 // golden comparison above compares shading, not only silhouettes).
 TEST(CpuReference, ShadowsAndOcclusionChangeTheImage) {
@@ -95,7 +131,8 @@ TEST(CpuReference, ShadowsAndOcclusionChangeTheImage) {
     ShadingSettings plain = preset.shading;
     plain.shadowSteps = 0;
     plain.aoSteps = 0;
-    const ImageStrip a = renderReference(preset.formula, preset.camera, r, resolveShading(preset.shading, r, preset.formula));
+    const ImageStrip a =
+        renderReference(preset.formula, preset.camera, r, resolveShading(preset.shading, r, preset.formula));
     const ImageStrip b = renderReference(preset.formula, preset.camera, r, resolveShading(plain, r, preset.formula));
     double difference = 0.0;
     int covered = 0;

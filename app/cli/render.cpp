@@ -41,6 +41,7 @@ struct RenderOptions {
     bool fullFloat = false;
     int threads = 0;
     int tile = 256;
+    std::optional<double> adaptiveTolerance;
     bool quiet = false;
     std::string frames;  // an image sequence of an animated preset: FIRST-LAST[:STEP]
     std::string part;    // one part of a still: "i/n"
@@ -170,6 +171,7 @@ int runRender(const RenderOptions& o) {
         job.partIndex = std::stoi(m[1]) - 1;
         job.partCount = std::stoi(m[2]);
     }
+    if (o.adaptiveTolerance) job.adaptiveTolerance = *o.adaptiveTolerance;
 
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     std::optional<SequenceJob> sequence;
@@ -239,6 +241,9 @@ void addRenderCommand(CLI::App& app, Action& action) {
     cmd->add_option("--threads", o->threads, "Rendering threads (llvmpipe; default: all cores)")
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
+    cmd->add_option("--adaptive-tolerance", o->adaptiveTolerance,
+                    "A pixel stops sampling when its samples agree within this (sqrt colour); 0: all spp")
+        ->check(CLI::Range(0.0, 1.0));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
     cmd->add_option("--part", o->part,
                     "Render only part i of n (1-based; horizontal bands) of the still, for `fraktal merge`");

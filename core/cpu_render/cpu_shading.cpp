@@ -83,10 +83,11 @@ double surfaceEpsilon(const Scene& scene, double t, double pixelAngle) {
     return std::max(0.5 * pixelAngle * t, 2e-5 * scene.formula.boundRadius);
 }
 
+// Mirror of shade.glsl's surfaceNormal (tetrahedral differences, why: there).
 vec3 surfaceNormal(const Scene& scene, const vec3& pos, const vec3& rd, double eps, double& deEvals) {
-    const vec3 n(scene.de(pos + vec3(eps, 0, 0), deEvals) - scene.de(pos - vec3(eps, 0, 0), deEvals),
-                 scene.de(pos + vec3(0, eps, 0), deEvals) - scene.de(pos - vec3(0, eps, 0), deEvals),
-                 scene.de(pos + vec3(0, 0, eps), deEvals) - scene.de(pos - vec3(0, 0, eps), deEvals));
+    const vec3 corners[4] = {vec3(1, -1, -1), vec3(-1, -1, 1), vec3(-1, 1, -1), vec3(1, 1, 1)};
+    vec3 n(0.0);
+    for (const vec3& k : corners) n += k * scene.de(pos + k * eps, deEvals);
     const double len = length(n);
     return len > 1e-20 ? n / len : -rd;
 }

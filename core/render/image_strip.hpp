@@ -16,7 +16,7 @@ struct ImageStrip {
     std::vector<float> rgba;         // colour, alpha = coverage
     std::vector<float> normalDepth;  // world normal (coverage-weighted), depth of the nearest hit (1e30: none)
     std::vector<float> albedoAO;     // orbit-trap albedo, ambient occlusion (coverage-weighted)
-    std::vector<float> stats;        // DE evaluations per sample, march steps per camera ray, 0, 0
+    std::vector<float> stats;        // DE evaluations / spp, march steps per camera ray, samples taken, 0
 
     // The four buffers in a fixed order (rgba, normalDepth, albedoAO, stats), for code that walks them.
     std::array<std::vector<float>*, 4> buffers() { return {&rgba, &normalDepth, &albedoAO, &stats}; }

@@ -28,6 +28,8 @@ struct StillProgress {
 inline constexpr long long kMaxPngPixels = 1LL << 28;
 // Biggest image at all (EXR rows are streamed; this keeps the strip of a pathological aspect sane).
 inline constexpr long long kMaxImagePixels = 1LL << 32;
+// Adaptive sampling's default tolerance (shaders/still.frag); bench/stills measures its error.
+inline constexpr double kDefaultAdaptiveTolerance = 0.01;
 
 struct StillJob {
     Preset preset;  // preset.render holds the size, spp and colour settings actually used
@@ -42,10 +44,20 @@ struct StillJob {
     // on its image position, so merged parts equal a whole render.
     int partIndex = 0;
     int partCount = 1;
+    // Spread of sqrt(colour) under which a pixel stops sampling (shaders/still.frag; 0: all spp).
+    double adaptiveTolerance = kDefaultAdaptiveTolerance;
+    long long memoryLimitBytes = 0;  // 0: the memory available when the job is checked
 };
 
 // Rows [first, end) of part `index` of `count` of an image `height` rows tall.
 std::pair<int, int> partRows(int height, int index, int count);
+
+// Peak memory of renderStillJob for `job`, from the buffers it allocates (one strip of floats and
+// its half copies, the PNG preview, the GL tile targets and their read-back) plus the process's
+// own base (the GL driver and libraries), known before anything is allocated.
+long long estimateStillMemoryBytes(const StillJob& job);
+// MemAvailable of /proc/meminfo, else the physical memory.
+long long availableMemoryBytes();
 
 // Checks sizes, outputs and colour settings before any rendering, so that bad input fails fast
 // and nothing is touched; throws std::runtime_error saying what is wrong.

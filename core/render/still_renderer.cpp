@@ -26,6 +26,7 @@ StillRenderer::StillRenderer(const Formula& formula, int tileSize)
                                assembleShader(generated, "still.frag", stillProgramSource()));
     formulaUniforms_ = FormulaUniforms(program_.id(), formula);
     shadingUniforms_ = ShadingUniforms(program_.id());
+    tileOriginLocation_ = glGetUniformLocation(program_.id(), "u_tileOrigin");
 
     glCreateFramebuffers(1, &framebuffer_);
     glCreateTextures(GL_TEXTURE_2D, 4, targets_);
@@ -48,7 +49,7 @@ StillRenderer::~StillRenderer() {
 }
 
 void StillRenderer::setScene(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                             const ShadingParams& shading) {
+                             const ShadingParams& shading, double adaptiveTolerance) {
     if (formula.structureKey() != structure_)
         throw std::logic_error("StillRenderer::setScene: the formula's structure changed; make a new renderer");
     imageWidth_ = render.width;
@@ -63,6 +64,7 @@ void StillRenderer::setScene(const Formula& formula, const Camera& camera, const
     glUniform1i(glGetUniformLocation(p, "u_maxSteps"), render.maxSteps);
     glUniform1f(glGetUniformLocation(p, "u_filterRadius"), float(render.filterRadius));
     glUniform1i(glGetUniformLocation(p, "u_transparentBackground"), render.transparentBackground ? 1 : 0);
+    glUniform1f(glGetUniformLocation(p, "u_adaptiveTolerance"), float(adaptiveTolerance));
     const std::vector<float> table = blackmanHarrisInverseCdfTable(kFilterTableSize);
     glUniform1fv(glGetUniformLocation(p, "u_filterInverseCdf"), kFilterTableSize, table.data());
 }
@@ -72,7 +74,7 @@ void StillRenderer::renderTile(const TileRect& tile, ImageStrip& strip) {
         tile.y + tile.height > strip.y0 + strip.rows || tile.x + tile.width > strip.width)
         throw std::logic_error("StillRenderer::renderTile: tile outside the strip or larger than the targets");
     glUseProgram(program_.id());
-    glUniform2i(glGetUniformLocation(program_.id(), "u_tileOrigin"), tile.x, tile.y);
+    glUniform2i(tileOriginLocation_, tile.x, tile.y);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, tile.width, tile.height);
     glDisable(GL_BLEND);

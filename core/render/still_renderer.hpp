@@ -19,7 +19,7 @@
 namespace fraktal::gl {
 
 class StillRenderer {
-public:
+   public:
     // Compiles the still program for the formula's structure (throws naming the node on a GLSL
     // error) and allocates render targets of tileSize x tileSize.
     StillRenderer(const Formula& formula, int tileSize);
@@ -29,19 +29,21 @@ public:
 
     // Sets everything that stays the same across the tiles of one image. `formula` must have the
     // constructor's structure.
+    // adaptiveTolerance: see shaders/still.frag (0: every pixel takes render.spp samples).
     void setScene(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                  const ShadingParams& shading);
+                  const ShadingParams& shading, double adaptiveTolerance = 0.0);
     // Renders `tile` (which must lie in `strip`'s rows and be at most tileSize square).
     void renderTile(const TileRect& tile, ImageStrip& strip);
 
     int tileSize() const { return tileSize_; }
 
-private:
+   private:
     std::string structure_;
     int tileSize_;
     Program program_;
     FormulaUniforms formulaUniforms_;
     ShadingUniforms shadingUniforms_;
+    GLint tileOriginLocation_ = -1;  // looked up once: renderTile runs per tile
     GLuint framebuffer_ = 0, vertexArray_ = 0;
     GLuint targets_[4] = {0, 0, 0, 0};
     int imageWidth_ = 0, imageHeight_ = 0;
