@@ -16,7 +16,8 @@ cd "$root"
 # name|command (run from the repository root)
 benchmarks=(
   "viewport|bench/viewport/run.sh $build"
-  "stills|bench/stills/run.sh $build 1280x720 1 4"
+  "stills|JSON=$out/stills.native.json bench/stills/run.sh $build 1280x720 1 4"
+  "de_count|bench/stills/de_count_all.sh $build 320x180 1"
   "exr_write|bench/stills/exr_write.sh $build 8192x8192"
   "plane|bench/plane/run.sh $build 2"
 )
