@@ -20,6 +20,7 @@ struct EditOptions {
     std::string tab;
     int width = 1280, height = 800;
     std::string frameLog;
+    std::string exportSize;
 };
 
 int runEdit(const EditOptions& o) {
@@ -32,6 +33,10 @@ int runEdit(const EditOptions& o) {
     e.height = o.height;
     e.sidebarTab = o.tab;
     e.frameLog = o.frameLog;
+    if (!o.exportSize.empty() && std::sscanf(o.exportSize.c_str(), "%dx%d", &e.exportWidth, &e.exportHeight) != 2) {
+        std::fprintf(stderr, "fraktal: --export-size: '%s' is not WIDTHxHEIGHT\n", o.exportSize.c_str());
+        return 2;
+    }
     // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
     e.useIniFile = o.frames == 0;
     // Nor autosave or a restore prompt: a scripted run is not a session to recover.
@@ -56,6 +61,7 @@ void addEditCommand(CLI::App& app, Action& action) {
         ->check(CLI::IsMember({"Camera", "Render", "Shading", "Presets", "View", "Colouring"}));
     cmd->add_option("--width", o->width, "Window width")->check(CLI::Range(320, 16384));
     cmd->add_option("--height", o->height, "Window height")->check(CLI::Range(240, 16384));
+    cmd->add_option("--export-size", o->exportSize, "The export dialog's size at start, WIDTHxHEIGHT (Custom)");
     cmd->add_option("--frame-log", o->frameLog,
                     "Append one JSON line per frame (frame time, viewport scale and size, camera) to this file");
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });
