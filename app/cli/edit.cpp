@@ -22,6 +22,7 @@ struct EditOptions {
     std::string stateFile;
     int slowFrameMs = 0;
     std::string frameLog;
+    std::string exportSize;
 };
 
 int runEdit(const EditOptions& o) {
@@ -36,6 +37,10 @@ int runEdit(const EditOptions& o) {
     e.stateFile = o.stateFile;
     e.slowFrameMs = o.slowFrameMs;
     e.frameLog = o.frameLog;
+    if (!o.exportSize.empty() && std::sscanf(o.exportSize.c_str(), "%dx%d", &e.exportWidth, &e.exportHeight) != 2) {
+        std::fprintf(stderr, "fraktal: --export-size: '%s' is not WIDTHxHEIGHT\n", o.exportSize.c_str());
+        return 2;
+    }
     // Scripted runs (tests, bug reports) must look the same everywhere: no personal ini.
     e.useIniFile = o.frames == 0;
     // Nor autosave or a restore prompt: a scripted run is not a session to recover.
@@ -63,6 +68,7 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--state-file", o->stateFile, "Write the editor's state as JSON after every frame (for tests)");
     cmd->add_option("--slow-frames", o->slowFrameMs, "Make every frame at least this many ms longer (for tests)")
         ->check(CLI::Range(0, 10000));
+    cmd->add_option("--export-size", o->exportSize, "The export dialog's size at start, WIDTHxHEIGHT (Custom)");
     cmd->add_option("--frame-log", o->frameLog,
                     "Append one JSON line per frame (frame time, viewport scale and size, camera) to this file");
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });

@@ -270,6 +270,11 @@ int runEditor(const EditorOptions& o) {
             if (o.frames > 0) status = 2;  // a scripted run must not pass with the wrong scene
         }
         s.panels.selectTab = o.sidebarTab;
+        if (o.exportWidth > 0 && o.exportHeight > 0) {
+            s.exportJob.options.sizeIndex = int(std::size(kExportSizes)) - 1;  // Custom
+            s.exportJob.options.width = std::clamp(o.exportWidth, 16, 65536);
+            s.exportJob.options.height = std::clamp(o.exportHeight, 16, 65536);
+        }
         if (o.sessionRecovery && !beginSession(s.autosave, config, glfwGetTime())) setStatus(s, s.autosave.error, true);
         std::string title, lastState;
         int frame = 0, framesDrawn = 0;

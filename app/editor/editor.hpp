@@ -11,12 +11,13 @@ struct EditorOptions {
     int frames = 0;                    // > 0: draw this many frames, then exit
     std::filesystem::path screenshot;  // with frames: a PNG of the whole window after the last
     int width = 1280, height = 800;
-    bool useIniFile = true;           // false for reproducible screenshots
-    std::string sidebarTab;           // Scene tab shown first: Camera, Render, Shading or Presets
-    bool sessionRecovery = true;      // autosave and the restore prompt (off for scripted runs)
-    std::filesystem::path stateFile;  // set: the editor state as JSON after every frame (tests)
-    int slowFrameMs = 0;              // > 0: every frame sleeps this long (tests of input timing)
-    std::filesystem::path frameLog;   // non-empty: one JSON line per frame (frame_log.hpp)
+    bool useIniFile = true;                 // false for reproducible screenshots
+    std::string sidebarTab;                 // Scene tab shown first: Camera, Render, Shading or Presets
+    bool sessionRecovery = true;            // autosave and the restore prompt (off for scripted runs)
+    std::filesystem::path stateFile;        // set: the editor state as JSON after every frame (tests)
+    int slowFrameMs = 0;                    // > 0: every frame sleeps this long (tests of input timing)
+    std::filesystem::path frameLog;         // non-empty: one JSON line per frame (frame_log.hpp)
+    int exportWidth = 0, exportHeight = 0;  // > 0: the export dialog's size at start (Custom)
 };
 
 // Returns the process exit status. With no display it prints why and points to

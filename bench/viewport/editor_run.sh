@@ -76,6 +76,8 @@ print(json.dumps({
     "viewport": lines[-1]["viewport"],
     "drag_frames": len(drag),
     "frame_ms_p50": pct(ms, 0.5), "frame_ms_p95": pct(ms, 0.95), "frame_ms_max": ms[-1] if ms else None,
+    # The viewport's own part of a frame (the rest: panels, display, swap under Xvfb).
+    "viewport_ms_p50": pct(sorted(f["render_ms"] for f in drag), 0.5),
     "scale_min": scales[0] if scales else None, "scale_p50": pct(scales, 0.5),
     "internal_size_p50": [f"{f['width']}x{f['height']}" for f in drag if f["scale"] == pct(scales, 0.5)][:1],
     "psnr_2s_after_stop_db": float(psnr) if psnr.replace('.', '', 1).isdigit() else psnr,
