@@ -17,6 +17,7 @@
 #include "core/plane/plane_preset.hpp"
 #include "core/plane/plane_still.hpp"
 #include "core/preset.hpp"
+#include "core/render/path_job.hpp"
 #include "core/render/still_job.hpp"
 
 namespace fraktal::cli {
@@ -41,6 +42,8 @@ struct RenderOptions {
     int threads = 0;
     int tile = 256;
     bool quiet = false;
+    std::string mode = "fast";
+    bool denoise = false;
 };
 
 bool isExrPath(const std::string& input) {
@@ -156,6 +159,7 @@ int runRender(const RenderOptions& o) {
     job.fullFloat = o.fullFloat;
     job.tileSize = o.tile;
 
+    if (o.denoise && o.mode != "path") throw std::runtime_error("--denoise needs --mode path");
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     validateStillJob(job, color);  // before the (slow) GL start-up: bad input fails fast
 
@@ -173,7 +177,10 @@ int runRender(const RenderOptions& o) {
         std::fprintf(stderr, "rendering %s: %dx%d, %d spp, %s, OCIO config %s\n", o.input.c_str(), r.width, r.height,
                      r.spp, context->renderer().c_str(), color.configPath().c_str());
     try {
-        renderStillJob(job, color);
+        if (o.mode == "path")
+            renderPathJob(PathJob{job, o.input, o.denoise}, color);
+        else
+            renderStillJob(job, color);
     } catch (const RenderCancelled&) {
         std::fprintf(stderr, "\nfraktal: render cancelled; no file written\n");
         return 130;
@@ -211,6 +218,11 @@ void addRenderCommand(CLI::App& app, Action& action) {
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
+    cmd->add_option("--mode", o->mode,
+                    "fast (the default still renderer) or path (progressive path tracing: lights, "
+                    "environment, depth of field, compositing passes)")
+        ->check(CLI::IsMember({"fast", "path"}));
+    cmd->add_flag("--denoise", o->denoise, "With --mode path: joint bilateral denoise guided by albedo and normal");
     cmd->callback([&action, o] { action = [o] { return runRender(*o); }; });
 }
 
