@@ -1,6 +1,9 @@
 // Print-quality light: the preset's lights/environment/lens sections (round trips, bad input), the
 // environment map's importance sampling, the GL path tracer against the CPU reference, and the
 // thin lens's depth of field against the circle of confusion.
+#include <ImfChannelList.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -323,6 +326,32 @@ TEST(PathTracer, DepthOfFieldBlursByTheCircleOfConfusion) {
     const double blurred = width(8.0);
     std::printf("edge width: %.2f px in focus, %.2f px out of focus (thin lens: %.2f px)\n", sharp, blurred, expected);
     EXPECT_NEAR(blurred, expected, 0.1 * expected);
+}
+
+TEST(PathTracer, CommandLineWritesTheCompositingPasses) {
+    const auto dir = std::filesystem::temp_directory_path() / "fraktal_path_cli";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "lit.json") << replaced(kLitPreset, "env/sky.exr",
+                                                (test::sourceDir() / "presets/env/sky.exr").string());
+    const auto exr = dir / "lit.exr";
+    const test::CliRun run =
+        test::runCli("render " + (dir / "lit.json").string() + " -o " + exr.string() + " --png " +
+                     (dir / "lit.png").string() + " --mode path --spp 2 --size 32x18 --denoise -q");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    Imf::InputFile in(exr.c_str());
+    for (const char* name : {"R", "G", "B", "A", "Z", "diffuse_direct.R", "diffuse_indirect.G", "specular.B",
+                             "emission.R", "albedo.G", "N.x", "N.z"})
+        EXPECT_NE(in.header().channels().findChannel(name), nullptr) << name;
+    EXPECT_TRUE(std::filesystem::exists(dir / "lit.png"));
+    // A missing environment map: the file, the field and the reason; no output written.
+    std::ofstream(dir / "missing.json") << replaced(kLitPreset, "env/sky.exr", "no/such/sky.exr");
+    const test::CliRun bad = test::runCli("render " + (dir / "missing.json").string() + " -o " +
+                                          (dir / "m.exr").string() + " --mode path -q");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.output.find("environment.map"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("does not exist"), std::string::npos) << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "m.exr"));
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace
