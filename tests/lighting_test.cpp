@@ -211,19 +211,6 @@ TracedScene litScene(const std::string& text, int width, int height) {
     return s;
 }
 
-double meanImagePsnr(const PathImage& a, const PathImage& b) {
-    double sq = 0.0, peak = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < a.passes[kBeauty].size(); ++i) {
-        if (i % 4 == 3) continue;
-        const double d = a.passes[kBeauty][i] - b.passes[kBeauty][i];
-        sq += d * d;
-        peak = std::max(peak, double(b.passes[kBeauty][i]));
-        ++n;
-    }
-    return 10.0 * std::log10(peak * peak / std::max(sq / n, 1e-30));
-}
-
 // A Menger sponge (a fractal with crevices for the bounces) lit by the area light and the
 // environment map (the sun in it casts the hard shadows), with depth of field.
 const char* kMengerLit = R"({

@@ -18,19 +18,6 @@
 
 using namespace fraktal;
 
-double psnr(const PathImage& a, const PathImage& ref) {
-    double sq = 0.0, peak = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < ref.passes[kBeauty].size(); ++i) {
-        if (i % 4 == 3) continue;
-        const double d = a.passes[kBeauty][i] - ref.passes[kBeauty][i];
-        sq += d * d;
-        peak = std::max(peak, double(ref.passes[kBeauty][i]));
-        ++n;
-    }
-    return 10.0 * std::log10(peak * peak / std::max(sq / n, 1e-30));
-}
-
 int main(int argc, char** argv) {
     if (argc < 4) {
         std::fprintf(stderr, "usage: %s PRESET WxH REF_SPP [--denoise]\n", argv[0]);
@@ -71,13 +58,13 @@ int main(int argc, char** argv) {
         while (tracer.samplesTaken() < spp) tracer.addSamples(1, 1);
         seconds += std::chrono::duration<double>(Clock::now() - t0).count();
         PathImage image = tracer.image();
-        const double p = psnr(image, reference);
+        const double p = meanImagePsnr(image, reference);
         double pd = 0.0, denoiseSeconds = 0.0;
         if (denoise) {
             const auto d0 = Clock::now();
             denoisePathImage(image);
             denoiseSeconds = std::chrono::duration<double>(Clock::now() - d0).count();
-            pd = psnr(image, reference);
+            pd = meanImagePsnr(image, reference);
         }
         std::printf("%5d spp %8.2f s  PSNR %.2f dB", spp, seconds, p);
         if (denoise) std::printf("  denoised %.2f dB (+%.2f s)", pd, denoiseSeconds);

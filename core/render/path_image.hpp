@@ -3,7 +3,9 @@
 // diffuse_indirect + specular (the background, seen by camera rays that miss, is in no pass).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -30,5 +32,20 @@ struct PathImage {
     float* at(int pass, int x, int y) { return &passes[pass][(size_t(y) * size_t(width) + size_t(x)) * 4]; }
     const float* at(int pass, int x, int y) const { return &passes[pass][(size_t(y) * size_t(width) + size_t(x)) * 4]; }
 };
+
+// PSNR in dB of a's beauty RGB against the reference's (peak: the reference's brightest value),
+// the convergence measure of the tests and bench/stills/pathtrace.sh.
+inline double meanImagePsnr(const PathImage& a, const PathImage& reference) {
+    double sq = 0.0, peak = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < reference.passes[kBeauty].size(); ++i) {
+        if (i % 4 == 3) continue;
+        const double d = a.passes[kBeauty][i] - reference.passes[kBeauty][i];
+        sq += d * d;
+        peak = std::max(peak, double(reference.passes[kBeauty][i]));
+        ++n;
+    }
+    return 10.0 * std::log10(peak * peak / std::max(sq / double(std::max<size_t>(n, 1)), 1e-30));
+}
 
 }  // namespace fraktal
