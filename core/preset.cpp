@@ -168,7 +168,7 @@ Formula parseFormula(const ReadContext& context, const json& j) {
     return f;
 }
 
-Camera parseCamera(const ReadContext& context, const json& j) {
+Camera parseCamera(const ReadContext& context, const json& j, ThinLens& lens) {
     FieldReader r(context, j, "camera");
     Camera c;
     c.position = r.requiredVector<3>("position", -1e4, 1e4);
@@ -178,6 +178,7 @@ Camera parseCamera(const ReadContext& context, const json& j) {
     if (length(c.target - c.position) < 1e-9) r.fail("position and target coincide");
     if (length(glm::cross(normalize(c.target - c.position), c.up)) < 1e-6)
         r.fail("up is zero or parallel to the viewing direction", "up");
+    readLens(r, c, lens);
     r.finish();
     return c;
 }
@@ -242,13 +243,17 @@ Preset readPreset(const PresetDocument& doc, const std::string& file) {
     p.name = r.string("name", "");
     p.description = r.string("description", "", 65536);
     p.formula = parseFormula(context, r.at("formula"));
-    p.camera = parseCamera(context, r.at("camera"));
+    p.camera = parseCamera(context, r.at("camera"), p.lighting.lens);
+    if (r.has("lights")) p.lighting.lights = parseLights(context, r.at("lights"));
+    if (r.has("environment")) p.lighting.environment = parseEnvironment(context, r.at("environment"));
+    if (r.has("pathTrace")) p.lighting.pathTrace = parsePathTrace(context, r.at("pathTrace"));
     if (r.has("render")) parseRender(context, r.at("render"), p.render);
     if (r.has("colorManagement")) parseColorManagement(context, r.at("colorManagement"), p.render);
     if (r.has("shading")) p.shading = parseShading(context, r.at("shading"));
     if (r.has("animation")) p.animation = parseAnimation(context, r.at("animation"), p);
     for (const auto& [key, value] : doc.json.items())
-        if (std::find(std::begin(kKnownSections), std::end(kKnownSections), key) == std::end(kKnownSections))
+        if (std::find(std::begin(kKnownSections), std::end(kKnownSections), key) == std::end(kKnownSections) &&
+            !isLightingSection(key))
             p.extra[key] = value;
     return p;
 }
@@ -386,6 +391,7 @@ json presetToJson(const Preset& p) {
     if (json c = colorManagementJson(p.render); !c.empty()) j["colorManagement"] = c;
     if (json s = shadingJson(p.shading); !s.empty()) j["shading"] = s;
     if (!p.animation.empty()) j["animation"] = animationJson(p.animation);
+    writeLighting(p.lighting, j);
     p.unknownFields.writeBack(j);
     for (const auto& [key, value] : p.extra.items())
         if (!j.contains(key)) j[key] = value;

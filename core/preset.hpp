@@ -13,6 +13,7 @@
 #include "core/formula.hpp"
 #include "core/json_reader.hpp"
 #include "core/preset_migrate.hpp"
+#include "core/render/lighting.hpp"
 #include "core/render/settings.hpp"
 
 namespace fraktal {
@@ -31,6 +32,7 @@ struct Preset {
     RenderSettings render;    // "render" and "colorManagement" sections (optional)
     ShadingSettings shading;  // "shading" section (optional)
     Animation animation;      // "animation" section (optional; empty: a still)
+    Lighting lighting;        // "lights", "environment", "pathTrace" and the camera's lens fields (optional)
     // Top-level sections this version does not know (from a newer fraktal, or the editor's own
     // "editor" section), kept on save.
     nlohmann::json extra = nlohmann::json::object();

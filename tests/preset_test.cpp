@@ -237,7 +237,7 @@ std::vector<FutureField> futureFields3d() {
         {"/formula/nodes/1/params/phase", "formula.nodes[1].params.phase", 0.5},
         {"/formula/customBlocks/0/author", "formula.customBlocks[0].author", "a stranger"},
         {"/formula/customBlocks/0/params/0/unit", "formula.customBlocks[0].params[0].unit", "radians"},
-        {"/camera/aperture", "camera.aperture", 0.1},
+        {"/camera/shutter", "camera.shutter", 0.1},
         {"/render/denoise", "render.denoise", true},
         {"/colorManagement/look", "colorManagement.look", "Filmic"},
         {"/shading/subsurface", "shading.subsurface", nlohmann::json::array({0.1, 0.2, 0.3})},

@@ -18,6 +18,7 @@
 #include "core/plane/plane_preset.hpp"
 #include "core/plane/plane_still.hpp"
 #include "core/preset.hpp"
+#include "core/render/path_job.hpp"
 #include "core/render/still_job.hpp"
 
 namespace fraktal::cli {
@@ -45,6 +46,8 @@ struct RenderOptions {
     bool quiet = false;
     std::string frames;  // an image sequence of an animated preset: FIRST-LAST[:STEP]
     std::string part;    // one part of a still: "i/n"
+    std::string mode = "fast";
+    bool denoise = false;
 };
 
 bool isExrPath(const std::string& input) {
@@ -173,10 +176,13 @@ int runRender(const RenderOptions& o) {
     }
     if (o.adaptiveTolerance) job.adaptiveTolerance = *o.adaptiveTolerance;
 
+    if (o.denoise && o.mode != "path") throw std::runtime_error("--denoise needs --mode path");
+    if (o.mode == "path" && (!o.frames.empty() || !o.part.empty()))
+        throw std::runtime_error("--mode path renders a whole still: not with --frames or --part");
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     std::optional<SequenceJob> sequence;
     if (!o.frames.empty()) {
-        if (job.png) throw std::runtime_error("--png is for stills; a sequence is encoded with `fraktal encode`");
+        if (job.png) throw std::runtime_error("--png is for stills, not with --frames");
         sequence = SequenceJob{job.preset, o.input, o.output, parseFrameRange(o.frames), o.fullFloat, o.tile, o.quiet};
         validateSequenceJob(*sequence, color);
     } else {
@@ -204,7 +210,10 @@ int runRender(const RenderOptions& o) {
         std::fprintf(stderr, "rendering %s: %dx%d, %d spp, %s, OCIO config %s\n", o.input.c_str(), r.width, r.height,
                      r.spp, context->renderer().c_str(), color.configPath().c_str());
     try {
-        renderStillJob(job, color);
+        if (o.mode == "path")
+            renderPathJob(PathJob{job, o.input, o.denoise}, color);
+        else
+            renderStillJob(job, color);
     } catch (const RenderCancelled&) {
         std::fprintf(stderr, "\nfraktal: render cancelled; no file written\n");
         return 130;
@@ -250,6 +259,11 @@ void addRenderCommand(CLI::App& app, Action& action) {
     cmd->add_option("--frames", o->frames,
                     "Render frames FIRST-LAST[:STEP] of an animated preset; -o is then a pattern whose run of # is "
                     "the frame number (out/frame_####.exr); frames already complete are skipped");
+    cmd->add_option("--mode", o->mode,
+                    "fast (the default still renderer) or path (progressive path tracing: lights, "
+                    "environment, depth of field, compositing passes)")
+        ->check(CLI::IsMember({"fast", "path"}));
+    cmd->add_flag("--denoise", o->denoise, "With --mode path: joint bilateral denoise guided by albedo and normal");
     cmd->callback([&action, o] { action = [o] { return runRender(*o); }; });
 }
 

@@ -77,8 +77,6 @@ bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tSt
     return tEnd > 0.0;
 }
 
-namespace {
-
 double surfaceEpsilon(const Scene& scene, double t, double pixelAngle) {
     return std::max(0.5 * pixelAngle * t, 2e-5 * scene.formula.boundRadius);
 }
@@ -101,6 +99,8 @@ vec3 trapAlbedo(const Scene& scene, const vec3& pos, double& deEvals) {
         clamp(s.paletteA + s.paletteB * glm::cos(6.28318530718 * (s.paletteC * x + s.paletteD)), 0.0, 1.0);
     return glm::pow(display, vec3(2.2));
 }
+
+namespace {
 
 double ambientOcclusion(const Scene& scene, const vec3& pos, const vec3& n, double& deEvals) {
     const ShadingSettings& s = scene.params.s;

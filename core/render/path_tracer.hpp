@@ -1,0 +1,48 @@
+// The GL path tracer: progressive accumulation of shaders/pathtrace.frag over the whole image (the
+// estimator of core/cpu_render/cpu_path_tracer.hpp). Needs a current GL 4.5 context.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include "core/cpu_render/cpu_path_tracer.hpp"
+#include "core/gl/formula_uniforms.hpp"
+#include "core/gl/program.hpp"
+#include "core/render/shading_uniforms.hpp"
+
+namespace fraktal::gl {
+
+class PathTracer {
+   public:
+    // Compiles the program for the formula's structure and allocates width x height sums.
+    PathTracer(const Formula& formula, int width, int height);
+    ~PathTracer();
+    PathTracer(const PathTracer&) = delete;
+    PathTracer& operator=(const PathTracer&) = delete;
+
+    // Sets the scene and clears the sums (the size must be the constructor's). Sample k of a pixel
+    // draws the random numbers of sample index firstSampleIndex + k (an independent run of the
+    // same scene starts past the samples of another).
+    void setScene(const PathScene& scene, int firstSampleIndex = 0);
+    // Adds `samples` more samples per pixel (draws of at most `batch` samples each).
+    void addSamples(int samples, int batch = 4);
+    int samplesTaken() const { return samples_; }
+    // The sums so far divided by the samples taken (rows from the top).
+    PathImage image() const;
+    // DE evaluations per pixel per sample, averaged over the image.
+    double deEvaluationsPerSample() const;
+
+   private:
+    std::string structure_;
+    int width_, height_;
+    int samples_ = 0, firstSampleIndex_ = 0;
+    Program program_;
+    FormulaUniforms formulaUniforms_;
+    ShadingUniforms shadingUniforms_;
+    GLuint framebuffer_ = 0, vertexArray_ = 0;
+    GLuint targets_[kPassCount] = {};
+    GLuint envBuffers_[3] = {};
+};
+
+}  // namespace fraktal::gl
