@@ -277,7 +277,10 @@ Animation parseAnimation(const ReadContext& context, const json& j, const Preset
                     parsePreset(probe.dump(), context.file);
                 } catch (const PresetError& e) {
                     // A field that does not exist is the target's fault; a value the field refuses, the key's.
-                    const bool badTarget = e.reason() == "no such field" || e.reason().rfind("unknown", 0) == 0;
+                    // (A parameter error reads "block N 'id': unknown parameter ...".)
+                    const bool badTarget = e.reason() == "no such field" ||
+                                           e.reason().find("unknown parameter") != std::string::npos ||
+                                           e.reason().rfind("unknown", 0) == 0;
                     const std::string where = e.field() == track.target || e.field().empty() ? "" : e.field() + ": ";
                     throw PresetError(context.file, badTarget ? path + ".target" : keyPath + ".value",
                                       "'" + track.target + "': " + where + e.reason());
