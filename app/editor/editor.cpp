@@ -356,7 +356,8 @@ int runEditor(const EditorOptions& o) {
             ++framesDrawn;
             if (!o.stateFile.empty()) {
                 try {
-                    writeStateFile(o.stateFile, stateJson(s, framesDrawn, compileError), lastState);
+                    const bool viewportSettled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
+                    writeStateFile(o.stateFile, stateJson(s, framesDrawn, compileError, viewportSettled), lastState);
                 } catch (const std::exception& e) {
                     std::fprintf(stderr, "fraktal: %s\n", e.what());
                 }

@@ -8,7 +8,7 @@ namespace fraktal::editor {
 
 using nlohmann::json;
 
-std::string stateJson(const EditorState& s, int frame, const std::string& compileError) {
+std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled) {
     const Camera& c = s.doc.preset.camera;
     json j;
     j["frame"] = frame;
@@ -27,6 +27,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["viewport"] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW, s.layout.viewportH};
     j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
     j["compileError"] = compileError;
+    j["viewportSettled"] = viewportSettled;
     j["document"] = json::parse(fingerprint(s.doc));
     return j.dump(1);
 }

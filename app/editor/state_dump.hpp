@@ -10,7 +10,8 @@
 
 namespace fraktal::editor {
 
-std::string stateJson(const EditorState& s, int frame, const std::string& compileError);
+// `viewportSettled`: the viewport's image is converged at full resolution (nothing left to refine).
+std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled);
 
 // Writes `text` to `file` atomically when it differs from `last` (then updates `last`).
 void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last);
