@@ -71,6 +71,24 @@ TEST(LightingPreset, RoundTripsEveryField) {
     EXPECT_EQ(serializePreset(again), serializePreset(p));
 }
 
+TEST(LightingPreset, FastModeSaysWhatItLeavesOut) {
+    Lighting lighting;
+    EXPECT_EQ(lightingIgnoredByFastMode(lighting), "");
+    lighting.lights.resize(2);
+    lighting.lights[1].enabled = false;
+    EXPECT_NE(lightingIgnoredByFastMode(lighting).find("the preset's 1 light applies only with --mode path"),
+              std::string::npos)
+        << lightingIgnoredByFastMode(lighting);
+    lighting.lights[1].enabled = true;
+    lighting.environment.map = "env/sky.exr";
+    lighting.lens.apertureRadius = 0.01;
+    EXPECT_NE(
+        lightingIgnoredByFastMode(lighting).find(
+            "the preset's 2 lights, the environment map and the lens's depth of field apply only with --mode path"),
+        std::string::npos)
+        << lightingIgnoredByFastMode(lighting);
+}
+
 TEST(LightingPreset, FStopGivesTheThinLensRadius) {
     const Preset p = parsePreset(replaced(kLitPreset, "\"aperture\": 0.05", "\"fStop\": 2"), "f.json");
     // f = (0.024 / 2) / tan(20 deg); radius = f / (2 N).

@@ -209,6 +209,9 @@ int runRender(const RenderOptions& o) {
     if (!o.quiet)
         std::fprintf(stderr, "rendering %s: %dx%d, %d spp, %s, OCIO config %s\n", o.input.c_str(), r.width, r.height,
                      r.spp, context->renderer().c_str(), color.configPath().c_str());
+    if (o.mode != "path" && !o.quiet)
+        if (const std::string note = lightingIgnoredByFastMode(job.preset.lighting); !note.empty())
+            std::fprintf(stderr, "note: %s\n", note.c_str());
     try {
         if (o.mode == "path")
             renderPathJob(PathJob{job, o.input, o.denoise}, color);

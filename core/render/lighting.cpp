@@ -1,5 +1,6 @@
 #include "core/render/lighting.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/preset.hpp"
@@ -172,6 +173,21 @@ void writeLighting(const Lighting& l, json& preset) {
     if (l.pathTrace.specular != d.specular) p["specular"] = l.pathTrace.specular;
     if (l.pathTrace.emission != d.emission) p["emission"] = l.pathTrace.emission;
     if (!p.empty()) preset["pathTrace"] = p;
+}
+
+std::string lightingIgnoredByFastMode(const Lighting& lighting) {
+    std::vector<std::string> parts;
+    const size_t on =
+        size_t(std::count_if(lighting.lights.begin(), lighting.lights.end(), [](const Light& l) { return l.enabled; }));
+    if (on > 0) parts.push_back(std::to_string(on) + (on == 1 ? " light" : " lights"));
+    if (lighting.environment.active()) parts.push_back("the environment map");
+    if (lighting.lens.enabled()) parts.push_back("the lens's depth of field");
+    if (parts.empty()) return "";
+    std::string list = parts[0];
+    for (size_t i = 1; i < parts.size(); ++i) list += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    return "the preset's " + list + (parts.size() == 1 && on <= 1 ? " applies" : " apply") +
+           " only with --mode path; the fast renderer lights with the shading's key and fill lights through a "
+           "pinhole camera";
 }
 
 }  // namespace fraktal

@@ -78,6 +78,11 @@ struct Lighting {
     bool operator==(const Lighting&) const = default;
 };
 
+// What the fast renderer leaves out of `lighting` (it lights with the shading's key and fill and
+// has a pinhole camera): a sentence for the user, empty when nothing is left out. A still that
+// looks different from the path-traced one must say why, not stay silent.
+std::string lightingIgnoredByFastMode(const Lighting& lighting);
+
 // The sensor height a thin lens's f-stop is measured against: full frame, in world units taken
 // as metres (radius = focal length / (2 N), focal length from the field of view and this height).
 inline constexpr double kSensorHeight = 0.024;
