@@ -39,6 +39,8 @@ void drawCameraTab(EditorState& s) {
     ImGui::DragScalarN("Position", ImGuiDataType_Double, &cam.position.x, 3, 0.01f, nullptr, nullptr, "%.3f");
     keyMarker(s, "camera.target", keyValue(cam.target));
     ImGui::DragScalarN("Target", ImGuiDataType_Double, &cam.target.x, 3, 0.01f, nullptr, nullptr, "%.3f");
+    keyMarker(s, kCameraOrientationTarget, cameraOrientation(cam));
+    ImGui::TextDisabled("Orientation (key it instead of the target: never flips)");
     if (ImGui::Button("Reset view")) cam = defaultViewFor(f, cam);
     ImGui::SameLine();
     ImGui::TextDisabled("(Home)");

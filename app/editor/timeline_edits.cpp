@@ -75,9 +75,21 @@ bool differsFromTrack(const Animation& a, const Track& track, double frame, cons
     const bool camera = track.target.rfind("camera.", 0) == 0;
     const std::vector<double> animated = evaluateTrack(track, camera ? cameraTime(a, frame) : frame);
     if (animated.size() != value.size()) return true;
+    // q and -q are the same orientation.
+    double sign = 1.0;
+    if (track.target == kCameraOrientationTarget) {
+        double d = 0.0;
+        for (size_t c = 0; c < value.size(); ++c) d += animated[c] * value[c];
+        if (d < 0.0) sign = -1.0;
+    }
     for (size_t c = 0; c < value.size(); ++c)
-        if (std::abs(animated[c] - value[c]) > 1e-9 * std::max(1.0, std::abs(animated[c]))) return true;
+        if (std::abs(animated[c] - sign * value[c]) > 1e-9 * std::max(1.0, std::abs(animated[c]))) return true;
     return false;
+}
+
+std::vector<double> cameraOrientation(const Camera& c) {
+    const glm::dquat q = orientationOf(c.target - c.position, c.up);
+    return {q.w, q.x, q.y, q.z};
 }
 
 bool addKey(Animation& a, const std::string& target, double frame, std::vector<double> value) {

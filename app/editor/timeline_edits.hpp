@@ -66,6 +66,8 @@ const Key* keyAt(const Track& track, double frame);
 // Whether `value` differs from what `track` of `a` gives at `frame` (camera tracks at the camera's
 // time, cameraTime): a keyed value the user edited since the frame was shown.
 bool differsFromTrack(const Animation& a, const Track& track, double frame, const std::vector<double>& value);
+// The camera's orientation as an orientation track keys it (w, x, y, z).
+std::vector<double> cameraOrientation(const Camera& c);
 
 // Key edits; each returns whether the animation changed. A new track interpolates smoothly.
 // Adding where a key is replaces its value.
