@@ -40,7 +40,7 @@ void drawCameraTab(EditorState& s) {
     keyMarker(s, "camera.target", keyValue(cam.target));
     ImGui::DragScalarN("Target", ImGuiDataType_Double, &cam.target.x, 3, 0.01f, nullptr, nullptr, "%.3f");
     keyMarker(s, kCameraOrientationTarget, cameraOrientation(cam));
-    ImGui::TextDisabled("Orientation (key it instead of the target: never flips)");
+    ImGui::TextDisabled("Orientation (a key never flips)");
     if (ImGui::Button("Reset view")) cam = defaultViewFor(f, cam);
     ImGui::SameLine();
     ImGui::TextDisabled("(Home)");
