@@ -7,6 +7,7 @@
 #include "app/editor/fly_speed.hpp"
 #include "app/editor/panels.hpp"
 #include "app/editor/param_widgets.hpp"
+#include "app/editor/timeline_panel.hpp"
 
 namespace fraktal::editor {
 
@@ -30,10 +31,16 @@ void drawCameraTab(EditorState& s) {
     ImGui::PopTextWrapPos();
 
     const double fovLo = 5.0, fovHi = 120.0;
+    const auto keyValue = [](const vec3& v) { return std::vector<double>{v.x, v.y, v.z}; };
+    keyMarker(s, "camera.fovY", {cam.fovY});
     ImGui::DragScalar("Field of view", ImGuiDataType_Double, &cam.fovY, 0.2f, &fovLo, &fovHi, "%.1f deg",
                       ImGuiSliderFlags_AlwaysClamp);
+    keyMarker(s, "camera.position", keyValue(cam.position));
     ImGui::DragScalarN("Position", ImGuiDataType_Double, &cam.position.x, 3, 0.01f, nullptr, nullptr, "%.3f");
+    keyMarker(s, "camera.target", keyValue(cam.target));
     ImGui::DragScalarN("Target", ImGuiDataType_Double, &cam.target.x, 3, 0.01f, nullptr, nullptr, "%.3f");
+    keyMarker(s, kCameraOrientationTarget, cameraOrientation(cam));
+    ImGui::TextDisabled("Orientation (a key never flips)");
     if (ImGui::Button("Reset view")) cam = defaultViewFor(f, cam);
     ImGui::SameLine();
     ImGui::TextDisabled("(Home)");

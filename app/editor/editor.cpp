@@ -26,6 +26,7 @@
 #include "app/editor/screenshot.hpp"
 #include "app/editor/state_dump.hpp"
 #include "app/editor/thumbnails.hpp"
+#include "app/editor/timeline_panel.hpp"
 
 namespace fraktal::editor {
 
@@ -307,6 +308,7 @@ int runEditor(const EditorOptions& o) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
+            handleTimelineShortcuts(s);
             handleShortcuts(s);
             drawMenuBar(s);
             if (s.doc.plane)
@@ -315,7 +317,9 @@ int runEditor(const EditorOptions& o) {
                 drawFormulaPanel(s, *viewport);
             drawSidebar(s);
             layoutViewport(s, io.DisplaySize.x, io.DisplaySize.y);
+            drawTimelinePanel(s);
             const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);
+            drawCameraPathOverlay(s);
             drawStatusLine(s);
             drawExportDialog(s);
             drawCustomBlockEditor(s, compileError);

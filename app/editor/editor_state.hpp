@@ -13,6 +13,7 @@
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
 #include "app/editor/pointer_input.hpp"
+#include "app/editor/timeline_edits.hpp"
 #include "app/editor/undo_history.hpp"
 #include "core/color/color_pipeline.hpp"
 
@@ -116,6 +117,7 @@ struct EditorState {
     ViewportDrag drag;                           // the viewport's drag, from those events
     FlyKeys flyKeys;                             // fly keys, from key events
     std::vector<KeyPress> keyPresses;            // key presses since the last frame (shortcuts)
+    TimelineState timeline;                      // the animation's current frame, playback, selection
 };
 
 bool isDirty(const EditorState& s);

@@ -10,6 +10,7 @@
 #include "app/editor/formula_fit.hpp"
 #include "app/editor/node_list_widgets.hpp"
 #include "app/editor/panels.hpp"
+#include "app/editor/timeline_panel.hpp"
 
 namespace fraktal::editor {
 
@@ -143,7 +144,14 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     sectionHeader("Parameters");
     const bool estimatorSelected = s.selectedNode == int(f.nodes.size());
     const Node& selected = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
-    nodeParameters(estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)], estimatorSelected);
+    Node& shown = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
+    nodeParameters(shown, estimatorSelected, [&](size_t k) {
+        const std::string name(shown.block->params[k].name);
+        const ParamValue& v = shown.values[k];
+        keyMarker(s, estimatorSelected ? estimatorParamTarget(name) : paramTarget(s.selectedNode, name),
+                  shown.block->params[k].type == ParamType::Float ? std::vector<double>{v.x}
+                                                                  : std::vector<double>{v.x, v.y, v.z});
+    });
     if (selected.block->custom) {
         if (const CustomBlock* b = findCustomBlock(f, selected.block->id); b && ImGui::Button("Edit GLSL...")) {
             s.customBlockEditor.definition = b->definition();

@@ -47,6 +47,7 @@ void drawMenuBar(EditorState& s) {
         if (ImGui::MenuItem("Fly camera", "V", &fly, !s.doc.plane))
             s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
         if (ImGui::MenuItem("Frame object", "F", false, !s.doc.plane)) frameObject(s);
+        ImGui::MenuItem("Camera path", nullptr, &s.timeline.showCameraPath, !s.doc.plane);
         if (ImGui::MenuItem("Reset view", "Home")) {
             if (s.doc.plane)
                 resetPlaneView(s);

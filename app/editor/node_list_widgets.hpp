@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -73,9 +74,10 @@ bool nodeRow(NodeT& n, int i, bool selected, const std::string* error, const cha
     return clicked;
 }
 
-// The selected node's block, help, period and phase (not for estimators) and parameters.
+// The selected node's block, help, period and phase (not for estimators) and parameters;
+// `beforeParam(k)` draws what goes before parameter k's widget on its line (a key marker).
 template <class NodeT>
-void nodeParameters(NodeT& n, bool estimator) {
+void nodeParameters(NodeT& n, bool estimator, const std::function<void(size_t)>& beforeParam = {}) {
     if (!n.block) return;
     ImGui::Text("%s", std::string(n.block->label).c_str());
     ImGui::SameLine();
@@ -93,7 +95,10 @@ void nodeParameters(NodeT& n, bool estimator) {
         n.phase = std::clamp(n.phase, 0, n.period - 1);
     }
     if (n.block->params.empty()) ImGui::TextDisabled("This block has no parameters.");
-    for (size_t k = 0; k < n.block->params.size(); ++k) paramWidget(n.block->params[k], n.values[k]);
+    for (size_t k = 0; k < n.block->params.size(); ++k) {
+        if (beforeParam) beforeParam(k);
+        paramWidget(n.block->params[k], n.values[k]);
+    }
 }
 
 // The "Add block" menu's items for one category's blocks; returns the one picked, or nullptr.

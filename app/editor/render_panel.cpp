@@ -10,6 +10,7 @@
 #include "app/editor/panels.hpp"
 #include "app/editor/param_widgets.hpp"
 #include "app/editor/setting_widgets.hpp"
+#include "app/editor/timeline_panel.hpp"
 
 namespace fraktal::editor {
 
@@ -112,6 +113,7 @@ void drawColourSection(EditorState& s, RenderSettings& r) {
     }
     nameCombo("View", r.view, viewsOf(config, r.display));
     helpMarker("The OCIO view: the viewport and the export's PNG go through the same display/view transform.");
+    keyMarker(s, "colorManagement.exposure", {r.exposure});
     dragDouble("Exposure", r.exposure, -20.0, 20.0, 0.02f, "%+.2f EV",
                "Applied at display only, before the view transform: the rendered data stays linear.");
     ImGui::PushTextWrapPos(0.0f);

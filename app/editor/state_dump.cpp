@@ -28,6 +28,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
     j["compileError"] = compileError;
     j["viewportSettled"] = viewportSettled;
+    j["timeline"] = timelineJson(s.timeline);
     j["document"] = json::parse(fingerprint(s.doc));
     return j.dump(1);
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "app/editor/timeline_edits.hpp"
+
 namespace fraktal::editor {
 
 using nlohmann::json;
@@ -58,6 +60,7 @@ std::string nodeListChange(const std::vector<Node>& before, const std::vector<No
 std::string undoKey(const Document& d) { return fingerprint(withoutView(d)); }
 
 std::string describeChange(const Document& before, const Document& after) {
+    if (std::string keys = describeAnimationChange(before.preset, after.preset); !keys.empty()) return keys;
     if (!before.plane && !after.plane)
         if (std::string nodes = nodeListChange(before.preset.formula.nodes, after.preset.formula.nodes); !nodes.empty())
             return nodes;
@@ -110,6 +113,11 @@ bool UndoHistory::commit(const Document& d) {
     present_ = d;
     presentKey_ = std::move(key);
     return true;
+}
+
+void UndoHistory::replacePresent(const Document& d) {
+    present_ = d;
+    presentKey_ = undoKey(d);
 }
 
 bool UndoHistory::undo(Document& d) {

@@ -23,6 +23,10 @@ class UndoHistory {
     // drops the redo branch. Returns whether a state was recorded.
     bool commit(const Document& d);
 
+    // Replaces the present state without recording a step: the same state shown at another
+    // animation frame (the animation's values written into it), which is no edit.
+    void replacePresent(const Document& d);
+
     bool canUndo() const { return !past_.empty(); }
     bool canRedo() const { return !future_.empty(); }
     // Replace `d` with the previous / next state, keeping d's view. `d` should equal the present

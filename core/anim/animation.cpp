@@ -270,7 +270,9 @@ Animation parseAnimation(const ReadContext& context, const json& j, const Preset
                 try {
                     const json::json_pointer pointer(pointerFromPath(track.target));
                     const json::json_pointer parent = pointer.parent_pointer();
-                    if (!probe.contains(parent) &&
+                    // A section or a block's "params" left out for being at its defaults is no missing field.
+                    const bool omittedSection = !parent.empty() && parent.parent_pointer().empty();
+                    if (!probe.contains(parent) && !omittedSection &&
                         !(!parent.empty() && parent.back() == "params" && probe.contains(parent.parent_pointer())))
                         throw PresetError(context.file, track.target, "no such field");
                     setField(probe, track.target, key.value);

@@ -1,0 +1,166 @@
+// The editor's timeline without the UI: key edits on the document's animation and their undo
+// steps, playback from the wall clock (slow frames skip animation frames), and frames evaluated
+// into the document without touching the formula's blocks or the undo history.
+#include "app/editor/timeline_edits.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app/editor/undo_history.hpp"
+
+namespace fraktal::editor {
+namespace {
+
+namespace fs = std::filesystem;
+
+Document morph() {
+    Document d;
+    d.preset = loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "mandelbulb_power_morph.json");
+    return d;
+}
+
+const std::string kPower = "formula.nodes[0].params.power";
+
+TEST(TimelineEdits, AddMoveDeleteKeysKeepTracksSortedAndValid) {
+    Animation a;
+    a.lastFrame = 100;
+    EXPECT_TRUE(addKey(a, kPower, 50, {6.0}));
+    EXPECT_TRUE(addKey(a, kPower, 10, {4.0}));
+    EXPECT_TRUE(addKey(a, kPower, 90, {9.0}));
+    ASSERT_EQ(a.tracks.size(), 1u);
+    const Track& t = a.tracks[0];
+    ASSERT_EQ(t.keys.size(), 3u);
+    EXPECT_EQ(t.keys[0].frame, 10);
+    EXPECT_EQ(t.keys[1].frame, 50);
+    EXPECT_EQ(t.interpolation, Interpolation::Smooth);
+    // The same frame again replaces the value; the same value changes nothing.
+    EXPECT_TRUE(addKey(a, kPower, 50, {7.0}));
+    EXPECT_FALSE(addKey(a, kPower, 50, {7.0}));
+    EXPECT_EQ(t.keys.size(), 3u);
+    EXPECT_EQ(t.keys[1].value[0], 7.0);
+    // Moving past another key re-sorts; onto another key or from nowhere is refused.
+    EXPECT_FALSE(moveKey(a, {kPower, 10}, 90));
+    EXPECT_FALSE(moveKey(a, {kPower, 11}, 20));
+    EXPECT_TRUE(moveKey(a, {kPower, 10}, 95));
+    EXPECT_EQ(t.keys.back().frame, 95);
+    EXPECT_EQ(t.keys.back().value[0], 4.0);
+    EXPECT_EQ(evaluateTrack(t, 95)[0], 4.0);
+    EXPECT_TRUE(setInterpolation(a, kPower, Interpolation::Linear));
+    EXPECT_FALSE(setInterpolation(a, kPower, Interpolation::Linear));
+    EXPECT_FALSE(setInterpolation(a, "camera.fovY", Interpolation::Linear));
+    EXPECT_TRUE(deleteKey(a, {kPower, 50}));
+    EXPECT_FALSE(deleteKey(a, {kPower, 50}));
+    EXPECT_TRUE(deleteKey(a, {kPower, 90}));
+    EXPECT_TRUE(deleteKey(a, {kPower, 95}));
+    EXPECT_TRUE(a.tracks.empty()) << "a track without keys is removed";
+}
+
+TEST(TimelineEdits, KeyEditsRoundTripThroughThePresetFile) {
+    Document d = morph();
+    ASSERT_TRUE(addKey(d.preset.animation, kPower, 30, {10.5}));
+    ASSERT_TRUE(addKey(d.preset.animation, "camera.fovY", 200, {30.0}));
+    ASSERT_TRUE(setInterpolation(d.preset.animation, "camera.fovY", Interpolation::Constant));
+    // A setting of a section the file leaves out (all at defaults) can be keyed too.
+    ASSERT_TRUE(addKey(d.preset.animation, "shading.fogDensity", 0, {ShadingSettings{}.fogDensity}));
+    ASSERT_TRUE(addKey(d.preset.animation, "shading.fogDensity", 100, {0.5}));
+    ASSERT_EQ(presetToJson(d.preset).count("shading"), 0u);
+    const Preset back = parsePreset(documentFileText(d), "saved");
+    EXPECT_EQ(back.animation, d.preset.animation);
+    EXPECT_EQ(evaluateTrack(*findTrack(back.animation, kPower), 30)[0], 10.5);
+}
+
+TEST(TimelineEdits, EveryKeyEditIsOneUndoStepWithItsLabel) {
+    Document d = morph();
+    UndoHistory h;
+    h.reset(d);
+    addKey(d.preset.animation, kPower, 24, {5.0});
+    EXPECT_TRUE(h.commit(d));
+    EXPECT_EQ(h.undoLabel(), "Add key: Mandelbulb power @ 24");
+    moveKey(d.preset.animation, {kPower, 24}, 30);
+    EXPECT_TRUE(h.commit(d));
+    EXPECT_EQ(h.undoLabel(), "Move key: Mandelbulb power @ 24 -> 30");
+    deleteKey(d.preset.animation, {kPower, 120});
+    EXPECT_TRUE(h.commit(d));
+    EXPECT_EQ(h.undoLabel(), "Delete key: Mandelbulb power @ 120");
+    setInterpolation(d.preset.animation, "camera.position", Interpolation::Linear);
+    EXPECT_TRUE(h.commit(d));
+    EXPECT_EQ(h.undoLabel(), "Interpolation: camera position linear");
+    addKey(d.preset.animation, "camera.fovY", 10, {50.0});
+    EXPECT_TRUE(h.commit(d));
+    EXPECT_EQ(h.undoLabel(), "Add key: camera fovY @ 10");
+    const Animation last = d.preset.animation;
+    ASSERT_TRUE(h.undo(d));
+    EXPECT_FALSE(findTrack(d.preset.animation, "camera.fovY"));
+    EXPECT_EQ(h.redoLabel(), "Add key: camera fovY @ 10");
+    ASSERT_TRUE(h.undo(d));
+    ASSERT_TRUE(h.undo(d));
+    ASSERT_TRUE(h.undo(d));
+    ASSERT_TRUE(h.undo(d));
+    EXPECT_EQ(d.preset.animation, morph().preset.animation);
+    for (int i = 0; i < 5; ++i) ASSERT_TRUE(h.redo(d));
+    EXPECT_EQ(d.preset.animation, last);
+}
+
+TEST(TimelineEdits, AKeyedValueShowsAsChangedOnlyWhenItDiffers) {
+    Document d = morph();
+    const Animation& a = d.preset.animation;
+    applyAnimationFrame(d.preset, 60);
+    const Track& power = *findTrack(a, kPower);
+    EXPECT_FALSE(differsFromTrack(a, power, 60, {d.preset.formula.nodes[0].values[0].x}));
+    EXPECT_TRUE(differsFromTrack(a, power, 60, {d.preset.formula.nodes[0].values[0].x + 0.01}));
+    EXPECT_TRUE(differsFromTrack(a, power, 61, {d.preset.formula.nodes[0].values[0].x}));
+    // An orientation keyed from the camera reads back the same, whichever sign the quaternion has.
+    Animation o;
+    o.lastFrame = 10;
+    addKey(o, kCameraOrientationTarget, 0, cameraOrientation(d.preset.camera));
+    std::vector<double> flipped = cameraOrientation(d.preset.camera);
+    for (double& c : flipped) c = -c;
+    EXPECT_FALSE(differsFromTrack(o, o.tracks[0], 5, flipped));
+    Camera turned = d.preset.camera;
+    turned.target += vec3(0.3, 0.0, 0.0);
+    EXPECT_TRUE(differsFromTrack(o, o.tracks[0], 5, cameraOrientation(turned)));
+}
+
+TEST(TimelineEdits, PlaybackFollowsTheWallClockAndSkipsFramesWhenSlow) {
+    Animation a;
+    a.firstFrame = 10;
+    a.lastFrame = 109;  // 100 frames
+    a.fps = 24;
+    EXPECT_EQ(playbackFrame(a, 10, 0.0, true).frame, 10);
+    EXPECT_EQ(playbackFrame(a, 10, 1.0, true).frame, 34);
+    EXPECT_EQ(playbackFrame(a, 10, 1.0 / 24 - 1e-4, true).frame, 10);
+    // Frames drawn at 0.1 s then 0.6 s (a 500 ms frame): the animation jumps 12 frames, it does
+    // not slow down.
+    const int before = playbackFrame(a, 20, 0.1, true).frame;
+    const int after = playbackFrame(a, 20, 0.6, true).frame;
+    EXPECT_EQ(before, 22);
+    EXPECT_EQ(after - before, 12);
+    // Past the end: wraps with loop, holds the last frame and ends without.
+    EXPECT_EQ(playbackFrame(a, 100, 1.0, true).frame, 10 + (124 - 10) % 100);
+    const PlaybackStep end = playbackFrame(a, 100, 1.0, false);
+    EXPECT_EQ(end.frame, 109);
+    EXPECT_TRUE(end.ended);
+    EXPECT_FALSE(playbackFrame(a, 100, 0.3, false).ended);
+}
+
+TEST(TimelineEdits, AFrameIsEvaluatedIntoTheDocumentWithoutAnUndoStep) {
+    Document d = morph();
+    const BlockDesc* block = d.preset.formula.nodes[0].block;
+    UndoHistory h;
+    h.reset(d);
+    applyAnimationFrame(d.preset, 60);
+    const Preset expected = presetAtFrame(morph().preset, 60);
+    EXPECT_EQ(d.preset.formula.nodes[0].values, expected.formula.nodes[0].values);
+    EXPECT_EQ(d.preset.camera.position, expected.camera.position);
+    EXPECT_GT(d.preset.formula.nodes[0].values[0].x, 3.0);
+    EXPECT_LT(d.preset.formula.nodes[0].values[0].x, 8.0);
+    EXPECT_EQ(d.preset.formula.nodes[0].block, block) << "the blocks stay: no recompile";
+    EXPECT_EQ(d.preset.animation, morph().preset.animation);
+    h.replacePresent(d);
+    EXPECT_FALSE(h.commit(d));
+    EXPECT_EQ(h.undoDepth(), 0u);
+}
+
+}  // namespace
+}  // namespace fraktal::editor
