@@ -1,0 +1,90 @@
+# Helpers for the tests that drive the real editor under Xvfb with xdotool (sourced, not run):
+# a private HOME, the editor in the background writing its state file, waits on its frames,
+# pointer moves and drags in window coordinates. Expects $fraktal set; sets $home, $state, $pid,
+# $window.
+# A private HOME and config folder: the editor's ini and recent list must not leak in or out.
+home=$(mktemp -d)
+export XDG_CONFIG_HOME="$home/config"
+state="$home/state.json"
+pid=
+cleanup() {
+    [ -z "$pid" ] || kill "$pid" 2>/dev/null || true
+    rm -rf "$home"
+}
+trap cleanup EXIT
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+q() { jq -r "$1" "$state"; }
+frame() { if [ -f "$state" ]; then q .frame; else echo 0; fi; }
+# Waits until the editor has drawn N more frames (events are handled at the start of a frame).
+wait_frames() {
+    target=$(($(frame) + $1))
+    tries=0
+    while [ "$(frame)" -lt "$target" ]; do
+        tries=$((tries + 1))
+        [ $tries -lt 600 ] || { echo "the editor stopped drawing frames"; exit 1; }
+        sleep 0.1
+    done
+}
+# Waits until the viewport's image has converged at full resolution (at most 600 frames): a
+# structure edit compiles in the background and the image then refines over many frames.
+wait_settled() {
+    tries=0
+    while [ "$(q .viewportSettled)" != true ] && [ $tries -lt 600 ]; do
+        wait_frames 1
+        tries=$((tries + 1))
+    done
+}
+# start PRESET [OPTIONS...]: the editor in the background, after its first frames.
+start() {
+    rm -f "$state"
+    preset=$1
+    shift
+    HOME="$home" "$fraktal" edit "$preset" --state-file "$state" "$@" &
+    pid=$!
+    wait_frames 3
+    window=$(xdotool search --sync --onlyvisible --name "fraktal" | head -1)
+}
+stop() {
+    kill "$pid" 2>/dev/null || true
+    wait "$pid" 2>/dev/null || true
+    pid=
+}
+camera() { q '.camera.position | map(tostring) | join(" ")'; }
+# Move the pointer to window coordinates.
+to() { xdotool mousemove --window "$window" "$1" "$2"; }
+# drag X Y DX DY STEPS: left-drag from (X, Y) by (DX, DY) in STEPS moves.
+drag() {
+    to "$1" "$2"
+    xdotool mousedown 1
+    i=1
+    while [ $i -le "$5" ]; do
+        to $(($1 + $3 * i / $5)) $(($2 + $4 * i / $5))
+        i=$((i + 1))
+    done
+    xdotool mouseup 1
+}
+# The same, a frame per step: ImGui 1.86 polls the cursor once a frame, so its widgets need to
+# see the button down and the cursor move in separate frames, as with a person's hand.
+drag_frames() {
+    to "$1" "$2"
+    wait_frames 1
+    xdotool mousedown 1
+    wait_frames 1
+    i=1
+    while [ $i -le "$5" ]; do
+        to $(($1 + $3 * i / $5)) $(($2 + $4 * i / $5))
+        wait_frames 1
+        i=$((i + 1))
+    done
+    xdotool mouseup 1
+}
+# Relative difference of two camera positions (0: the same place).
+moved() { awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, r, " "); d = 0; n = 0;
+    for (i = 1; i <= 3; i++) { d += (p[i] - r[i]) ^ 2; n += r[i] ^ 2 } print sqrt(d / n) }'; }
+check() { awk "BEGIN { exit !($1) }"; }
+
+# Viewport centre and panel points at the default 1280x800 layout (from the state file).
+viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1] + .viewport[3] / 2 | floor)"'; }
+
