@@ -19,6 +19,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["eyeDistance"] = f.cpuEvaluable() ? json(distanceEstimate(f, c.position)) : json();
     j["cameraGesture"] = s.cameraGesture;
     j["shortcutHelp"] = s.panels.help;
+    j["blockEditorOpen"] = s.customBlockEditor.open;
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;
     j["undoDepth"] = s.history.undoDepth();
     j["redoDepth"] = s.history.redoDepth();
