@@ -174,6 +174,19 @@ echo "$error" | grep -q 'node 2 "Broken fold" (broken_fold), GLSL line 2' ||
     fail "the compile error does not name node 2 \"Broken fold\" as the list shows it: $error"
 import -window root "$out/story_compile_error.png"
 echo "compile error: $(echo "$error" | grep -m1 'node 2')"
+# The banner hides no control: the block's GLSL editor (select node 2, scroll the Formula panel
+# down, "Edit GLSL...") dragged so that its close button lies under the banner (bottom middle of the
+# viewport) still closes on a click there.
+to 100 262; wait_frames 1; xdotool mousedown 1; wait_frames 1; xdotool mouseup 1; wait_frames 2
+to 150 400; xdotool click --repeat 10 --delay 30 5; wait_frames 3
+to 58 500; wait_frames 1; xdotool mousedown 1; wait_frames 1; xdotool mouseup 1; wait_frames 4
+[ "$(q .blockEditorOpen)" = true ] || fail "Edit GLSL... did not open the block editor"
+drag_frames 300 70 300 640 6
+wait_frames 3
+import -window root "$out/story_banner_over_close.png"
+to 966 710; wait_frames 1; xdotool mousedown 1; wait_frames 1; xdotool mouseup 1; wait_frames 3
+[ -n "$(q .compileError)" ] || fail "the compile error went away during the test"
+[ "$(q .blockEditorOpen)" = false ] || fail "the block editor's close button under the compile-error banner did not close it"
 stop
 
 [ $failures -eq 0 ] && echo "editor_user_stories: all OK" || { echo "editor_user_stories: $failures failure(s)"; exit 1; }
