@@ -1,5 +1,7 @@
 // The file browser's listing (app/editor/file_browser.hpp): folders first, by name; the filter;
 // EXRs with and without a fraktal preset in their header; recent folders.
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
@@ -17,11 +19,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A 1x1 EXR with no channels written, and a string attribute when `attribute` is set.
+// A 1x1 one-channel EXR, with a string attribute when `attribute` is set.
 void writeExr(const fs::path& file, const char* attribute, const std::string& text) {
     Imf::Header h(1, 1);
+    h.channels().insert("Y", Imf::Channel(Imf::FLOAT));
     if (attribute) h.insert(attribute, Imf::StringAttribute(text));
     Imf::OutputFile out(file.c_str(), h);
+    float pixel = 0.0f;
+    Imf::FrameBuffer fb;
+    fb.insert("Y", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&pixel), sizeof(float), sizeof(float)));
+    out.setFrameBuffer(fb);
+    out.writePixels(1);
 }
 
 std::vector<std::string> names(const std::vector<BrowserEntry>& entries) {
