@@ -1,11 +1,11 @@
 #!/bin/sh
 # The export frame guide in the real editor under Xvfb (Mesa llvmpipe): for an export at 2:1 and
-# one at 1:1 (both wider than the default viewport, so the viewport widens its view and the guide
-# is a band), the settled viewport inside the guide is compared with `fraktal render` (what the
+# one at 1:1 (wider than the default 920x779 viewport, so the viewport widens its view and the
+# guide is a band; and narrower, the guide a pillar box), the settled viewport inside the guide is compared with `fraktal render` (what the
 # export dialog runs) of the same preset at the export's aspect and the guide's size in window
 # pixels. The top of the viewport (the stats overlay) is left out. Each must match (PSNR), and
-# match far better than the other aspect's render squeezed to the same size (measured: 27.4 and
-# 23.8 dB against 12.1 and 11.8).
+# match far better than the other aspect's render squeezed to the same size (measured: 26.6 and
+# 23.5 dB against 11.8 and 11.3).
 # Usage: editor_export_frame_xvfb_test.sh FRAKTAL PRESET OUT_DIR
 set -eu
 fraktal=$1

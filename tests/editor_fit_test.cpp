@@ -74,6 +74,13 @@ TEST(EditorFormulaFit, EditLeavesAGoodCameraAndFramesABadOne) {
     atOrigin.position = vec3(0.0, 0.0, 0.01);
     fitFormulaAfterEdit(f, atOrigin);
     EXPECT_GT(distanceEstimate(f, atOrigin.position), 0.01 * f.boundRadius);
+    // Far away (the object a speck in view): framed, from the same direction.
+    Camera far;
+    far.position = vec3(16.0, 13.0, 22.0);
+    const vec3 direction = normalize(far.position - far.target);
+    fitFormulaAfterEdit(f, far);
+    EXPECT_LT(length(far.position), 6.0);
+    EXPECT_GT(dot(normalize(far.position - far.target), direction), 0.99);
 }
 
 }  // namespace

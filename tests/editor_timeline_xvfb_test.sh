@@ -15,7 +15,7 @@ fraktal=$1
 presets=$2
 out=$3
 mkdir -p "$out"
-. "$(dirname "$0")/editor_xdotool.sh"
+. "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 power_target='formula.nodes[0].params.power'
 power() { q '.document.formula.nodes[0].params.power // 8'; }

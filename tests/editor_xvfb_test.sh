@@ -1,8 +1,8 @@
 #!/bin/sh
 # Starts the real editor under Xvfb (Mesa llvmpipe) for every shipped preset (3D and 2D), draws a few
 # frames, saves a screenshot of the whole window and checks it: the viewport (the middle of the
-# window) is not blank, and the panels are drawn (the left and right columns hold the panel
-# background with text on it). The screenshots stay in OUT_DIR (a CI artifact).
+# window) is not blank, and the panels are drawn (the side column's Formula and Scene panels hold
+# the panel background with text on it). The screenshots stay in OUT_DIR (a CI artifact).
 # Usage: editor_xvfb_test.sh FRAKTAL PRESET_DIR OUT_DIR
 set -eu
 fraktal=$1
@@ -31,16 +31,17 @@ for preset in "$presets"/*.json "$presets"/2d/*.json; do
     fi
     size=$(identify -format "%wx%h" "$shot")
     [ "$size" = "1280x800" ] || { echo "FAIL $name: screenshot is $size, not 1280x800"; failures=$((failures + 1)); continue; }
-    # The viewport lies between the panels (x 360..950 at the default layout, below the menu).
+    # The viewport lies right of the side column (x 360..1280 at the default layout, below the menu).
     set -- $(stats "$shot" 400x600+450+120)
     viewport_sd=$1
-    # Panels: dark background (mean < 0.25) with some text (bright pixels) in both columns.
-    set -- $(stats "$shot" 300x700+10+40)
+    # Panels: dark background (mean < 0.25) with some text (bright pixels) in both: Formula above
+    # (y 21..520 at the default layout), Scene below.
+    set -- $(stats "$shot" 300x440+10+40)
     left_mean=$2
-    set -- $(stats "$shot" 280x700+990+40)
+    set -- $(stats "$shot" 300x230+10+560)
     right_mean=$2
-    left_text=$(bright "$shot" 300x700+10+40)
-    right_text=$(bright "$shot" 280x700+990+40)
+    left_text=$(bright "$shot" 300x440+10+40)
+    right_text=$(bright "$shot" 300x230+10+560)
     echo "$name: viewport sd $viewport_sd; left panel mean $left_mean text $left_text; right panel mean $right_mean text $right_text"
     ok=1
     check "$viewport_sd > 0.04" || { echo "FAIL $name: the viewport is blank (sd $viewport_sd)"; ok=0; }

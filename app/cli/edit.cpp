@@ -18,11 +18,12 @@ struct EditOptions {
     int frames = 0;
     std::string screenshot;
     std::string tab;
-    int width = 1280, height = 800;
+    int width = 0, height = 0;  // 0: the editor's remembered size
     std::string stateFile;
     int slowFrameMs = 0;
     std::string frameLog;
     std::string exportSize;
+    std::string dropReplay;
 };
 
 int runEdit(const EditOptions& o) {
@@ -37,6 +38,7 @@ int runEdit(const EditOptions& o) {
     e.stateFile = o.stateFile;
     e.slowFrameMs = o.slowFrameMs;
     e.frameLog = o.frameLog;
+    e.dropReplay = o.dropReplay;
     if (!o.exportSize.empty() && std::sscanf(o.exportSize.c_str(), "%dx%d", &e.exportWidth, &e.exportHeight) != 2) {
         std::fprintf(stderr, "fraktal: --export-size: '%s' is not WIDTHxHEIGHT\n", o.exportSize.c_str());
         return 2;
@@ -71,6 +73,9 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--export-size", o->exportSize, "The export dialog's size at start, WIDTHxHEIGHT (Custom)");
     cmd->add_option("--frame-log", o->frameLog,
                     "Append one JSON line per frame (frame time, viewport scale and size, camera) to this file");
+    cmd->add_option("--replay-drops", o->dropReplay,
+                    "When this file appears, drop the files it lists (one a line) on the window, through the "
+                    "window's drop callback, and remove it (for tests)");
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });
 }
 

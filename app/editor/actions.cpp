@@ -4,6 +4,9 @@
 #include <ImfInputFile.h>
 #include <ImfStringAttribute.h>
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "app/editor/plane_edits.hpp"
 #include "app/editor/preset_files.hpp"
 #include "core/image/atomic_file.hpp"
@@ -143,6 +146,22 @@ bool openDocument(EditorState& s, const fs::path& file) {
         setStatus(s, e.what(), true);
         return false;
     }
+}
+
+void openDropped(EditorState& s, const fs::path& file) {
+    try {
+        std::error_code ec;
+        if (fs::is_directory(file, ec)) throw std::runtime_error("it is a folder");
+        std::string ext = file.extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+        if (ext != ".json" && ext != ".exr")
+            throw std::runtime_error("it is neither a preset (.json) nor an EXR that fraktal wrote");
+        loadDocument(file);  // the reason it cannot be opened, before asking about unsaved changes
+    } catch (const std::exception& e) {
+        setStatus(s, "Not opened: the dropped file " + file.filename().string() + ": " + e.what(), true);
+        return;
+    }
+    requestAction(s, {PendingKind::Open, file});
 }
 
 void restoreDocument(EditorState& s, RecoveryOffer offer) {

@@ -16,6 +16,10 @@ void newPlaneDocument(EditorState& s);
 // Loads a preset (.json, 3D or 2D) or the preset embedded in an exported EXR (3D or 2D still).
 // False on error (shown).
 bool openDocument(EditorState& s, const std::filesystem::path& file);
+// A file dropped on the window: opened (asking about unsaved changes first) when it is a preset
+// or an EXR with a fraktal preset in its header; anything else is refused with a message naming
+// the file and the reason, and changes nothing.
+void openDropped(EditorState& s, const std::filesystem::path& file);
 // The document in a preset file or an EXR that fraktal wrote; throws PresetError naming the file.
 Document loadDocument(const std::filesystem::path& file);
 // Back to the view the 2D document was opened with (2D "reset view").

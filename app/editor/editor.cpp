@@ -9,10 +9,12 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>  // MarkIniSettingsDirty
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <thread>
 
 #include "app/editor/actions.hpp"
@@ -40,6 +42,8 @@ bool displayAvailable() {
 
 namespace {
 
+constexpr int kDefaultWidth = 1280, kDefaultHeight = 800;
+
 constexpr const char* kNoDisplay =
     "fraktal: no display: the editor needs an X11 or Wayland session ($DISPLAY is not set).\n"
     "  For headless use, render a still:   fraktal render PRESET -o OUT.exr\n"
@@ -49,6 +53,22 @@ EditorState* stateOf(GLFWwindow* w) { return static_cast<EditorState*>(glfwGetWi
 
 void onDrop(GLFWwindow* w, int count, const char** paths) {
     for (int i = 0; i < count; ++i) stateOf(w)->dropped.emplace_back(paths[i]);
+}
+
+// Tests: the paths listed in `file` (one a line), once it appears, go through the drop callback as
+// a drop of those files on the window does (X test tools cannot drag files); the file is removed.
+void replayDrops(GLFWwindow* w, const fs::path& file) {
+    std::ifstream in(file);
+    if (!in) return;
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) lines.push_back(line);
+    in.close();
+    std::error_code ec;
+    fs::remove(file, ec);
+    std::vector<const char*> paths;
+    for (const std::string& l : lines) paths.push_back(l.c_str());
+    if (!paths.empty()) onDrop(w, int(paths.size()), paths.data());
 }
 
 // Closing the window with unsaved changes asks first (the prompt's answer quits).
@@ -94,17 +114,52 @@ void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
     flyKeyEvent(stateOf(w)->flyKeys, fly, press, glfwGetTime());
 }
 
+// The window's size and place, for the ini file (saved when ImGui next writes it, and at exit).
+void onWindowPos(GLFWwindow* w, int x, int y) {
+    WindowPlacement& p = stateOf(w)->window;
+    if (p.hasPosition && p.x == x && p.y == y) return;
+    p.x = x, p.y = y, p.hasPosition = true;
+    ImGui::MarkIniSettingsDirty();
+}
+
+void onWindowSize(GLFWwindow* w, int width, int height) {
+    WindowPlacement& p = stateOf(w)->window;
+    if (width <= 0 || height <= 0 || (p.width == width && p.height == height)) return;  // minimised: keep
+    p.width = width, p.height = height;
+    ImGui::MarkIniSettingsDirty();
+}
+
+// Back to the remembered place when it is still on a monitor's work area (screens change);
+// then `placement` holds where the window really is.
+void placeWindow(GLFWwindow* window, WindowPlacement& placement) {
+    if (placement.hasPosition) {
+        int count = 0;
+        GLFWmonitor** monitors = glfwGetMonitors(&count);
+        for (int i = 0; i < count; ++i) {
+            int x = 0, y = 0, w = 0, h = 0;
+            glfwGetMonitorWorkarea(monitors[i], &x, &y, &w, &h);
+            if (placement.x >= x && placement.y >= y && placement.x < x + w - 32 && placement.y < y + h - 32) {
+                glfwSetWindowPos(window, placement.x, placement.y);
+                break;
+            }
+        }
+    }
+    glfwGetWindowPos(window, &placement.x, &placement.y);
+    glfwGetWindowSize(window, &placement.width, &placement.height);
+    placement.hasPosition = true;
+}
+
 void onGlfwError(int code, const char* text) { std::fprintf(stderr, "fraktal: GLFW error %d: %s\n", code, text); }
 
 // The part of the window the panels leave to the viewport.
 void layoutViewport(EditorState& s, float windowW, float windowH) {
     Layout& l = s.layout;
-    const float left = s.panels.formula ? l.leftWidth : 0.0f;
-    const float right = s.panels.sidebar ? l.rightWidth : 0.0f;
+    const bool column = sideColumnShows(s.panels, true) || sideColumnShows(s.panels, false);
+    const float left = column ? l.leftWidth : 0.0f;
     l.viewportX = left;
     l.viewportY = l.menuHeight;
-    l.viewportW = std::max(windowW - left - right, 16.0f);
-    l.viewportH = std::max(windowH - l.menuHeight, 16.0f);
+    l.viewportW = std::max(windowW - left, 16.0f);
+    l.viewportH = std::max(windowH - l.menuHeight - l.bottomHeight, 16.0f);
 }
 
 // The display texture's rows are top first, as ImGui's image coordinates are.
@@ -207,20 +262,42 @@ int runEditor(const EditorOptions& o) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    GLFWwindow* window = glfwCreateWindow(o.width, o.height, "fraktal", nullptr, nullptr);
+
+    EditorState s;
+    const fs::path config = configFolder();
+    std::error_code ec;
+    fs::create_directories(config, ec);
+    // The ini is read before the window exists: it holds the window's size and place.
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    const std::string iniFile = (config / "editor.ini").string();
+    io.IniFilename = nullptr;
+    registerPanelIniHandler(s);
+    if (o.useIniFile) {
+        ImGui::LoadIniSettingsFromDisk(iniFile.c_str());
+        io.IniFilename = iniFile.c_str();
+    }
+    // An explicit --width/--height wins over the remembered size.
+    const int width = o.width > 0 ? o.width : s.window.width > 0 ? s.window.width : kDefaultWidth;
+    const int height = o.height > 0 ? o.height : s.window.height > 0 ? s.window.height : kDefaultHeight;
+    GLFWwindow* window = glfwCreateWindow(width, height, "fraktal", nullptr, nullptr);
     if (!window) {
         std::fputs(
             "fraktal: cannot create an OpenGL 4.5 core window on this display.\n"
             "  For headless use: fraktal render PRESET -o OUT.exr\n",
             stderr);
+        ImGui::DestroyContext();
         glfwTerminate();
         return 3;
     }
+    placeWindow(window, s.window);
     glfwMakeContextCurrent(window);
     glfwSwapInterval(o.frames > 0 ? 0 : 1);
 
-    EditorState s;
     glfwSetWindowUserPointer(window, &s);
+    glfwSetWindowPosCallback(window, onWindowPos);
+    glfwSetWindowSizeCallback(window, onWindowSize);
     glfwSetDropCallback(window, onDrop);
     glfwSetWindowCloseCallback(window, onClose);
     glfwGetCursorPos(window, &s.cursorAt.x, &s.cursorAt.y);
@@ -228,21 +305,12 @@ int runEditor(const EditorOptions& o) {
     glfwSetMouseButtonCallback(window, onMouseButton);
     glfwSetKeyCallback(window, onKey);
 
-    const fs::path config = configFolder();
-    std::error_code ec;
-    fs::create_directories(config, ec);
     s.file.recentListFile = config / "recent.json";
     s.file.recent = loadRecentList(s.file.recentListFile);
     s.browser.folders = {fs::path(FRAKTAL_SOURCE_DIR) / "presets", fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "2d",
                          userPresetFolder()};
     fs::create_directories(userPresetFolder(), ec);
 
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    const std::string iniFile = (config / "editor.ini").string();
-    io.IniFilename = o.useIniFile ? iniFile.c_str() : nullptr;
-    registerPanelIniHandler(s.panels);
     float xscale = 1.0f, yscale = 1.0f;
     glfwGetWindowContentScale(window, &xscale, &yscale);
     applyEditorStyle(xscale);
@@ -299,8 +367,9 @@ int runEditor(const EditorOptions& o) {
             else
                 glfwWaitEventsTimeout(0.25);
             s.now = glfwGetTime();
+            if (!o.dropReplay.empty()) replayDrops(window, o.dropReplay);
             if (!s.dropped.empty()) {
-                requestAction(s, {PendingKind::Open, s.dropped.front()});
+                openDropped(s, s.dropped.front());
                 s.dropped.clear();
             }
             s.browser.visible = false;

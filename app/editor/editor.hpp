@@ -7,10 +7,10 @@
 namespace fraktal::editor {
 
 struct EditorOptions {
-    std::filesystem::path preset;      // opened at start (empty: a new document)
-    int frames = 0;                    // > 0: draw this many frames, then exit
-    std::filesystem::path screenshot;  // with frames: a PNG of the whole window after the last
-    int width = 1280, height = 800;
+    std::filesystem::path preset;           // opened at start (empty: a new document)
+    int frames = 0;                         // > 0: draw this many frames, then exit
+    std::filesystem::path screenshot;       // with frames: a PNG of the whole window after the last
+    int width = 0, height = 0;              // 0: the size remembered from the last run, else 1280x800
     bool useIniFile = true;                 // false for reproducible screenshots
     std::string sidebarTab;                 // Scene tab shown first: Camera, Render, Shading or Presets
     bool sessionRecovery = true;            // autosave and the restore prompt (off for scripted runs)
@@ -18,6 +18,7 @@ struct EditorOptions {
     int slowFrameMs = 0;                    // > 0: every frame sleeps this long (tests of input timing)
     std::filesystem::path frameLog;         // non-empty: one JSON line per frame (frame_log.hpp)
     int exportWidth = 0, exportHeight = 0;  // > 0: the export dialog's size at start (Custom)
+    std::filesystem::path dropReplay;       // tests: files listed here are dropped on the window
 };
 
 // Returns the process exit status. With no display it prints why and points to

@@ -12,6 +12,7 @@
 #include "app/editor/custom_block_editor.hpp"
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
+#include "app/editor/file_browser.hpp"
 #include "app/editor/pointer_input.hpp"
 #include "app/editor/timeline_edits.hpp"
 #include "app/editor/undo_history.hpp"
@@ -28,19 +29,29 @@ struct FileState {
 
 struct PanelVisibility {
     bool formula = true;
-    bool sidebar = true;  // camera, render, presets
+    bool sidebar = true;     // camera, render, presets
+    bool collapsed = false;  // the side column folded away (Ctrl+Backslash): the viewport takes the width
     bool stats = true;
     bool demo = false;      // ImGui's own metrics, for bug reports
     bool help = false;      // the shortcut list (F1)
     std::string selectTab;  // a Scene tab to bring to front on the next frame ("Render", ...)
 };
 
-// Laid out by the panels each frame; the viewport gets what they leave.
+// Laid out by the panels each frame; the viewport gets what they leave. One column on the left
+// holds the Formula panel above the Scene panel, so at 1280x800 the viewport is a landscape
+// rectangle of about 70 % of the window. Widths and the split are remembered (panel_ini.cpp).
 struct Layout {
     float menuHeight = 0.0f;
-    float leftWidth = 360.0f;
-    float rightWidth = 330.0f;
+    float leftWidth = 360.0f;      // the side column
+    float formulaHeight = 500.0f;  // the Formula panel's share of the column, from its top
+    float bottomHeight = 0.0f;     // a panel docked along the bottom sets this before the viewport is laid out
     float viewportX = 0, viewportY = 0, viewportW = 1, viewportH = 1;  // in window coordinates
+};
+
+// The editor window's place on the screen, remembered between runs (panel_ini.cpp); 0 size: unknown.
+struct WindowPlacement {
+    int x = 0, y = 0, width = 0, height = 0;
+    bool hasPosition = false;
 };
 
 // What to do once the user answered the unsaved-changes question.
@@ -50,12 +61,27 @@ struct PendingAction {
     std::filesystem::path path;  // for Open
 };
 
+// The Open / Save As file browser (file_dialogs.cpp).
+struct FileBrowser {
+    bool saving = false;
+    bool shown = false;  // drawn this frame
+    std::filesystem::path folder;
+    std::string name;  // the path field: a name in `folder`, or a path
+    BrowserFilter filter = BrowserFilter::PresetsAndExrs;
+    std::vector<BrowserEntry> entries;
+    bool listed = false;            // `entries` are those of `folder` under `filter`
+    bool focusField = false;        // the path field takes the keys on the next frame
+    std::string error;              // the folder cannot be read, or the chosen file cannot be opened
+    std::filesystem::path replace;  // Save As: the existing file the user is asked about
+};
+
 struct Dialogs {
-    bool openPath = false;     // "Open..." path prompt
-    bool saveAs = false;       // "Save as..." path prompt
+    bool openPath = false;     // opens the file browser to open a file
+    bool saveAs = false;       // opens it to save as
     bool unsaved = false;      // "Save changes?" prompt
     bool exportStill = false;  // F12
-    std::string pathInput;
+    std::string pathInput;     // Save As: the path to start from
+    FileBrowser browser;
     PendingAction pending;
 };
 
@@ -98,6 +124,7 @@ struct EditorState {
     FileState file;
     PanelVisibility panels;
     Layout layout;
+    WindowPlacement window;
     CameraControls cameraControls;
     CustomBlockEditor customBlockEditor;
     EyeDistance eyeDistance;  // the DE at the eye for the fly speed (GL probe for custom GLSL)

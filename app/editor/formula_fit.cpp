@@ -129,8 +129,14 @@ bool fitFormulaAfterEdit(Formula& f, Camera& camera) {
     const DistanceAt de = cpuDistance(f);
     const double bound = fittedBoundRadius(de, std::clamp(f.boundRadius * 2.0, 16.0, 100.0), f.boundRadius);
     if (bound != f.boundRadius) f.boundRadius = bound, changed = true;
-    // Inside or against the new surface (a template's camera inside a larger object): frame it.
-    if (!(de(camera.position) > 0.01 * f.boundRadius)) camera = framedCamera(f, de, camera);
+    // Inside or against the new surface (a template's camera inside a larger object), or so far
+    // from it that it is small in view (a camera framed for a larger object before the edit):
+    // frame it. Small: from more than kSmallInView times the framed distance away, the object
+    // spans under 40 % of the view.
+    constexpr double kSmallInView = 2.5;
+    const Camera framed = framedCamera(f, de, camera);
+    const double away = length(camera.position - framed.target), fits = length(framed.position - framed.target);
+    if (!(de(camera.position) > 0.01 * f.boundRadius) || away > kSmallInView * fits) camera = framed;
     return changed;
 }
 

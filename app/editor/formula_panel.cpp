@@ -73,18 +73,10 @@ void globalSettings(Formula& f) {
 
 }  // namespace
 
-void beginFormulaWindow(EditorState& s) {
-    const ImGuiViewport* vp = ImGui::GetMainViewport();
-    const float height = vp->WorkSize.y;
-    ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x, vp->WorkPos.y));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(260, height), ImVec2(vp->WorkSize.x * 0.45f, height));
-    ImGui::SetNextWindowSize(ImVec2(s.layout.leftWidth, height), ImGuiCond_FirstUseEver);
-    ImGui::Begin("Formula", &s.panels.formula, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
-    s.layout.leftWidth = ImGui::GetWindowWidth();
-}
+void beginFormulaWindow(EditorState& s) { beginSideColumnWindow(s, "Formula", &s.panels.formula, true); }
 
 void drawFormulaPanel(EditorState& s, const ViewportView& v) {
-    if (!s.panels.formula) return;
+    if (!sideColumnShows(s.panels, true)) return;
     beginFormulaWindow(s);
     Formula& f = s.doc.preset.formula;
     s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));

@@ -22,6 +22,7 @@ constexpr Shortcut kShortcuts[] = {
     {"Ctrl+Q", "Quit"},
     {"F1", "This list"},
     {"F2 / F3 / F4", "Formula panel / Scene panel / Stats overlay"},
+    {"Ctrl+\\", "Hide / show the side panels (or the arrow in the menu bar)"},
     {"Ctrl+D, Delete", "Duplicate / remove the selected node"},
     {"Left drag", "Orbit (fly mode: look around); a click without a drag does nothing"},
     {"Right or middle drag", "Pan"},

@@ -39,8 +39,10 @@ void drawMenuBar(EditorState& s) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
-        ImGui::MenuItem("Formula panel", "F2", &s.panels.formula);
-        ImGui::MenuItem("Scene panel", "F3", &s.panels.sidebar);
+        if (ImGui::MenuItem("Formula panel", "F2", &s.panels.formula) && s.panels.formula) s.panels.collapsed = false;
+        if (ImGui::MenuItem("Scene panel", "F3", &s.panels.sidebar) && s.panels.sidebar) s.panels.collapsed = false;
+        bool column = !s.panels.collapsed;
+        if (ImGui::MenuItem("Side panels", "Ctrl+\\", &column)) s.panels.collapsed = !column;
         ImGui::MenuItem("Stats overlay", "F4", &s.panels.stats);
         ImGui::Separator();
         bool fly = s.cameraControls.mode == CameraMode::Fly;
@@ -62,6 +64,11 @@ void drawMenuBar(EditorState& s) {
         ImGui::MenuItem("Shortcuts", "F1", &s.panels.help);
         ImGui::EndMenu();
     }
+    // Folds the side column away and back (Ctrl+Backslash): the arrow points where it goes.
+    if (ImGui::ArrowButton("##side_column", s.panels.collapsed ? ImGuiDir_Right : ImGuiDir_Left))
+        s.panels.collapsed = !s.panels.collapsed;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(s.panels.collapsed ? "Show the side panels (Ctrl+\\)" : "Hide the side panels (Ctrl+\\)");
     // The document's name and unsaved mark, right-aligned.
     const std::string title =
         (isDirty(s) ? "* " : "") + (s.file.path.empty() ? std::string("untitled") : s.file.path.filename().string());

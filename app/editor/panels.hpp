@@ -13,7 +13,11 @@ namespace fraktal::editor {
 void handleShortcuts(EditorState& s);                          // shortcuts.cpp
 void drawMenuBar(EditorState& s);                              // menu_bar.cpp
 void drawFormulaPanel(EditorState& s, const ViewportView& v);  // formula_panel.cpp
-void beginFormulaWindow(EditorState& s);                       // formula_panel.cpp: the left column
+void beginFormulaWindow(EditorState& s);                       // formula_panel.cpp: the column's top
+// The side column (sidebar.cpp): whether its top (Formula) or lower (Scene) panel shows, and
+// Begin() of one of them at its place, with the edges that resize the column and the split.
+bool sideColumnShows(const PanelVisibility& p, bool top);
+void beginSideColumnWindow(EditorState& s, const char* name, bool* open, bool top);
 // The 2D document's panels (plane_*.cpp); `compileError` is the 2D view's.
 void drawPlaneFormulaPanel(EditorState& s, const std::string& compileError);  // plane_formula_panel.cpp
 void drawPlaneViewTab(EditorState& s);                                        // plane_view_tab.cpp

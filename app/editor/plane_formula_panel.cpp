@@ -79,7 +79,7 @@ void nodeList(EditorState& s, PlaneList which, const char* payload, const std::o
 }  // namespace
 
 void drawPlaneFormulaPanel(EditorState& s, const std::string& error) {
-    if (!s.panels.formula || !s.doc.plane) return;
+    if (!sideColumnShows(s.panels, true) || !s.doc.plane) return;
     beginFormulaWindow(s);
     PlanePreset& p = *s.doc.plane;
     PlaneFormula& f = p.formula;

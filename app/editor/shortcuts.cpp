@@ -61,8 +61,9 @@ void handleShortcuts(EditorState& s) {
     if (pressed(GLFW_KEY_Q, true)) requestAction(s, {PendingKind::Quit, {}});
     if (pressed(GLFW_KEY_F12)) s.dialogs.exportStill = true;
     if (pressed(GLFW_KEY_F1)) s.panels.help = !s.panels.help;
-    if (pressed(GLFW_KEY_F2)) s.panels.formula = !s.panels.formula;
-    if (pressed(GLFW_KEY_F3)) s.panels.sidebar = !s.panels.sidebar;
+    if (pressed(GLFW_KEY_F2) && (s.panels.formula = !s.panels.formula)) s.panels.collapsed = false;
+    if (pressed(GLFW_KEY_F3) && (s.panels.sidebar = !s.panels.sidebar)) s.panels.collapsed = false;
+    if (pressed(GLFW_KEY_BACKSLASH, true)) s.panels.collapsed = !s.panels.collapsed;
     if (pressed(GLFW_KEY_F4)) s.panels.stats = !s.panels.stats;
     if (io.WantTextInput) return;
     if (s.doc.plane) {

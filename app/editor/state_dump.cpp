@@ -19,12 +19,31 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["eyeDistance"] = f.cpuEvaluable() ? json(distanceEstimate(f, c.position)) : json();
     j["cameraGesture"] = s.cameraGesture;
     j["shortcutHelp"] = s.panels.help;
+    j["blockEditorOpen"] = s.customBlockEditor.open;
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;
     j["undoDepth"] = s.history.undoDepth();
     j["redoDepth"] = s.history.redoDepth();
     j["undoLabel"] = s.history.undoLabel();
     j["redoLabel"] = s.history.redoLabel();
     j["viewport"] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW, s.layout.viewportH};
+    j["window"] = {{"position", {s.window.x, s.window.y}}, {"size", {s.window.width, s.window.height}}};
+    j["panels"] = {{"formula", s.panels.formula},
+                   {"scene", s.panels.sidebar},
+                   {"collapsed", s.panels.collapsed},
+                   {"columnWidth", s.layout.leftWidth},
+                   {"formulaHeight", s.layout.formulaHeight}};
+    j["title"] = windowTitle(s);
+    const FileBrowser& b = s.dialogs.browser;
+    json folders = json::array();
+    for (const auto& f : recentFolders(s.file.recent)) folders.push_back(f.string());
+    j["fileBrowser"] = {{"shown", b.shown},
+                        {"saving", b.saving},
+                        {"folder", b.folder.string()},
+                        {"name", b.name},
+                        {"error", b.error},
+                        {"replaceAsked", !b.replace.empty()},
+                        {"recentFolders", folders},
+                        {"recentFiles", s.file.recent}};
     j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
     j["compileError"] = compileError;
     j["viewportSettled"] = viewportSettled;

@@ -2,6 +2,7 @@
 // banners and the status line (bottom of the viewport).
 #include <imgui.h>
 
+#include <algorithm>
 #include <regex>
 
 #include "app/editor/panels.hpp"
@@ -61,14 +62,20 @@ bool beginStatsOverlay(EditorState& s, const std::string& compileError, const st
     return true;
 }
 
+// Frames per second and milliseconds per frame, both from ImGui's smoothed frame rate (the mean
+// of its last 120 frame times), so they always agree: fps = 1000 / ms.
+void frameRateLine() {
+    const float fps = ImGui::GetIO().Framerate;
+    ImGui::Text("%.1f fps   %.1f ms / frame", fps, 1000.0f / std::max(fps, 1e-3f));
+}
+
 }  // namespace
 
 void drawStatsOverlay(EditorState& s, const ViewportView& v) {
     if (!beginStatsOverlay(s, v.compileError(), v.displayError())) return;
     // The viewport's own per-frame statistics (core/viewport FrameStats).
     const ViewportStats& st = v.stats();
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::Text("%.0f fps   %.1f ms viewport", io.Framerate, st.renderMs);
+    frameRateLine();
     ImGui::Text("%d x %d px   %.1f DE evals / px", st.width, st.height, st.deEvaluationsPerPixel);
     ImGui::Text("internal scale %.2f%s", st.internalScale, st.internalScale < 1.0 ? " (moving)" : "");
     ImGui::Text("reprojected %.0f%%   converged %.0f%%", 100.0 * st.reprojectedShare, 100.0 * st.convergedShare);
@@ -81,8 +88,7 @@ void drawStatsOverlay(EditorState& s, const ViewportView& v) {
 void drawPlaneStatsOverlay(EditorState& s, const PlaneViewport& v) {
     if (!beginStatsOverlay(s, v.compileError(), v.displayError())) return;
     const PlaneViewportStats& st = v.stats();
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::Text("%.0f fps   %.1f ms last pass", io.Framerate, st.passMs);
+    frameRateLine();
     ImGui::Text("%d x %d px   %s", st.width, st.height, st.fp64 ? "fp64" : "fp32");
     ImGui::Text("samples %d / %d spp%s   2D", st.samples, st.target, st.samples >= st.target ? " (settled)" : "");
     if (s.doc.plane) ImGui::Text("view width %.3g", s.doc.plane->view.width);

@@ -1,9 +1,10 @@
-# Helpers for tests that drive the real editor under Xvfb with real X input events (xdotool) and
-# read the state it writes after every frame (--state-file, JSON). Sourced by the editor's
-# user-story and timeline tests after they set `fraktal`; they define `home` (a private HOME,
-# removed on exit), `state`, and these functions.
-# A private HOME: the editor's ini and recent list must not leak in or out.
+# Helpers for the tests that drive the real editor under Xvfb with xdotool (sourced, not run):
+# a private HOME, the editor in the background writing its state file, waits on its frames,
+# pointer moves and drags in window coordinates. Expects $fraktal set; sets $home, $state, $pid,
+# $window.
+# A private HOME and config folder: the editor's ini and recent list must not leak in or out.
 home=$(mktemp -d)
+export XDG_CONFIG_HOME="$home/config"
 state="$home/state.json"
 pid=
 cleanup() {
@@ -86,3 +87,4 @@ check() { awk "BEGIN { exit !($1) }"; }
 
 # Viewport centre and panel points at the default 1280x800 layout (from the state file).
 viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1] + .viewport[3] / 2 | floor)"'; }
+
