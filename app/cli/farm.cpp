@@ -18,6 +18,10 @@ namespace fraktal::cli {
 
 using nlohmann::json;
 
+// How jobs.json records the plan.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SlurmOptions, partition, account, time, cpusPerTask, extra)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FarmPlan, preset, output, frames, chunk, tiles, size, spp, fraktal, slurm)
+
 int chunkCount(const FrameRange& range, int chunk) {
     const int frames = int(range.frames().size());
     return (frames + chunk - 1) / chunk;
@@ -122,50 +126,13 @@ std::string mergeScript(const FarmPlan& plan) {
 namespace {
 
 struct SubmitOptions {
-    std::string preset;
-    std::string output;
-    std::string frames;
-    int chunk = 8;
-    int tiles = 0;
-    std::string size;
-    int spp = 0;
-    std::string fraktal;
-    SlurmOptions slurm;
+    FarmPlan plan;  // as given on the command line; planOf makes the paths absolute and checks it
     bool dryRun = false;
 };
 
-json planJson(const FarmPlan& p) {
-    return {{"preset", p.preset},
-            {"output", p.output},
-            {"frames", p.frames},
-            {"chunk", p.chunk},
-            {"tiles", p.tiles},
-            {"size", p.size},
-            {"spp", p.spp},
-            {"fraktal", p.fraktal},
-            {"partition", p.slurm.partition},
-            {"account", p.slurm.account},
-            {"time", p.slurm.time},
-            {"cpusPerTask", p.slurm.cpusPerTask},
-            {"sbatchArgs", p.slurm.extra}};
-}
-
 FarmPlan planFromJson(const json& j, const std::string& file) {
     try {
-        FarmPlan p;
-        p.preset = j.at("preset").get<std::string>();
-        p.output = j.at("output").get<std::string>();
-        p.frames = j.at("frames").get<std::string>();
-        p.chunk = j.at("chunk").get<int>();
-        p.tiles = j.at("tiles").get<int>();
-        p.size = j.at("size").get<std::string>();
-        p.spp = j.at("spp").get<int>();
-        p.fraktal = j.at("fraktal").get<std::string>();
-        p.slurm.partition = j.at("partition").get<std::string>();
-        p.slurm.account = j.at("account").get<std::string>();
-        p.slurm.time = j.at("time").get<std::string>();
-        p.slurm.cpusPerTask = j.at("cpusPerTask").get<int>();
-        p.slurm.extra = j.at("sbatchArgs").get<std::vector<std::string>>();
+        FarmPlan p = j.get<FarmPlan>();
         if (p.chunk < 1) throw std::runtime_error("chunk must be at least 1");
         return p;
     } catch (const std::exception& e) {
@@ -334,26 +301,21 @@ std::string submit(std::vector<std::string> argv, const std::filesystem::path& s
     return id;
 }
 
-FarmPlan planOf(const SubmitOptions& o) {
+FarmPlan planOf(const FarmPlan& given) {
     namespace fs = std::filesystem;
-    FarmPlan p;
+    FarmPlan p = given;
     std::error_code ec;
-    if (!fs::is_regular_file(o.preset, ec)) throw std::runtime_error(o.preset + ": no such preset file");
-    p.preset = fs::absolute(o.preset).lexically_normal().string();
-    p.output = fs::absolute(o.output).lexically_normal().string();
-    p.frames = o.frames;
-    p.chunk = o.chunk;
-    p.tiles = o.tiles;
-    p.size = o.size;
-    p.spp = o.spp;
-    p.slurm = o.slurm;
-    p.fraktal = o.fraktal.empty() ? fs::read_symlink("/proc/self/exe", ec).string() : o.fraktal;
+    if (!fs::is_regular_file(p.preset, ec)) throw std::runtime_error(p.preset + ": no such preset file");
+    p.preset = fs::absolute(p.preset).lexically_normal().string();
+    p.output = fs::absolute(p.output).lexically_normal().string();
+    if (p.fraktal.empty())
+        p.fraktal = fs::read_symlink("/proc/self/exe", ec).string();
+    else if (p.fraktal.find('/') != std::string::npos)
+        p.fraktal = fs::absolute(p.fraktal).lexically_normal().string();
     if (p.fraktal.empty()) throw std::runtime_error("cannot tell where the fraktal program is; pass --fraktal PATH");
-    if (!o.fraktal.empty() && o.fraktal.find('/') != std::string::npos)
-        p.fraktal = fs::absolute(o.fraktal).lexically_normal().string();
     for (const std::string& a : p.slurm.extra)
         if (a.find('\n') != std::string::npos) throw std::runtime_error("--sbatch-arg: a line break in '" + a + "'");
-    if (o.frames.empty() == (o.tiles == 0))
+    if (p.frames.empty() == (p.tiles == 0))
         throw std::runtime_error("farm submit: give --frames FIRST-LAST (an animation) or --tiles N (a still)");
     const Preset preset = plannedPreset(p);  // bad preset, size: fails here, before anything is written
     if (p.isStill()) {
@@ -371,7 +333,7 @@ FarmPlan planOf(const SubmitOptions& o) {
 
 int runSubmit(const SubmitOptions& o) {
     namespace fs = std::filesystem;
-    const FarmPlan plan = planOf(o);
+    const FarmPlan plan = planOf(o.plan);
     const fs::path farmDir = farmDirOf(plan);
     json jobs = readJobs(farmDir);
 
@@ -437,7 +399,7 @@ int runSubmit(const SubmitOptions& o) {
         if (s.kind != "merge") arrayId = id;
         jobs["jobs"].push_back(
             {{"id", id}, {"kind", s.kind}, {"array", s.array}, {"script", script.string()}, {"submitted", utcNow()}});
-        jobs["plan"] = planJson(plan);
+        jobs["plan"] = plan;
         // Recorded after every submission, so a failure of the next one loses no job id.
         writeFileAtomically(jobsFile(farmDir), jobs.dump(2) + "\n");
         std::printf("submitted job %s: %s%s\n", id.c_str(), s.kind.c_str(),
@@ -493,25 +455,26 @@ void addFarmCommand(CLI::App& app, Action& action) {
         "submit",
         "Write an sbatch job-array script into the output's .farm/ folder and submit it; run again to "
         "resubmit only what is missing or broken");
-    sub->add_option("preset", o->preset, "Preset (an animated one with --frames, any with --tiles)")->required();
-    sub->add_option("-o,--output", o->output,
+    sub->add_option("preset", o->plan.preset, "Preset (an animated one with --frames, any with --tiles)")->required();
+    sub->add_option("-o,--output", o->plan.output,
                     "Frame pattern (shared folder visible to every node), e.g. /shared/out/frame_####.exr; with "
                     "--tiles, the still's EXR")
         ->required();
-    sub->add_option("--frames", o->frames, "Frames FIRST-LAST[:STEP] of the animation");
-    sub->add_option("--chunk", o->chunk, "Frames per array task (default 8)")->check(CLI::Range(1, 100000));
-    sub->add_option("--tiles", o->tiles, "A still: one array task per part, then a merge job")
+    sub->add_option("--frames", o->plan.frames, "Frames FIRST-LAST[:STEP] of the animation");
+    sub->add_option("--chunk", o->plan.chunk, "Frames per array task (default 8)")->check(CLI::Range(1, 100000));
+    sub->add_option("--tiles", o->plan.tiles, "A still: one array task per part, then a merge job")
         ->check(CLI::Range(1, 100000));
-    sub->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default: the preset's)");
-    sub->add_option("--spp", o->spp, "Samples per pixel (default: the preset's)")->check(CLI::Range(1, kMaxSpp));
-    sub->add_option("--partition", o->slurm.partition, "Slurm partition (sbatch --partition)");
-    sub->add_option("--account", o->slurm.account, "Slurm account (sbatch --account)");
-    sub->add_option("--time", o->slurm.time, "Time limit of one task (sbatch --time), e.g. 1:00:00");
-    sub->add_option("--cpus-per-task", o->slurm.cpusPerTask, "CPUs of one task; its render threads (default 1)")
+    sub->add_option("--size", o->plan.size, "Image size WIDTHxHEIGHT (default: the preset's)");
+    sub->add_option("--spp", o->plan.spp, "Samples per pixel (default: the preset's)")->check(CLI::Range(1, kMaxSpp));
+    sub->add_option("--partition", o->plan.slurm.partition, "Slurm partition (sbatch --partition)");
+    sub->add_option("--account", o->plan.slurm.account, "Slurm account (sbatch --account)");
+    sub->add_option("--time", o->plan.slurm.time, "Time limit of one task (sbatch --time), e.g. 1:00:00");
+    sub->add_option("--cpus-per-task", o->plan.slurm.cpusPerTask, "CPUs of one task; its render threads (default 1)")
         ->check(CLI::Range(1, 4096));
-    sub->add_option("--sbatch-arg", o->slurm.extra, "A further sbatch option, e.g. --sbatch-arg=--mem=4G (repeatable)")
+    sub->add_option("--sbatch-arg", o->plan.slurm.extra,
+                    "A further sbatch option, e.g. --sbatch-arg=--mem=4G (repeatable)")
         ->allow_extra_args(false);
-    sub->add_option("--fraktal", o->fraktal, "The fraktal program on the nodes (default: this one's path)");
+    sub->add_option("--fraktal", o->plan.fraktal, "The fraktal program on the nodes (default: this one's path)");
     sub->add_flag("--dry-run", o->dryRun, "Write and print the scripts, submit nothing");
     sub->callback([&action, o] { action = [o] { return runSubmit(*o); }; });
 
