@@ -248,4 +248,9 @@ TEST(Encode, FramesIntoVideoThroughTheDisplayTransform) {
         test::runCli("encode -q " + (dir / "out/g_####.exr").string() + " -o " + out.string());
     EXPECT_EQ(noFrames.exitCode, 2);
     EXPECT_NE(noFrames.output.find("no frames found"), std::string::npos) << noFrames.output;
+    const test::CliRun noFolder =
+        test::runCli("encode -q " + (dir / "nowhere/f_####.exr").string() + " -o " + out.string());
+    EXPECT_EQ(noFolder.exitCode, 2);
+    EXPECT_NE(noFolder.output.find("no frame folder " + (dir / "nowhere").string()), std::string::npos)
+        << noFolder.output;
 }

@@ -150,6 +150,10 @@ VideoCodec parseCodec(const std::string& name) {
 
 int runEncode(const EncodeOptions& o) {
     const VideoCodec codec = parseCodec(o.codec);
+    const std::filesystem::path folder = std::filesystem::path(o.pattern).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+        throw std::runtime_error(o.pattern + ": no frame folder " + folder.string());
     const auto onDisk = framesOnDisk(o.pattern);
     if (onDisk.empty())
         throw std::runtime_error(o.pattern + ": no frames found (files named like " + framePath(o.pattern, 0).string() +
