@@ -360,7 +360,7 @@ int runSubmit(const SubmitOptions& o) {
     if (plan.isStill()) fs::create_directories(farmDir / "parts", ec);
     if (ec) throw std::runtime_error(farmDir.string() + ": cannot create the farm folder: " + ec.message());
 
-    const std::string stem = fs::path(plan.output).stem().string();
+    const std::string stem = fs::path(plan.preset).stem().string();  // the jobs' names in squeue
     const std::string array = arrayIndexList(work.tasksToRun);
     struct Submission {
         std::string kind, script, array;
