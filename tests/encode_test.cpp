@@ -253,4 +253,5 @@ TEST(Encode, FramesIntoVideoThroughTheDisplayTransform) {
     EXPECT_EQ(noFolder.exitCode, 2);
     EXPECT_NE(noFolder.output.find("no frame folder " + (dir / "nowhere").string()), std::string::npos)
         << noFolder.output;
+    std::filesystem::remove_all(dir);
 }
