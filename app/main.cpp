@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
     fraktal::cli::addInfoCommand(app, action);
     fraktal::cli::addBenchViewportCommand(app, action);
     fraktal::cli::addMergeCommand(app, action);
+    fraktal::cli::addEncodeCommand(app, action);
+    fraktal::cli::addFarmCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

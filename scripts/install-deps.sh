@@ -8,6 +8,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev libgtest-dev glslang-tools
   xvfb xauth imagemagick
   xdotool jq
+  ffmpeg slurm-wlm munge
   clang libclang-rt-14-dev
 )
 missing=()

@@ -16,5 +16,7 @@ void addRenderCommand(CLI::App& app, Action& action);
 void addInfoCommand(CLI::App& app, Action& action);
 void addBenchViewportCommand(CLI::App& app, Action& action);
 void addMergeCommand(CLI::App& app, Action& action);
+void addEncodeCommand(CLI::App& app, Action& action);
+void addFarmCommand(CLI::App& app, Action& action);
 
 }  // namespace fraktal::cli

@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/plane_render.hpp"
+#include "cli/render_options.hpp"
 #include "cli/render_sequence.hpp"
 #include "core/color/color_pipeline.hpp"
 #include "core/gl/context.hpp"
@@ -42,6 +43,7 @@ struct RenderOptions {
     bool fullFloat = false;
     int threads = 0;
     int tile = 256;
+    std::string tileOrPart;  // --tile: "i/n" is a part of the still (as --part), a number the tile size
     std::optional<double> adaptiveTolerance;
     bool quiet = false;
     std::string frames;  // an image sequence of an animated preset: FIRST-LAST[:STEP]
@@ -78,6 +80,8 @@ std::optional<PlanePreset> loadPlaneInput(const std::string& input) {
     return std::nullopt;
 }
 
+}  // namespace
+
 void parseSize(const std::string& text, RenderSettings& r) {
     std::smatch m;
     static_assert(kMaxImageSide < 1000000);
@@ -89,6 +93,8 @@ void parseSize(const std::string& text, RenderSettings& r) {
     r.width = int(w);
     r.height = int(h);
 }
+
+namespace {
 
 std::string formatSeconds(double s) {
     char buf[32];
@@ -135,7 +141,24 @@ void applyRenderOptions(const RenderOptions& o, RenderSettings& r) {
     if (!o.workingSpace.empty()) r.workingSpace = o.workingSpace;
 }
 
-int runRender(const RenderOptions& o) {
+// --tile i/n is --part i/n (the name a farm uses); --tile N keeps meaning the tile size in pixels.
+void resolveTileOption(RenderOptions& o) {
+    if (o.tileOrPart.empty()) return;
+    if (o.tileOrPart.find('/') != std::string::npos) {
+        if (!o.part.empty() && o.part != o.tileOrPart)
+            throw std::runtime_error("--tile " + o.tileOrPart + " and --part " + o.part + " name different parts");
+        o.part = o.tileOrPart;
+        return;
+    }
+    std::smatch m;
+    if (!std::regex_match(o.tileOrPart, m, std::regex(R"(\d{1,6})")) || std::stoi(m[0]) < 16 || std::stoi(m[0]) > 4096)
+        throw std::runtime_error("--tile '" + o.tileOrPart +
+                                 "': expected i/n (part i of n of the still) or a tile size in pixels (16..4096)");
+    o.tile = std::stoi(m[0]);
+}
+
+int runRender(RenderOptions o) {
+    resolveTileOption(o);
     if (std::optional<PlanePreset> plane = loadPlaneInput(o.input)) {  // 2D: the 2D renderer, same options
         PlaneRenderRequest q{o.input,
                              o.output,
@@ -170,7 +193,7 @@ int runRender(const RenderOptions& o) {
     if (!o.part.empty()) {
         std::smatch m;
         if (!std::regex_match(o.part, m, std::regex(R"((\d{1,6})/(\d{1,6}))")))
-            throw std::runtime_error("--part '" + o.part + "': expected i/n, e.g. 2/8 (part i of n, from 1)");
+            throw std::runtime_error("--tile '" + o.part + "': expected i/n, e.g. 2/8 (part i of n, from 1)");
         job.partIndex = std::stoi(m[1]) - 1;
         job.partCount = std::stoi(m[2]);
     }
@@ -178,7 +201,7 @@ int runRender(const RenderOptions& o) {
 
     if (o.denoise && o.mode != "path") throw std::runtime_error("--denoise needs --mode path");
     if (o.mode == "path" && (!o.frames.empty() || !o.part.empty()))
-        throw std::runtime_error("--mode path renders a whole still: not with --frames or --part");
+        throw std::runtime_error("--mode path renders a whole still: not with --frames or --tile/--part");
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     std::optional<SequenceJob> sequence;
     if (!o.frames.empty()) {
@@ -252,13 +275,15 @@ void addRenderCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--float", o->fullFloat, "32-bit float EXR channels (default: half)");
     cmd->add_option("--threads", o->threads, "Rendering threads (llvmpipe; default: all cores)")
         ->check(CLI::Range(1, 1024));
-    cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
+    cmd->add_option("--tile-size", o->tile, "Tile size in pixels")->check(CLI::Range(16, 4096));
+    cmd->add_option("--tile", o->tileOrPart,
+                    "i/n: render only part i of n of the still (horizontal bands, from 1) for `fraktal merge`; "
+                    "a number N: the tile size in pixels (as --tile-size)");
     cmd->add_option("--adaptive-tolerance", o->adaptiveTolerance,
                     "A pixel stops sampling when its samples agree within this (sqrt colour); 0: all spp")
         ->check(CLI::Range(0.0, 1.0));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
-    cmd->add_option("--part", o->part,
-                    "Render only part i of n (1-based; horizontal bands) of the still, for `fraktal merge`");
+    cmd->add_option("--part", o->part, "Same as --tile i/n");
     cmd->add_option("--frames", o->frames,
                     "Render frames FIRST-LAST[:STEP] of an animated preset; -o is then a pattern whose run of # is "
                     "the frame number (out/frame_####.exr); frames already complete are skipped");

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "core/image/exr_writer.hpp"
+#include "core/render/still_job.hpp"
 
 namespace fraktal {
 
@@ -78,13 +79,38 @@ std::filesystem::path framePath(const std::string& pattern, int frame) {
     return pattern.substr(0, begin) + number + pattern.substr(begin + width);
 }
 
+std::vector<std::pair<int, std::filesystem::path>> framesOnDisk(const std::string& pattern) {
+    checkFramePattern(pattern);
+    const auto [begin, width] = hashRun(pattern);
+    const std::filesystem::path folder = std::filesystem::path(pattern).parent_path();
+    const std::string name = std::filesystem::path(pattern).filename().string();
+    const size_t nameBegin = begin - (pattern.size() - name.size());
+    const std::string prefix = name.substr(0, nameBegin), suffix = name.substr(nameBegin + width);
+    std::vector<std::pair<int, std::filesystem::path>> out;
+    for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder)) {
+        const std::string file = entry.path().filename().string();
+        if (file.size() < prefix.size() + width + suffix.size() || !file.starts_with(prefix) || !file.ends_with(suffix))
+            continue;
+        const std::string digits = file.substr(prefix.size(), file.size() - prefix.size() - suffix.size());
+        if (digits.size() > 9 ||
+            !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+            continue;
+        out.emplace_back(std::stoi(digits), folder.empty() ? std::filesystem::path(file) : folder / file);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 Preset sequenceFramePreset(const Preset& animated, int frame) {
     Preset p = presetAtFrame(animated, frame);
     p.extra["animationFrame"] = frame;
+    // The frame rate travels with every frame, for `fraktal encode`.
+    p.extra["animationFps"] = animated.animation.fps;
     return p;
 }
 
-FrameFileState checkFrameFile(const std::filesystem::path& path, const Preset& preset, std::string* why) {
+FrameFileState checkFrameFile(const std::filesystem::path& path, const Preset& preset, std::string* why, int partIndex,
+                              int partCount) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return FrameFileState::Missing;
     auto broken = [&](const std::string& reason) {
@@ -94,10 +120,18 @@ FrameFileState checkFrameFile(const std::filesystem::path& path, const Preset& p
     try {
         Imf::InputFile in(path.c_str());
         const Imath::Box2i dw = in.header().dataWindow();
-        const int width = dw.max.x - dw.min.x + 1, height = dw.max.y - dw.min.y + 1;
-        if (width != preset.render.width || height != preset.render.height)
-            return broken("size " + std::to_string(width) + "x" + std::to_string(height) + ", expected " +
-                          std::to_string(preset.render.width) + "x" + std::to_string(preset.render.height));
+        const int width = dw.max.x - dw.min.x + 1;
+        const auto [firstRow, endRow] = partRows(preset.render.height, partIndex, partCount);
+        if (width != preset.render.width || dw.min.y != firstRow || dw.max.y != endRow - 1)
+            return broken("rows " + std::to_string(dw.min.y) + "-" + std::to_string(dw.max.y) + " of width " +
+                          std::to_string(width) + ", expected rows " + std::to_string(firstRow) + "-" +
+                          std::to_string(endRow - 1) + " of width " + std::to_string(preset.render.width));
+        const auto* part = in.header().findTypedAttribute<Imf::StringAttribute>(kExrPartAttribute);
+        const std::string expectedPart =
+            partCount > 1 ? std::to_string(partIndex + 1) + "/" + std::to_string(partCount) : "";
+        if ((part ? part->value() : "") != expectedPart)
+            return broken(part ? "it is part " + part->value() + (partCount > 1 ? ", expected " + expectedPart : "")
+                               : "it is a whole image, expected part " + expectedPart);
         const auto* embedded = in.header().findTypedAttribute<Imf::StringAttribute>(kExrPresetAttribute);
         if (!embedded) return broken("no embedded preset");
         if (embedded->value() != serializePreset(preset))

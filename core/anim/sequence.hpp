@@ -26,14 +26,19 @@ void checkFrameRangeWithin(const FrameRange& range, const Animation& animation, 
 // Throws when the pattern has no run of '#', or more than one, or its folder does not exist.
 void checkFramePattern(const std::string& pattern);
 std::filesystem::path framePath(const std::string& pattern, int frame);
+// The files of the pattern's folder that the pattern names (the run of '#' matched by at least as
+// many digits), by frame number, in increasing order.
+std::vector<std::pair<int, std::filesystem::path>> framesOnDisk(const std::string& pattern);
 
 // The preset rendered for `frame` of `animated`: its tracks applied, and the frame number kept in
 // the preset (so the EXR says which frame it is, and a stale file of another frame is not taken).
 Preset sequenceFramePreset(const Preset& animated, int frame);
 
 // Whether `path` holds the complete EXR of `preset` (readable to its last row, of the preset's
-// size, embedding exactly this preset). `why` says what is wrong when it is not.
+// size, embedding exactly this preset). `why` says what is wrong when it is not. With partCount > 1,
+// the file must be part partIndex (from 0) of partCount of the still (`fraktal render --tile i/n`).
 enum class FrameFileState { Missing, Complete, Broken };
-FrameFileState checkFrameFile(const std::filesystem::path& path, const Preset& preset, std::string* why = nullptr);
+FrameFileState checkFrameFile(const std::filesystem::path& path, const Preset& preset, std::string* why = nullptr,
+                              int partIndex = 0, int partCount = 1);
 
 }  // namespace fraktal
