@@ -159,7 +159,8 @@ void layoutViewport(EditorState& s, float windowW, float windowH) {
     l.viewportX = left;
     l.viewportY = l.menuHeight;
     l.viewportW = std::max(windowW - left, 16.0f);
-    l.viewportH = std::max(windowH - l.menuHeight - l.bottomHeight, 16.0f);
+    l.viewportH =
+        std::max(windowH - l.menuHeight, 16.0f);  // the timeline takes its height from this (timeline_panel.cpp)
 }
 
 // The display texture's rows are top first, as ImGui's image coordinates are.

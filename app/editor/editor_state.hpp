@@ -44,7 +44,6 @@ struct Layout {
     float menuHeight = 0.0f;
     float leftWidth = 360.0f;      // the side column
     float formulaHeight = 500.0f;  // the Formula panel's share of the column, from its top
-    float bottomHeight = 0.0f;     // a panel docked along the bottom sets this before the viewport is laid out
     float viewportX = 0, viewportY = 0, viewportW = 1, viewportH = 1;  // in window coordinates
 };
 
