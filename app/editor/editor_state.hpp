@@ -12,6 +12,7 @@
 #include "app/editor/custom_block_editor.hpp"
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
+#include "app/editor/formula_edits.hpp"
 #include "app/editor/pointer_input.hpp"
 #include "app/editor/undo_history.hpp"
 #include "core/color/color_pipeline.hpp"
@@ -99,7 +100,8 @@ struct EditorState {
     Layout layout;
     CameraControls cameraControls;
     CustomBlockEditor customBlockEditor;
-    EyeDistance eyeDistance;  // the DE at the eye for the fly speed (GL probe for custom GLSL)
+    EyeDistance eyeDistance;    // the DE at the eye for the fly speed (GL probe for custom GLSL)
+    AutoStepFactor stepFactor;  // the check's step factor, set after structure changes
     Dialogs dialogs;
     PresetBrowser browser;
     ExportJob exportJob;
