@@ -39,12 +39,7 @@ EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, con
     return measureSafeStep(s, camera, options);
 }
 
-Node linearEstimatorFor(const Formula& f) {
-    Node n = Node::make(*findBlock("escape_linear"));
-    const ParamDecl& offset = n.block->params[0];
-    n.values[0].x = std::clamp(f.bailout, offset.min, offset.max);
-    return n;
-}
+Node linearEstimator() { return Node::make(*findBlock("escape_linear")); }
 
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Camera& camera,
                                                     const SafeStepOptions& options) {
@@ -68,7 +63,7 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RayS
         CpuSampler s(g);
         out.push_back(measured(estimator, compareWithSamples(s, samples), options));
     };
-    add(linearEstimatorFor(f));
+    add(linearEstimator());
     add(Node::make(*findBlock("escape_log")));
     std::stable_sort(out.begin(), out.end(), [](const EstimatorMeasurement& a, const EstimatorMeasurement& b) {
         return a.speed() > b.speed();

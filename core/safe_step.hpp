@@ -6,16 +6,18 @@
 // scales; the fold factor for sphere folds and inversions), non-conformal deforms by a bound of
 // their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight|, and power blocks use
 // the analytic scalar n r^(n-1) (White/Nylander; Syntopia, "Distance estimated 3D fractals"
-// part V). Two escape-time estimators follow from it:
-// - linear, (r - B) / w with B the bailout: every point q inside keeps |F_k(q)| <= B, so
-//   |p - q| >= (|F_k(p)| - B) / Lip(F_k) (the Lipschitz argument of Hart, Sandin and Kauffman,
-//   "Ray tracing deterministic 3-D fractals", 1989; r / w is Syntopia part VI's Mandelbox form).
+// part V). The escape-time estimators divide by it:
 // - log, 0.5 log(r) r / w: the Hubbard-Douady potential's lower bound, for power iterations
 //   (Syntopia part V; Knighty's notes on fractalforums.com, "Mandelbulb distance estimation").
-// Neither is a proven bound for every stack: the scalar derivative of a power underestimates its
-// Jacobian near the poles (the phi direction stretches by sin(n theta) / sin(theta), up to n
-// times more), and w is a local bound. So the factor is measured on sampled rays and a margin
-// is kept for the rays that were not sampled.
+// - linear, r / w: Syntopia part VI's Mandelbox form, for fold-and-scale stacks.
+// The Lipschitz form (r - B) / w with B the bailout (Hart, Sandin and Kauffman, "Ray tracing
+// deterministic 3-D fractals", 1989) never overshoots where w bounds the stretch, but it
+// vanishes on every escape level set |F_k| = B, not only at the fractal: a marcher stops on those
+// false shells, so it is not offered here.
+// Neither estimate is a proven bound for every stack: the scalar derivative of a power
+// underestimates its Jacobian near the poles (the phi direction stretches by
+// sin(n theta) / sin(theta), up to n times more), and w is a local bound. So the factor is
+// measured on sampled rays and a margin is kept for the rays that were not sampled.
 #pragma once
 
 #include <string>
@@ -60,10 +62,10 @@ EstimatorMeasurement measureSafeStep(FormulaSampler& sampler, const Camera& came
                                      const SafeStepOptions& options = {});
 EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, const SafeStepOptions& options = {});
 
-// The linear estimator with the formula's bailout as its offset (offset range permitting).
-Node linearEstimatorFor(const Formula& f);
+// The linear estimator r / w.
+Node linearEstimator();
 
-// Escape-time formulas: the formula's own estimator, linear (r - B) / w and log, each measured on
+// Escape-time formulas: the formula's own estimator, linear r / w and log, each measured on
 // the same rays (they share the membership, so the object is the same); best first (the largest
 // speed()). Other formulas (IFS primitives, custom estimators): their own estimator alone.
 // Needs a CPU-evaluable formula.

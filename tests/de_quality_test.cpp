@@ -85,10 +85,8 @@ TEST(DEQuality, MandelbulbInsideItsBoundingRadius) {
     double farthestInside = 0.0;
     for (const vec3& p : test::randomPoints(40000, f.boundRadius, 7)) {
         const Evaluation e = evaluate(f, p);
-        if (e.inside)
-            farthestInside = std::max(farthestInside, length(p));
-        else if (length(p) > radius)
-            ++outside;
+        if (e.inside) farthestInside = std::max(farthestInside, length(p));
+        else if (length(p) > radius) ++outside;
     }
     EXPECT_LE(farthestInside, radius);
     EXPECT_GT(farthestInside, 0.9);  // and the bulb really reaches out there
@@ -100,22 +98,18 @@ TEST(DEQuality, MandelboxInsideItsBoundingBox) {
     const Formula f = shipped("mandelbox.json").formula;
     double farthestInside = 0.0;
     for (const vec3& p : test::randomPoints(40000, 8.0, 9)) {
-        if (evaluate(f, p).inside)
-            farthestInside = std::max(farthestInside, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+        if (evaluate(f, p).inside) farthestInside = std::max(farthestInside, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
     }
     EXPECT_LE(farthestInside, 6.0 * 1.02);
     EXPECT_GT(farthestInside, 4.0);
     EXPECT_LE(6.0 * std::sqrt(3.0), f.boundRadius);  // the preset's bound holds the whole box
 }
 
-// Away from the bulb the log estimate is close to the true distance, which is measured to a dense
+// Away from the bulb the estimate is close to the true distance, which is measured to a dense
 // sample of the surface found by the baseline marcher.
 TEST(DEQuality, MandelbulbDistanceIsCloseAwayFromTheSurface) {
     Formula f = shipped("mandelbulb.json").formula;
-    // The log estimate itself (the preset closes with the linear one, which is tighter near the
-    // surface and looser out here), before any step factor.
-    f.estimator = Node::make(*findBlock("escape_log"));
-    f.deFactor = 1.0;
+    f.deFactor = 1.0;  // the estimator itself, before the preset's safety factor
     std::vector<vec3> surface;
     for (const vec3& d : test::randomPoints(6000, 1.0, 21)) {
         if (length(d) < 0.1 || length(d) > 1.0) continue;
