@@ -52,8 +52,9 @@ struct EstimatorMeasurement {
     Node estimator;                 // the closing block measured
     ConservativenessReport report;  // at step factor 1
     double factor = 1.0;            // the safe step factor for it
-    // The safe factor times the median ratio: the share of the gap a march step covers, so the
-    // larger, the fewer steps.
+    // The safe factor times the median ratio: the share of the gap a typical march step covers.
+    // A proxy only: it cannot see an estimate that vanishes away from the surface (false hits
+    // look fast), so a choice is confirmed by rendering and by the DE count.
     double speed() const { return factor * report.medianRatio; }
 };
 
