@@ -1,5 +1,6 @@
 #include "core/de_check.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -10,9 +11,9 @@ namespace fraktal {
 
 namespace {
 
-constexpr size_t kBatch = 512;         // baseline samples evaluated together
-constexpr int kBisectionPoints = 31;   // interior points per refinement round
-constexpr int kBisectionRounds = 8;    // 32^8: a step refined to ~1e-12 of itself
+constexpr size_t kBatch = 512;        // baseline samples evaluated together
+constexpr int kBisectionPoints = 31;  // interior points per refinement round
+constexpr int kBisectionRounds = 8;   // 32^8: a step refined to ~1e-12 of itself
 
 std::vector<Evaluation> evaluateAll(FormulaSampler& s, const std::vector<vec3>& points) {
     std::vector<Evaluation> out(points.size());
@@ -60,7 +61,8 @@ BaselineHit baselineMarch(FormulaSampler& sampler, const vec3& origin, const vec
     // Refine the crossing in [lo, hi]: lo is outside, hi inside.
     for (int round = 0; round < kBisectionRounds; ++round) {
         points.clear();
-        for (int k = 1; k <= kBisectionPoints; ++k) points.push_back(origin + dir * (lo + (hi - lo) * k / (kBisectionPoints + 1)));
+        for (int k = 1; k <= kBisectionPoints; ++k)
+            points.push_back(origin + dir * (lo + (hi - lo) * k / (kBisectionPoints + 1)));
         const auto e = evaluateAll(sampler, points);
         double newHi = hi;
         for (int k = 0; k < kBisectionPoints; ++k) {
@@ -83,10 +85,9 @@ BaselineHit baselineMarch(const Formula& f, const vec3& origin, const vec3& dir,
     return baselineMarch(s, origin, dir, tStart, tEnd, step);
 }
 
-ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Camera& camera,
-                                             const ConservativenessOptions& options) {
+RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const ConservativenessOptions& options) {
     const Formula& f = sampler.formula();
-    ConservativenessReport report;
+    RaySamples out;
     std::mt19937_64 rng(options.seed);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     auto randomInBall = [&](double radius) {
@@ -108,29 +109,47 @@ ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Came
             dir = normalize(randomInBall(0.5 * f.boundRadius) - origin);
         }
         double t0, t1;
-        ++report.rays;
+        ++out.rays;
         if (!clipToBound(f, origin, dir, t0, t1)) continue;
         const BaselineHit hit = baselineMarch(sampler, origin, dir, t0, t1, step);
         if (!hit.hit) continue;
-        ++report.raysHit;
-        // Compare the DE with the distance to the hit at points spread along the ray before it.
-        std::vector<vec3> points;
-        std::vector<double> ts;
+        ++out.raysHit;
+        // Points spread along the ray before the hit, each with its distance to the hit.
         for (double t = t0; t < hit.t - minGap; t += std::max(step, (hit.t - t0) / 400.0)) {
-            points.push_back(origin + dir * t);
-            ts.push_back(t);
-        }
-        const auto e = evaluateAll(sampler, points);
-        for (size_t i = 0; i < points.size(); ++i) {
-            const double ratio = e[i].distance / (hit.t - ts[i]);
-            ++report.samples;
-            if (!(ratio <= report.worstRatio)) {
-                report.worstRatio = std::isfinite(ratio) ? ratio : std::numeric_limits<double>::infinity();
-                report.worstPoint = points[i];
-            }
+            out.points.push_back(origin + dir * t);
+            out.distances.push_back(hit.t - t);
         }
     }
+    return out;
+}
+
+ConservativenessReport compareWithSamples(FormulaSampler& sampler, const RaySamples& samples) {
+    ConservativenessReport report;
+    report.rays = samples.rays;
+    report.raysHit = samples.raysHit;
+    const auto e = evaluateAll(sampler, samples.points);
+    std::vector<double> ratios;
+    ratios.reserve(e.size());
+    for (size_t i = 0; i < e.size(); ++i) {
+        const double ratio = e[i].distance / samples.distances[i];
+        ++report.samples;
+        ratios.push_back(std::isnan(ratio) ? std::numeric_limits<double>::infinity() : ratio);
+        if (!(ratio <= report.worstRatio)) {
+            report.worstRatio = std::isfinite(ratio) ? ratio : std::numeric_limits<double>::infinity();
+            report.worstPoint = samples.points[i];
+        }
+    }
+    if (!ratios.empty()) {
+        auto middle = ratios.begin() + long(ratios.size() / 2);
+        std::nth_element(ratios.begin(), middle, ratios.end());
+        report.medianRatio = *middle;
+    }
     return report;
+}
+
+ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Camera& camera,
+                                             const ConservativenessOptions& options) {
+    return compareWithSamples(sampler, sampleRays(sampler, camera, options));
 }
 
 ConservativenessReport checkConservativeness(const Formula& f, const Camera& camera,
@@ -149,7 +168,8 @@ GridReport evaluateGrid(FormulaSampler& sampler, int n) {
     for (int i = 0; i < n; ++i) {
         slice.clear();
         for (int j = 0; j < n; ++j)
-            for (int k = 0; k < n; ++k) slice.push_back(((vec3(i, j, k) + 0.5) / double(n) * 2.0 - 1.0) * f.boundRadius);
+            for (int k = 0; k < n; ++k)
+                slice.push_back(((vec3(i, j, k) + 0.5) / double(n) * 2.0 - 1.0) * f.boundRadius);
         for (const Evaluation& e : evaluateAll(sampler, slice)) {
             ++g.points;
             if (!std::isfinite(e.distance)) {
@@ -161,8 +181,8 @@ GridReport evaluateGrid(FormulaSampler& sampler, int n) {
             g.maxDistance = std::max(g.maxDistance, e.distance);
         }
     }
-    g.secondsPerEvaluation =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / double(std::max(1L, g.points));
+    g.secondsPerEvaluation = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                             double(std::max(1L, g.points));
     return g;
 }
 

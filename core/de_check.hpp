@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
@@ -14,21 +15,21 @@ namespace fraktal {
 // Evaluates a formula at many points at once. The CPU one is exact (double); the GL one
 // (gl::GpuSampler, core/gl/de_probe.hpp) serves formulas with custom GLSL blocks.
 class FormulaSampler {
-public:
+   public:
     virtual ~FormulaSampler() = default;
     virtual const Formula& formula() const = 0;
     virtual void evaluate(std::span<const vec3> points, std::span<Evaluation> out) = 0;
 };
 
 class CpuSampler final : public FormulaSampler {
-public:
+   public:
     explicit CpuSampler(const Formula& f) : formula_(f) {}
     const Formula& formula() const override { return formula_; }
     void evaluate(std::span<const vec3> points, std::span<Evaluation> out) override {
         for (size_t i = 0; i < points.size(); ++i) out[i] = fraktal::evaluate(formula_, points[i]);
     }
 
-private:
+   private:
     const Formula& formula_;
 };
 
@@ -55,16 +56,31 @@ struct ConservativenessOptions {
 struct ConservativenessReport {
     int rays = 0;
     int raysHit = 0;
-    long samples = 0;           // (point, true distance along the ray) pairs compared
-    double worstRatio = 0.0;    // max over samples of DE / distance-to-hit
+    long samples = 0;          // (point, true distance along the ray) pairs compared
+    double worstRatio = 0.0;   // max over samples of DE / distance-to-hit
+    double medianRatio = 0.0;  // how fast marching is: near 1, each step covers the whole gap
     vec3 worstPoint{0.0};
     // Largest multiplier of the DE that keeps every sample at or under the true distance.
     double safeStepMultiplier() const { return worstRatio > 1.0 ? 1.0 / worstRatio : 1.0; }
     bool conservative(double tolerance = 0.01) const { return worstRatio <= 1.0 + tolerance; }
 };
 
+// Points on rays in front of the fractal, each with the true distance along its ray to the first
+// hit (the baseline marcher's). They depend only on the formula's membership, so estimators that
+// share it (every escape-time one) can be compared on the same samples.
+struct RaySamples {
+    int rays = 0;
+    int raysHit = 0;
+    std::vector<vec3> points;
+    std::vector<double> distances;
+};
+
 // Half the rays start at the camera through random pixels, half at random points on the bound
 // sphere aimed at random points inside it.
+RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const ConservativenessOptions& options = {});
+// The DE of `sampler`'s formula against the samples' true distances.
+ConservativenessReport compareWithSamples(FormulaSampler& sampler, const RaySamples& samples);
+
 ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Camera& camera,
                                              const ConservativenessOptions& options = {});
 ConservativenessReport checkConservativeness(const Formula& f, const Camera& camera,

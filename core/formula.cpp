@@ -49,6 +49,14 @@ std::string Formula::structureKey() const {
     return key;
 }
 
+bool canBoundEscape(const std::vector<Node>& nodes) {
+    for (const Node& n : nodes)
+        if (n.enabled && (n.block->custom || n.block->category == Category::Power ||
+                          n.block->category == Category::Fold || n.block->id == "scale"))
+            return true;
+    return false;
+}
+
 bool Formula::cpuEvaluable() const {
     for (const Node& n : nodes)
         if (n.block->custom) return false;

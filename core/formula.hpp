@@ -59,9 +59,9 @@ struct OrbitTrap {
 struct Evaluation {
     double distance = 0.0;
     OrbitTrap trap;
-    int iterations = 0;     // iterations run before escape (or all of them)
-    bool escaped = false;   // the orbit passed the bailout
-    bool inside = false;    // membership, per the estimator's Membership rule
+    int iterations = 0;    // iterations run before escape (or all of them)
+    bool escaped = false;  // the orbit passed the bailout
+    bool inside = false;   // membership, per the estimator's Membership rule
 };
 
 // Membership by the estimator's rule: escape-time formulas are inside where the orbit stayed
@@ -69,6 +69,11 @@ struct Evaluation {
 inline bool isInside(const BlockDesc& estimator, double distance, bool escaped) {
     return estimator.membership == Membership::EscapeTime ? !escaped : distance <= 0.0;
 }
+
+// Whether some enabled power, fold or scale block (or a custom one) can push orbits away: an
+// escape-time estimator bounds no object without one (translations and rotations alone keep
+// every orbit bounded, or none).
+bool canBoundEscape(const std::vector<Node>& nodes);
 
 // Throws std::logic_error for a formula that is not cpuEvaluable().
 Evaluation evaluate(const Formula& f, const vec3& pos);

@@ -42,10 +42,7 @@ const BlockDesc* lookUpBlock(const std::string& id, const CustomBlocks& custom) 
 void checkEscapeIsBounded(const std::vector<Node>& nodes, const Node& estimator, size_t listNumber,
                           const std::string& file, const std::string& path) {
     if (estimator.block->membership != Membership::EscapeTime || estimator.block->custom) return;
-    for (const Node& n : nodes)
-        if (n.enabled && (n.block->custom || n.block->category == Category::Power ||
-                          n.block->category == Category::Fold || n.block->id == "scale"))
-            return;
+    if (canBoundEscape(nodes)) return;
     throw PresetError(file, path,
                       "block " + std::to_string(listNumber) + " '" + std::string(estimator.block->id) +
                           "': an escape-time estimator needs an enabled power, fold or scale block before it; "

@@ -12,6 +12,7 @@
 #include "core/plane/plane_preset.hpp"
 #include "core/plane/plane_renderer.hpp"
 #include "core/preset.hpp"
+#include "core/safe_step.hpp"
 
 namespace fraktal::cli {
 
@@ -125,7 +126,8 @@ int runCheck(const CheckOptions& o) {
     ConservativenessOptions co;
     co.rays = o.rays;
     co.seed = o.seed;
-    const ConservativenessReport c = checkConservativeness(*sampler, preset.camera, co);
+    const RaySamples samples = sampleRays(*sampler, preset.camera, co);
+    const ConservativenessReport c = compareWithSamples(*sampler, samples);
     std::printf(
         "baseline marcher: %d rays, %d hit, %ld samples; worst DE / true distance = %.4f at (%.4f, %.4f, %.4f)\n",
         c.rays, c.raysHit, c.samples, c.worstRatio, c.worstPoint.x, c.worstPoint.y, c.worstPoint.z);
@@ -147,12 +149,26 @@ int runCheck(const CheckOptions& o) {
             100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier());
         status = 1;
     }
-    // The step factor the sampled rays allow: the largest deFactor that keeps every sampled
-    // estimate at or under the true distance (1% margin). Above the current one it means marching
-    // is slower than it needs to be; below it, the current one overshoots.
+    // The step factor the sampled rays allow, with SafeStepOptions' margin for the rays that were
+    // not sampled (core/safe_step.hpp). Above the current one, marching is slower than it needs
+    // to be; below it, the current one overshoots.
+    const SafeStepOptions safe;
     if (c.samples > 0 && c.worstRatio > 0.0 && std::isfinite(c.worstRatio))
-        std::printf("safe step factor: formula.deFactor %.3f (now %.3f; worst DE / true distance %.3f)\n",
-                    0.99 * f.deFactor / c.worstRatio, f.deFactor, c.worstRatio);
+        std::printf("safe step factor: formula.deFactor %.3f (now %.3f; worst DE / true distance %.3f, median %.3f)\n",
+                    safeStepFactor(c.worstRatio / f.deFactor, safe.marginFor(f.estimator)), f.deFactor, c.worstRatio,
+                    c.medianRatio);
+    // Escape-time formulas: the estimators that share the membership, on the same rays.
+    if (f.cpuEvaluable() && c.samples > 0 && f.estimator.block->membership == Membership::EscapeTime) {
+        const auto candidates = compareEstimators(f, samples, safe);
+        for (const EstimatorMeasurement& m : candidates) {
+            char offset[48] = "";
+            if (m.estimator.block->id == "escape_linear")
+                std::snprintf(offset, sizeof offset, " (offset %.3g)", m.estimator.values[0].x);
+            std::printf("estimator %s%s: worst %.3f, median %.3f at factor 1; safe step factor %.3f; speed %.3f%s\n",
+                        std::string(m.estimator.block->id).c_str(), offset, m.report.worstRatio, m.report.medianRatio,
+                        m.factor, m.speed(), &m == &candidates.front() ? "  <- largest factor x median" : "");
+        }
+    }
     std::printf(status == 0 ? "OK\n" : "NOT SOUND\n");
     return status;
 }

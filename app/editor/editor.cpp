@@ -386,6 +386,7 @@ int runEditor(const EditorOptions& o) {
             else
                 drawFormulaPanel(s, *viewport);
             drawSidebar(s);
+            if (!s.doc.plane) s.stepFactor.update(s.doc.preset.formula, s.doc.preset.camera);
             layoutViewport(s, io.DisplaySize.x, io.DisplaySize.y);
             drawTimelinePanel(s);
             const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);

@@ -13,6 +13,7 @@
 #include "app/editor/document.hpp"
 #include "app/editor/export_job.hpp"
 #include "app/editor/file_browser.hpp"
+#include "app/editor/formula_edits.hpp"
 #include "app/editor/pointer_input.hpp"
 #include "app/editor/timeline_edits.hpp"
 #include "app/editor/undo_history.hpp"
@@ -126,7 +127,8 @@ struct EditorState {
     WindowPlacement window;
     CameraControls cameraControls;
     CustomBlockEditor customBlockEditor;
-    EyeDistance eyeDistance;  // the DE at the eye for the fly speed (GL probe for custom GLSL)
+    EyeDistance eyeDistance;    // the DE at the eye for the fly speed (GL probe for custom GLSL)
+    AutoStepFactor stepFactor;  // the check's step factor, set after structure changes
     Dialogs dialogs;
     PresetBrowser browser;
     ExportJob exportJob;

@@ -1,7 +1,10 @@
 #include "app/editor/formula_edits.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <regex>
+
+#include "core/safe_step.hpp"
 
 namespace fraktal::editor {
 
@@ -144,6 +147,18 @@ int nodeNamedInLog(const std::string& log, int nodeCount) {
     if (std::regex_search(log, m, node)) return std::stoi(m[1]) - 1;  // numbered from 1, as listed
     if (log.find("estimator \"") != std::string::npos) return nodeCount;
     return -1;
+}
+
+bool AutoStepFactor::update(Formula& f, const Camera& camera) {
+    std::string key = f.structureKey();
+    if (key == measuredKey) return false;
+    measuredKey = std::move(key);
+    if (!f.cpuEvaluable() || !f.estimator.block) return false;
+    const auto start = std::chrono::steady_clock::now();
+    measured = measureSafeStep(f, camera).factor;
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!overridden) f.deFactor = measured;
+    return true;
 }
 
 }  // namespace fraktal::editor

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/camera.hpp"
 #include "core/formula.hpp"
 
 namespace fraktal::editor {
@@ -51,6 +52,23 @@ struct ProgramTracker {
         compiledKey = f.structureKey();
         hasProgram = true;
     }
+};
+
+// The step factor `fraktal check` measures (core/safe_step.hpp), applied after every change of
+// structure so that a new stack never shows overshoot specks; a factor set by hand is kept
+// (`overridden`) until the user hands it back to the check. An opened document keeps its own.
+struct AutoStepFactor {
+    std::string measuredKey;  // the structure the current factor belongs to
+    bool overridden = false;
+    double measured = 0.0;  // the last measured factor (0: none this session)
+    double seconds = 0.0;   // how long measuring it took
+
+    // Takes f's factor as the one for its structure (an opened document).
+    static AutoStepFactor adopting(const Formula& f) { return {f.structureKey()}; }
+    // When f's structure differs from measuredKey: measures its estimator from `camera` (CPU;
+    // formulas with custom GLSL blocks keep their factor) and, unless overridden, sets
+    // f.deFactor. True when it measured.
+    bool update(Formula& f, const Camera& camera);
 };
 
 // The node index a compile-error log talks about (`node 3 "Box fold" (box_fold)...`, numbered

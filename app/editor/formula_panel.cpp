@@ -11,6 +11,7 @@
 #include "app/editor/node_list_widgets.hpp"
 #include "app/editor/panels.hpp"
 #include "app/editor/timeline_panel.hpp"
+#include "core/safe_step.hpp"
 
 namespace fraktal::editor {
 
@@ -52,11 +53,12 @@ void addBlockMenu(EditorState& s) {
     }
 }
 
-void globalSettings(Formula& f) {
+void globalSettings(Formula& f, AutoStepFactor& stepFactor) {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
     ImGui::DragInt("Iterations", &f.iterations, 0.1f, 1, kMaxIterations, "%d", ImGuiSliderFlags_AlwaysClamp);
     helpMarker("How many times the node list runs per point. Parameters update live, without a recompile.");
-    const double bailLo = 0.1, bailHi = 1e6, boundLo = 0.01, boundHi = 100.0, facLo = 0.01, facHi = 1.0;
+    const double bailLo = 0.1, bailHi = 1e6, boundLo = 0.01, boundHi = 100.0, facLo = kMinStepFactor,
+                 facHi = kMaxStepFactor;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
     ImGui::DragScalar("Bailout", ImGuiDataType_Double, &f.bailout, 0.05f, &bailLo, &bailHi, "%.4g",
                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
@@ -66,9 +68,12 @@ void globalSettings(Formula& f) {
                       ImGuiSliderFlags_AlwaysClamp);
     helpMarker("The fractal lies inside this sphere; rays are clipped to it.");
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-    ImGui::DragScalar("DE factor", ImGuiDataType_Double, &f.deFactor, 0.005f, &facLo, &facHi, "%.3f",
-                      ImGuiSliderFlags_AlwaysClamp);
-    helpMarker("Multiplies the distance estimate: below 1 makes an overshooting hybrid safe (see fraktal check).");
+    if (ImGui::DragScalar("DE factor", ImGuiDataType_Double, &f.deFactor, 0.005f, &facLo, &facHi, "%.3f",
+                          ImGuiSliderFlags_AlwaysClamp))
+        stepFactor.overridden = true;
+    helpMarker(
+        "Multiplies the distance estimate. Set from `fraktal check`'s measurement after every structure "
+        "change unless set by hand (Render tab).");
 }
 
 }  // namespace
@@ -83,7 +88,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
 
     ImGui::SetNextItemWidth(-1);
     ImGui::InputTextWithHint("##name", "Preset name", &s.doc.preset.name);
-    globalSettings(f);
+    globalSettings(f, s.stepFactor);
     ImGui::Spacing();
     sectionHeader("Node list");
 

@@ -11,6 +11,7 @@
 #include "app/editor/param_widgets.hpp"
 #include "app/editor/setting_widgets.hpp"
 #include "app/editor/timeline_panel.hpp"
+#include "core/safe_step.hpp"
 
 namespace fraktal::editor {
 
@@ -98,6 +99,23 @@ void drawMarchSection(RenderSettings& r) {
                "Initial step factor of the over-relaxed marcher (1: plain sphere tracing).");
 }
 
+// The DE step factor: the check's (AutoStepFactor) after every structure change, or the user's.
+void drawStepFactorSection(AutoStepFactor& a, Formula& f) {
+    sectionHeader("DE step factor");
+    if (ImGui::Checkbox("Set by hand", &a.overridden) && !a.overridden && a.measured > 0.0) f.deFactor = a.measured;
+    helpMarker(
+        "Off: the factor `fraktal check` measures for the formula is applied after every change of its "
+        "structure, so the march never overshoots. On: the value below is kept.");
+    ImGui::BeginDisabled(!a.overridden);
+    dragDouble("Step factor", f.deFactor, kMinStepFactor, kMaxStepFactor, 0.005f, "%.3f",
+               "Multiplies the distance estimate: smaller is safer and slower.");
+    ImGui::EndDisabled();
+    if (a.measured > 0.0)
+        ImGui::TextDisabled("Measured for this structure: %.3f (%.2f s)", a.measured, a.seconds);
+    else
+        ImGui::TextDisabled("The preset's own factor (measured after a structure change).");
+}
+
 void drawColourSection(EditorState& s, RenderSettings& r) {
     sectionHeader("Colour (OCIO)");
     if (!s.color) {
@@ -132,6 +150,7 @@ void drawRenderTab(EditorState& s) {
     } else {
         drawViewportSection(s.doc.view);
         drawMarchSection(s.doc.preset.render);
+        drawStepFactorSection(s.stepFactor, s.doc.preset.formula);
         drawColourSection(s, s.doc.preset.render);
     }
     ImGui::PopItemWidth();
