@@ -20,6 +20,8 @@ benchmarks=(
   "de_count|bench/stills/de_count_all.sh $build 320x180 1"
   "exr_write|bench/stills/exr_write.sh $build 8192x8192"
   "plane|bench/plane/run.sh $build 2"
+  "anim|bench/anim/run.sh $build 240 640x360"
+  "editor|bench/viewport/editor_run.sh $build presets/mandelbulb.json 1280x720"
 )
 
 selected=("$@")

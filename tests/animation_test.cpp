@@ -166,6 +166,41 @@ TEST(Animation, PresetRoundTripsAndFramesApplyTheTracks) {
     EXPECT_NEAR(dot(normalize(f0.camera.target - f0.camera.position), vec3(0, 0, -1)), 1.0, 1e-9);
 }
 
+// Lights and the environment are keyed like any other field: a light fading in and moving, the
+// environment turning; a key on a light that does not exist is the target's fault.
+TEST(Animation, LightsAndEnvironmentAreKeyable) {
+    const char* const lit = R"({
+  "format": "fraktal-preset", "version": 3,
+  "formula": {"nodes": [{"block": "mandelbulb"}, {"block": "escape_log"}]},
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+  "lights": [{"type": "sphere", "position": [0, 3, 0], "size": 0.2, "intensity": 2}],
+  "environment": {"map": "env/sky.exr"},
+  "animation": {"lastFrame": 10, "tracks": [
+    {"target": "lights[0].intensity", "interpolation": "linear", "keys": [{"frame": 0, "value": 0}, {"frame": 10, "value": 5}]},
+    {"target": "lights[0].position", "interpolation": "linear",
+     "keys": [{"frame": 0, "value": [0, 3, 0]}, {"frame": 10, "value": [2, 3, 0]}]},
+    {"target": "environment.rotation", "interpolation": "linear", "keys": [{"frame": 0, "value": 0}, {"frame": 10, "value": 90}]}
+  ]}
+})";
+    const Preset p = parsePreset(lit, FRAKTAL_SOURCE_DIR "/presets/lit.json");
+    const Preset f5 = presetAtFrame(p, 5);
+    ASSERT_EQ(f5.lighting.lights.size(), 1u);
+    EXPECT_DOUBLE_EQ(f5.lighting.lights[0].intensity, 2.5);
+    EXPECT_NEAR(f5.lighting.lights[0].position.x, 1.0, 1e-12);
+    EXPECT_DOUBLE_EQ(f5.lighting.environment.rotation, 45.0);
+    EXPECT_EQ(parsePreset(serializePreset(p), FRAKTAL_SOURCE_DIR "/presets/again.json").animation, p.animation);
+
+    std::string missing = lit;
+    missing.replace(missing.find("lights[0].intensity"), 19, "lights[3].intensity");
+    try {
+        parsePreset(missing, FRAKTAL_SOURCE_DIR "/presets/lit.json");
+        FAIL() << "a key on a missing light loaded";
+    } catch (const PresetError& e) {
+        EXPECT_NE(std::string(e.what()).find("lit.json"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("animation.tracks[0].target"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Animation, BadTracksNameFileFieldAndReason) {
     struct Case {
         const char* track;

@@ -71,7 +71,7 @@ ms = sorted(f["frame_ms"] for f in drag)
 scales = sorted(f["scale"] for f in drag if f["action"] == "reproject")
 def pct(v, p): return v[min(len(v) - 1, int(p * len(v)))] if v else None
 psnr = sys.argv[4].split()[0]
-print(json.dumps({
+result = {
     "window": f"{sys.argv[5]}x{sys.argv[6]}",
     "viewport": lines[-1]["viewport"],
     "drag_frames": len(drag),
@@ -81,7 +81,11 @@ print(json.dumps({
     "scale_min": scales[0] if scales else None, "scale_p50": pct(scales, 0.5),
     "internal_size_p50": [f"{f['width']}x{f['height']}" for f in drag if f["scale"] == pct(scales, 0.5)][:1],
     "psnr_2s_after_stop_db": float(psnr) if psnr.replace('.', '', 1).isdigit() else psnr,
-}, indent=1))
+}
+print(json.dumps(result, indent=1))
+# The same as a Markdown table, for bench/run.sh.
+print("\n| measure | value |\n|---|---|")
+for key, value in result.items(): print(f"| {key} | {value} |")
 PY
   exit 0
 fi
@@ -91,6 +95,6 @@ size=${3:-1280x720}
 w=${size%x*}; h=${size#*x}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# A private HOME: no personal editor.ini, recent list or autosave.
-HOME="$work" xvfb-run -a -s "-screen 0 ${w}x${h}x24" "$0" --inner "$(realpath "$build/app/fraktal")" \
+# A private HOME and config folder: no personal editor.ini, recent list or autosave.
+HOME="$work" XDG_CONFIG_HOME="$work/config" xvfb-run -a -s "-screen 0 ${w}x${h}x24" "$0" --inner "$(realpath "$build/app/fraktal")" \
   "$(realpath "$preset")" "$w" "$h" "$work"

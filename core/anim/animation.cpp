@@ -14,7 +14,8 @@ namespace {
 
 constexpr const char* kInterpolationNames[] = {"constant", "linear", "smooth"};
 // The sections whose numeric fields can be keyed ("render" cannot: size and samples are per sequence).
-constexpr const char* kKeyableSections[] = {"formula.", "camera.", "shading.", "colorManagement."};
+constexpr const char* kKeyableSections[] = {"formula.",         "camera.", "shading.",
+                                            "colorManagement.", "lights[", "environment."};
 constexpr int kMaxKeysPerTrack = 100000;
 constexpr int kMaxTracks = 1000;
 constexpr int kArcLengthSamplesPerFrame = 16;
@@ -221,9 +222,10 @@ Animation parseAnimation(const ReadContext& context, const json& j, const Preset
         if (track.target.empty()) t.fail("missing required field", "target");
         if (std::none_of(std::begin(kKeyableSections), std::end(kKeyableSections),
                          [&](const char* s) { return track.target.rfind(s, 0) == 0; }))
-            t.fail(
-                "'" + track.target + "' cannot be keyed (keyable: formula.*, camera.*, shading.*, colorManagement.*)",
-                "target");
+            t.fail("'" + track.target +
+                       "' cannot be keyed (keyable: formula.*, camera.*, shading.*, colorManagement.*, lights[i].*, "
+                       "environment.*)",
+                   "target");
         if (findTrack(a, track.target)) t.fail("'" + track.target + "' has two tracks", "target");
         const std::string interpolation = t.string("interpolation", "smooth", 64);
         const auto name = std::find(std::begin(kInterpolationNames), std::end(kInterpolationNames), interpolation);
