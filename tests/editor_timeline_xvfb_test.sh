@@ -5,7 +5,7 @@
 # wall clock; the key marker beside the power widget keys an edited value at the frame, one undo
 # step that Ctrl+Z removes whole; Ctrl+S saves the key and a new editor reads it back; the camera
 # path overlay changes the viewport's pixels when on and only then. A key dragged along the
-# timeline moves, Delete over the timeline removes it.
+# timeline moves, Delete over the timeline removes it. More tracks than rows scroll with the wheel.
 # Usage: editor_timeline_xvfb_test.sh FRAKTAL PRESET_DIR OUT_DIR
 set -eu
 if [ -z "${FRAKTAL_STORIES_UNDER_XVFB:-}" ]; then
@@ -158,6 +158,28 @@ echo "camera path: $on pixels differ with it on, $again with it off again"
 check "$on > 200" || fail "the camera path overlay changed only $on pixels"
 check "$again < $on / 10" || fail "the viewport differs by $again pixels without the overlay"
 [ "$(q .undoDepth)" = 2 ] || fail "zooming and the overlay toggle made undo steps ($(q .undoDepth) in all)"
+stop
+
+# More tracks than the timeline has rows (8 against 6): the mouse wheel over it scrolls the rows.
+many="$home/many_tracks.json"
+jq '.animation.tracks += [
+  {"target": "shading.aoStrength", "keys": [{"frame": 0, "value": 0.5}, {"frame": 100, "value": 0.8}]},
+  {"target": "shading.fogDensity", "keys": [{"frame": 0, "value": 0}, {"frame": 100, "value": 0.1}]},
+  {"target": "shading.specular", "keys": [{"frame": 0, "value": 0.2}, {"frame": 100, "value": 0.5}]},
+  {"target": "shading.aoDistance", "keys": [{"frame": 0, "value": 0.2}, {"frame": 100, "value": 0.4}]},
+  {"target": "shading.lightColor", "keys": [{"frame": 0, "value": [1, 1, 1]}, {"frame": 100, "value": [1, 0.9, 0.8]}]},
+  {"target": "camera.fovY", "keys": [{"frame": 0, "value": 45}, {"frame": 100, "value": 50}]}]' \
+  "$presets/mandelbulb_power_morph.json" > "$many"
+start "$many"
+to "$(frame_x 120)" "$(q '.timeline.bar[1] + .timeline.bar[3] / 2 | round')"
+xdotool click --repeat 3 --delay 60 5
+wait_frames 3
+[ "$(q .timeline.firstRow)" = 2 ] || fail "3 wheel steps down over 8 tracks in 6 rows show row $(q .timeline.firstRow) first, not 2"
+xdotool click 4
+wait_frames 3
+[ "$(q .timeline.firstRow)" = 1 ] || fail "a wheel step up shows row $(q .timeline.firstRow) first, not 1"
+[ "$(q .undoDepth)" = 0 ] || fail "scrolling the tracks made an undo step ($(q .undoLabel))"
+echo "track rows: scrolled to $(q .timeline.firstRow) of 8 tracks in 6 rows"
 stop
 
 [ $failures -eq 0 ] && echo "editor_timeline_xvfb_test: all OK" || { echo "editor_timeline_xvfb_test: $failures failure(s)"; exit 1; }

@@ -50,6 +50,7 @@ nlohmann::json timelineJson(const TimelineState& t) {
               {"pathButton", {t.pathButton[0], t.pathButton[1]}},
               {"keyMarkers", markers}};
     j["hovered"] = t.hovered;
+    j["firstRow"] = t.firstRow;
     j["selectedKey"] = t.selected ? json{{"target", t.selected->target}, {"frame", t.selected->frame}} : json();
     return j;
 }

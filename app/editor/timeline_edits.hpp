@@ -33,6 +33,7 @@ struct TimelineState {
     double dragFrame = 0.0;          // where the dragged key would land
     bool hovered = false;            // the timeline panel was hovered last frame (Space, Delete)
     float height = 0.0f;             // the panel's height, taken from the viewport
+    int firstRow = 0;                // the first track shown when there are more than fit (mouse wheel)
     // The frame and animation last written into the document: another frame, or an edit of the
     // animation (a key added, undo), evaluates the animation again.
     std::optional<int> appliedFrame;

@@ -163,7 +163,14 @@ void scrubBar(EditorState& s) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float width = ImGui::GetContentRegionAvail().x;
-    const int rows = std::max(1, std::min(int(a.tracks.size()), kMaxRowsShown));
+    const int trackCount = int(a.tracks.size());
+    const int rows = std::max(1, std::min(trackCount, kMaxRowsShown));
+    // More tracks than rows: the mouse wheel over the timeline scrolls through them.
+    t.firstRow = std::clamp(t.firstRow, 0, std::max(0, trackCount - rows));
+    const auto trackOfRow = [&](int r) -> Track* {
+        const int i = t.firstRow + r;
+        return r < rows && i < trackCount ? &a.tracks[size_t(i)] : nullptr;
+    };
     const ImVec2 barMin(origin.x + kLabelWidth, origin.y);
     const float barW = std::max(width - kLabelWidth - kKeyRadius, 10.0f);
     const float barH = kRulerHeight + rows * kRowHeight;
@@ -178,8 +185,8 @@ void scrubBar(EditorState& s) {
     };
 
     // Track names, each with its interpolation on a right click.
-    for (int r = 0; r < rows && r < int(a.tracks.size()); ++r) {
-        const Track& track = a.tracks[size_t(r)];
+    for (int r = 0; trackOfRow(r); ++r) {
+        const Track& track = *trackOfRow(r);
         const float y = origin.y + kRulerHeight + r * kRowHeight;
         ImGui::SetCursorScreenPos(ImVec2(origin.x, y));
         ImGui::PushID(r);
@@ -217,11 +224,11 @@ void scrubBar(EditorState& s) {
     // A press on a key selects it and starts moving it; elsewhere it scrubs.
     if (ImGui::IsItemActivated()) {
         t.dragged.reset();
-        for (int r = 0; r < rows && r < int(a.tracks.size()) && !t.dragged; ++r) {
+        for (int r = 0; trackOfRow(r) && !t.dragged; ++r) {
             const float y = barMin.y + kRulerHeight + (r + 0.5f) * kRowHeight;
-            for (const Key& k : a.tracks[size_t(r)].keys)
+            for (const Key& k : trackOfRow(r)->keys)
                 if (std::abs(mouse.x - xOf(k.frame)) <= kKeyRadius + 1 && std::abs(mouse.y - y) <= kRowHeight / 2) {
-                    t.dragged = KeyRef{a.tracks[size_t(r)].target, k.frame};
+                    t.dragged = KeyRef{trackOfRow(r)->target, k.frame};
                     t.dragFrame = k.frame;
                     break;
                 }
@@ -241,8 +248,8 @@ void scrubBar(EditorState& s) {
         t.dragged.reset();
     }
 
-    for (int r = 0; r < rows && r < int(a.tracks.size()); ++r) {
-        const Track& track = a.tracks[size_t(r)];
+    for (int r = 0; trackOfRow(r); ++r) {
+        const Track& track = *trackOfRow(r);
         const float y = barMin.y + kRulerHeight + (r + 0.5f) * kRowHeight;
         for (const Key& k : track.keys) {
             const KeyRef ref{track.target, k.frame};
@@ -254,10 +261,14 @@ void scrubBar(EditorState& s) {
     }
     const float px = xOf(t.frame);
     dl->AddLine(ImVec2(px, barMin.y), ImVec2(px, barMax.y), kPlayheadColor, 2.0f);
-    if (int(a.tracks.size()) > kMaxRowsShown) {
-        char more[48];
-        std::snprintf(more, sizeof more, "+%d more tracks", int(a.tracks.size()) - kMaxRowsShown);
-        dl->AddText(ImVec2(origin.x, barMax.y), IM_COL32(150, 150, 150, 255), more);
+    if (trackCount > rows) {
+        const bool overTracks = ImGui::IsWindowHovered() && mouse.y >= origin.y && mouse.y < barMax.y;
+        if (overTracks && ImGui::GetIO().MouseWheel != 0.0f)
+            t.firstRow = std::clamp(t.firstRow - int(std::lround(ImGui::GetIO().MouseWheel)), 0, trackCount - rows);
+        char shown[64];
+        std::snprintf(shown, sizeof shown, "tracks %d-%d of %d (mouse wheel scrolls)", t.firstRow + 1,
+                      t.firstRow + rows, trackCount);
+        dl->AddText(ImVec2(origin.x, barMax.y), IM_COL32(150, 150, 150, 255), shown);
     }
     ImGui::SetCursorScreenPos(ImVec2(origin.x, barMax.y + 2));
 }
