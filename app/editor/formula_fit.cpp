@@ -131,9 +131,9 @@ bool fitFormulaAfterEdit(Formula& f, Camera& camera) {
     if (bound != f.boundRadius) f.boundRadius = bound, changed = true;
     // Inside or against the new surface (a template's camera inside a larger object), or so far
     // from it that it is small in view (a camera framed for a larger object before the edit):
-    // frame it. Small: from more than kSmallInView times the framed distance away, the object
-    // spans under 40 % of the view.
-    constexpr double kSmallInView = 2.5;
+    // frame it. Small: from more than kSmallInView times the framed distance away (a Mandelbox-
+    // like cube seen from 2.15 times the framed distance spans 38 % of the view's height).
+    constexpr double kSmallInView = 2.0;
     const Camera framed = framedCamera(f, de, camera);
     const double away = length(camera.position - framed.target), fits = length(framed.position - framed.target);
     if (!(de(camera.position) > 0.01 * f.boundRadius) || away > kSmallInView * fits) camera = framed;

@@ -34,7 +34,7 @@ Camera framedCamera(const Formula& f, const DistanceAt& de, const Camera& curren
 // After a node-list edit: the estimator and bailout fitted to the blocks and, for a formula the
 // CPU can evaluate, the bound radius fitted to the new object; the camera framed when it ends up
 // inside the surface, closer to it than 1% of the bound, or so far away that the object is small
-// in view (more than 2.5 times the framed distance). Returns whether the formula changed.
+// in view (more than 2 times the framed distance). Returns whether the formula changed.
 bool fitFormulaAfterEdit(Formula& f, Camera& camera);
 
 }  // namespace fraktal::editor
