@@ -8,10 +8,15 @@
 #include <ImfRgbaFile.h>
 #include <ImfStringAttribute.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "core/color/color_pipeline.hpp"
 #include "core/image/exr_writer.hpp"
@@ -99,20 +104,20 @@ double meanLumaError(const std::vector<uint8_t>& a, const std::vector<uint8_t>& 
 // Frames of four flat quadrants of saturated colour (a plain EXR: no fraktal attributes), where
 // chroma subsampling costs nothing away from the edges and a wrong Y'CbCr matrix or range shows.
 constexpr int kPatchW = 64, kPatchH = 32;
-void writePatchFrames(const std::filesystem::path& dir, int count) {
+void writePatchFrames(const std::filesystem::path& dir, int count, int width = kPatchW, int height = kPatchH) {
     const float colours[4][3] = {{0.8f, 0.05f, 0.05f}, {0.05f, 0.6f, 0.05f}, {0.05f, 0.05f, 0.8f}, {0.9f, 0.7f, 0.1f}};
-    std::vector<Imf::Rgba> pixels(size_t(kPatchW) * kPatchH);
-    for (int y = 0; y < kPatchH; ++y)
-        for (int x = 0; x < kPatchW; ++x) {
-            const float* c = colours[(y >= kPatchH / 2) * 2 + (x >= kPatchW / 2)];
-            pixels[size_t(y) * kPatchW + x] = Imf::Rgba(c[0], c[1], c[2], 1.0f);
+    std::vector<Imf::Rgba> pixels(size_t(width) * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float* c = colours[(y >= height / 2) * 2 + (x >= width / 2)];
+            pixels[size_t(y) * width + x] = Imf::Rgba(c[0], c[1], c[2], 1.0f);
         }
     for (int i = 0; i < count; ++i) {
         char name[32];
         std::snprintf(name, sizeof name, "p_%03d.exr", i);
-        Imf::RgbaOutputFile out((dir / name).c_str(), kPatchW, kPatchH, Imf::WRITE_RGBA);
-        out.setFrameBuffer(pixels.data(), 1, kPatchW);
-        out.writePixels(kPatchH);
+        Imf::RgbaOutputFile out((dir / name).c_str(), width, height, Imf::WRITE_RGBA);
+        out.setFrameBuffer(pixels.data(), 1, width);
+        out.writePixels(height);
     }
 }
 
@@ -254,4 +259,41 @@ TEST(Encode, FramesIntoVideoThroughTheDisplayTransform) {
     EXPECT_NE(noFolder.output.find("no frame folder " + (dir / "nowhere").string()), std::string::npos)
         << noFolder.output;
     std::filesystem::remove_all(dir);
+}
+
+// Ctrl+C while encoding: ffmpeg is stopped, its temporary video removed, and the video that was at
+// the destination before stays as it was.
+TEST(Encode, InterruptKeepsTheOldVideoAndLeavesNoTemporaryFile) {
+    const auto dir = freshFolder("fraktal_encode_interrupt");
+    std::filesystem::create_directories(dir / "frames");
+    writePatchFrames(dir / "frames", 200, 640, 360);
+    const std::string pattern = (dir / "frames/p_###.exr").string(), video = (dir / "v.mp4").string();
+    std::ofstream(video) << "precious";
+    auto temporaries = [&dir] {
+        int n = 0;
+        for (const auto& e : std::filesystem::directory_iterator(dir))
+            n += e.path().filename().string().starts_with(".v.tmp-");
+        return n;
+    };
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::freopen("/dev/null", "w", stderr);
+        ::execl(FRAKTAL_CLI, FRAKTAL_CLI, "encode", "-q", pattern.c_str(), "-o", video.c_str(), nullptr);
+        ::_exit(127);
+    }
+    ASSERT_GT(pid, 0);
+    // Interrupt once ffmpeg has begun writing the temporary video (it makes it with its header).
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (temporaries() == 0 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const bool started = temporaries() > 0;
+    ::kill(pid, SIGINT);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    ASSERT_TRUE(started) << "no temporary video appeared within 30 s";
+    ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ": Ctrl+C was not handled";
+    EXPECT_EQ(WEXITSTATUS(status), 130) << "cancelled is exit status 130";
+    std::ifstream in(video);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "precious");
+    EXPECT_EQ(temporaries(), 0) << "a temporary video was left behind";
 }

@@ -11,6 +11,7 @@
 #include <memory>
 #include <numeric>
 
+#include "cli/cancel.hpp"
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
 #include "core/anim/sequence.hpp"
@@ -211,7 +212,8 @@ int runEncode(const EncodeOptions& o) {
     video.ffmpeg = o.ffmpeg;
     video.srgbTransfer = look.display == "sRGB" && look.view != "Raw";
 
-    AtomicFile out(o.output);  // checks the folder; the video goes to a temporary name first
+    const std::atomic<bool>& cancel = cancelOnSignal();  // from before ffmpeg makes its file
+    AtomicFile out(o.output);                            // checks the folder; the video goes to a temporary name first
     const std::vector<std::string> argv = ffmpegArguments(video, out.tempPath());
     if (!o.quiet)
         std::fprintf(stderr, "encoding %zu frames %dx%d at %g fps (%s, %s/%s) into %s\n", frames.size(), video.width,
@@ -228,7 +230,8 @@ int runEncode(const EncodeOptions& o) {
     std::vector<float> rgba;
     std::vector<uint8_t> rgb8(size_t(video.width) * size_t(video.height) * 3);
     bool fed = true;
-    for (size_t i = 0; i < frames.size() && fed; ++i) {
+    size_t i = 0;
+    for (; i < frames.size() && fed && !cancel; ++i) {
         readFrameRgba(frames[i], rgba);
         display.toDisplay8(rgba, rgb8);
         fed = ffmpeg->write(rgb8);
@@ -236,6 +239,15 @@ int runEncode(const EncodeOptions& o) {
             std::fprintf(stderr, "%sframe %zu/%zu: %s%s", ::isatty(STDERR_FILENO) ? "\r" : "", i + 1, frames.size(),
                          frames[i].path.filename().c_str(),
                          ::isatty(STDERR_FILENO) && i + 1 < frames.size() ? "   " : "\n");
+    }
+    if (cancel) {
+        // Ctrl+C reaches ffmpeg too when both run in a terminal. ffmpeg is killed and reaped, then
+        // the temporary video removed (the destructors, in that order): an existing video at the
+        // destination stays as it was.
+        ffmpeg.reset();
+        std::fprintf(stderr, "\nfraktal: encode cancelled after %zu of %zu frames; no video written\n", i,
+                     frames.size());
+        return kCancelledExitCode;
     }
     const ProgramResult r = ffmpeg->wait();
     if (!fed || r.exitCode != 0 || r.signal) {

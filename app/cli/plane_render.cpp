@@ -1,20 +1,14 @@
 #include "cli/plane_render.hpp"
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 
+#include "cli/cancel.hpp"
 #include "core/gl/context.hpp"
 #include "core/plane/plane_still.hpp"
 #include "core/render/still_job.hpp"
 
 namespace fraktal::cli {
-
-namespace {
-std::atomic<bool> gPlaneCancel{false};  // set by SIGINT/SIGTERM; a handler can only reach globals
-extern "C" void requestPlaneCancel(int) { gPlaneCancel.store(true); }
-}  // namespace
 
 int runPlaneRender(const PlaneRenderRequest& q, PlanePreset preset) {
     PlaneStillJob job;
@@ -45,16 +39,13 @@ int runPlaneRender(const PlaneRenderRequest& q, PlanePreset preset) {
             std::fprintf(stderr, "progress: %d/%d tiles (%d%%)\n", done, total, 100 * done / std::max(1, total));
         };
     }
-    gPlaneCancel = false;
-    job.cancel = &gPlaneCancel;
-    std::signal(SIGINT, requestPlaneCancel);
-    std::signal(SIGTERM, requestPlaneCancel);
+    job.cancel = &cancelOnSignal();
     try {
         for (const std::string& w : renderPlaneStill(job, color))
             std::fprintf(stderr, "fraktal: warning: %s\n", w.c_str());
     } catch (const RenderCancelled&) {
         std::fprintf(stderr, "\nfraktal: render cancelled; no file written\n");
-        return 130;
+        return kCancelledExitCode;
     }
     if (!q.quiet) std::fprintf(stderr, "wrote %s%s%s\n", q.output.c_str(), q.png.empty() ? "" : " and ", q.png.c_str());
     return 0;

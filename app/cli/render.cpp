@@ -2,13 +2,12 @@
 // PRESET may also be an EXR written by fraktal: its embedded preset (3D or 2D) is rendered again.
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <regex>
 
+#include "cli/cancel.hpp"
 #include "cli/commands.hpp"
 #include "cli/plane_render.hpp"
 #include "cli/render_options.hpp"
@@ -25,10 +24,6 @@
 namespace fraktal::cli {
 
 namespace {
-
-// Set by SIGINT/SIGTERM, polled between tiles. A signal handler can only reach global state.
-std::atomic<bool> gCancelRequested{false};
-extern "C" void requestCancel(int) { gCancelRequested.store(true); }
 
 struct RenderOptions {
     std::string input;
@@ -215,12 +210,9 @@ int runRender(RenderOptions o) {
     // llvmpipe reads its thread count when the context is made.
     if (o.threads > 0) ::setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
     auto context = gl::HeadlessContext::create();
-    gCancelRequested = false;
-    job.cancel = &gCancelRequested;
-    std::signal(SIGINT, requestCancel);
-    std::signal(SIGTERM, requestCancel);
+    job.cancel = &cancelOnSignal();
     if (sequence) {
-        sequence->cancel = &gCancelRequested;
+        sequence->cancel = job.cancel;
         if (!o.quiet)
             std::fprintf(stderr, "rendering frames %s of %s: %dx%d, %d spp, %s\n", o.frames.c_str(), o.input.c_str(),
                          r.width, r.height, r.spp, context->renderer().c_str());
@@ -242,7 +234,7 @@ int runRender(RenderOptions o) {
             renderStillJob(job, color);
     } catch (const RenderCancelled&) {
         std::fprintf(stderr, "\nfraktal: render cancelled; no file written\n");
-        return 130;
+        return kCancelledExitCode;
     }
     if (!o.quiet) {
         std::fprintf(stderr, "wrote %s", job.exr.c_str());

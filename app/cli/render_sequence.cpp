@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "cli/cancel.hpp"
 #include "core/render/still_job.hpp"
 
 namespace fraktal::cli {
@@ -55,7 +56,7 @@ int renderSequence(const SequenceJob& job, const ColorPipeline& color) {
                          "\nfraktal: render cancelled at frame %d; %d frames written, the frame under way "
                          "is not\n",
                          frames[size_t(i)], rendered);
-            return 130;
+            return kCancelledExitCode;
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         renderSeconds += seconds;
