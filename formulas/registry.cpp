@@ -18,6 +18,7 @@
 #include "formulas/plane_fold.hpp"
 #include "formulas/primitives.hpp"
 #include "formulas/pseudo_kleinian.hpp"
+#include "formulas/quaternion.hpp"
 #include "formulas/rotate.hpp"
 #include "formulas/scale.hpp"
 #include "formulas/sierpinski_fold.hpp"
@@ -68,6 +69,8 @@ constexpr std::array kBlocks{
     describe<PlaneCombine>(),
     describe<SphereCombine>(),
     describe<BoxCombine>(),
+    describe<QuaternionJulia>(),
+    describe<QuaternionMandelbrot>(),
 };
 }  // namespace
 
