@@ -419,8 +419,9 @@ std::string describeFormula(const Formula& f) {
         }
         s << "\n";
     };
-    for (size_t k = 0; k < f.nodes.size(); ++k) describeNode(f.nodes[k], "  " + std::to_string(k) + ". ");
-    describeNode(f.estimator, "  => ");
+    // Numbered from 1 with the estimator last, as the editor's list and the preset errors number them.
+    for (size_t k = 0; k < f.nodes.size(); ++k) describeNode(f.nodes[k], "  " + std::to_string(k + 1) + ". ");
+    describeNode(f.estimator, "  " + std::to_string(f.nodes.size() + 1) + ". ");
     return s.str();
 }
 

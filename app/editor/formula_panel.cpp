@@ -103,8 +103,10 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     ImGui::PushID("estimator");
     const int est = int(f.nodes.size());
     if (errorNode == est) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
-    if (ImGui::Selectable(("=> " + std::string(f.estimator.block ? f.estimator.block->label : "(none)")).c_str(),
-                          s.selectedNode == est))
+    if (ImGui::Selectable(
+            (std::to_string(est + 1) + ". => " + std::string(f.estimator.block ? f.estimator.block->label : "(none)"))
+                .c_str(),
+            s.selectedNode == est))
         s.selectedNode = est;
     if (errorNode == est) ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The closing estimator: turns the final orbit into a distance.");
