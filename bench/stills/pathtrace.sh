@@ -12,6 +12,7 @@ set -euo pipefail
 build="${1:-build}"; size="${2:-1280x720}"; ref="${3:-4096}"; mbspp="${4:-64}"
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+source "$root/bench/stills/peer.sh"
 g++ -O2 -std=c++20 -I"$root" "$root/bench/stills/pathtrace.cpp" "$root/$build/core/libfraktal_core.a" \
   $(pkg-config --cflags --libs OpenEXR OpenColorIO epoxy egl) -o "$tmp/pathtrace"
 python3 - "$root/presets/mandelbulb.json" "$tmp/lit.json" "$root/presets/env/sky.exr" <<'PY'
@@ -28,15 +29,21 @@ PY
 t0=$(date +%s.%N)
 "$tmp/pathtrace" "$tmp/lit.json" "$size" "$ref" --denoise | tee "$tmp/pt.log"
 t1=$(date +%s.%N)
-# The Monte Carlo keys go into the [main_parameters] section.
-mc="DOF_enabled true;\nDOF_monte_carlo true;\nDOF_MC_global_illumination true;\nMC_soft_shadows_enable true;\nDOF_radius 0;\nDOF_samples $mbspp;\nDOF_max_noise 0;"
-sed "s/^\[main_parameters\]/[main_parameters]\n$mc/" "$root/bench/stills/mandelbulb.fract" > "$tmp/mb.fract"
-t2=$(date +%s.%N)
-HOME="$tmp" mandelbulber2 -n -f png -r "$size" -o "$tmp/mb" "$tmp/mb.fract" > "$tmp/mb.log" 2>&1
-t3=$(date +%s.%N)
+if [[ $peer == 1 ]]; then
+  # The Monte Carlo keys go into the [main_parameters] section.
+  mc="DOF_enabled true;\nDOF_monte_carlo true;\nDOF_MC_global_illumination true;\nMC_soft_shadows_enable true;\nDOF_radius 0;\nDOF_samples $mbspp;\nDOF_max_noise 0;"
+  sed "s/^\[main_parameters\]/[main_parameters]\n$mc/" "$root/bench/stills/mandelbulb.fract" > "$tmp/mb.fract"
+  t2=$(date +%s.%N)
+  HOME="$tmp" mandelbulber2 -n -f png -r "$size" -o "$tmp/mb" "$tmp/mb.fract" > "$tmp/mb.log" 2>&1
+  t3=$(date +%s.%N)
+fi
 reach=$(grep "^35 dB" "$tmp/pt.log")
 echo
 echo "| renderer | size | what | seconds |"
 echo "|---|---|---|---|"
 echo "| fraktal --mode path | $size | $reach | (whole run with the reference: $(echo "$t1 - $t0" | bc -l | xargs printf %.1f)) |"
-echo "| mandelbulber2 Monte Carlo GI | $size | $mbspp samples | $(echo "$t3 - $t2" | bc -l | xargs printf %.1f) |"
+if [[ $peer == 1 ]]; then
+  echo "| mandelbulber2 Monte Carlo GI | $size | $mbspp samples | $(echo "$t3 - $t2" | bc -l | xargs printf %.1f) |"
+else
+  echo "| mandelbulber2 Monte Carlo GI | $size | skipped: not installed | - |"
+fi

@@ -27,18 +27,7 @@ json="${JSON:-$root/bench/stills/results.json}"
 read -r -a scenes <<< "${SCENES:-menger sierpinski_tetrahedron mandelbulb mandelbox}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 
-if ! command -v mandelbulber2 > /dev/null; then
-  echo "mandelbulber2 is missing: installing the Debian package" >&2
-  sudo=(); [[ $(id -u) -eq 0 ]] || sudo=(sudo -n)
-  "${sudo[@]}" apt-get install -y mandelbulber2 > "$tmp/apt.log" 2>&1 ||
-    { "${sudo[@]}" apt-get update > /dev/null 2>&1 && "${sudo[@]}" apt-get install -y mandelbulber2 > "$tmp/apt.log" 2>&1; } || true
-fi
-peer=1
-if ! command -v mandelbulber2 > /dev/null; then
-  peer=0
-  echo "mandelbulber2 could not be installed (apt-get install -y mandelbulber2: $(tail -1 "$tmp/apt.log" 2>/dev/null)):" \
-    "skipping the comparison, timing fraktal alone" >&2
-fi
+source "$root/bench/stills/peer.sh"
 
 g++ -O2 -std=c++20 -I"$root" "$root/bench/stills/de_count.cpp" "$root/$build/core/libfraktal_core.a" \
   $(pkg-config --cflags --libs OpenEXR OpenColorIO epoxy egl) -o "$tmp/de_count"
