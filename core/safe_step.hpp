@@ -4,9 +4,11 @@
 // Every block carries the running derivative w in p.w: similarity transforms and conformal
 // folds multiply it by their scale (1 for rotations, translations, box and plane folds; |s| for
 // scales; the fold factor for sphere folds and inversions), non-conformal deforms by a bound of
-// their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight|, and power blocks use
-// the analytic scalar n r^(n-1) (White/Nylander; Syntopia, "Distance estimated 3D fractals"
-// part V). The escape-time estimators divide by it:
+// their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight|. The Mandelbulb
+// power multiplies it by its largest stretch, n r^(n-1) max(1, |sin(n theta) / sin(theta)|)
+// (formulas/mandelbulb.hpp); the other power blocks by the analytic scalar n r^(n-1)
+// (White/Nylander; Syntopia, "Distance estimated 3D fractals" part V). The escape-time
+// estimators divide by it:
 // - log, 0.5 log(r) r / w: the Hubbard-Douady potential's lower bound, for power iterations
 //   (Syntopia part V; Knighty's notes on fractalforums.com, "Mandelbulb distance estimation").
 // - linear, r / w: Syntopia part VI's Mandelbox form, for fold-and-scale stacks.
@@ -14,10 +16,12 @@
 // deterministic 3-D fractals", 1989) never overshoots where w bounds the stretch, but it
 // vanishes on every escape level set |F_k| = B, not only at the fractal: a marcher stops on those
 // false shells, so it is not offered here.
-// Neither estimate is a proven bound for every stack: the scalar derivative of a power
-// underestimates its Jacobian near the poles (the phi direction stretches by
-// sin(n theta) / sin(theta), up to n times more), and w is a local bound. So the factor is
-// measured on sampled rays and a margin is kept for the rays that were not sampled.
+// Neither estimate is a proven bound for every stack: the scalar derivative of the other power
+// blocks underestimates their Jacobian near the poles (the phi direction stretches by up to n
+// times more), a non-integer power's map jumps where atan2 wraps, the log form outgrows the
+// distance far from the object, and a bailout that a following fold undoes leaves a shell where
+// the estimate is large and the object near. So the factor is measured on sampled rays and a
+// margin is kept for the rays that were not sampled.
 #pragma once
 
 #include <string>

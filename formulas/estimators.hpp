@@ -79,13 +79,18 @@ struct EscapeLogEstimator {
     static constexpr Membership membership = Membership::EscapeTime;
     static constexpr std::array<ParamDecl, 0> params{};
 
+    // With a bailout of 1 or more an escaped orbit has log(r) > 0. A negative estimate comes from
+    // an orbit that stayed inside the unit ball, a point inside, where the running derivative may
+    // have shrunk towards 0 and the quotient is no distance (down to -1.6e10 on the juliabulb's
+    // grid; float and double differ there), and a hit refinement that steps by it (t += d - level)
+    // would jump far back along the ray. Inside is 0.
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
-    return 0.5 * log(r) * r / abs(p.w);
+    return max(0.5 * log(r) * r / abs(p.w), 0.0);
 )";
     static double estimate(const P4& p, const vec3&, Args) {
         double r = length(p.xyz);
-        return 0.5 * std::log(r) * r / abs(p.w);
+        return max(0.5 * std::log(r) * r / abs(p.w), 0.0);
     }
 };
 
@@ -97,7 +102,12 @@ struct EscapeLinearEstimator {
     static constexpr Category category = Category::Estimator;
     static constexpr Membership membership = Membership::EscapeTime;
     static constexpr std::array params{
-        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 10.0, "Subtracted from r (Mandelbulber's linear DE constant)."},
+        ParamDecl{"offset",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  0.0,
+                  10.0,
+                  "Subtracted from r (Mandelbulber's linear DE constant)."},
     };
 
     static constexpr std::string_view glsl = R"(

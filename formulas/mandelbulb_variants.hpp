@@ -5,7 +5,8 @@ namespace fraktal::blocks {
 
 // Mandelbulb variants that artists know from Mandelbulber2. All are spherical power maps
 // v -> r^n S(n theta + theta_phase, n phi + phi_phase); their running derivative is the
-// analytic scalar one of the classic bulb, dr -> n r^(n-1) dr (White/Nylander, Syntopia part V).
+// analytic scalar one, dr -> n r^(n-1) dr (White/Nylander, Syntopia part V), which
+// underestimates the stretch near the poles (the classic bulb, mandelbulb.hpp, bounds it).
 
 // The seed's bulb (mandelbulb.hpp) with phase offsets added to the multiplied angles.
 struct MandelbulbPhase {

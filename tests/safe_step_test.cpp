@@ -1,5 +1,6 @@
 // Safe distance estimates for any stack: every block's running derivative bounds its Jacobian
-// (powers excepted: theirs is the analytic scalar one), and the estimator and step factor that
+// (powers excepted: the Mandelbulb's is its largest stretch, the variants' the analytic scalar
+// one), and the estimator and step factor that
 // the check chooses for random stacks of shipped blocks never overshoot on rays it did not see,
 // without being made safe by being slow.
 #include "core/safe_step.hpp"
@@ -205,4 +206,77 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     ASSERT_TRUE(editor::removeNode(f, 0));
     EXPECT_TRUE(a.update(f, p.camera));
     EXPECT_EQ(f.deFactor, 0.3);
+}
+
+// The Mandelbulb's derivative is the largest singular value of its Jacobian: along r, theta and
+// phi (the map's singular directions) the stretch, by finite differences, is at most p.w, and the
+// largest of the three equals it. Integer powers (|sin(n theta)| <= n |sin(theta)| holds there),
+// random points of the ball of radius 1.5, points within 1e-3 of the y axis included.
+TEST(SafeStep, MandelbulbDerivativeIsItsLargestStretch) {
+    const BlockDesc& block = *findBlock("mandelbulb");
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const vec3 c(0.0);
+    int compared = 0, nearAxis = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        Node n = Node::make(block);
+        n.values[0].x = double(2 + trial % 11);
+        vec3 x = vec3(u(rng), u(rng), u(rng)) * 1.5;
+        if (trial % 4 == 0) x = vec3(1e-3 * u(rng), x.y, 1e-3 * u(rng));  // near the pole
+        const double r = length(x);
+        if (r < 0.05 || std::hypot(x.x, x.z) < 1e-6) continue;
+        const double theta = std::atan2(std::hypot(x.x, x.z), x.y), phi = std::atan2(x.x, x.z);
+        const vec3 radial = x / r;
+        const vec3 thetaHat(std::cos(theta) * std::sin(phi), -std::sin(theta), std::cos(theta) * std::cos(phi));
+        const vec3 phiHat(std::cos(phi), 0.0, -std::sin(phi));
+        P4 p{x, 1.0};
+        block.apply(p, c, n.args());
+        auto image = [&](const vec3& q) {
+            P4 s{q, 1.0};
+            block.apply(s, c, n.args());
+            return s.xyz;
+        };
+        const double h = 1e-7 * std::min(1.0, std::hypot(x.x, x.z) * 10.0);
+        double largest = 0.0;
+        for (const vec3& dir : {radial, thetaHat, phiHat}) {
+            const double stretch = length(image(x + dir * h) - image(x - dir * h)) / (2.0 * h);
+            ASSERT_LE(stretch, p.w * (1.0 + 1e-4))
+                << "power " << n.values[0].x << " at (" << x.x << ", " << x.y << ", " << x.z << ")";
+            largest = std::max(largest, stretch);
+        }
+        EXPECT_NEAR(largest, p.w, 1e-4 * p.w)
+            << "power " << n.values[0].x << " at (" << x.x << ", " << x.y << ", " << x.z << ")";
+        ++compared;
+        nearAxis += std::hypot(x.x, x.z) < 2e-3;
+    }
+    EXPECT_GT(compared, 1500);
+    EXPECT_GT(nearAxis, 300);
+}
+
+// The Mandelbulb (12 iterations) and the box+bulb hybrid ship with a step factor of at least 0.8
+// that the check measures as safe: `fraktal check`'s rays (120, seed 1) and margin, the same
+// code. On other rays the shipped factor never overshoots.
+TEST(SafeStep, BulbPresetsShipWithAMeasuredFactorOfAtLeast08) {
+    for (const char* name : {"mandelbulb.json", "hybrid_box_bulb.json"}) {
+        const Preset p = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/" + name);
+        const Formula& f = p.formula;
+        if (std::string(name) == "mandelbulb.json") EXPECT_EQ(f.iterations, 12);
+        CpuSampler sampler(f);
+        ConservativenessOptions checkRays;
+        checkRays.rays = 120;
+        checkRays.seed = 1;
+        const ConservativenessReport c = compareWithSamples(sampler, sampleRays(sampler, p.camera, checkRays));
+        ASSERT_GT(c.samples, 10000) << name;
+        const double safe = safeStepFactor(c.worstRatio / f.deFactor, SafeStepOptions{}.marginFor(f.estimator));
+        std::printf("%s: worst DE / true distance %.4f at factor %.3f, median %.4f; safe step factor %.3f\n", name,
+                    c.worstRatio, f.deFactor, c.medianRatio, safe);
+        EXPECT_GE(safe, 0.8) << name;
+        EXPECT_GE(f.deFactor, 0.8) << name;
+        EXPECT_LE(f.deFactor, safe) << name;
+
+        const ConservativenessReport fresh = checkConservativeness(f, p.camera, {60, 6000, 77});
+        EXPECT_GT(fresh.samples, 5000) << name;
+        EXPECT_LE(fresh.worstRatio, 1.0) << name << " overshoots at (" << fresh.worstPoint.x << ", "
+                                         << fresh.worstPoint.y << ", " << fresh.worstPoint.z << ")";
+    }
 }
