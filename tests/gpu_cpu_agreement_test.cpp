@@ -62,8 +62,9 @@ Agreement compare(const Formula& f, const std::vector<vec3>& points) {
 }
 
 // A formula that exercises one block: the block repeated a few times, closed by a sphere; or,
-// for an estimator, a rotation and a scale closed by it.
-Formula formulaFor(const BlockDesc& block, uint64_t seed) {
+// for an estimator, a rotation and a scale closed by it. Its on/off parameters are all on or all
+// off (`togglesOn`), so each branch of a block is compared.
+Formula formulaFor(const BlockDesc& block, uint64_t seed, bool togglesOn) {
     std::mt19937_64 rng(seed);
     Node node = Node::make(block);
     // Values a quarter of the way from the default towards a random point of the range, so
@@ -74,6 +75,7 @@ Formula formulaFor(const BlockDesc& block, uint64_t seed) {
         const vec3 target(u(rng), u(rng), u(rng));
         vec3 v = d.defaultValue + 0.25 * (target - d.defaultValue);
         if (d.type == ParamType::Float) v = vec3(v.x, 0.0, 0.0);
+        if (d.type == ParamType::Toggle) v = vec3(togglesOn ? 1.0 : 0.0, 0.0, 0.0);
         node.values[i] = v;
     }
     Formula f;
@@ -96,16 +98,52 @@ Formula formulaFor(const BlockDesc& block, uint64_t seed) {
 
 }  // namespace
 
+bool hasToggle(const BlockDesc& block) {
+    for (const ParamDecl& d : block.params)
+        if (d.type == ParamType::Toggle) return true;
+    return false;
+}
+
 TEST(GpuCpuAgreement, EveryBlock) {
+    int toggledBlocks = 0;
     for (const BlockDesc& block : allBlocks()) {
-        const Formula f = formulaFor(block, 7);
-        const Agreement a = compare(f, test::randomPoints(kPoints, 2.0, 11));
-        EXPECT_EQ(a.mismatched, 0u) << "block " << block.id << ": worst error " << a.worstExcess
-                                    << "x the tolerance at (" << a.worstPoint.x << ", " << a.worstPoint.y << ", "
-                                    << a.worstPoint.z << ")";
-        EXPECT_LE(a.illConditioned, kPoints / 100) << "block " << block.id;
-        EXPECT_GE(a.compared, 10000u) << "block " << block.id;
+        for (bool on : {false, true}) {
+            if (on && !hasToggle(block)) continue;
+            toggledBlocks += on;
+            const std::string what = std::string(block.id) + (on ? " (toggles on)" : "");
+            const Formula f = formulaFor(block, 7, on);
+            const Agreement a = compare(f, test::randomPoints(kPoints, 2.0, 11));
+            EXPECT_EQ(a.mismatched, 0u) << "block " << what << ": worst error " << a.worstExcess
+                                        << "x the tolerance at (" << a.worstPoint.x << ", " << a.worstPoint.y << ", "
+                                        << a.worstPoint.z << ")";
+            EXPECT_LE(a.illConditioned, kPoints / 100) << "block " << what;
+            EXPECT_GE(a.compared, 10000u) << "block " << what;
+        }
     }
+    // add_c's Julia mode and the primitives' intersection at least.
+    EXPECT_GE(toggledBlocks, 4);
+}
+
+// add_c in Julia mode on the power-8 bulb: the GPU adds the same constant and leaves the
+// derivative alone as the CPU does, and the result differs from the Mandelbrot mode's (the
+// toggle reaches the shader).
+TEST(GpuCpuAgreement, AddCJuliaMode) {
+    Preset p = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
+    p.formula.deFactor = 1.0;
+    Node& addC = p.formula.nodes[1];
+    ASSERT_EQ(addC.block->id, "add_c");
+    const auto points = test::randomPoints(kPoints, p.formula.boundRadius, 17);
+    const Formula mandelbrot = p.formula;
+    addC.values[size_t(addC.block->paramIndex("julia"))].x = 1.0;
+    addC.values[size_t(addC.block->paramIndex("julia_c"))] = vec3(-0.2, 0.6, 0.2);
+    const Agreement a = compare(p.formula, points);
+    EXPECT_EQ(a.mismatched, 0u) << "worst error " << a.worstExcess << "x the tolerance";
+    EXPECT_LE(a.illConditioned, kPoints / 100);
+    EXPECT_GE(a.compared, 10000u);
+    size_t differ = 0;
+    for (size_t i = 0; i < 1000; ++i)
+        differ += std::abs(distanceEstimate(p.formula, points[i]) - distanceEstimate(mandelbrot, points[i])) > 1e-3;
+    EXPECT_GT(differ, 500u) << "Julia mode hardly changes the estimate";
 }
 
 TEST(GpuCpuAgreement, EveryShippedPreset) {

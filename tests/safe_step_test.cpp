@@ -33,7 +33,10 @@ Node randomNode(const BlockDesc& block, std::mt19937_64& rng) {
     for (size_t i = 0; i < block.params.size(); ++i) {
         const ParamDecl& d = block.params[i];
         std::uniform_real_distribution<double> u(d.min, d.max);
-        n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : vec3(u(rng), u(rng), u(rng));
+        if (d.type == ParamType::Toggle)
+            n.values[i] = vec3(u(rng) > 0.5 ? 1.0 : 0.0, 0.0, 0.0);
+        else
+            n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : vec3(u(rng), u(rng), u(rng));
     }
     return n;
 }
@@ -45,7 +48,7 @@ std::string describe(const Formula& f) {
         for (size_t i = 0; i < n.values.size(); ++i) {
             char buf[96];
             const vec3& v = n.values[i];
-            if (n.block->params[i].type == ParamType::Float)
+            if (isScalar(n.block->params[i].type))
                 std::snprintf(buf, sizeof buf, "%s%.3g", i ? ", " : "", v.x);
             else
                 std::snprintf(buf, sizeof buf, "%s(%.3g %.3g %.3g)", i ? ", " : "", v.x, v.y, v.z);
