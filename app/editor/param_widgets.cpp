@@ -86,15 +86,13 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
         if (changed) {
             const vec3 next(v[0], v[1], v[2]);
             // A direction may not be zero: refuse the edit that would make it so.
-            if (d.direction && length(next) == 0.0)
-                changed = false;
-            else
-                value = next;
+            if (d.direction && length(next) == 0.0) changed = false;
+            else value = next;
         }
     }
     if (shown) {
-        const ImVec2 lo = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-        shown->widgets.push_back({name, lo.x, lo.y, size.x, size.y});
+        const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+        shown->widgets.push_back({name, at.x, at.y, size.x, size.y});
     }
     tooltip(d, shown);
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
