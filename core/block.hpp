@@ -17,10 +17,16 @@ enum class Category { Fold, Transform, Power, Estimator };
 
 std::string_view categoryName(Category c);
 
-enum class ParamType { Float, Vec3 };
+// Toggle: an on/off switch (a checkbox in the editor, true/false in a preset). It keeps 0 or 1 in
+// x and reaches GLSL as a float uniform, so a body tests it as `name > 0.5` on both sides, and
+// its range is 0..1.
+enum class ParamType { Float, Vec3, Toggle };
 
-// One parameter. Floats keep their value in x. The range is what the editor's widget offers and
-// what a preset may hold (per component for vectors).
+// Kinds held in x alone and passed to GLSL as one float.
+constexpr bool isScalar(ParamType t) { return t != ParamType::Vec3; }
+
+// One parameter. Floats and toggles keep their value in x. The range is what the editor's widget
+// offers and what a preset may hold (per component for vectors).
 struct ParamDecl {
     std::string_view name;
     ParamType type = ParamType::Float;
@@ -30,6 +36,11 @@ struct ParamDecl {
     std::string_view help;
     bool direction = false;  // a vector used as a direction: must not be zero
 };
+
+// An on/off parameter: 0 or 1 (`on`) in x, range 0..1.
+constexpr ParamDecl toggleParam(std::string_view name, bool on, std::string_view help) {
+    return ParamDecl{name, ParamType::Toggle, {on ? 1.0 : 0.0, 0.0, 0.0}, 0.0, 1.0, help};
+}
 
 using ParamValue = vec3;
 

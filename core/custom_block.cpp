@@ -77,7 +77,10 @@ std::string CustomBlock::validate(const Definition& d) {
             return where + ".name: '" + p.name + "' is reserved";
         if (!names.insert(p.name).second) return where + ".name: '" + p.name + "' is declared twice";
         if (!(p.min <= p.max)) return where + ": min is above max";
-        for (int k = 0; k < (p.type == ParamType::Float ? 1 : 3); ++k)
+        if (p.type == ParamType::Toggle &&
+            (p.min != 0.0 || p.max != 1.0 || (p.defaultValue.x != 0.0 && p.defaultValue.x != 1.0)))
+            return where + ": a toggle is 0 or 1 (range 0 to 1)";
+        for (int k = 0; k < (isScalar(p.type) ? 1 : 3); ++k)
             if (p.defaultValue[k] < p.min || p.defaultValue[k] > p.max) return where + ".default: outside [min, max]";
     }
     if (d.glsl.empty()) return "glsl: empty";
@@ -155,12 +158,15 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
             p.name = pj["name"].get<std::string>();
             const std::string type = pj.value("type", std::string("float"));
             if (type == "vec3") p.type = ParamType::Vec3;
-            else if (type != "float") fail(where + ".type", "expected float or vec3");
+            else if (type == "toggle") p.type = ParamType::Toggle;
+            else if (type != "float") fail(where + ".type", "expected float, vec3 or toggle");
             p.min = num("min", 0.0);
             p.max = num("max", 1.0);
             if (pj.contains("default")) {
                 const auto& dv = pj["default"];
-                if (p.type == ParamType::Float) {
+                if (p.type == ParamType::Toggle && dv.is_boolean()) {
+                    p.defaultValue = vec3(dv.get<bool>() ? 1.0 : 0.0, 0.0, 0.0);
+                } else if (isScalar(p.type)) {
                     p.defaultValue = vec3(num("default", 0.0), 0.0, 0.0);
                 } else {
                     if (!dv.is_array() || dv.size() != 3) fail(where + ".default", "expected an array of 3 numbers");
@@ -172,7 +178,7 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
                 }
             } else {
                 p.defaultValue = vec3(std::clamp(0.0, p.min, p.max));
-                if (p.type == ParamType::Float) p.defaultValue.y = p.defaultValue.z = 0.0;
+                if (isScalar(p.type)) p.defaultValue.y = p.defaultValue.z = 0.0;
             }
             if (pj.contains("help")) {
                 if (!pj["help"].is_string()) fail(where + ".help", "expected a string");
@@ -202,6 +208,9 @@ nlohmann::json customBlockToJson(const CustomBlock& block) {
         if (p.type == ParamType::Vec3) {
             pj["type"] = "vec3";
             pj["default"] = {p.defaultValue.x, p.defaultValue.y, p.defaultValue.z};
+        } else if (p.type == ParamType::Toggle) {
+            pj["type"] = "toggle";
+            pj["default"] = p.defaultValue.x > 0.5;
         } else {
             pj["default"] = p.defaultValue.x;
         }

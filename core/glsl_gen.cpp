@@ -10,7 +10,7 @@ namespace fraktal {
 
 namespace {
 
-std::string glslType(ParamType t) { return t == ParamType::Float ? "float" : "vec3"; }
+std::string glslType(ParamType t) { return isScalar(t) ? "float" : "vec3"; }
 
 int countLines(std::string_view s) { return int(std::count(s.begin(), s.end(), '\n')); }
 

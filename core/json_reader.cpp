@@ -230,6 +230,14 @@ bool FieldReader::boolean(const std::string& key, bool fallback) {
     return v.get<bool>();
 }
 
+bool FieldReader::toggle(const std::string& key, bool fallback) {
+    if (!has(key)) return fallback;
+    const json& v = at(key);
+    if (v.is_boolean()) return v.get<bool>();
+    if (v.is_number() && (v.get<double>() == 0.0 || v.get<double>() == 1.0)) return v.get<double>() == 1.0;
+    fail("expected true or false (or 0 or 1), found " + v.dump(), key);
+}
+
 std::string FieldReader::string(const std::string& key, const std::string& fallback, size_t maxLength) {
     if (!has(key)) return fallback;
     const json& v = at(key);

@@ -107,6 +107,9 @@ class FieldReader {
     double number(const std::string& key, double fallback, double lo, double hi);
     int integer(const std::string& key, int fallback, int lo, int hi);
     bool boolean(const std::string& key, bool fallback);
+    // An on/off parameter: true or false, or the number 0 or 1 that presets held before
+    // parameters had an on/off kind. Anything else is refused, naming the value.
+    bool toggle(const std::string& key, bool fallback);
     std::string string(const std::string& key, const std::string& fallback, size_t maxLength = kMaxStringBytes);
     template <int N>
     glm::vec<N, double> vector(const std::string& key, const glm::vec<N, double>& fallback, double lo, double hi) {

@@ -74,7 +74,9 @@ Node parseNode(const ReadContext& context, const json& j, const std::string& pat
                 const ParamDecl& d = block->params[i];
                 const std::string key(d.name);
                 known += (known.empty() ? "" : ", ") + key;
-                if (d.type == ParamType::Float)
+                if (d.type == ParamType::Toggle)
+                    n.values[i].x = params.toggle(key, d.defaultValue.x > 0.5) ? 1.0 : 0.0;
+                else if (d.type == ParamType::Float)
                     n.values[i].x = params.number(key, d.defaultValue.x, d.min, d.max);
                 else
                     n.values[i] = params.vector<3>(key, d.defaultValue, d.min, d.max);
@@ -412,7 +414,9 @@ std::string describeFormula(const Formula& f) {
         for (size_t i = 0; i < n.values.size(); ++i) {
             const ParamDecl& d = n.block->params[i];
             s << (i == 0 ? ": " : ", ") << d.name << " = ";
-            if (d.type == ParamType::Float)
+            if (d.type == ParamType::Toggle)
+                s << (n.values[i].x > 0.5 ? "on" : "off");
+            else if (d.type == ParamType::Float)
                 s << n.values[i].x;
             else
                 s << "(" << n.values[i].x << ", " << n.values[i].y << ", " << n.values[i].z << ")";

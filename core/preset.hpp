@@ -87,7 +87,7 @@ void writeNodeSchedule(const NodeT& n, nlohmann::json& node) {
 }
 inline nlohmann::json vecJson(const vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 // A node: its block, its schedule and the parameters that differ from their defaults (floats as
-// numbers, vectors as arrays). NodeT: Node or PlaneNode.
+// numbers, toggles as true/false, vectors as arrays). NodeT: Node or PlaneNode.
 template <class NodeT>
 nlohmann::json nodeToJson(const NodeT& n) {
     nlohmann::json j;
@@ -96,7 +96,10 @@ nlohmann::json nodeToJson(const NodeT& n) {
     nlohmann::json params = nlohmann::json::object();
     for (size_t i = 0; i < n.block->params.size(); ++i) {
         const ParamDecl& d = n.block->params[i];
-        if (d.type == ParamType::Float) {
+        if (d.type == ParamType::Toggle) {
+            const bool on = n.values[i].x > 0.5;
+            if (on != (d.defaultValue.x > 0.5)) params[std::string(d.name)] = on;
+        } else if (d.type == ParamType::Float) {
             if (n.values[i].x != d.defaultValue.x) params[std::string(d.name)] = n.values[i].x;
         } else if (n.values[i] != d.defaultValue) {
             params[std::string(d.name)] = vecJson(n.values[i]);

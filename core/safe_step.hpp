@@ -4,11 +4,11 @@
 // Every block carries the running derivative w in p.w: similarity transforms and conformal
 // folds multiply it by their scale (1 for rotations, translations, box and plane folds; |s| for
 // scales; the fold factor for sphere folds and inversions), non-conformal deforms by a bound of
-// their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight|. The Mandelbulb
-// power multiplies it by its largest stretch, n r^(n-1) max(1, |sin(n theta) / sin(theta)|)
-// (formulas/mandelbulb.hpp); the other power blocks by the analytic scalar n r^(n-1)
-// (White/Nylander; Syntopia, "Distance estimated 3D fractals" part V). The escape-time
-// estimators divide by it:
+// their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight| (nothing in Julia
+// mode). The Mandelbulb power multiplies it by its largest stretch,
+// n r^(n-1) max(1, |sin(n theta) / sin(theta)|) (formulas/mandelbulb.hpp); the other power blocks
+// by the analytic scalar n r^(n-1) (White/Nylander; Syntopia, "Distance estimated 3D fractals"
+// part V). The escape-time estimators divide by it:
 // - log, 0.5 log(r) r / w: the Hubbard-Douady potential's lower bound, for power iterations
 //   (Syntopia part V; Knighty's notes on fractalforums.com, "Mandelbulb distance estimation").
 // - linear, r / w: Syntopia part VI's Mandelbox form, for fold-and-scale stacks.

@@ -20,7 +20,7 @@ struct PlaneCombine {
     static constexpr std::array params{
         ParamDecl{
             "offset", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "The fractal's part: |v| - offset over |dr|."},
-        ParamDecl{"intersect", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 1.0, "0: union; 1: intersection."},
+        toggleParam("intersect", false, "On: intersection; off: union."),
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
         ParamDecl{"normal", ParamType::Vec3, {0.0, 1.0, 0.0}, -1.0, 1.0, "Plane normal (normalised before use).", true},
         ParamDecl{"height", ParamType::Float, {-1.0, 0.0, 0.0}, -10.0, 10.0, "Plane offset along the normal."},
@@ -55,7 +55,7 @@ struct SphereCombine {
     static constexpr std::array params{
         ParamDecl{
             "offset", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "The fractal's part: |v| - offset over |dr|."},
-        ParamDecl{"intersect", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 1.0, "0: union; 1: intersection."},
+        toggleParam("intersect", false, "On: intersection; off: union."),
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
         ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Sphere centre."},
         ParamDecl{"radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "Sphere radius."},
@@ -90,7 +90,7 @@ struct BoxCombine {
     static constexpr std::array params{
         ParamDecl{
             "offset", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "The fractal's part: |v| - offset over |dr|."},
-        ParamDecl{"intersect", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 1.0, "0: union; 1: intersection."},
+        toggleParam("intersect", false, "On: intersection; off: union."),
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
         ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Box centre."},
         ParamDecl{"size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.001, 10.0, "Half-size of the box."},

@@ -243,3 +243,34 @@ TEST(CustomBlock, TheDocumentedExampleWorks) {
     EXPECT_EQ(finite, points.size());
     EXPECT_GT(inside, 10u);  // the twisted bulb is there
 }
+
+// A custom block's on/off parameter: declared as "toggle", a float uniform in GLSL, a checkbox
+// in the editor, true/false in the preset's node; a toggle with another range is refused.
+TEST(CustomBlock, ToggleParametersAreDeclaredOnce) {
+    nlohmann::json j = nlohmann::json::parse(mandelboxWithCustomFold(kBoxFoldGlsl));
+    auto& params = j["formula"]["customBlocks"][0]["params"];
+    params.push_back({{"name", "mirror"}, {"type", "toggle"}, {"default", true}, {"help", "Mirror x."}});
+    j["formula"]["customBlocks"][0]["glsl"] = std::string(kBoxFoldGlsl) + "if (mirror > 0.5) p.x = -p.x;\n";
+    j["formula"]["nodes"][0]["params"]["mirror"] = false;
+    const Preset p = parsePreset(j.dump(), "custom_toggle.json");
+    const BlockDesc& block = *p.formula.nodes[0].block;
+    ASSERT_EQ(block.params.size(), 2u);
+    EXPECT_EQ(block.params[1].type, ParamType::Toggle);
+    EXPECT_EQ(block.params[1].defaultValue, vec3(1.0, 0.0, 0.0));
+    EXPECT_EQ(p.formula.nodes[0].values[1], vec3(0.0));
+    EXPECT_NE(generateFormulaGLSL(p.formula).code.find("uniform float u_n0_mirror;"), std::string::npos);
+    const nlohmann::json saved = presetToJson(p);
+    EXPECT_EQ(saved["formula"]["customBlocks"][0]["params"][1]["type"], "toggle");
+    EXPECT_EQ(saved["formula"]["customBlocks"][0]["params"][1]["default"], true);
+    EXPECT_EQ(saved["formula"]["nodes"][0]["params"]["mirror"], false);
+    EXPECT_EQ(serializePreset(parsePreset(saved.dump(), "again.json")), serializePreset(p));
+
+    params[1]["max"] = 2.0;
+    try {
+        parsePreset(j.dump(), "bad_toggle.json");
+        ADD_FAILURE() << "a toggle with range 0..2 was accepted";
+    } catch (const PresetError& e) {
+        EXPECT_EQ(e.field(), "formula.customBlocks[0].params[1]");
+        EXPECT_NE(e.reason().find("a toggle is 0 or 1"), std::string::npos) << e.what();
+    }
+}

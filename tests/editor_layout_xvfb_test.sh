@@ -4,7 +4,9 @@
 # Ctrl+Backslash and the menu bar's arrow fold the column away (the viewport takes the width) and
 # back; the column's width, its folded state and the window's size come back after a restart
 # (the ini in $XDG_CONFIG_HOME/fraktal). A parameter's slider, hovered, shows its block's help
-# text as a tooltip.
+# text as a tooltip: the pixels under it change and the state file's "tooltip" is the help text
+# of the parameter's declaration. An on/off parameter is a checkbox: one click on Add c's julia
+# flips it, and one Ctrl+Z flips it back.
 # Usage: editor_layout_xvfb_test.sh FRAKTAL PRESET_DIR
 set -eu
 if [ -z "${FRAKTAL_LAYOUT_UNDER_XVFB:-}" ]; then
@@ -15,6 +17,11 @@ presets=$2
 . "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 viewport() { q '.viewport | map(floor) | join(" ")'; }
+# The centre of parameter NAME's widget (drag or checkbox) as the editor drew it last frame.
+widget_centre() { q ".paramWidgets[] | select(.name == \"$1\") | .rect | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
+# The help text a block's declaration gives parameter NAME (a ParamDecl or toggleParam line):
+# declared_help FILE NAME (formulas/*.hpp).
+declared_help() { sed -n "s/.*\\(ParamDecl{\\|toggleParam(\\)\"$2\", .*, \"\\([^\"]*\\)\"[})],\$/\\2/p" "$1"; }
 
 start "$presets/mandelbulb.json"
 [ "$(q '.window.size | join("x")')" = 1280x800 ] || fail "the first window is $(q '.window.size | join("x")'), not 1280x800"
@@ -35,6 +42,19 @@ for f in no_tooltip tooltip; do convert "$home/$f.png" -crop "$region" +repage "
 changed=$(compare -metric AE "$home/no_tooltip.crop.png" "$home/tooltip.crop.png" null: 2>&1 || true)
 echo "tooltip: $changed pixels changed under the hovered power slider"
 check "${changed:-0} > 2000" || fail "hovering the power slider showed no tooltip ($changed pixels changed)"
+# Its text: the widget records the help it showed; it must be the declaration's, word for word.
+help=$(declared_help "$presets/../formulas/mandelbulb.hpp" power)
+[ -n "$help" ] || fail "no help text found for power in formulas/mandelbulb.hpp"
+set -- $(widget_centre power)
+[ $# -eq 2 ] || { fail "the state file records no widget for the power parameter"; set -- 0 0; }
+to "$1" "$2"
+wait_frames 3
+[ "$(q .tooltipParam)" = power ] || fail "hovering the power slider at $1,$2 showed the tooltip of '$(q .tooltipParam)'"
+[ "$(q .tooltip)" = "$help" ] || fail "the power slider's tooltip reads '$(q .tooltip)', not the declaration's '$help'"
+echo "tooltip text: $(q .tooltip)"
+to 700 400
+wait_frames 2
+[ -z "$(q .tooltip)" ] || fail "the tooltip '$(q .tooltip)' stays with the pointer off the slider"
 # The column's right edge (ImGui's resize border) dragged 80 px to the right.
 drag_frames $((default_x - 1)) 300 80 0 4
 wait_frames 2
@@ -79,6 +99,43 @@ xdotool key ctrl+backslash
 wait_frames 2
 [ "$(q '.panels.columnWidth | floor')" = "$width" ] || fail "the column came back $(q '.panels.columnWidth') wide, not $width"
 echo "restart: window $(q '.window.size | join("x")'), column $(q '.panels.columnWidth') wide, viewport $(viewport)"
+stop
+
+# On/off parameters are checkboxes: Add c's julia in the Juliabulb (node 2; on in the preset),
+# at the default layout (a fresh config).
+rm -rf "$XDG_CONFIG_HOME"
+start "$presets/juliabulb.json"
+julia() { q '.document.formula.nodes[1].params.julia // false'; }
+[ "$(q '.document.formula.nodes[1].block')" = add_c ] || fail "node 2 of juliabulb.json is not add_c"
+[ "$(julia)" = true ] || fail "juliabulb.json does not load with julia on ($(julia))"
+to 100 262
+wait_frames 1
+click_frames
+wait_frames 2
+[ "$(q .selectedNode)" = 1 ] || fail "clicking the second row of the node list selected node $(q .selectedNode)"
+# The Formula panel scrolled to its end, so that Add c's last parameters are in full view.
+to 150 400
+xdotool click --repeat 10 --delay 30 5
+wait_frames 3
+set -- $(widget_centre julia)
+[ $# -eq 2 ] || { fail "the state file records no widget for Add c's julia"; set -- 0 0; }
+to "$1" "$2"
+wait_frames 2
+[ "$(q .tooltip)" = "$(declared_help "$presets/../formulas/add_c.hpp" julia)" ] ||
+    fail "the julia checkbox's tooltip reads '$(q .tooltip)'"
+depth=$(q .undoDepth)
+click_frames
+wait_frames 3
+[ "$(julia)" = false ] || fail "a click on the julia checkbox at $1,$2 left it $(julia)"
+[ "$(q .undoDepth)" = $((depth + 1)) ] || fail "a click on the checkbox made $(($(q .undoDepth) - depth)) undo steps, not 1"
+echo "julia checkbox: off after a click, undo label '$(q .undoLabel)'"
+echo "$(q .undoLabel)" | grep -q julia || fail "the undo label '$(q .undoLabel)' does not name julia"
+to 800 400
+wait_frames 1
+xdotool key ctrl+z
+wait_frames 3
+[ "$(julia)" = true ] || fail "Ctrl+Z after the click left julia $(julia)"
+[ "$(q .undoDepth)" = "$depth" ] || fail "one Ctrl+Z went from $((depth + 1)) to $(q .undoDepth) undo steps"
 stop
 
 [ $failures -eq 0 ] && echo "editor_layout_xvfb_test: all OK" || { echo "editor_layout_xvfb_test: $failures failure(s)"; exit 1; }

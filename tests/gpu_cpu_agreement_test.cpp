@@ -35,7 +35,8 @@ bool illConditioned(const Formula& f, const vec3& p, double cpu) {
 
 struct Agreement {
     size_t compared = 0, mismatched = 0, illConditioned = 0;
-    double worstExcess = 0.0;  // max |gpu - cpu| / tolerance
+    size_t illConditionedInside = 0;  // of those, inside the set (CPU membership)
+    double worstExcess = 0.0;         // max |gpu - cpu| / tolerance
     vec3 worstPoint{0.0};
 };
 
@@ -49,6 +50,7 @@ Agreement compare(const Formula& f, const std::vector<vec3>& points) {
         const double excess = std::abs(double(gpu[i].distance) - cpu.distance) / tolerance(cpu.distance);
         if (excess > 1.0 && illConditioned(f, points[i], cpu.distance)) {
             ++a.illConditioned;
+            a.illConditionedInside += cpu.inside;
             continue;
         }
         ++a.compared;
@@ -61,9 +63,20 @@ Agreement compare(const Formula& f, const std::vector<vec3>& points) {
     return a;
 }
 
+// Inside a Julia set (add_c in Julia mode) the running derivative has no +1 and shrinks towards 0
+// along the trapped orbits, so the estimate there is a large negative number that moves with
+// rounding: more points are ill-conditioned than for Mandelbrot-type sets (about 1.3 % of the
+// bound for juliabulb.json), all of them inside, where no ray marches. Outside the set the bound
+// stays 1 %; inside and outside together, 2 %.
+void expectFewIllConditioned(const Agreement& a, const std::string& what) {
+    EXPECT_LE(a.illConditioned - a.illConditionedInside, kPoints / 100) << what << ": outside the set";
+    EXPECT_LE(a.illConditioned, kPoints / 50) << what;
+}
+
 // A formula that exercises one block: the block repeated a few times, closed by a sphere; or,
-// for an estimator, a rotation and a scale closed by it.
-Formula formulaFor(const BlockDesc& block, uint64_t seed) {
+// for an estimator, a rotation and a scale closed by it. Its on/off parameters are all on or all
+// off (`togglesOn`), so each branch of a block is compared.
+Formula formulaFor(const BlockDesc& block, uint64_t seed, bool togglesOn) {
     std::mt19937_64 rng(seed);
     Node node = Node::make(block);
     // Values a quarter of the way from the default towards a random point of the range, so
@@ -74,6 +87,7 @@ Formula formulaFor(const BlockDesc& block, uint64_t seed) {
         const vec3 target(u(rng), u(rng), u(rng));
         vec3 v = d.defaultValue + 0.25 * (target - d.defaultValue);
         if (d.type == ParamType::Float) v = vec3(v.x, 0.0, 0.0);
+        if (d.type == ParamType::Toggle) v = vec3(togglesOn ? 1.0 : 0.0, 0.0, 0.0);
         node.values[i] = v;
     }
     Formula f;
@@ -96,16 +110,57 @@ Formula formulaFor(const BlockDesc& block, uint64_t seed) {
 
 }  // namespace
 
+bool hasToggle(const BlockDesc& block) {
+    for (const ParamDecl& d : block.params)
+        if (d.type == ParamType::Toggle) return true;
+    return false;
+}
+
 TEST(GpuCpuAgreement, EveryBlock) {
+    int toggledBlocks = 0;
     for (const BlockDesc& block : allBlocks()) {
-        const Formula f = formulaFor(block, 7);
-        const Agreement a = compare(f, test::randomPoints(kPoints, 2.0, 11));
-        EXPECT_EQ(a.mismatched, 0u) << "block " << block.id << ": worst error " << a.worstExcess
-                                    << "x the tolerance at (" << a.worstPoint.x << ", " << a.worstPoint.y << ", "
-                                    << a.worstPoint.z << ")";
-        EXPECT_LE(a.illConditioned, kPoints / 100) << "block " << block.id;
-        EXPECT_GE(a.compared, 10000u) << "block " << block.id;
+        for (bool on : {false, true}) {
+            if (on && !hasToggle(block)) continue;
+            toggledBlocks += on;
+            const std::string what = std::string(block.id) + (on ? " (toggles on)" : "");
+            const Formula f = formulaFor(block, 7, on);
+            const Agreement a = compare(f, test::randomPoints(kPoints, 2.0, 11));
+            EXPECT_EQ(a.mismatched, 0u) << "block " << what << ": worst error " << a.worstExcess
+                                        << "x the tolerance at (" << a.worstPoint.x << ", " << a.worstPoint.y << ", "
+                                        << a.worstPoint.z << ")";
+            EXPECT_LE(a.illConditioned, kPoints / 100) << "block " << what;
+            EXPECT_GE(a.compared, 10000u) << "block " << what;
+        }
     }
+    // add_c's Julia mode and the primitives' intersection at least.
+    EXPECT_GE(toggledBlocks, 4);
+}
+
+// add_c in Julia mode (juliabulb.json) and the same formula with the toggle off: the GPU follows
+// the CPU in both, and the two differ, so the toggle reaches the shader as the CPU reads it.
+TEST(GpuCpuAgreement, AddCJuliaModeAndItsToggle) {
+    Preset p = loadPreset(test::sourceDir() / "presets/juliabulb.json");
+    p.formula.deFactor = 1.0;
+    Node& addC = p.formula.nodes[1];
+    ASSERT_EQ(addC.block->id, "add_c");
+    const size_t julia = size_t(addC.block->paramIndex("julia"));
+    ASSERT_EQ(addC.values[julia].x, 1.0);
+    const auto points = test::randomPoints(kPoints, p.formula.boundRadius, 13);
+    Formula mandelbrot = p.formula;
+    mandelbrot.nodes[1].values[julia].x = 0.0;
+    for (const Formula* f : {&p.formula, &mandelbrot}) {
+        const std::string what = f == &mandelbrot ? "julia off" : "julia on";
+        const Agreement a = compare(*f, points);
+        EXPECT_EQ(a.mismatched, 0u) << what << ": worst error " << a.worstExcess << "x the tolerance";
+        expectFewIllConditioned(a, what);
+        EXPECT_GE(a.compared, 10000u) << what;
+        std::printf("%s: %zu points agree, %zu ill-conditioned skipped (%zu inside)\n", what.c_str(), a.compared,
+                    a.illConditioned, a.illConditionedInside);
+    }
+    size_t differ = 0;
+    for (size_t i = 0; i < 1000; ++i)
+        differ += std::abs(distanceEstimate(p.formula, points[i]) - distanceEstimate(mandelbrot, points[i])) > 1e-3;
+    EXPECT_GT(differ, 500u) << "Julia mode hardly changes the estimate";
 }
 
 TEST(GpuCpuAgreement, EveryShippedPreset) {
@@ -119,7 +174,7 @@ TEST(GpuCpuAgreement, EveryShippedPreset) {
         const Agreement a = compare(p.formula, test::randomPoints(kPoints, p.formula.boundRadius, 13));
         EXPECT_EQ(a.mismatched, 0u) << path.filename() << ": worst error " << a.worstExcess << "x the tolerance at ("
                                     << a.worstPoint.x << ", " << a.worstPoint.y << ", " << a.worstPoint.z << ")";
-        EXPECT_LE(a.illConditioned, kPoints / 100) << path.filename();
+        expectFewIllConditioned(a, path.filename().string());
         EXPECT_GE(a.compared, 10000u) << path.filename();
         std::printf("%s: %zu points agree, %zu ill-conditioned skipped\n", path.filename().c_str(), a.compared,
                     a.illConditioned);

@@ -221,7 +221,7 @@ TEST(PlanePreset, BadInputNamesFieldAndReason) {
     EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "power"}]}})"),
               "formula.nodes[0]: the node list must end with a 2D estimator (escape, triangle, segment), found 'power'");
     EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "power", "params": {"power": 99}}, {"block": "escape"}]}})"),
-              "formula.nodes[0].params.power: value 99 is outside the range [1, 16]");
+              "formula.nodes[0].params.power: block 1 'power': value 99 is outside the range [1, 16]");
     EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "escape"}]}, "view": {"width": -1}})"),
               "view.width: value -1 is outside the range [1e-300, 10000]");
     EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "escape"}]}, "camera": {}})"), "camera: unknown field");

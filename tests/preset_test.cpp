@@ -54,6 +54,81 @@ TEST(Preset, SavesOnlyWhatDiffersFromDefaults) {
     EXPECT_EQ(presetToJson(p)["formula"]["nodes"][0]["params"]["limit"], 1.25);
 }
 
+// On/off parameters (ParamType::Toggle) are written as true/false and read back exactly.
+TEST(PresetToggle, RoundTripsAsTrueAndFalse) {
+    Preset p = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
+    Node& addC = p.formula.nodes[1];
+    ASSERT_EQ(addC.block->id, "add_c");
+    const int julia = addC.block->paramIndex("julia");
+    ASSERT_GE(julia, 0);
+    ASSERT_EQ(addC.block->params[size_t(julia)].type, ParamType::Toggle);
+    // Off is the default: nothing written.
+    EXPECT_FALSE(presetToJson(p)["formula"]["nodes"][1].contains("params"));
+    addC.values[size_t(julia)].x = 1.0;
+    const nlohmann::json on = presetToJson(p)["formula"]["nodes"][1]["params"]["julia"];
+    EXPECT_TRUE(on.is_boolean()) << on.dump();
+    EXPECT_EQ(on, true);
+    const Preset reloaded = parsePreset(serializePreset(p), "saved.json");
+    EXPECT_EQ(reloaded.formula.nodes[1].values[size_t(julia)], vec3(1.0, 0.0, 0.0));
+    EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
+
+    // A toggle whose default is on (2D abs_fold x) is written as false when off.
+    PlanePreset q = loadPlanePreset(test::sourceDir() / "presets/2d/koch_snowflake.json");
+    ASSERT_GE(q.formula.start.size(), 2u);
+    PlaneNode& fold = q.formula.start[1];
+    ASSERT_EQ(fold.block->id, "abs_fold");
+    EXPECT_EQ(fold.values[0], vec3(1.0, 0.0, 0.0));  // "x": 1.0 in the file
+    fold.values[0].x = 0.0;
+    const nlohmann::json qj = planePresetToJson(q);
+    EXPECT_EQ(qj["formula"]["start"][1]["params"]["x"], false) << qj["formula"]["start"][1].dump();
+    const PlanePreset q2 = parsePlanePreset(qj.dump(), "saved2d.json");
+    EXPECT_EQ(q2.formula.start[1].values[0], vec3(0.0));
+}
+
+// Presets written before toggles existed hold the numbers 0 and 1: they load as off and on.
+TEST(PresetToggle, OldNumbersZeroAndOneAreAccepted) {
+    const std::string head =
+        R"({"format": "fraktal-preset", "version": 3, "camera": {"position": [0, 0, 4], "target": [0, 0, 0]}, )";
+    for (const auto& [text, expected] : std::vector<std::pair<std::string, double>>{
+             {"0", 0.0}, {"1", 1.0}, {"1.0", 1.0}, {"0.0", 0.0}, {"false", 0.0}, {"true", 1.0}}) {
+        const Preset p = parsePreset(head + R"("formula": {"nodes": [{"block": "mandelbulb"}, {"block": "add_c"},
+            {"block": "sphere_combine", "params": {"intersect": )" +
+                                         text + "}}]}}",
+                                     "old.json");
+        EXPECT_EQ(p.formula.estimator.values[1], vec3(expected, 0.0, 0.0)) << text;
+        // Saved again, it is a boolean (or left out at the default, off).
+        const nlohmann::json saved = presetToJson(p)["formula"]["nodes"][2];
+        if (expected == 1.0)
+            EXPECT_EQ(saved["params"]["intersect"], true) << saved.dump();
+        else
+            EXPECT_FALSE(saved.contains("params")) << saved.dump();
+    }
+    // The shipped 2D Julia preset still says "julia": 1.0 (as tests/legacy_presets do).
+    const PlanePreset julia = loadPlanePreset(test::sourceDir() / "presets/2d/julia.json");
+    EXPECT_EQ(julia.formula.nodes[0].values[size_t(julia.formula.nodes[0].block->paramIndex("julia"))].x, 1.0);
+}
+
+// Anything else is refused with the block as the list shows it and the value.
+TEST(PresetToggle, OtherValuesAreRefusedNamingBlockAndValue) {
+    const std::string head =
+        R"({"format": "fraktal-preset", "version": 3, "camera": {"position": [0, 0, 4], "target": [0, 0, 0]}, )";
+    for (const std::string value : {"0.5", "\"yes\"", "2", "-1", "[1]", "null"}) {
+        try {
+            parsePreset(
+                head + R"("formula": {"nodes": [{"block": "mandelbulb"}, {"block": "add_c", "params": {"julia": )" +
+                    value + "}}, {\"block\": \"escape_log\"}]}}",
+                "bad_toggle.json");
+            ADD_FAILURE() << value << " was accepted";
+        } catch (const PresetError& e) {
+            EXPECT_EQ(e.file(), "bad_toggle.json");
+            EXPECT_EQ(e.field(), "formula.nodes[1].params.julia") << e.what();
+            EXPECT_EQ(e.reason(), "block 2 'add_c': expected true or false (or 0 or 1), found " +
+                                      nlohmann::json::parse(value).dump())
+                << e.what();
+        }
+    }
+}
+
 TEST(Preset, UnknownTopLevelSectionsAreKept) {
     std::ifstream in(test::sourceDir() / "presets/menger.json");
     std::stringstream ss;
@@ -128,6 +203,13 @@ const BadPreset kBadPresets[] = {
     {"plane_wrong_type.json", "formula.iterations", "expected a number, found a string"},
     {"plane_unknown_field.json", "colouring.edgewidth", "unknown field"},
     {"plane_moved_field_out_of_range.json", "render.exposure", "outside the range [-20, 20]"},
+    // An on/off parameter is true or false (or 0 or 1, as older presets wrote it).
+    {"toggle_half.json", "formula.nodes[1].params.julia",
+     "block 2 'add_c': expected true or false (or 0 or 1), found 0.5"},
+    {"toggle_word.json", "formula.nodes[2].params.intersect",
+     "block 3 'box_combine': expected true or false (or 0 or 1), found \"yes\""},
+    {"plane_toggle_half.json", "formula.nodes[0].params.julia",
+     "block 1 'power': expected true or false (or 0 or 1), found 0.5"},
 };
 
 // Loads a preset file with the reader its "dimension" asks for, as `fraktal check` does.

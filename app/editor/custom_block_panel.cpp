@@ -63,21 +63,35 @@ void parameterRows(CustomBlock::Definition& d) {
         ImGui::SetNextItemWidth(110.0f);
         inputString("##name", p.name);
         ImGui::SameLine();
-        int type = p.type == ParamType::Vec3 ? 1 : 0;
+        int type = p.type == ParamType::Vec3 ? 1 : p.type == ParamType::Toggle ? 2 : 0;
         ImGui::SetNextItemWidth(70.0f);
-        if (ImGui::Combo("##type", &type, "float\0vec3\0")) p.type = type ? ParamType::Vec3 : ParamType::Float;
+        if (ImGui::Combo("##type", &type, "float\0vec3\0toggle\0")) {
+            p.type = type == 1 ? ParamType::Vec3 : type == 2 ? ParamType::Toggle : ParamType::Float;
+            // A toggle is 0 or 1: its range and default follow.
+            if (p.type == ParamType::Toggle) {
+                p.min = 0.0;
+                p.max = 1.0;
+                p.defaultValue = vec3(p.defaultValue.x > 0.5 ? 1.0 : 0.0, 0.0, 0.0);
+            }
+        }
         ImGui::SameLine();
         ImGui::SetNextItemWidth(160.0f);
-        if (p.type == ParamType::Vec3)
+        if (p.type == ParamType::Toggle) {
+            bool on = p.defaultValue.x > 0.5;
+            if (ImGui::Checkbox("##default", &on)) p.defaultValue.x = on ? 1.0 : 0.0;
+        } else if (p.type == ParamType::Vec3) {
             ImGui::DragScalarN("##default", ImGuiDataType_Double, &p.defaultValue.x, 3, 0.01f);
-        else
+        } else {
             ImGui::DragScalar("##default", ImGuiDataType_Double, &p.defaultValue.x, 0.01f);
+        }
+        ImGui::BeginDisabled(p.type == ParamType::Toggle);
         ImGui::SameLine();
         ImGui::SetNextItemWidth(70.0f);
         ImGui::DragScalar("##min", ImGuiDataType_Double, &p.min, 0.01f);
         ImGui::SameLine();
         ImGui::SetNextItemWidth(70.0f);
         ImGui::DragScalar("##max", ImGuiDataType_Double, &p.max, 0.01f);
+        ImGui::EndDisabled();
         ImGui::SameLine();
         if (ImGui::SmallButton("x")) remove = int(i);
         ImGui::SetNextItemWidth(-1.0f);

@@ -378,6 +378,7 @@ int runEditor(const EditorOptions& o) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
+            s.paramWidgets.clear();
             handleTimelineShortcuts(s);
             handleShortcuts(s);
             drawMenuBar(s);

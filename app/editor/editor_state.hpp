@@ -14,6 +14,7 @@
 #include "app/editor/export_job.hpp"
 #include "app/editor/file_browser.hpp"
 #include "app/editor/formula_edits.hpp"
+#include "app/editor/param_widgets.hpp"
 #include "app/editor/pointer_input.hpp"
 #include "app/editor/timeline_edits.hpp"
 #include "app/editor/undo_history.hpp"
@@ -146,6 +147,7 @@ struct EditorState {
     FlyKeys flyKeys;                             // fly keys, from key events
     std::vector<KeyPress> keyPresses;            // key presses since the last frame (shortcuts)
     TimelineState timeline;                      // the animation's current frame, playback, selection
+    ParamWidgetsShown paramWidgets;              // the parameter widgets drawn this frame (state file)
 };
 
 bool isDirty(const EditorState& s);

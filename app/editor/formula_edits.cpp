@@ -128,7 +128,8 @@ bool setParam(Formula& f, int index, int param, const ParamValue& value) {
     if (!n || !n->block || param < 0 || param >= int(n->block->params.size())) return false;
     const ParamDecl& d = n->block->params[size_t(param)];
     ParamValue v = glm::clamp(value, vec3(d.min), vec3(d.max));
-    if (d.type == ParamType::Float) v.y = v.z = 0.0;
+    if (isScalar(d.type)) v.y = v.z = 0.0;
+    if (d.type == ParamType::Toggle) v.x = v.x > 0.5 ? 1.0 : 0.0;
     // A direction must not collapse to zero (the preset reader refuses that too).
     if (d.direction && glm::length(v) == 0.0) return false;
     n->values[size_t(param)] = v;

@@ -144,12 +144,12 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     const bool estimatorSelected = s.selectedNode == int(f.nodes.size());
     const Node& selected = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
     Node& shown = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
-    nodeParameters(shown, estimatorSelected, [&](size_t k) {
+    nodeParameters(shown, estimatorSelected, s.paramWidgets, [&](size_t k) {
         const std::string name(shown.block->params[k].name);
         const ParamValue& v = shown.values[k];
-        keyMarker(s, estimatorSelected ? estimatorParamTarget(name) : paramTarget(s.selectedNode, name),
-                  shown.block->params[k].type == ParamType::Float ? std::vector<double>{v.x}
-                                                                  : std::vector<double>{v.x, v.y, v.z});
+        keyMarker(
+            s, estimatorSelected ? estimatorParamTarget(name) : paramTarget(s.selectedNode, name),
+            isScalar(shown.block->params[k].type) ? std::vector<double>{v.x} : std::vector<double>{v.x, v.y, v.z});
     });
     if (selected.block->custom) {
         if (const CustomBlock* b = findCustomBlock(f, selected.block->id); b && ImGui::Button("Edit GLSL...")) {

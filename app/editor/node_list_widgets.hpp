@@ -75,9 +75,11 @@ bool nodeRow(NodeT& n, int i, bool selected, const std::string* error, const cha
 }
 
 // The selected node's block, help, period and phase (not for estimators) and parameters;
-// `beforeParam(k)` draws what goes before parameter k's widget on its line (a key marker).
+// `beforeParam(k)` draws what goes before parameter k's widget on its line (a key marker);
+// `shown` records the widgets (ParamWidgetsShown).
 template <class NodeT>
-void nodeParameters(NodeT& n, bool estimator, const std::function<void(size_t)>& beforeParam = {}) {
+void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
+                    const std::function<void(size_t)>& beforeParam = {}) {
     if (!n.block) return;
     ImGui::Text("%s", std::string(n.block->label).c_str());
     ImGui::SameLine();
@@ -97,7 +99,7 @@ void nodeParameters(NodeT& n, bool estimator, const std::function<void(size_t)>&
     if (n.block->params.empty()) ImGui::TextDisabled("This block has no parameters.");
     for (size_t k = 0; k < n.block->params.size(); ++k) {
         if (beforeParam) beforeParam(k);
-        paramWidget(n.block->params[k], n.values[k]);
+        paramWidget(n.block->params[k], n.values[k], &shown);
     }
 }
 

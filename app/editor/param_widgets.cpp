@@ -10,20 +10,31 @@ namespace fraktal::editor {
 
 namespace {
 
-void tooltip(const ParamDecl& d) {
+std::string defaultText(const ParamDecl& d) {
+    if (d.type == ParamType::Toggle) return d.defaultValue.x > 0.5 ? "on" : "off";
+    if (d.type == ParamType::Float) return std::to_string(d.defaultValue.x);
+    return std::to_string(d.defaultValue.x) + ", " + std::to_string(d.defaultValue.y) + ", " +
+           std::to_string(d.defaultValue.z);
+}
+
+void tooltip(const ParamDecl& d, ParamWidgetsShown* shown) {
     if (!ImGui::IsItemHovered()) return;
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
-    ImGui::TextUnformatted(std::string(d.help).c_str());
-    ImGui::TextDisabled("range %.4g .. %.4g, default %s", d.min, d.max,
-                        d.type == ParamType::Float ? std::to_string(d.defaultValue.x).c_str()
-                                                   : (std::to_string(d.defaultValue.x) + ", " +
-                                                      std::to_string(d.defaultValue.y) + ", " +
-                                                      std::to_string(d.defaultValue.z))
-                                                         .c_str());
-    ImGui::TextDisabled("Ctrl+click to type a value");
+    const std::string help(d.help);
+    ImGui::TextUnformatted(help.c_str());
+    if (d.type == ParamType::Toggle) {
+        ImGui::TextDisabled("on or off, default %s", defaultText(d).c_str());
+    } else {
+        ImGui::TextDisabled("range %.4g .. %.4g, default %s", d.min, d.max, defaultText(d).c_str());
+        ImGui::TextDisabled("Ctrl+click to type a value");
+    }
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
+    if (shown) {
+        shown->tooltipParam = std::string(d.name);
+        shown->tooltip = help;
+    }
 }
 
 }  // namespace
@@ -48,7 +59,7 @@ void sectionHeader(const char* title) {
     ImGui::Separator();
 }
 
-bool paramWidget(const ParamDecl& d, ParamValue& value) {
+bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown) {
     const std::string name(d.name);
     ImGui::PushID(name.c_str());
     bool changed = false;
@@ -59,7 +70,15 @@ bool paramWidget(const ParamDecl& d, ParamValue& value) {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - resetWidth - ImGui::GetStyle().ItemInnerSpacing.x -
                             ImGui::CalcTextSize(name.c_str()).x - ImGui::GetStyle().ItemInnerSpacing.x);
     const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
-    if (d.type == ParamType::Float) {
+    if (d.type == ParamType::Toggle) {
+        // One click flips it: the checkbox is active for that frame only, so the editor commits
+        // one undo step per click.
+        bool on = value.x > 0.5;
+        if (ImGui::Checkbox("##v", &on)) {
+            value = vec3(on ? 1.0 : 0.0, 0.0, 0.0);
+            changed = true;
+        }
+    } else if (d.type == ParamType::Float) {
         changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &value.x, speed, &lo, &hi, "%.4g", flags);
     } else {
         double v[3] = {value.x, value.y, value.z};
@@ -71,7 +90,11 @@ bool paramWidget(const ParamDecl& d, ParamValue& value) {
             else value = next;
         }
     }
-    tooltip(d);
+    if (shown) {
+        const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+        shown->widgets.push_back({name, at.x, at.y, size.x, size.y});
+    }
+    tooltip(d, shown);
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     const bool isDefault = value == d.defaultValue;
     ImGui::BeginDisabled(isDefault);
@@ -83,7 +106,7 @@ bool paramWidget(const ParamDecl& d, ParamValue& value) {
     ImGui::EndDisabled();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::TextUnformatted(name.c_str());
-    tooltip(d);
+    tooltip(d, shown);
     ImGui::PopID();
     return changed;
 }

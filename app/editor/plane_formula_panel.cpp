@@ -118,7 +118,7 @@ void drawPlaneFormulaPanel(EditorState& s, const std::string& error) {
     ImGui::Spacing();
     sectionHeader("Parameters");
     if (PlaneNode* n = selectedPlaneNode(f, s.planeSelection))
-        nodeParameters(*n, s.planeSelection.list == PlaneList::Estimator);
+        nodeParameters(*n, s.planeSelection.list == PlaneList::Estimator, s.paramWidgets);
     ImGui::End();
 }
 

@@ -1,6 +1,6 @@
 // The editor's state as JSON, written after every frame to a file that a test driving the real
-// editor (tests/editor_user_stories.sh) reads: camera, modes, undo list, layout, status line and
-// the document itself.
+// editor (tests/editor_user_stories.sh) reads: camera, modes, undo list, layout, status line,
+// the selected node's parameter widgets and the tooltip shown over one, and the document itself.
 #pragma once
 
 #include <filesystem>

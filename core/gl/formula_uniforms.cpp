@@ -30,7 +30,7 @@ void FormulaUniforms::upload(const Formula& f) const {
         const Node& n = k == f.nodes.size() ? f.estimator : f.nodes[k];
         for (size_t i = 0; i < nodes_[k].size(); ++i) {
             const ParamValue& v = n.values[i];
-            if (n.block->params[i].type == ParamType::Float) glUniform1f(nodes_[k][i], float(v.x));
+            if (isScalar(n.block->params[i].type)) glUniform1f(nodes_[k][i], float(v.x));
             else glUniform3f(nodes_[k][i], float(v.x), float(v.y), float(v.z));
         }
     }

@@ -47,16 +47,16 @@ template <class B>
 concept PlaneEstimatorBlock = EstimatorBlockFor<B, PlaneBlockDesc>;
 
 template <class B>
-consteval bool allParamsFloat() {
+consteval bool allParamsScalar() {
     for (const ParamDecl& p : B::params)
-        if (p.type != ParamType::Float) return false;
+        if (!isScalar(p.type)) return false;
     return true;
 }
 
 template <class B>
 requires PlaneStepBlock<B> || PlaneEstimatorBlock<B>
 constexpr PlaneBlockDesc describePlane() {
-    static_assert(allParamsFloat<B>(), "2D block parameters are floats (a 2D vector is two of them)");
+    static_assert(allParamsScalar<B>(), "2D block parameters are floats or toggles (a 2D vector is two floats)");
     return describeAs<PlaneBlockDesc, B>();
 }
 

@@ -15,7 +15,8 @@ std::string knownBlocks() {
     return known;
 }
 
-PlaneNode parseNode(const ReadContext& context, const json& j, const std::string& path) {
+// `listNumber`: the node's 1-based place in its list (start or loop), as the editor lists it.
+PlaneNode parseNode(const ReadContext& context, const json& j, const std::string& path, size_t listNumber) {
     FieldReader r(context, j, path);
     const json& id = r.at("block");
     if (!id.is_string()) r.fail("expected a block id string, found " + FieldReader::typeName(id), "block");
@@ -24,17 +25,23 @@ PlaneNode parseNode(const ReadContext& context, const json& j, const std::string
         r.fail("unknown 2D block '" + id.get<std::string>() + "' (known 2D blocks: " + knownBlocks() + ")", "block");
     PlaneNode n = PlaneNode::make(*block);
     readNodeSchedule(r, n);
-    if (r.has("params")) {
-        FieldReader params(context, r.at("params"), r.child("params"));
-        std::string known;
-        for (size_t i = 0; i < block->params.size(); ++i) {
-            const ParamDecl& d = block->params[i];
-            known += (known.empty() ? "" : ", ") + std::string(d.name);
-            n.values[i].x = params.number(std::string(d.name), d.defaultValue.x, d.min, d.max);
+    // Parameter errors name the block as the 3D reader does: 1-based number and id.
+    const std::string listed = "block " + std::to_string(listNumber) + " '" + std::string(block->id) + "': ";
+    if (r.has("params")) try {
+            FieldReader params(context, r.at("params"), r.child("params"));
+            std::string known;
+            for (size_t i = 0; i < block->params.size(); ++i) {
+                const ParamDecl& d = block->params[i];
+                known += (known.empty() ? "" : ", ") + std::string(d.name);
+                const std::string key(d.name);
+                n.values[i].x = d.type == ParamType::Toggle ? (params.toggle(key, d.defaultValue.x > 0.5) ? 1.0 : 0.0)
+                                                            : params.number(key, d.defaultValue.x, d.min, d.max);
+            }
+            params.finish("unknown parameter of 2D block '" + std::string(block->id) +
+                          "' (it has: " + (known.empty() ? "none" : known) + ")");
+        } catch (const PresetError& e) {
+            throw PresetError(e.file(), e.field(), listed + e.reason());
         }
-        params.finish("unknown parameter of 2D block '" + std::string(block->id) +
-                      "' (it has: " + (known.empty() ? "none" : known) + ")");
-    }
     r.finish();
     return n;
 }
@@ -46,7 +53,7 @@ std::vector<PlaneNode> parseNodeList(const ReadContext& context, FieldReader& r,
         r.fail("too many nodes (" + std::to_string(list.size()) + "; at most " + std::to_string(kMaxNodes) + ")", key);
     std::vector<PlaneNode> nodes;
     for (size_t i = 0; i < list.size(); ++i)
-        nodes.push_back(parseNode(context, list[i], r.child(key) + "[" + std::to_string(i) + "]"));
+        nodes.push_back(parseNode(context, list[i], r.child(key) + "[" + std::to_string(i) + "]", i + 1));
     return nodes;
 }
 

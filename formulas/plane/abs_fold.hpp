@@ -10,8 +10,8 @@ struct AbsFold {
     static constexpr std::string_view help = "Mirror across the y axis (x = |x|) and/or the x axis (y = |y|).";
     static constexpr Category category = Category::Fold;
     static constexpr std::array params{
-        ParamDecl{"x", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 1.0, "1: x = |x|; 0: leave x."},
-        ParamDecl{"y", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 1.0, "1: y = |y|; 0: leave y."},
+        toggleParam("x", true, "On: x = |x|; off: leave x."),
+        toggleParam("y", false, "On: y = |y|; off: leave y."),
     };
 
     static constexpr std::string_view glsl = R"(

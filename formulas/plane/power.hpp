@@ -16,7 +16,7 @@ struct Power {
     static constexpr Category category = Category::Power;
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {2.0, 0.0, 0.0}, 1.0, 16.0, "Exponent n (any real; whole numbers are exact in double)."},
-        ParamDecl{"julia", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 1.0, "1: Julia set (c fixed below); 0: Mandelbrot (c = the pixel)."},
+        toggleParam("julia", false, "On: Julia set (c fixed below); off: Mandelbrot (c = the pixel)."),
         ParamDecl{"julia_x", ParamType::Float, {-0.8, 0.0, 0.0}, -4.0, 4.0, "Julia c, real part."},
         ParamDecl{"julia_y", ParamType::Float, {0.156, 0.0, 0.0}, -4.0, 4.0, "Julia c, imaginary part."},
     };
