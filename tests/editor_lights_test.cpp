@@ -11,6 +11,7 @@
 #include "app/editor/pointer_input.hpp"
 #include "app/editor/undo_history.hpp"
 #include "core/preset.hpp"
+#include "core/render/environment.hpp"
 #include "test_support.hpp"
 
 namespace fraktal::editor {
@@ -103,12 +104,11 @@ TEST(LightsEdits, EnvironmentMapValueIsRelativeToThePresetFolder) {
     EXPECT_EQ(environmentMapValue("/a/presets/env/sky.exr", "/a/presets/scene.json"), "env/sky.exr");
     EXPECT_EQ(environmentMapValue("/a/maps/sky.exr", "/a/presets/scene.json"), "../maps/sky.exr");
     EXPECT_EQ(environmentMapValue("/a/maps/sky.exr", ""), "/a/maps/sky.exr");
-    // And the preset format resolves it back to the same file.
-    const Preset p = parsePreset(
-        R"({"format": "fraktal-preset", "version": 3, "formula": {"nodes": [{"block": "mandelbulb"}]},
-            "environment": {"map": "../maps/sky.exr"}})",
-        "/a/presets/scene.json");
-    EXPECT_EQ(p.lighting.environment.map, "../maps/sky.exr");
+    // And the renderer resolves each value back to the chosen file.
+    for (const char* file : {"/a/presets/env/sky.exr", "/a/maps/sky.exr"})
+        EXPECT_EQ(resolveEnvironmentPath(environmentMapValue(file, "/a/presets/scene.json"), "/a/presets/scene.json")
+                      .lexically_normal(),
+                  fs::path(file));
 }
 
 TEST(LightsFocus, ViewAxisDistanceIsTheDepthNotTheRayLength) {

@@ -3,10 +3,11 @@
 # (the box estimator with no folds) seen straight on its +z face: Add light > Sphere adds one light
 # (one undo step); a drag of its intensity is one undo step that Ctrl+Z takes back whole; a typed
 # aperture turns depth of field on; a bad environment map is refused with a message and the
-# document keeps its map, a real EXR is taken; Pick focus and a click on the cube, and a Ctrl+click
-# near the face's corner, set the focus distance to the face's depth along the view axis (computed
-# here from the camera in the state file and the cube's face z = 1, not from the editor), each one
-# undo step; a Ctrl+click on the sky changes nothing and says so.
+# document keeps its map, a real EXR is taken (typed, and through Browse...); Pick focus and a
+# click on the cube, and a Ctrl+click near the face's corner, set the focus distance to the face's
+# depth along the view axis (computed here from the camera in the state file and the cube's face
+# z = 1, not from the editor), each one undo step; a Ctrl+click on the sky changes nothing and
+# says so; Ctrl+Z takes the last focus back.
 # Usage: editor_lights_xvfb_test.sh FRAKTAL PRESET_DIR
 set -eu
 if [ -z "${FRAKTAL_STORIES_UNDER_XVFB:-}" ]; then
@@ -127,6 +128,18 @@ type_into environment.map "$home/sky.exr"
 wait_for '.lights.environmentMap == "sky.exr"'
 [ "$(q .lights.environmentMap)" = sky.exr ] || fail "the EXR was not taken as the map ($(q .lights.environmentMap))"
 [ "$(q .lights.messageIsError)" = false ] || fail "a good map left the error: $(q .lights.message)"
+# Browse...: the file browser lists EXRs; a name typed into its path field and Enter takes it.
+cp "$presets/env/sky.exr" "$home/sky2.exr"
+click_widget environment.browse
+wait_for '.fileBrowser.shown'
+[ "$(q .fileBrowser.shown)" = true ] || fail "Browse... did not open the file browser"
+xdotool type --delay 30 "$home/sky2.exr"
+wait_frames 1
+press Return
+wait_for '.lights.environmentMap == "sky2.exr"'
+[ "$(q .lights.environmentMap)" = sky2.exr ] || fail "the browser's choice was not taken as the map ($(q .lights.environmentMap))"
+[ "$(q .fileBrowser.shown)" = false ] || fail "the file browser stays open after choosing"
+echo "map: typed sky.exr, then browsed to $(q .lights.environmentMap)"
 
 # Focus on the cube. The centre ray is the view axis: it meets the face z = 1 at depth t with
 # position.z + t * forward.z = 1 (forward from the camera in the state file).

@@ -20,14 +20,12 @@ namespace fraktal::editor {
 
 // What the Lights tab keeps between frames (owned by EditorState).
 struct LightsPanel {
-    int selected = 0;             // the light whose settings show
-    std::string mapField;         // the environment map path being typed
-    bool mapFieldSynced = false;  // mapField shows the document's map (set again after undo, open)
-    std::string syncedMap;        // the document's map that mapField last showed
-    std::string message;          // why the last edit was refused (a full list, a bad map), or a pick's result
+    int selected = 0;       // the light whose settings show
+    std::string mapField;   // the environment map path being typed
+    std::string syncedMap;  // the document's map that mapField last showed
+    std::string message;    // why the last edit was refused (a full list, a bad map), or a pick's result
     bool messageIsError = false;
     bool pickFocus = false;  // the next left click in the viewport sets the focus distance
-    bool browsing = false;   // the file browser was opened to choose an environment map
     // Window rectangles (x, y, w, h) of the tab's widgets as last drawn, by name, for the state
     // file (tests find the widgets there).
     std::map<std::string, std::array<float, 4>> widgets;
