@@ -64,7 +64,7 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--screenshot", o->screenshot, "With --frames: save a PNG of the whole window at the end")
         ->needs("--frames");
     cmd->add_option("--tab", o->tab, "Scene panel tab to show first (2D documents: View, Render, Colouring, Presets)")
-        ->check(CLI::IsMember({"Camera", "Render", "Shading", "Presets", "View", "Colouring"}));
+        ->check(CLI::IsMember({"Camera", "Render", "Shading", "Lights", "Presets", "View", "Colouring"}));
     cmd->add_option("--width", o->width, "Window width")->check(CLI::Range(320, 16384));
     cmd->add_option("--height", o->height, "Window height")->check(CLI::Range(240, 16384));
     cmd->add_option("--state-file", o->stateFile, "Write the editor's state as JSON after every frame (for tests)");

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include "app/editor/formula_fit.hpp"
+#include "app/editor/panels.hpp"
 #include "app/editor/plane_edits.hpp"
 
 namespace fraktal::editor {
@@ -37,6 +38,7 @@ bool gatherCameraInput(EditorState& s, CameraInput& in) {
     in.dt = io.DeltaTime;
     in.viewportHeight = s.layout.viewportH;
     const DragMotion drag = takeDrag(s);
+    s.viewportClicks = drag.clicks;
     in.rotateDrag = drag.rotate;
     in.panDrag = drag.pan;
     if (cursorOverViewport(s)) in.scroll = io.MouseWheel;
@@ -81,6 +83,10 @@ void updateCamera(EditorState& s) {
         rest.viewportHeight = in.viewportHeight;
         orbitCamera(cam, rest, s.cameraControls);
     }
+    // Ctrl+click, or a click after the Lights tab's "Pick focus": the lens focuses there.
+    for (const ViewportClick& c : s.viewportClicks)
+        if (c.button == 0 && ((c.mods & GLFW_MOD_CONTROL) || s.lights.pickFocus)) pickFocusAt(s, c.at);
+    s.viewportClicks.clear();
 }
 
 void frameObject(EditorState& s) {

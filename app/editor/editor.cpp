@@ -88,11 +88,11 @@ void onCursorPos(GLFWwindow* w, double x, double y) {
 
 // GLFW's X11 glfwGetCursorPos asks the server where the pointer is now, which can be past the
 // press still waiting in the queue: a press takes the position of the last motion event before it.
-void onMouseButton(GLFWwindow* w, int button, int action, int /*mods*/) {
+void onMouseButton(GLFWwindow* w, int button, int action, int mods) {
     std::vector<PointerEvent>& events = stateOf(w)->pointerEvents;
     vec2& at = stateOf(w)->cursorAt;
     const auto kind = action == GLFW_PRESS ? PointerEvent::Kind::Press : PointerEvent::Kind::Release;
-    events.push_back({kind, button, at.x, at.y});
+    events.push_back({kind, button, at.x, at.y, mods});
 }
 
 void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {

@@ -14,6 +14,7 @@
 #include "app/editor/export_job.hpp"
 #include "app/editor/file_browser.hpp"
 #include "app/editor/formula_edits.hpp"
+#include "app/editor/lights_edits.hpp"
 #include "app/editor/param_widgets.hpp"
 #include "app/editor/pointer_input.hpp"
 #include "app/editor/timeline_edits.hpp"
@@ -77,11 +78,12 @@ struct FileBrowser {
 };
 
 struct Dialogs {
-    bool openPath = false;     // opens the file browser to open a file
-    bool saveAs = false;       // opens it to save as
-    bool unsaved = false;      // "Save changes?" prompt
-    bool exportStill = false;  // F12
-    std::string pathInput;     // Save As: the path to start from
+    bool openPath = false;        // opens the file browser to open a file
+    bool saveAs = false;          // opens it to save as
+    bool unsaved = false;         // "Save changes?" prompt
+    bool exportStill = false;     // F12
+    bool environmentMap = false;  // opens the file browser to choose the Lights tab's environment map
+    std::string pathInput;        // Save As: the path to start from
     FileBrowser browser;
     PendingAction pending;
 };
@@ -144,10 +146,12 @@ struct EditorState {
     std::vector<PointerEvent> pointerEvents;     // mouse events since the last frame (GLFW callbacks)
     vec2 cursorAt{0.0};                          // the last cursor position GLFW reported
     ViewportDrag drag;                           // the viewport's drag, from those events
+    std::vector<ViewportClick> viewportClicks;   // clicks on the 3D viewport this frame
     FlyKeys flyKeys;                             // fly keys, from key events
     std::vector<KeyPress> keyPresses;            // key presses since the last frame (shortcuts)
     TimelineState timeline;                      // the animation's current frame, playback, selection
     ParamWidgetsShown paramWidgets;              // the parameter widgets drawn this frame (state file)
+    LightsPanel lights;                          // the Lights tab's selection, typed map path, focus pick
 };
 
 bool isDirty(const EditorState& s);

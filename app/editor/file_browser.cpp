@@ -57,7 +57,9 @@ std::vector<BrowserEntry> listFolder(const fs::path& folder, BrowserFilter filte
             const bool preset = ext == ".json", exr = ext == ".exr";
             if (filter == BrowserFilter::Presets && !preset) continue;
             if (filter == BrowserFilter::PresetsAndExrs && !preset && !exr) continue;
-            if (exr && !exrCarriesPreset(it->path())) {
+            if (filter == BrowserFilter::EnvironmentMaps) {
+                if (!exr) continue;
+            } else if (exr && !exrCarriesPreset(it->path())) {
                 e.usable = false;
                 e.note = "no fraktal preset in this EXR's header";
             } else if (!preset && !exr) {

@@ -9,9 +9,12 @@
 
 namespace fraktal::editor {
 
-enum class BrowserFilter { PresetsAndExrs, Presets, All };
+// The first kOpenFilters are the Open dialog's choices; EnvironmentMaps lists every EXR as usable
+// (the Lights tab's map), whatever its header holds.
+enum class BrowserFilter { PresetsAndExrs, Presets, All, EnvironmentMaps };
 inline constexpr const char* kBrowserFilterNames[] = {"Presets and fraktal EXRs (*.json, *.exr)", "Presets (*.json)",
-                                                      "All files"};
+                                                      "All files", "OpenEXR images (*.exr)"};
+inline constexpr int kOpenFilters = 3;
 
 struct BrowserEntry {
     std::string name;

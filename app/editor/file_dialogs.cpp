@@ -34,6 +34,8 @@ void startBrowser(EditorState& s, bool saving, const fs::path& fallback) {
     FileBrowser& b = s.dialogs.browser;
     b.saving = saving;
     b.replace.clear();
+    // Open and Save list presets; only the environment map's browser lists every EXR.
+    if (b.filter == BrowserFilter::EnvironmentMaps) b.filter = BrowserFilter::PresetsAndExrs;
     const std::vector<fs::path> recent = recentFolders(s.file.recent);
     goTo(b, !s.file.path.empty() ? fs::absolute(s.file.path).parent_path()
             : !recent.empty()    ? recent.front()
@@ -151,7 +153,9 @@ std::optional<fs::path> fileBrowser(FileBrowser& b, const char* id, const std::v
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
     int filter = int(b.filter);
-    if (ImGui::Combo("##filter", &filter, kBrowserFilterNames, int(std::size(kBrowserFilterNames)))) {
+    if (b.filter == BrowserFilter::EnvironmentMaps)
+        ImGui::TextDisabled("%s", kBrowserFilterNames[filter]);
+    else if (ImGui::Combo("##filter", &filter, kBrowserFilterNames, kOpenFilters)) {
         b.filter = BrowserFilter(filter);
         b.listed = false;
     }
@@ -223,6 +227,15 @@ void drawFileDialogs(EditorState& s) {
         ImGui::OpenPopup("Save as");
         d.saveAs = false;
     }
+    if (d.environmentMap) {
+        startBrowser(s, false, fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "env");
+        d.browser.filter = BrowserFilter::EnvironmentMaps;
+        d.browser.listed = false;
+        ImGui::OpenPopup("Environment map");
+        d.environmentMap = false;
+    }
+    if (const auto file = fileBrowser(d.browser, "Environment map", s.file.recent, s.keyPresses))
+        chooseEnvironmentMap(s, *file);
     if (const auto file = fileBrowser(d.browser, "Open", s.file.recent, s.keyPresses))
         requestAction(s, {PendingKind::Open, *file});
     if (const auto file = fileBrowser(d.browser, "Save as", s.file.recent, s.keyPresses))

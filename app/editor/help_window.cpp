@@ -25,6 +25,7 @@ constexpr Shortcut kShortcuts[] = {
     {"Ctrl+\\", "Hide / show the side panels (or the arrow in the menu bar)"},
     {"Ctrl+D, Delete", "Duplicate / remove the selected node"},
     {"Left drag", "Orbit (fly mode: look around); a click without a drag does nothing"},
+    {"Ctrl+click", "Focus the lens on the surface under the cursor (depth of field on in the Lights tab)"},
     {"Right or middle drag", "Pan"},
     {"Wheel", "Zoom towards the target"},
     {"Space (over the viewport or the timeline)", "Play / pause the animation"},

@@ -2,6 +2,7 @@
 // EditorState it is given. They hold no state of their own.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include "app/editor/editor_state.hpp"
@@ -27,13 +28,20 @@ void drawSidebar(EditorState& s);                                             //
 void drawCameraTab(EditorState& s);                                           // camera_panel.cpp
 void drawRenderTab(EditorState& s);                                           // render_panel.cpp
 void drawShadingTab(EditorState& s);                                          // shading_panel.cpp
-void drawPresetsTab(EditorState& s);                                          // preset_browser.cpp
-void drawStatsOverlay(EditorState& s, const ViewportView& v);                 // stats_overlay.cpp
-void drawExportDialog(EditorState& s);                                        // export_dialog.cpp
-void drawFileDialogs(EditorState& s);                                         // file_dialogs.cpp
-void drawStatusLine(EditorState& s);                                          // stats_overlay.cpp
-void drawRecoveryDialog(EditorState& s);                                      // recovery_dialog.cpp
-void drawCustomBlockEditor(EditorState& s, const std::string& compileError);  // custom_block_panel.cpp
+void drawLightsTab(EditorState& s);                                           // lights_panel.cpp
+// Sets the lens focus distance to the surface under window point `at` in the 3D viewport (one
+// undo step), or says on the status line that the sky is there.
+void pickFocusAt(EditorState& s, const vec2& at);  // lights_panel.cpp
+// Takes `file` as the environment map when it is a readable EXR; otherwise the Lights tab says
+// why and the document keeps its map.
+void chooseEnvironmentMap(EditorState& s, const std::filesystem::path& file);  // lights_panel.cpp
+void drawPresetsTab(EditorState& s);                                           // preset_browser.cpp
+void drawStatsOverlay(EditorState& s, const ViewportView& v);                  // stats_overlay.cpp
+void drawExportDialog(EditorState& s);                                         // export_dialog.cpp
+void drawFileDialogs(EditorState& s);                                          // file_dialogs.cpp
+void drawStatusLine(EditorState& s);                                           // stats_overlay.cpp
+void drawRecoveryDialog(EditorState& s);                                       // recovery_dialog.cpp
+void drawCustomBlockEditor(EditorState& s, const std::string& compileError);   // custom_block_panel.cpp
 
 void drawShortcutHelp(EditorState& s);  // help_window.cpp
 

@@ -18,11 +18,14 @@ DragMotion consumePointerEvents(ViewportDrag& drag, const std::vector<PointerEve
                 if (!drag.focused) break;
                 drag.button = e.button;
                 drag.pressAt = drag.last = at;
+                drag.pressMods = e.mods;
                 drag.dragging = false;
                 m.held = true;
                 break;
             case PointerEvent::Kind::Release:
-                if (e.button == drag.button) drag.button = -1;
+                if (e.button != drag.button) break;
+                if (!drag.dragging) m.clicks.push_back({e.button, drag.pressAt, drag.pressMods});
+                drag.button = -1;
                 break;
             case PointerEvent::Kind::Move: {
                 if (drag.button < 0) break;

@@ -16,6 +16,7 @@ struct PointerEvent {
     enum class Kind { Move, Press, Release } kind = Kind::Move;
     int button = 0;           // 0 left, 1 right, 2 middle (GLFW's numbering)
     double x = 0.0, y = 0.0;  // window coordinates at the event
+    int mods = 0;             // GLFW_MOD_* bits held at a press or release
 };
 
 // A viewport drag: the press must land on the viewport (not a panel); the motion counts only once
@@ -27,6 +28,14 @@ struct ViewportDrag {
     vec2 pressAt{0.0}, last{0.0};
     bool dragging = false;  // the cursor has left the threshold circle
     bool focused = false;   // the last press landed on the viewport: it has the keyboard
+    int pressMods = 0;      // modifiers held at the press
+};
+
+// A press and release on the viewport that never left the threshold circle.
+struct ViewportClick {
+    int button = 0;
+    vec2 at{0.0};  // window coordinates of the press
+    int mods = 0;  // GLFW_MOD_* bits held at the press
 };
 
 struct ViewportRect {
@@ -36,9 +45,10 @@ struct ViewportRect {
 
 // One frame's worth of viewport motion from the queued events.
 struct DragMotion {
-    vec2 rotate{0.0};   // left button, pixels
-    vec2 pan{0.0};      // right or middle button, pixels
-    bool held = false;  // a viewport button is (or was, this frame) down: one gesture
+    vec2 rotate{0.0};                   // left button, pixels
+    vec2 pan{0.0};                      // right or middle button, pixels
+    bool held = false;                  // a viewport button is (or was, this frame) down: one gesture
+    std::vector<ViewportClick> clicks;  // clicks that ended this frame, in order
 };
 
 // Consumes `events` (in order). A press starts a drag when it lands inside `viewport` and

@@ -1,11 +1,12 @@
-// The side column and its lower panel, Scene: camera, render and shading settings and the preset
-// browser as tabs (ImGui 1.86 has no docking, so the panels are fixed windows in one column on the
+// The side column and its lower panel, Scene: camera, render, shading and lighting settings and
+// the preset browser as tabs (ImGui 1.86 has no docking, so the panels are fixed windows in one column on the
 // left whose width and split the ini file remembers). A 2D document shows its view, render
 // (colour) and colouring settings and the browser.
 #include <imgui.h>
 #include <imgui_internal.h>  // MarkIniSettingsDirty
 
 #include <algorithm>
+#include <span>
 #include <utility>
 
 #include "app/editor/panels.hpp"
@@ -57,14 +58,17 @@ void drawSidebar(EditorState& s) {
     beginSideColumnWindow(s, "Scene", &s.panels.sidebar, false);
     // A 2D document shows its view rectangle instead of a camera, its colouring instead of shading.
     using Tab = std::pair<const char*, void (*)(EditorState&)>;
-    const Tab scene[] = {
-        {"Camera", drawCameraTab}, {"Render", drawRenderTab}, {"Shading", drawShadingTab}, {"Presets", drawPresetsTab}};
+    const Tab scene[] = {{"Camera", drawCameraTab},
+                         {"Render", drawRenderTab},
+                         {"Shading", drawShadingTab},
+                         {"Lights", drawLightsTab},
+                         {"Presets", drawPresetsTab}};
     const Tab plane[] = {{"View", drawPlaneViewTab},
                          {"Render", drawRenderTab},
                          {"Colouring", drawPlaneColouringTab},
                          {"Presets", drawPresetsTab}};
     if (ImGui::BeginTabBar(s.doc.plane ? "plane_tabs" : "scene_tabs")) {
-        for (const auto& [name, draw] : s.doc.plane ? plane : scene) {
+        for (const auto& [name, draw] : s.doc.plane ? std::span<const Tab>(plane) : std::span<const Tab>(scene)) {
             if (!ImGui::BeginTabItem(name, nullptr, selectIf(s, name))) continue;
             draw(s);
             ImGui::EndTabItem();

@@ -8,6 +8,33 @@ namespace fraktal::editor {
 
 using nlohmann::json;
 
+namespace {
+
+// The scene's lighting as the Lights tab shows it, and where its widgets were drawn.
+json lightsJson(const Lighting& l, const LightsPanel& p) {
+    json lights = json::array();
+    for (const Light& light : l.lights)
+        lights.push_back({{"type", lightTypeName(light.type)},
+                          {"enabled", light.enabled},
+                          {"intensity", light.intensity},
+                          {"size", light.size}});
+    json widgets = json::object();
+    for (const auto& [name, r] : p.widgets) widgets[name] = {r[0], r[1], r[2], r[3]};
+    return {{"count", l.lights.size()},
+            {"items", lights},
+            {"selected", p.selected},
+            {"environmentMap", l.environment.map},
+            {"aperture", l.lens.apertureRadius},
+            {"focusDistance", l.lens.focusDistance},
+            {"blades", l.lens.blades},
+            {"pickFocus", p.pickFocus},
+            {"message", p.message},
+            {"messageIsError", p.messageIsError},
+            {"widgets", widgets}};
+}
+
+}  // namespace
+
 std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled) {
     const Camera& c = s.doc.preset.camera;
     json j;
@@ -56,6 +83,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["paramWidgets"] = widgets;
     j["tooltipParam"] = s.paramWidgets.tooltipParam;
     j["tooltip"] = s.paramWidgets.tooltip;
+    j["lights"] = lightsJson(s.doc.preset.lighting, s.lights);
     j["document"] = json::parse(fingerprint(s.doc));
     return j.dump(1);
 }

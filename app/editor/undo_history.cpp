@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "app/editor/lights_edits.hpp"
 #include "app/editor/timeline_edits.hpp"
 
 namespace fraktal::editor {
@@ -55,6 +56,17 @@ std::string nodeListChange(const std::vector<Node>& before, const std::vector<No
     return (added ? "add " : "remove ") + (b ? std::string(b->label) : std::string("block"));
 }
 
+// A light added, duplicated or removed: the first position where the lists differ names it.
+std::string lightListChange(const std::vector<Light>& before, const std::vector<Light>& after) {
+    if (before.size() == after.size()) return "";
+    const bool added = after.size() > before.size();
+    const std::vector<Light>& longer = added ? after : before;
+    const std::vector<Light>& shorter = added ? before : after;
+    size_t i = 0;
+    while (i < shorter.size() && shorter[i] == longer[i]) ++i;
+    return (added ? "add " : "remove ") + std::string(lightTypeName(longer[i].type)) + " light";
+}
+
 }  // namespace
 
 std::string undoKey(const Document& d) { return fingerprint(withoutView(d)); }
@@ -64,6 +76,10 @@ std::string describeChange(const Document& before, const Document& after) {
     if (!before.plane && !after.plane)
         if (std::string nodes = nodeListChange(before.preset.formula.nodes, after.preset.formula.nodes); !nodes.empty())
             return nodes;
+    if (!before.plane && !after.plane)
+        if (std::string lights = lightListChange(before.preset.lighting.lights, after.preset.lighting.lights);
+            !lights.empty())
+            return lights;
     const json a = json::parse(undoKey(before)), b = json::parse(undoKey(after));
     const json patch = json::diff(a, b);
     std::vector<std::string> names;
