@@ -28,6 +28,12 @@ class PathTracer {
     // Adds `samples` more samples per pixel (draws of at most `batch` samples each).
     void addSamples(int samples, int batch = 4);
     int samplesTaken() const { return samples_; }
+    const std::string& structure() const { return structure_; }  // the formula's structureKey()
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // The beauty pass's running sum (RGBA32F, samplesTaken() samples per pixel, texture row 0 is
+    // the image's bottom row), for showing the accumulation without reading it back.
+    GLuint beautySumTexture() const { return targets_[kBeauty]; }
     // The sums so far divided by the samples taken (rows from the top).
     PathImage image() const;
     // DE evaluations per pixel per sample, averaged over the image.
