@@ -4,6 +4,7 @@
 // the view drops the accumulation back to the fast mode. Small images: llvmpipe is slow.
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <gtest/gtest.h>
 
