@@ -41,15 +41,18 @@ ViewSettings pathSettings() {
     v.pathTraceAtRest = true;
     v.pathSppCap = kSpp;
     v.aaCap = 2;
-    v.frameTimeTargetMs = 0.0;  // full size always, one sample pass per frame
+    v.frameTimeTargetMs = 0.0;  // full size always, one whole sample pass per frame
     return v;
 }
 
 // Frames until the viewport shows `spp` path-traced samples; -1 if it never does.
-int renderUntilPathSpp(CoreViewportView& view, const Preset& p, const ViewSettings& v, int spp) {
-    for (int frame = 1; frame <= 400; ++frame) {
+// `midPassFrames`, when given, counts the frames that ended inside a sample pass (in bands).
+int renderUntilPathSpp(CoreViewportView& view, const Preset& p, const ViewSettings& v, int spp,
+                       int* midPassFrames = nullptr) {
+    for (int frame = 1; frame <= 5000; ++frame) {
         view.render(p, v, kW, kH);
         if (!view.compileError().empty() || !view.displayError().empty()) return -1;
+        if (midPassFrames && view.pathTracer() && view.pathTracer()->rowsDone() > 0) ++*midPassFrames;
         if (view.stats().pathTracing && view.stats().pathSamples >= spp) return frame;
     }
     return -1;
@@ -70,19 +73,29 @@ PathImage readExrBeauty(const std::filesystem::path& file) {
     return image;
 }
 
-TEST(EditorPathTrace, AtRestTheViewportShowsWhatThePathExportWrites) {
+// `frameTimeTargetMs`: 0 renders a whole sample pass per frame; a small target spreads each pass
+// over many frames in bands of rows (PathTracer::addSampleRows).
+void expectViewportEqualsExport(double frameTimeTargetMs) {
     test::glContext();
     const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
     const Preset p = litMandelbulb();
     CoreViewportView view(color);
     view.setPresetFile(presetFile());
-    const ViewSettings v = pathSettings();
+    ViewSettings v = pathSettings();
+    v.frameTimeTargetMs = frameTimeTargetMs;
 
     // The first frames are the fast mode's; once its view rests the path tracer takes over.
     view.render(p, v, kW, kH);
     EXPECT_FALSE(view.stats().pathTracing);
-    const int frames = renderUntilPathSpp(view, p, v, kSpp);
+    int midPass = 0;
+    const int frames = renderUntilPathSpp(view, p, v, kSpp, &midPass);
     ASSERT_GT(frames, 0) << view.compileError() << view.displayError();
+    std::printf("frame-time target %.1f ms: %d spp in %d frames, %d of them ending inside a pass\n", frameTimeTargetMs,
+                kSpp, frames, midPass);
+    if (frameTimeTargetMs > 0.0)
+        EXPECT_GT(midPass, kSpp) << "passes were spread over frames";
+    else
+        EXPECT_EQ(midPass, 0) << "whole passes";
     EXPECT_EQ(view.stats().pathSamples, kSpp) << "the cap";
     EXPECT_TRUE(view.stats().settled) << "at the cap the viewport idles";
     view.render(p, v, kW, kH);
@@ -143,6 +156,10 @@ TEST(EditorPathTrace, AtRestTheViewportShowsWhatThePathExportWrites) {
     EXPECT_LE(levels, 1) << "8-bit levels between the viewport and the export's PNG";
     EXPECT_GT(spreadHi - spreadLo, 64) << "an image, not a flat one";
 }
+
+TEST(EditorPathTrace, AtRestTheViewportShowsWhatThePathExportWrites) { expectViewportEqualsExport(0.0); }
+
+TEST(EditorPathTrace, SamplePassesSpreadOverFramesGiveTheSameImage) { expectViewportEqualsExport(0.5); }
 
 TEST(EditorPathTrace, AnyChangeDropsTheAccumulationToTheFastMode) {
     test::glContext();

@@ -264,51 +264,73 @@ void CoreViewportView::startPath(const Preset& preset, int width, int height) {
     path_ = std::move(p);
 }
 
-void CoreViewportView::pathFrame(const Preset& preset, const ViewSettings& settings) {
-    gl::PathTracer& tracer = *pathTracer_;
-    const int cap = settings.pathSppCap;
-    const auto start = std::chrono::steady_clock::now();
-    int added = 0;
-    // One sample per pixel per frame, more while another one still fits the frame-time target
-    // (each takes about as long as the last), so the window stays responsive.
-    while (tracer.samplesTaken() < cap) {
-        tracer.addSamples(1, 1);
-        ++added;
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        if (ms * (added + 1) / added > settings.frameTimeTargetMs) break;
-    }
+void CoreViewportView::copyPathImage() {
+    // The tracer's sums, rows flipped to the viewport's order (top row first); the division by
+    // the sample count is a gain of -log2(spp) stops in the display pass (both linear).
+    const gl::PathTracer& tracer = *pathTracer_;
     const int w = tracer.width(), h = tracer.height();
+    if (w != pathImageWidth_ || h != pathImageHeight_ || !pathImage_) {
+        glDeleteFramebuffers(1, &pathImageFramebuffer_);
+        glDeleteTextures(1, &pathImage_);
+        glCreateTextures(GL_TEXTURE_2D, 1, &pathImage_);
+        glTextureStorage2D(pathImage_, 1, GL_RGBA32F, w, h);
+        glCreateFramebuffers(1, &pathImageFramebuffer_);
+        glNamedFramebufferTexture(pathImageFramebuffer_, GL_COLOR_ATTACHMENT0, pathImage_, 0);
+        pathImageWidth_ = w;
+        pathImageHeight_ = h;
+    }
+    if (!pathReadFramebuffer_) glCreateFramebuffers(1, &pathReadFramebuffer_);
+    glNamedFramebufferTexture(pathReadFramebuffer_, GL_COLOR_ATTACHMENT0, tracer.beautySumTexture(), 0);
+    glBlitNamedFramebuffer(pathReadFramebuffer_, pathImageFramebuffer_, 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
+    imageChanged_ = true;
+}
+
+void CoreViewportView::pathFrame(const Preset& preset, const ViewSettings& settings) {
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::time_point a, Clock::time_point b) {
+        return std::chrono::duration<double, std::milli>(b - a).count();
+    };
+    gl::PathTracer& tracer = *pathTracer_;
+    const int cap = settings.pathSppCap, h = tracer.height();
+    // A frame path-traces for up to three frame-time targets (100 ms by default) in bands of rows,
+    // so the window answers within about that even when one sample pass of the whole view takes
+    // seconds (llvmpipe). Three, not one: the editor's own work costs ~48 ms a frame on llvmpipe
+    // (bench/README.md, dynamic resolution), so a budget of one 33 ms target would leave the
+    // samples under half of the time; at three they get about two thirds. Target 0: a whole pass
+    // per frame.
+    const double budgetMs = 3.0 * settings.frameTimeTargetMs;
+    const auto start = Clock::now();
+    int draws = 0;
+    while (tracer.samplesTaken() < cap) {
+        int rows = h;
+        if (budgetMs > 0.0) {
+            const double left = budgetMs - ms(start, Clock::now());
+            if (draws > 0 && (pathMsPerRow_ <= 0.0 || left < pathMsPerRow_)) break;
+            // The first band ever is a probe of 8 rows; then as many rows as the time left holds.
+            rows = pathMsPerRow_ > 0.0 ? std::max(int(left / pathMsPerRow_), 1) : 8;
+        }
+        rows = std::min(rows, h - tracer.rowsDone());
+        const auto t0 = Clock::now();
+        const bool completed = tracer.addSampleRows(rows);
+        ++draws;
+        // Rows cost unevenly (background against fractal): a running mean of the recent bands.
+        const double perRow = ms(t0, Clock::now()) / rows;
+        pathMsPerRow_ = pathMsPerRow_ > 0.0 ? 0.5 * (pathMsPerRow_ + perRow) : perRow;
+        if (completed) copyPathImage();  // the sums hold whole passes only now
+        if (budgetMs <= 0.0) break;
+    }
     stats_.pathTracing = true;
     stats_.pathSamples = tracer.samplesTaken();
     stats_.pathSppCap = cap;
     stats_.settled = tracer.samplesTaken() >= cap;
-    stats_.renderMs =
-        added ? std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() : 0.0;
+    stats_.renderMs = draws ? ms(start, Clock::now()) : 0.0;
     stats_.action = "path";
     stats_.internalScale = 1.0;
-    stats_.width = w;
+    stats_.width = tracer.width();
     stats_.height = h;
-    if (tracer.samplesTaken() == 0) return;  // the fast image stays until the first sample
-    if (added) {
-        // The tracer's sums, rows flipped to the viewport's order (top row first); the division
-        // by the sample count is a gain of -log2(spp) stops in the display pass (both linear).
-        if (w != pathImageWidth_ || h != pathImageHeight_ || !pathImage_) {
-            glDeleteFramebuffers(1, &pathImageFramebuffer_);
-            glDeleteTextures(1, &pathImage_);
-            glCreateTextures(GL_TEXTURE_2D, 1, &pathImage_);
-            glTextureStorage2D(pathImage_, 1, GL_RGBA32F, w, h);
-            glCreateFramebuffers(1, &pathImageFramebuffer_);
-            glNamedFramebufferTexture(pathImageFramebuffer_, GL_COLOR_ATTACHMENT0, pathImage_, 0);
-            pathImageWidth_ = w;
-            pathImageHeight_ = h;
-        }
-        if (!pathReadFramebuffer_) glCreateFramebuffers(1, &pathReadFramebuffer_);
-        glNamedFramebufferTexture(pathReadFramebuffer_, GL_COLOR_ATTACHMENT0, tracer.beautySumTexture(), 0);
-        glBlitNamedFramebuffer(pathReadFramebuffer_, pathImageFramebuffer_, 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT,
-                               GL_NEAREST);
-        imageChanged_ = true;
-    }
-    ensureDisplayTarget(w, h);
+    if (tracer.samplesTaken() == 0) return;  // the fast image stays until the first whole pass
+    ensureDisplayTarget(tracer.width(), h);
     redisplay(preset, pathImage_, -std::log2(double(tracer.samplesTaken())));
 }
 

@@ -72,6 +72,7 @@ class CoreViewportView final : public ViewportView {
     bool pathStillValid(const Preset& preset, const ViewSettings& settings, int width, int height);
     void startPath(const Preset& preset, int width, int height);
     void pathFrame(const Preset& preset, const ViewSettings& settings);
+    void copyPathImage();  // the tracer's whole passes into pathImage_
     void dropPath();
 
     // Asks the compiler for the formula's programs; true once the viewport has them (or when
@@ -111,6 +112,7 @@ class CoreViewportView final : public ViewportView {
     std::optional<std::pair<Lighting, std::string>> pathFailed_;
     GLuint pathReadFramebuffer_ = 0, pathImage_ = 0, pathImageFramebuffer_ = 0;
     int pathImageWidth_ = 0, pathImageHeight_ = 0;
+    double pathMsPerRow_ = 0.0;  // measured time of one row of one sample (0: none yet)
 };
 
 }  // namespace fraktal::editor
