@@ -161,6 +161,27 @@ TEST(EditorPathTrace, AtRestTheViewportShowsWhatThePathExportWrites) { expectVie
 
 TEST(EditorPathTrace, SamplePassesSpreadOverFramesGiveTheSameImage) { expectViewportEqualsExport(0.5); }
 
+// The viewport resolves the scene every time its view rests: the environment map is loaded again
+// only when its settings, the preset file or the working space changed.
+TEST(EditorPathTrace, TheSceneReusesTheLoadedEnvironmentMapOnlyForTheSameSettings) {
+    const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
+    Preset p = litMandelbulb();
+    PathSceneData first = resolvePathScene(p, presetFile(), color);
+    ASSERT_FALSE(first.environment.empty());
+    first.environment.rgb[0] = -1.0f;  // no load gives a negative radiance: marks this copy
+    p.camera.position.x += 1.0;
+    p.lighting.lights.back().intensity = 3.0;
+    EXPECT_EQ(resolvePathScene(p, presetFile(), color, &first).environment.rgb[0], -1.0f);
+    p.lighting.environment.intensity = 2.0;
+    const PathSceneData brighter = resolvePathScene(p, presetFile(), color, &first);
+    EXPECT_GT(brighter.environment.rgb[0], 0.0f);
+    p.lighting.environment.intensity = 1.0;
+    const std::string otherFile = (test::sourceDir() / "presets" / "menger.json").string();
+    EXPECT_GT(resolvePathScene(p, otherFile, color, &first).environment.rgb[0], 0.0f);
+    p.lighting.environment.map.clear();
+    EXPECT_TRUE(resolvePathScene(p, presetFile(), color, &first).environment.empty());
+}
+
 TEST(EditorPathTrace, AnyChangeDropsTheAccumulationToTheFastMode) {
     test::glContext();
     const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());

@@ -246,11 +246,11 @@ void CoreViewportView::startPath(const Preset& preset, int width, int height) {
     p.render.width = width;
     p.render.height = height;
     try {
-        p.data = resolvePathScene(preset, presetFile_, color_);
+        pathData_ = resolvePathScene(preset, presetFile_, color_, pathData_ ? &*pathData_ : nullptr);
         if (!pathTracer_ || pathTracer_->width() != width || pathTracer_->height() != height ||
             pathTracer_->structure() != preset.formula.structureKey())
             pathTracer_ = std::make_unique<gl::PathTracer>(preset.formula, width, height);
-        pathTracer_->setScene(p.data.scene(preset, p.render));
+        pathTracer_->setScene(pathData_->scene(preset, p.render));
     } catch (const std::exception& e) {
         // The fast mode stays on screen and the Render tab says why.
         pathError_ = std::string("path tracing at rest: ") + e.what();

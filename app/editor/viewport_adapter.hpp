@@ -35,7 +35,6 @@ struct PathAtRest {
     std::string workingSpace, presetFile;
     bool transparentBackground = false;
     RenderSettings render;  // the preset's, at the viewport's full size
-    PathSceneData data;
 };
 
 class CoreViewportView final : public ViewportView {
@@ -107,7 +106,8 @@ class CoreViewportView final : public ViewportView {
     std::string presetFile_;
     std::unique_ptr<gl::PathTracer> pathTracer_;
     std::optional<PathAtRest> path_;
-    std::string pathError_;  // why the path tracer could not start (e.g. a missing environment map)
+    std::optional<PathSceneData> pathData_;  // the last scene resolved (its environment map is reused)
+    std::string pathError_;                  // why the path tracer could not start (e.g. a missing environment map)
     // The lighting and the preset file + structure of a failed start: not retried for the same.
     std::optional<std::pair<Lighting, std::string>> pathFailed_;
     GLuint pathReadFramebuffer_ = 0, pathImage_ = 0, pathImageFramebuffer_ = 0;

@@ -49,15 +49,20 @@ void writePathExr(const std::filesystem::path& path, const PathImage& image, con
     file.commit();
 }
 
-PathSceneData resolvePathScene(const Preset& preset, const std::string& presetFile, const ColorPipeline& color) {
+PathSceneData resolvePathScene(const Preset& preset, const std::string& presetFile, const ColorPipeline& color,
+                               const PathSceneData* previous) {
     const RenderSettings& r = preset.render;
     PathSceneData d;
     d.workingSpace = color.resolveSpace(r.workingSpace);
+    d.presetFile = presetFile;
     const auto toWorking = [&](const vec3& c) { return color.fromLinearRec709(c, d.workingSpace); };
     d.shading = resolveShading(preset.shading, r, preset.formula, toWorking);
     d.lighting = preset.lighting;
     d.lighting.lights = resolveLights(d.lighting.lights, toWorking);
-    if (d.lighting.environment.active())
+    if (previous && previous->lighting.environment == d.lighting.environment && previous->presetFile == presetFile &&
+        previous->workingSpace == d.workingSpace)
+        d.environment = previous->environment;
+    else if (d.lighting.environment.active())
         d.environment = loadEnvironmentMap(resolveEnvironmentPath(d.lighting.environment.map, presetFile),
                                            d.lighting.environment, color, d.workingSpace, presetFile);
     return d;

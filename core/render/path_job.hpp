@@ -24,7 +24,7 @@ struct PathJob {
 // space: the shading, the lights and the environment map. The still (renderPathJob) and the
 // editor's viewport at rest both build their scene through this, so the two draw the same samples.
 struct PathSceneData {
-    std::string workingSpace;
+    std::string workingSpace, presetFile;
     ShadingParams shading;
     Lighting lighting;
     EnvironmentMap environment;
@@ -36,7 +36,11 @@ struct PathSceneData {
 };
 
 // Loads the environment map (errors name the preset file and field) and resolves the colours.
-PathSceneData resolvePathScene(const Preset& preset, const std::string& presetFile, const ColorPipeline& color);
+// `previous`: an earlier result whose environment map is reused when it was loaded with the same
+// environment settings, preset file and working space (the editor resolves the scene every time
+// its view comes to rest; an HDR map can take a second to load).
+PathSceneData resolvePathScene(const Preset& preset, const std::string& presetFile, const ColorPipeline& color,
+                               const PathSceneData* previous = nullptr);
 // Adds path-traced samples to `tracer` (set to `scene` from sample index 0) in draws of 4, as the
 // still does, until it holds `spp`; polls `cancel` and reports to `onProgress` between draws.
 void accumulatePathSamples(gl::PathTracer& tracer, int spp, const StillJob& job);
