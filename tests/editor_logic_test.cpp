@@ -144,6 +144,8 @@ TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
     doc.view.motionFilter = false;
     doc.view.motionFilterRadius = 1.25;
     doc.view.coarseHits = false;
+    doc.view.pathTraceAtRest = true;
+    doc.view.pathSppCap = 64;
     // The Render and Shading tabs edit the preset's own sections: a saved preset carries them.
     doc.preset.shading.lightDirection = vec3(0.1, 0.2, 0.3);
     doc.preset.render.view = "ACES";

@@ -39,11 +39,18 @@ json editorSection(const Document& d) {
 }  // namespace
 
 json viewSettingsToJson(const ViewSettings& s) {
-    return {{"stepsPerFrame", s.stepsPerFrame}, {"renderScale", s.renderScale},
-            {"reprojection", s.reprojection},   {"aaCap", s.aaCap},
-            {"coneTile", s.coneTile},           {"maxCarryFrames", s.maxCarryFrames},
-            {"motionFilter", s.motionFilter},   {"motionFilterRadius", s.motionFilterRadius},
-            {"coarseHits", s.coarseHits},       {"frameTimeTargetMs", s.frameTimeTargetMs}};
+    return {{"stepsPerFrame", s.stepsPerFrame},
+            {"renderScale", s.renderScale},
+            {"reprojection", s.reprojection},
+            {"aaCap", s.aaCap},
+            {"coneTile", s.coneTile},
+            {"maxCarryFrames", s.maxCarryFrames},
+            {"motionFilter", s.motionFilter},
+            {"motionFilterRadius", s.motionFilterRadius},
+            {"coarseHits", s.coarseHits},
+            {"frameTimeTargetMs", s.frameTimeTargetMs},
+            {"renderMode", s.pathTraceAtRest ? "path" : "fast"},
+            {"pathSppCap", s.pathSppCap}};
 }
 
 ViewSettings viewSettingsFromJson(const json& j) {
@@ -68,6 +75,8 @@ ViewSettings viewSettingsFromJson(const json& j) {
                viewport::ViewportOptions::kMaxFilterRadius);
     const json& coarseHits = j.value("coarseHits", json());
     if (coarseHits.is_boolean()) s.coarseHits = coarseHits.get<bool>();
+    s.pathTraceAtRest = j.value("renderMode", json()) == json("path");
+    s.pathSppCap = int(number("pathSppCap", s.pathSppCap, 1, 65536));
     return s;
 }
 

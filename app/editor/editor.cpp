@@ -215,6 +215,7 @@ const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, 
         return plane.compileError();
     }
     updateCamera(s);
+    viewport.setPresetFile(s.file.path.string());
     const ExportFrame frame = exportFrameOf(s);
     if (frame.viewFovY == s.doc.preset.camera.fovY) {
         viewport.render(s.doc.preset, s.doc.view, width, height);
@@ -435,7 +436,10 @@ int runEditor(const EditorOptions& o) {
             if (!o.stateFile.empty()) {
                 try {
                     const bool viewportSettled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
-                    writeStateFile(o.stateFile, stateJson(s, framesDrawn, compileError, viewportSettled), lastState);
+                    writeStateFile(o.stateFile,
+                                   stateJson(s, framesDrawn, compileError, viewportSettled,
+                                             s.doc.plane ? nullptr : &viewport->stats()),
+                                   lastState);
                 } catch (const std::exception& e) {
                     std::fprintf(stderr, "fraktal: %s\n", e.what());
                 }

@@ -48,6 +48,9 @@ struct Layout {
     float leftWidth = 360.0f;      // the side column
     float formulaHeight = 500.0f;  // the Formula panel's share of the column, from its top
     float viewportX = 0, viewportY = 0, viewportW = 1, viewportH = 1;  // in window coordinates
+    // The Render tab's render-mode combo as last drawn (x, y, w, h in window coordinates; 0 size:
+    // never drawn), for tests that click it (the state file).
+    float renderModeCombo[4] = {0, 0, 0, 0};
 };
 
 // The editor window's place on the screen, remembered between runs (panel_ini.cpp); 0 size: unknown.

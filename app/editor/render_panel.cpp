@@ -54,8 +54,23 @@ std::vector<std::string> workingSpacesOf(const OCIO::ConstConfigRcPtr& c) {
     return out;
 }
 
-void drawViewportSection(ViewSettings& v) {
+void drawViewportSection(ViewSettings& v, Layout& layout) {
     sectionHeader("Viewport");
+    int mode = v.pathTraceAtRest ? 1 : 0;
+    if (ImGui::Combo("Render mode", &mode, "Fast\0Path traced at rest\0")) v.pathTraceAtRest = mode == 1;
+    const ImVec2 lo = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    layout.renderModeCombo[0] = lo.x;
+    layout.renderModeCombo[1] = lo.y;
+    layout.renderModeCombo[2] = size.x;
+    layout.renderModeCombo[3] = size.y;
+    helpMarker(
+        "Fast: the real-time renderer, always. Path traced at rest: the fast renderer while the camera or a "
+        "parameter moves; once the view rests the viewport path-traces it at full resolution with the "
+        "document's lights, as `fraktal render --mode path` does, adding samples every frame up to the cap. "
+        "Any change returns to the fast renderer.");
+    if (v.pathTraceAtRest)
+        dragInt("Path spp cap", v.pathSppCap, 1, 65536, 1.0f,
+                "Samples per pixel the path tracer accumulates at rest; then the viewport idles.");
     dragInt("Steps per frame", v.stepsPerFrame, 1, 1000, 0.5f,
             "March steps per ray per frame. Unfinished rays go on next frame: a smaller budget keeps the UI "
             "responsive on a CPU renderer.");
@@ -148,7 +163,7 @@ void drawRenderTab(EditorState& s) {
         // A 2D document has no march; its view refines by itself (the View tab).
         drawColourSection(s, s.doc.plane->render);
     } else {
-        drawViewportSection(s.doc.view);
+        drawViewportSection(s.doc.view, s.layout);
         drawMarchSection(s.doc.preset.render);
         drawStepFactorSection(s.stepFactor, s.doc.preset.formula);
         drawColourSection(s, s.doc.preset.render);

@@ -35,7 +35,8 @@ json lightsJson(const Lighting& l, const LightsPanel& p) {
 
 }  // namespace
 
-std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled) {
+std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
+                      const ViewportStats* viewport) {
     const Camera& c = s.doc.preset.camera;
     json j;
     j["frame"] = frame;
@@ -74,6 +75,16 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
     j["compileError"] = compileError;
     j["viewportSettled"] = viewportSettled;
+    // The render mode (ViewSettings::pathTraceAtRest) and what the viewport shows: "path" with its
+    // samples per pixel once the view rests in the path-traced mode, else "fast" with 0.
+    if (viewport)
+        j["viewportRender"] = {{"mode", s.doc.view.pathTraceAtRest ? "path" : "fast"},
+                               {"showing", viewport->pathTracing ? "path" : "fast"},
+                               {"pathSpp", viewport->pathTracing ? viewport->pathSamples : 0},
+                               {"pathSppCap", s.doc.view.pathSppCap},
+                               {"modeCombo",
+                                {s.layout.renderModeCombo[0], s.layout.renderModeCombo[1], s.layout.renderModeCombo[2],
+                                 s.layout.renderModeCombo[3]}}};
     j["timeline"] = timelineJson(s.timeline);
     j["selectedNode"] = s.selectedNode;
     // The parameter widgets of the selected node as drawn (window coordinates) and the help text

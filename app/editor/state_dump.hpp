@@ -7,11 +7,14 @@
 #include <string>
 
 #include "app/editor/editor_state.hpp"
+#include "app/editor/viewport_view.hpp"
 
 namespace fraktal::editor {
 
 // `viewportSettled`: the viewport's image is converged at full resolution (nothing left to refine).
-std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled);
+// `viewport`: the 3D viewport's statistics (null for a 2D document), for its render mode.
+std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
+                      const ViewportStats* viewport = nullptr);
 
 // Writes `text` to `file` atomically when it differs from `last` (then updates `last`).
 void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last);

@@ -76,11 +76,17 @@ void drawStatsOverlay(EditorState& s, const ViewportView& v) {
     // The viewport's own per-frame statistics (core/viewport FrameStats).
     const ViewportStats& st = v.stats();
     frameRateLine();
-    ImGui::Text("%d x %d px   %.1f DE evals / px", st.width, st.height, st.deEvaluationsPerPixel);
-    ImGui::Text("internal scale %.2f%s", st.internalScale, st.internalScale < 1.0 ? " (moving)" : "");
-    ImGui::Text("reprojected %.0f%%   converged %.0f%%", 100.0 * st.reprojectedShare, 100.0 * st.convergedShare);
-    ImGui::Text("AA %d / %d spp%s   %s", st.aaLevel, st.aaCap, st.settled ? " (settled)" : "",
-                s.cameraControls.mode == CameraMode::Fly ? "FLY" : "ORBIT");
+    const char* cameraMode = s.cameraControls.mode == CameraMode::Fly ? "FLY" : "ORBIT";
+    if (st.pathTracing) {  // the fast mode's figures belong to the last fast frame: not shown
+        ImGui::Text("%d x %d px   %.0f ms of samples", st.width, st.height, st.renderMs);
+        ImGui::Text("path traced %d / %d spp%s   %s", st.pathSamples, st.pathSppCap, st.settled ? " (settled)" : "",
+                    cameraMode);
+    } else {
+        ImGui::Text("%d x %d px   %.1f DE evals / px", st.width, st.height, st.deEvaluationsPerPixel);
+        ImGui::Text("internal scale %.2f%s", st.internalScale, st.internalScale < 1.0 ? " (moving)" : "");
+        ImGui::Text("reprojected %.0f%%   converged %.0f%%", 100.0 * st.reprojectedShare, 100.0 * st.convergedShare);
+        ImGui::Text("AA %d / %d spp%s   %s", st.aaLevel, st.aaCap, st.settled ? " (settled)" : "", cameraMode);
+    }
     if (st.compiling) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "compiling the new structure...");
     ImGui::End();
 }

@@ -53,6 +53,7 @@ bool renderNextThumbnail(ThumbnailRenderer& r, PresetBrowser& b, const ColorPipe
             if (!r.viewport) r.viewport = makeViewportView(color);
             ViewSettings v = d.view;
             v.aaCap = 1;
+            v.pathTraceAtRest = false;  // a thumbnail is the fast image
             v.frameTimeTargetMs = 0.0;  // one viewport renders every thumbnail: each is a new view, at full size
             v.stepsPerFrame = std::max(v.stepsPerFrame, 64);
             for (int frame = 0; frame < kMaxThumbnailFrames; ++frame) {

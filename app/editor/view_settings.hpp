@@ -38,6 +38,12 @@ struct ViewSettings {
     double motionFilterRadius = viewport::ViewportOptions{}.motionFilterRadius;  // pixels
     // Under motion stop rays that keep a carried colour near the surface (ViewportOptions::coarseHits).
     bool coarseHits = true;
+    // Render mode: false renders the fast mode always; true renders it while the view moves and,
+    // once the view rests, path-traces it (core/render/path_tracer.hpp, the scene of `fraktal
+    // render --mode path`) at the viewport's full size, accumulating up to pathSppCap samples per
+    // pixel.
+    bool pathTraceAtRest = false;
+    int pathSppCap = 256;
 
     bool operator==(const ViewSettings&) const = default;
 };

@@ -29,6 +29,11 @@ struct ViewportStats {
     double internalScale = 1.0;  // dynamic resolution: the share of the full size rendered (1 at rest)
     int compiles = 0;            // formula programs built so far (a value edit must not add one)
     bool compiling = false;      // a new structure compiles in the background; the old image stays
+    // "Path traced at rest" (ViewSettings::pathTraceAtRest): whether the image shown is the path
+    // tracer's, and its samples per pixel so far (0 while the fast mode shows) out of the cap.
+    bool pathTracing = false;
+    int pathSamples = 0;
+    int pathSppCap = 0;
 };
 
 class ViewportView {
@@ -49,6 +54,9 @@ class ViewportView {
     virtual const std::string& compileError() const = 0;
     // Empty when the display transform is set up; else why not (bad OCIO view, ...).
     virtual const std::string& displayError() const = 0;
+    // The document's file, where the path tracer's relative environment map paths start (as for
+    // `fraktal render`); empty for an unsaved document.
+    virtual void setPresetFile(const std::string& /*file*/) {}
 };
 
 class BackgroundCompiler;

@@ -49,37 +49,50 @@ void writePathExr(const std::filesystem::path& path, const PathImage& image, con
     file.commit();
 }
 
+PathSceneData resolvePathScene(const Preset& preset, const std::string& presetFile, const ColorPipeline& color,
+                               const PathSceneData* previous) {
+    const RenderSettings& r = preset.render;
+    PathSceneData d;
+    d.workingSpace = color.resolveSpace(r.workingSpace);
+    d.presetFile = presetFile;
+    const auto toWorking = [&](const vec3& c) { return color.fromLinearRec709(c, d.workingSpace); };
+    d.shading = resolveShading(preset.shading, r, preset.formula, toWorking);
+    d.lighting = preset.lighting;
+    d.lighting.lights = resolveLights(d.lighting.lights, toWorking);
+    if (previous && previous->lighting.environment == d.lighting.environment && previous->presetFile == presetFile &&
+        previous->workingSpace == d.workingSpace)
+        d.environment = previous->environment;
+    else if (d.lighting.environment.active())
+        d.environment = loadEnvironmentMap(resolveEnvironmentPath(d.lighting.environment.map, presetFile),
+                                           d.lighting.environment, color, d.workingSpace, presetFile);
+    return d;
+}
+
+void accumulatePathSamples(gl::PathTracer& tracer, int spp, const StillJob& job) {
+    const auto start = std::chrono::steady_clock::now();
+    while (tracer.samplesTaken() < spp) {
+        tracer.addSamples(std::min(4, spp - tracer.samplesTaken()));
+        if (job.cancel && job.cancel->load()) throw RenderCancelled();
+        if (job.onProgress)
+            job.onProgress(
+                StillProgress{tracer.samplesTaken(), spp,
+                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    }
+}
+
 void renderPathJob(const PathJob& job, const ColorPipeline& color) {
     validateStillJob(job.still, color);
     const Preset& preset = job.still.preset;
     const RenderSettings& r = preset.render;
-    const std::string workingSpace = color.resolveSpace(r.workingSpace);
-    const auto toWorking = [&](const vec3& c) { return color.fromLinearRec709(c, workingSpace); };
-    const ShadingParams shading = resolveShading(preset.shading, r, preset.formula, toWorking);
-    Lighting lighting = preset.lighting;
-    lighting.lights = resolveLights(lighting.lights, toWorking);
-    EnvironmentMap environment;
-    if (lighting.environment.active())
-        environment = loadEnvironmentMap(resolveEnvironmentPath(lighting.environment.map, job.presetFile),
-                                         lighting.environment, color, workingSpace, job.presetFile);
-    const DisplayTransform display(color, workingSpace, r.display, r.view, r.exposure);
+    const PathSceneData data = resolvePathScene(preset, job.presetFile, color);
+    const DisplayTransform display(color, data.workingSpace, r.display, r.view, r.exposure);
 
-    const PathScene scene{preset.formula, preset.camera, r, shading, lighting, environment};
     gl::PathTracer tracer(preset.formula, r.width, r.height);
-    tracer.setScene(scene);
-    const auto start = std::chrono::steady_clock::now();
-    for (int done = 0; done < r.spp;) {
-        const int n = std::min(4, r.spp - done);
-        tracer.addSamples(n);
-        done += n;
-        if (job.still.cancel && job.still.cancel->load()) throw RenderCancelled();
-        if (job.still.onProgress)
-            job.still.onProgress(StillProgress{
-                done, r.spp, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
-    }
+    tracer.setScene(data.scene(preset, r));
+    accumulatePathSamples(tracer, r.spp, job.still);
     PathImage image = tracer.image();
     if (job.denoise) denoisePathImage(image);
-    writePathExr(job.still.exr, image, serializePreset(preset), workingSpace);
+    writePathExr(job.still.exr, image, serializePreset(preset), data.workingSpace);
     if (job.still.png) {
         std::vector<uint8_t> rgb8(size_t(r.width) * r.height * 3);
         display.toDisplay8(image.passes[kBeauty], rgb8);

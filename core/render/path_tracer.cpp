@@ -106,12 +106,12 @@ void PathTracer::setScene(const PathScene& scene, int firstSampleIndex) {
     const float zero[4] = {0, 0, 0, 0};
     for (GLuint t : targets_) glClearTexImage(t, 0, GL_RGBA, GL_FLOAT, zero);
     samples_ = 0;
+    rowsDone_ = 0;
     firstSampleIndex_ = firstSampleIndex;
 }
 
-void PathTracer::addSamples(int samples, int batch) {
-    const GLuint p = program_.id();
-    glUseProgram(p);
+void PathTracer::beginDraws() {
+    glUseProgram(program_.id());
     for (int i = 0; i < 3; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(i), envBuffers_[i]);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, width_, height_);
@@ -120,18 +120,48 @@ void PathTracer::addSamples(int samples, int batch) {
     glBlendEquation(GL_FUNC_ADD);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(vertexArray_);
+}
+
+void PathTracer::endDraws() {
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void PathTracer::draw(int samples) {
+    const GLuint p = program_.id();
+    glUniform1i(glGetUniformLocation(p, "u_firstSample"), firstSampleIndex_ + samples_);
+    glUniform1i(glGetUniformLocation(p, "u_writeDepth"), samples_ == 0 ? 1 : 0);
+    glUniform1i(glGetUniformLocation(p, "u_samples"), samples);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glFinish();  // one draw at a time: llvmpipe runs a queued batch of long draws at once
+}
+
+void PathTracer::addSamples(int samples, int batch) {
+    if (rowsDone_ != 0) throw std::logic_error("PathTracer::addSamples: a pass of addSampleRows is under way");
+    beginDraws();
     while (samples > 0) {
         const int n = std::min(samples, std::max(batch, 1));
-        glUniform1i(glGetUniformLocation(p, "u_firstSample"), firstSampleIndex_ + samples_);
-        glUniform1i(glGetUniformLocation(p, "u_writeDepth"), samples_ == 0 ? 1 : 0);
-        glUniform1i(glGetUniformLocation(p, "u_samples"), n);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glFinish();  // one draw at a time: llvmpipe runs a queued batch of long draws at once
+        draw(n);
         samples_ += n;
         samples -= n;
     }
-    glDisable(GL_BLEND);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    endDraws();
+}
+
+bool PathTracer::addSampleRows(int rows) {
+    rows = std::clamp(rows, 1, height_ - rowsDone_);
+    beginDraws();
+    // Only these rows' fragments run (texture rows, from the bottom; any order covers the image).
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, rowsDone_, width_, rows);
+    draw(1);
+    glDisable(GL_SCISSOR_TEST);
+    endDraws();
+    rowsDone_ += rows;
+    if (rowsDone_ < height_) return false;
+    rowsDone_ = 0;
+    ++samples_;
+    return true;
 }
 
 PathImage PathTracer::image() const {

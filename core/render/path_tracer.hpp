@@ -25,18 +25,36 @@ class PathTracer {
     // draws the random numbers of sample index firstSampleIndex + k (an independent run of the
     // same scene starts past the samples of another).
     void setScene(const PathScene& scene, int firstSampleIndex = 0);
-    // Adds `samples` more samples per pixel (draws of at most `batch` samples each).
+    // Adds `samples` more samples per pixel (draws of at most `batch` samples each). Not while a
+    // pass of addSampleRows is under way (std::logic_error).
     void addSamples(int samples, int batch = 4);
+    // Continues the next sample pass (sample index samplesTaken() of every pixel) over the next
+    // `rows` rows; true when that completes the pass, which then counts in samplesTaken(). One
+    // pass spread over several short draws (the editor's viewport keeps its frames short) gives
+    // every pixel the sample addSamples would.
+    bool addSampleRows(int rows);
+    int rowsDone() const { return rowsDone_; }  // of the pass under way (0: none)
     int samplesTaken() const { return samples_; }
+    const std::string& structure() const { return structure_; }  // the formula's structureKey()
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // The beauty pass's running sum (RGBA32F, samplesTaken() samples per pixel, texture row 0 is
+    // the image's bottom row), for showing the accumulation without reading it back.
+    GLuint beautySumTexture() const { return targets_[kBeauty]; }
     // The sums so far divided by the samples taken (rows from the top).
     PathImage image() const;
     // DE evaluations per pixel per sample, averaged over the image.
     double deEvaluationsPerSample() const;
 
    private:
+    // Binds the program, target and blending for draws into the sums; `end` undoes it.
+    void beginDraws();
+    void endDraws();
+    void draw(int samples);  // one draw of `samples` samples from sample index samples_
+
     std::string structure_;
     int width_, height_;
-    int samples_ = 0, firstSampleIndex_ = 0;
+    int samples_ = 0, firstSampleIndex_ = 0, rowsDone_ = 0;
     Program program_;
     FormulaUniforms formulaUniforms_;
     ShadingUniforms shadingUniforms_;

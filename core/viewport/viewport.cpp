@@ -24,14 +24,19 @@ void Viewport::setOptions(const ViewportOptions& options) {
     options_ = options;
 }
 
-FrameStats Viewport::render(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                            const ShadingSettings& shading, int width, int height) {
-    if (width < 2 || height < 2) throw std::runtime_error("viewport: size must be at least 2x2");
+FrameKey Viewport::frameKey(const Formula& formula, const Camera& camera, const RenderSettings& render,
+                            const ShadingSettings& shading, int width, int height) const {
     RenderSettings effective = render;
     if (!options_.overRelaxation) effective.overRelaxation = 1.0;
     const ShadingParams params = resolveShading(shading, effective, formula);
+    return FrameKey{width, height, formula.structureKey(), formulaValuesKey(formula), params, render.maxSteps, camera};
+}
 
-    FrameKey key{width, height, formula.structureKey(), formulaValuesKey(formula), params, render.maxSteps, camera};
+FrameStats Viewport::render(const Formula& formula, const Camera& camera, const RenderSettings& render,
+                            const ShadingSettings& shading, int width, int height) {
+    if (width < 2 || height < 2) throw std::runtime_error("viewport: size must be at least 2x2");
+    FrameKey key = frameKey(formula, camera, render, shading, width, height);
+    const ShadingParams& params = key.shading;
     // Compile first: if it fails, the old programs and image stay.
     if (!programs_ || programs_->structure != key.structure) programs_ = std::make_unique<ViewportPrograms>(formula);
     // A new size keeps the previous grid for this frame: a reprojected frame scatters its points

@@ -43,6 +43,12 @@ class Viewport {
     FrameStats render(const Formula& formula, const Camera& camera, const RenderSettings& render,
                       const ShadingSettings& shading, int width, int height);
 
+    // What render() with these arguments decides its frame on (decideFrame's key), so that a caller
+    // that stops rendering for a while (the editor's path tracing at rest) asks the same question
+    // about whether the view changed.
+    FrameKey frameKey(const Formula& formula, const Camera& camera, const RenderSettings& render,
+                      const ShadingSettings& shading, int width, int height) const;
+
     // Whether render() with this formula would compile first: the current programs were built for
     // another structure (or none yet).
     bool needsPrograms(const Formula& formula) const {
