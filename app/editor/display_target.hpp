@@ -3,20 +3,17 @@
 // Needs the editor's current GL context.
 #pragma once
 
-#include <epoxy/gl.h>
+#include "core/gl/color_target.hpp"
 
 namespace fraktal::editor {
 
 class DisplayTarget {
    public:
-    DisplayTarget() = default;
-    ~DisplayTarget();
-    DisplayTarget(const DisplayTarget&) = delete;
-    DisplayTarget& operator=(const DisplayTarget&) = delete;
-
     // Recreates the texture at a new size; returns true when it did (the image is gone).
     bool resize(int width, int height);
-    GLuint texture() const { return texture_; }
+    GLuint texture() const { return target_.texture(); }
+    int width() const { return target_.width(); }
+    int height() const { return target_.height(); }
 
     // Binds the framebuffer with a viewport of the target's size; the destructor of the returned
     // guard restores the framebuffer that was bound before.
@@ -27,8 +24,7 @@ class DisplayTarget {
     [[nodiscard]] Binding bind() const;
 
    private:
-    GLuint texture_ = 0, framebuffer_ = 0;
-    int width_ = 0, height_ = 0;
+    gl::ColorTarget target_{GL_RGBA8};
 };
 
 }  // namespace fraktal::editor

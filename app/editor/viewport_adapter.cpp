@@ -67,13 +67,7 @@ bool CoreViewportView::programsReady(const Formula& formula) {
     return true;
 }
 
-CoreViewportView::~CoreViewportView() {
-    glDeleteFramebuffers(1, &displayFramebuffer_);
-    glDeleteTextures(1, &displayTexture_);
-    glDeleteFramebuffers(1, &pathReadFramebuffer_);
-    glDeleteFramebuffers(1, &pathImageFramebuffer_);
-    glDeleteTextures(1, &pathImage_);
-}
+CoreViewportView::~CoreViewportView() { glDeleteFramebuffers(1, &pathReadFramebuffer_); }
 
 const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {
     if (!shadingKey_ || shadingKey_->first != preset.shading || shadingKey_->second != preset.render.workingSpace) {
@@ -127,21 +121,7 @@ bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& set
 }
 
 void CoreViewportView::ensureDisplayTarget(int width, int height) {
-    if (width == displayWidth_ && height == displayHeight_ && displayTexture_) return;
-    glDeleteFramebuffers(1, &displayFramebuffer_);
-    glDeleteTextures(1, &displayTexture_);
-    glCreateTextures(GL_TEXTURE_2D, 1, &displayTexture_);
-    glTextureStorage2D(displayTexture_, 1, GL_RGBA8, width, height);
-    // Upscaled to the window by ImGui: linear filtering.
-    glTextureParameteri(displayTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(displayTexture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glCreateFramebuffers(1, &displayFramebuffer_);
-    glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, displayTexture_, 0);
-    displayWidth_ = width;
-    displayHeight_ = height;
-    shownDisplay_.reset();
+    if (displayTarget_.resize(width, height)) shownDisplay_.reset();
 }
 
 void CoreViewportView::redisplay(const Preset& preset, GLuint linearImage, double gainStops) {
@@ -156,12 +136,10 @@ void CoreViewportView::redisplay(const Preset& preset, GLuint linearImage, doubl
     }
     const auto shown = std::make_pair(display_.key(), preset.render.exposure + gainStops);
     if (!imageChanged_ && shownDisplay_ == shown) return;
-    GLint previous = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
-    glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
-    glViewport(0, 0, displayWidth_, displayHeight_);
-    display_.draw(linearImage, preset.render.exposure + gainStops);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    {
+        const DisplayTarget::Binding bound = displayTarget_.bind();
+        display_.draw(linearImage, preset.render.exposure + gainStops);
+    }
     shownDisplay_ = shown;
     imageChanged_ = false;
 }
@@ -269,19 +247,10 @@ void CoreViewportView::copyPathImage() {
     // the sample count is a gain of -log2(spp) stops in the display pass (both linear).
     const gl::PathTracer& tracer = *pathTracer_;
     const int w = tracer.width(), h = tracer.height();
-    if (w != pathImageWidth_ || h != pathImageHeight_ || !pathImage_) {
-        glDeleteFramebuffers(1, &pathImageFramebuffer_);
-        glDeleteTextures(1, &pathImage_);
-        glCreateTextures(GL_TEXTURE_2D, 1, &pathImage_);
-        glTextureStorage2D(pathImage_, 1, GL_RGBA32F, w, h);
-        glCreateFramebuffers(1, &pathImageFramebuffer_);
-        glNamedFramebufferTexture(pathImageFramebuffer_, GL_COLOR_ATTACHMENT0, pathImage_, 0);
-        pathImageWidth_ = w;
-        pathImageHeight_ = h;
-    }
+    pathImage_.resize(w, h);
     if (!pathReadFramebuffer_) glCreateFramebuffers(1, &pathReadFramebuffer_);
     glNamedFramebufferTexture(pathReadFramebuffer_, GL_COLOR_ATTACHMENT0, tracer.beautySumTexture(), 0);
-    glBlitNamedFramebuffer(pathReadFramebuffer_, pathImageFramebuffer_, 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT,
+    glBlitNamedFramebuffer(pathReadFramebuffer_, pathImage_.framebuffer(), 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
     imageChanged_ = true;
 }
@@ -331,7 +300,7 @@ void CoreViewportView::pathFrame(const Preset& preset, const ViewSettings& setti
     stats_.height = h;
     if (tracer.samplesTaken() == 0) return;  // the fast image stays until the first whole pass
     ensureDisplayTarget(tracer.width(), h);
-    redisplay(preset, pathImage_, -std::log2(double(tracer.samplesTaken())));
+    redisplay(preset, pathImage_.texture(), -std::log2(double(tracer.samplesTaken())));
 }
 
 void CoreViewportView::dropPath() {

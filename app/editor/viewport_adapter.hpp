@@ -7,9 +7,11 @@
 #include <optional>
 
 #include "app/editor/background_compiler.hpp"
+#include "app/editor/display_target.hpp"
 #include "app/editor/formula_edits.hpp"
 #include "app/editor/ocio_display_pass.hpp"
 #include "app/editor/viewport_view.hpp"
+#include "core/gl/color_target.hpp"
 #include "core/render/path_job.hpp"
 #include "core/render/path_tracer.hpp"
 #include "core/viewport/resolution_control.hpp"
@@ -46,9 +48,9 @@ class CoreViewportView final : public ViewportView {
     CoreViewportView& operator=(const CoreViewportView&) = delete;
 
     void render(const Preset& preset, const ViewSettings& settings, int width, int height) override;
-    GLuint displayTexture() const override { return displayTexture_; }
-    int width() const override { return displayWidth_; }
-    int height() const override { return displayHeight_; }
+    GLuint displayTexture() const override { return displayTarget_.texture(); }
+    int width() const override { return displayTarget_.width(); }
+    int height() const override { return displayTarget_.height(); }
     const ViewportStats& stats() const override { return stats_; }
     const std::string& compileError() const override { return compileError_; }
     const std::string& displayError() const override { return displayError_; }
@@ -91,8 +93,7 @@ class CoreViewportView final : public ViewportView {
     std::optional<std::pair<ShadingSettings, std::string>> shadingKey_;
     ShadingSettings workingShading_;
     // What the display texture shows: redrawn only when the image or the transform changed.
-    GLuint displayTexture_ = 0, displayFramebuffer_ = 0;
-    int displayWidth_ = 0, displayHeight_ = 0;
+    DisplayTarget displayTarget_;
     bool imageChanged_ = false;
     std::optional<std::pair<DisplayKey, double>> shownDisplay_;
     ViewportStats stats_;
@@ -110,8 +111,8 @@ class CoreViewportView final : public ViewportView {
     std::string pathError_;                  // why the path tracer could not start (e.g. a missing environment map)
     // The lighting and the preset file + structure of a failed start: not retried for the same.
     std::optional<std::pair<Lighting, std::string>> pathFailed_;
-    GLuint pathReadFramebuffer_ = 0, pathImage_ = 0, pathImageFramebuffer_ = 0;
-    int pathImageWidth_ = 0, pathImageHeight_ = 0;
+    GLuint pathReadFramebuffer_ = 0;
+    gl::ColorTarget pathImage_{GL_RGBA32F};
     double pathMsPerRow_ = 0.0;  // measured time of one row of one sample (0: none yet)
 };
 

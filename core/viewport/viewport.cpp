@@ -10,8 +10,6 @@ Viewport::Viewport(ViewportOptions options) : options_(options) {
 
 Viewport::~Viewport() {
     glDeleteFramebuffers(2, resampleFramebuffers_);
-    glDeleteFramebuffers(1, &displayFramebuffer_);
-    glDeleteTextures(1, &displayTexture_);
     glDeleteVertexArrays(1, &displayVertexArray_);
 }
 
@@ -129,24 +127,15 @@ std::vector<float> Viewport::readColourPoints() const { return readState(&MarchS
 std::vector<uint8_t> Viewport::readDisplay(float exposure) {
     if (!state_) return {};
     const int w = state_->width(), h = state_->height();
-    if (w != displayWidth_ || h != displayHeight_) {
-        glDeleteFramebuffers(1, &displayFramebuffer_);
-        glDeleteTextures(1, &displayTexture_);
-        glCreateTextures(GL_TEXTURE_2D, 1, &displayTexture_);
-        glTextureStorage2D(displayTexture_, 1, GL_RGBA8, w, h);
-        glCreateFramebuffers(1, &displayFramebuffer_);
-        glNamedFramebufferTexture(displayFramebuffer_, GL_COLOR_ATTACHMENT0, displayTexture_, 0);
-        displayWidth_ = w;
-        displayHeight_ = h;
-    }
+    display_.resize(w, h);
     GLint previousFramebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
-    glBindFramebuffer(GL_FRAMEBUFFER, displayFramebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, display_.framebuffer());
     glViewport(0, 0, w, h);
     runDisplayPass(*programs_, *state_, exposure, false, displayVertexArray_);
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFramebuffer));
     std::vector<uint8_t> pixels(size_t(w) * h * 4);
-    glGetTextureImage(displayTexture_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+    glGetTextureImage(display_.texture(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
     return pixels;
 }
 

@@ -18,6 +18,7 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/gl/color_target.hpp"
 #include "core/render/settings.hpp"
 #include "core/viewport/frame_logic.hpp"
 #include "core/viewport/gpu_counters.hpp"
@@ -96,8 +97,8 @@ class Viewport {
     bool settled_ = false;
     bool forceReset_ = false;
     GLuint resampleFramebuffers_[2] = {0, 0};
-    GLuint displayVertexArray_ = 0, displayTexture_ = 0, displayFramebuffer_ = 0;
-    int displayWidth_ = 0, displayHeight_ = 0;
+    GLuint displayVertexArray_ = 0;
+    gl::ColorTarget display_{GL_RGBA8};  // readDisplay's image
 };
 
 }  // namespace fraktal::viewport
