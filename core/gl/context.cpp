@@ -7,7 +7,10 @@
 // (after epoxy)
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <dlfcn.h>
+#include <link.h>
 
+#include <cstring>
 #include <stdexcept>
 
 namespace fraktal::gl {
@@ -53,6 +56,23 @@ EGLDisplay openDisplay(std::string& why) {
     return EGL_NO_DISPLAY;
 }
 
+// Mesa loads its driver (swrast_dri.so, the llvmpipe) at eglInitialize and unloads it at
+// eglTerminate. Kept loaded instead (RTLD_NODELETE on the already loaded library), so that the
+// allocations the driver keeps until exit are named by the leak checker (the sanitizer run) and by
+// profilers rather than being "<unknown module>", which no suppression can match. A process that
+// makes a context again would load the driver again anyway.
+void keepGlDriverLoaded() {
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void*) {
+            const char* name = info->dlpi_name;
+            const size_t n = name ? std::strlen(name) : 0;
+            if (n > 7 && std::strcmp(name + n - 7, "_dri.so") == 0)
+                dlopen(name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+            return 0;
+        },
+        nullptr);
+}
+
 }  // namespace
 
 std::unique_ptr<HeadlessContext> HeadlessContext::create() {
@@ -60,6 +80,7 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create() {
     EGLDisplay display = openDisplay(why);
     if (display == EGL_NO_DISPLAY)
         throw std::runtime_error("cannot open an EGL display (" + why + "): " + kInstallHint);
+    keepGlDriverLoaded();
     if (!eglBindAPI(EGL_OPENGL_API)) {
         eglTerminate(display);
         throw std::runtime_error("EGL cannot bind the desktop OpenGL API: " + std::string(kInstallHint));
