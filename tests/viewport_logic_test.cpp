@@ -66,15 +66,26 @@ TEST(ViewportLogic, ResizeDuringCameraMoveReprojects) {
     EXPECT_EQ(decideFrame(&a, b, true), FrameAction::Reset);
     b = a;
     b.width = 128;
-    EXPECT_EQ(decideFrame(&a, b, true, FrameAction::Reproject), FrameAction::Reset);
+    // The camera still: right after a move (the controller changing the grid in a pause) the
+    // image reprojects into the new grid; at rest it restarts.
+    EXPECT_EQ(decideFrame(&a, b, true, FrameAction::Reproject), FrameAction::Reproject);
+    EXPECT_EQ(decideFrame(&a, b, true, FrameAction::Hold), FrameAction::Reproject);
+    EXPECT_EQ(decideFrame(&a, b, false, FrameAction::Hold), FrameAction::Reset);
     EXPECT_EQ(decideFrame(&a, b, true, FrameAction::Continue), FrameAction::Reset);
+    EXPECT_EQ(decideFrame(&a, b, true, FrameAction::Reset), FrameAction::Reset);
 }
 
 TEST(ViewportLogic, StillCameraContinuesButRestartsOnceAfterMotion) {
     const FrameKey a = baseKey();
     EXPECT_EQ(decideFrame(&a, a, true, FrameAction::Continue), FrameAction::Continue);
     EXPECT_EQ(decideFrame(&a, a, true, FrameAction::Reset), FrameAction::Continue);
-    EXPECT_EQ(decideFrame(&a, a, true, FrameAction::Reproject), FrameAction::Reset);
+    // The first still frame after a move holds (a pause within a drag), the second restarts.
+    EXPECT_EQ(decideFrame(&a, a, true, FrameAction::Reproject), FrameAction::Hold);
+    EXPECT_EQ(decideFrame(&a, a, true, FrameAction::Hold), FrameAction::Reset);
+    // Moving again after a held frame reprojects from it.
+    FrameKey moved = a;
+    moved.camera.position.x += 0.01;
+    EXPECT_EQ(decideFrame(&a, moved, true, FrameAction::Hold), FrameAction::Reproject);
 }
 
 TEST(ViewportLogic, FormulaValuesKeyChangesWithAnyValue) {

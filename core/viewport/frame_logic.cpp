@@ -8,6 +8,7 @@ namespace fraktal::viewport {
 const char* toString(FrameAction a) {
     switch (a) {
         case FrameAction::Reset: return "reset";
+        case FrameAction::Hold: return "hold";
         case FrameAction::Reproject: return "reproject";
         case FrameAction::Continue: return "continue";
     }
@@ -55,8 +56,10 @@ FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool 
         previous->shading.overRelaxation != current.shading.overRelaxation || previous->maxSteps != current.maxSteps)
         return FrameAction::Reset;
     if (sameCamera(previous->camera, current.camera)) {
-        if (resized) return FrameAction::Reset;
-        return previousAction == FrameAction::Reproject ? FrameAction::Reset : FrameAction::Continue;
+        const bool moving = previousAction == FrameAction::Reproject || previousAction == FrameAction::Hold;
+        if (resized) return moving && reprojectEnabled ? FrameAction::Reproject : FrameAction::Reset;
+        if (previousAction == FrameAction::Reproject) return FrameAction::Hold;
+        return previousAction == FrameAction::Hold ? FrameAction::Reset : FrameAction::Continue;
     }
     return reprojectEnabled ? FrameAction::Reproject : FrameAction::Reset;
 }

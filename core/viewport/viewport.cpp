@@ -49,9 +49,13 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
         }
     }
 
-    FrameAction action = decideFrame(previous_ ? &*previous_ : nullptr, key, options_.reproject, previousAction_);
-    if (forceReset_) action = FrameAction::Reset;
+    const FrameAction decided =
+        forceReset_ ? FrameAction::Reset
+                    : decideFrame(previous_ ? &*previous_ : nullptr, key, options_.reproject, previousAction_);
     forceReset_ = false;
+    // A held frame marches on like a continued one; only its decision (it never settles, and
+    // the next still frame resets) differs.
+    const FrameAction action = decided == FrameAction::Hold ? FrameAction::Continue : decided;
     if (action == FrameAction::Continue && settled_) {
         FrameStats idle = summarize(FrameCounters{0, 0, 0, uint64_t(width) * height, 0}, width, height, action);
         idle.settled = true;
@@ -89,12 +93,12 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     // On a new view every pixel either reprojected or restarted; the march pass counts only the first.
     if (action != FrameAction::Continue) counts.restarted = uint64_t(width) * height - counts.reprojected;
     counts.marchListed = state_->marchListCount();
-    FrameStats stats = summarize(counts, width, height, action);
+    FrameStats stats = summarize(counts, width, height, decided);
     if (timed) stats.passTimes = timer_->read();
-    settled_ = action == FrameAction::Continue && counters_->busyPixels() == 0;
+    settled_ = decided == FrameAction::Continue && counters_->busyPixels() == 0;
     stats.settled = settled_;
     previous_ = std::move(key);
-    previousAction_ = action;
+    previousAction_ = decided;
     return stats;
 }
 
