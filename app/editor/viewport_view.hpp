@@ -21,7 +21,7 @@ struct ViewportStats {
     double deEvaluationsPerPixel = 0.0;
     double reprojectedShare = 0.0;  // pixels whose ray start came from the previous frame
     double convergedShare = 0.0;    // pixels whose current sample is finished
-    const char* action = "reset";   // what the last frame did: reset, reproject or continue
+    const char* action = "reset";   // what the last frame did: reset, reproject, hold or continue
     int aaLevel = 0;                // samples per pixel being worked on (the cap once settled)
     int aaCap = 1;
     bool settled = false;        // every pixel has all its samples: frames cost nothing now
