@@ -19,7 +19,8 @@ if [ "${1:-}" = "--inner" ]; then
     done
     echo "editor_run: the view did not settle in $2 s ($1)" >&2; return 1
   }
-  "$fraktal" edit "$preset" --width "$w" --height "$h" --frame-log "$work/moving.jsonl" > "$work/editor.out" 2>&1 &
+  "$fraktal" edit "$preset" --width "$w" --height "$h" --frame-log "$work/moving.jsonl" \
+    --state-file "$work/state.json" > "$work/editor.out" 2>&1 &
   pid=$!
   trap 'kill $pid 2>/dev/null || true' EXIT
   wait_settled "$work/moving.jsonl" 180 0
@@ -38,6 +39,17 @@ import json, sys; v = json.loads(sys.stdin.read())["viewport"]; print(*[int(x) f
   stop=$(wc -l < "$work/moving.jsonl")
   sleep 2
   import -window root "$work/rest.png"
+  # A parameter drag: the selected node's first slider (the power of the Mandelbulb), 2 s of drag,
+  # 1 px every 20 ms to the right, from the rectangle the state file gives.
+  wait_settled "$work/moving.jsonl" 180 "$stop"
+  read -r px py < <(python3 -c '
+import json, sys; r = json.load(open(sys.argv[1]))["paramWidgets"][0]["rect"]; print(int(r[0] + r[2] / 2), int(r[1] + r[3] / 2))' "$work/state.json")
+  param_start=$(wc -l < "$work/moving.jsonl")
+  xdotool mousemove "$px" "$py"; sleep 0.2
+  xdotool mousedown 1
+  for i in $(seq 1 100); do xdotool mousemove_relative -- 1 0; sleep 0.02; done
+  xdotool mouseup 1
+  param_stop=$(wc -l < "$work/moving.jsonl")
   kill $pid; wait $pid 2>/dev/null || true
   trap - EXIT
   # The fresh render: the camera the orbit ended at, in a new editor, settled.
@@ -62,10 +74,13 @@ PY
   convert "$work/rest.png" -crop "$crop" +repage "$work/rest_crop.png"
   convert "$work/fresh.png" -crop "$crop" +repage "$work/fresh_crop.png"
   psnr=$(compare -metric PSNR "$work/rest_crop.png" "$work/fresh_crop.png" null: 2>&1 || true)
-  python3 - "$work/moving.jsonl" "$start" "$stop" "$psnr" "$w" "$h" <<'PY'
+  python3 - "$work/moving.jsonl" "$start" "$stop" "$psnr" "$w" "$h" "$param_start" "$param_stop" <<'PY'
 import json, sys
 lines = [json.loads(l) for l in open(sys.argv[1])]
 start, stop = int(sys.argv[2]), int(sys.argv[3])
+param = lines[int(sys.argv[7]) + 1:int(sys.argv[8])]
+param_ms = sorted(f["frame_ms"] for f in param)
+param_scales = sorted(f["scale"] for f in param)
 drag = lines[start + 1:stop]  # the first frame's time includes the wait before the drag
 ms = sorted(f["frame_ms"] for f in drag)
 scales = sorted(f["scale"] for f in drag if f["action"] == "reproject")
@@ -81,6 +96,10 @@ result = {
     "scale_min": scales[0] if scales else None, "scale_p50": pct(scales, 0.5),
     "internal_size_p50": [f"{f['width']}x{f['height']}" for f in drag if f["scale"] == pct(scales, 0.5)][:1],
     "psnr_2s_after_stop_db": float(psnr) if psnr.replace('.', '', 1).isdigit() else psnr,
+    # The parameter drag (every frame a new value: the march restarts at the chosen scale).
+    "param_drag_frames": len(param),
+    "param_frame_ms_p50": pct(param_ms, 0.5), "param_frame_ms_p95": pct(param_ms, 0.95),
+    "param_scale_p50": pct(param_scales, 0.5),
 }
 print(json.dumps(result, indent=1))
 # The same as a Markdown table, for bench/run.sh.
