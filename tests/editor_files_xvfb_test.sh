@@ -79,10 +79,11 @@ wait_frames 3
 type_into_browser "$home/existing.json"
 [ "$(q .fileBrowser.replaceAsked)" = true ] || fail "Save As onto an existing file did not ask before replacing it"
 xdotool key Escape
-wait_frames 2
+wait_for .fileBrowser.replaceAsked false
 cmp -s "$presets/menger.json" "$home/existing.json" || fail "Escape at the replace question still changed the file"
-xdotool key Escape
 wait_frames 2
+xdotool key Escape
+wait_for .fileBrowser.shown false
 [ "$(q .fileBrowser.shown)" = false ] || fail "Escape did not close the browser"
 xdotool key ctrl+q
 wait "$pid" || fail "the editor did not quit cleanly"

@@ -27,6 +27,15 @@ wait_frames() {
         sleep 0.1
     done
 }
+# wait_for QUERY VALUE [N]: waits until the state file's QUERY reads VALUE, at most N frames
+# (default 30): an ImGui popup closes a frame after the key that closes it.
+wait_for() {
+    tries=0
+    while [ "$(q "$1")" != "$2" ] && [ $tries -lt "${3:-30}" ]; do
+        wait_frames 1
+        tries=$((tries + 1))
+    done
+}
 # Waits until the viewport's image has converged at full resolution (at most 600 frames): a
 # structure edit compiles in the background and the image then refines over many frames.
 wait_settled() {
