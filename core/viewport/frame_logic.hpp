@@ -1,5 +1,5 @@
 // The viewport's GPU-free decisions (seed chapter 4): what a frame does with the stored march
-// state (reset, reproject or continue), the progressive anti-aliasing schedule, the conservative
+// state (reset, reproject, hold or continue), the progressive anti-aliasing schedule, the conservative
 // stop distance of a coarse ray, and the per-frame statistics. Everything here is pure and
 // unit-tested without a GL context (tests/viewport_logic_test.cpp); the GLSL passes mirror the
 // functions marked "mirrored in shaders/viewport_common.glsl".
