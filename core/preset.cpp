@@ -65,28 +65,7 @@ Node parseNode(const ReadContext& context, const json& j, const std::string& pat
     }
     Node n = Node::make(*block);
     readNodeSchedule(r, n);
-    // Parameter errors name the block as the editor's list shows it: 1-based number and id.
-    const std::string listed = "block " + std::to_string(listNumber) + " '" + std::string(block->id) + "': ";
-    if (r.has("params")) try {
-            FieldReader params(context, r.at("params"), r.child("params"));
-            std::string known;
-            for (size_t i = 0; i < block->params.size(); ++i) {
-                const ParamDecl& d = block->params[i];
-                const std::string key(d.name);
-                known += (known.empty() ? "" : ", ") + key;
-                if (d.type == ParamType::Toggle)
-                    n.values[i].x = params.toggle(key, d.defaultValue.x > 0.5) ? 1.0 : 0.0;
-                else if (d.type == ParamType::Float)
-                    n.values[i].x = params.number(key, d.defaultValue.x, d.min, d.max);
-                else
-                    n.values[i] = params.vector<3>(key, d.defaultValue, d.min, d.max);
-                if (d.direction && length(n.values[i]) < 1e-9) params.fail("a direction must not be zero", key);
-            }
-            params.finish("unknown parameter of block '" + std::string(block->id) +
-                          "' (it has: " + (known.empty() ? "none" : known) + ")");
-        } catch (const PresetError& e) {
-            throw PresetError(e.file(), e.field(), listed + e.reason());
-        }
+    readNodeParams(r, n, listNumber, "block");
     r.finish();
     return n;
 }

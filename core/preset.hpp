@@ -79,6 +79,36 @@ void readNodeSchedule(FieldReader& node, NodeT& n) {
     n.phase = node.integer("phase", 0, 0, 15);
     if (n.phase >= n.period) node.fail("phase must be smaller than period (" + std::to_string(n.period) + ")", "phase");
 }
+// A node's "params": each of its block's declared parameters within its range (a toggle as
+// true/false, a float as a number, a vector as an array; a direction not zero), any other key
+// refused. Errors name the block as the editor's list shows it: "block N 'id': ...". `kind` says
+// what the block is in the unknown-parameter message ("block", "2D block"). NodeT: Node or
+// PlaneNode.
+template <class NodeT>
+void readNodeParams(FieldReader& node, NodeT& n, size_t listNumber, const std::string& kind) {
+    if (!node.has("params")) return;
+    const std::string id(n.block->id);
+    try {
+        FieldReader params(node.context(), node.at("params"), node.child("params"));
+        std::string known;
+        for (size_t i = 0; i < n.block->params.size(); ++i) {
+            const ParamDecl& d = n.block->params[i];
+            const std::string key(d.name);
+            known += (known.empty() ? "" : ", ") + key;
+            if (d.type == ParamType::Toggle)
+                n.values[i].x = params.toggle(key, d.defaultValue.x > 0.5) ? 1.0 : 0.0;
+            else if (d.type == ParamType::Float)
+                n.values[i].x = params.number(key, d.defaultValue.x, d.min, d.max);
+            else
+                n.values[i] = params.vector<3>(key, d.defaultValue, d.min, d.max);
+            if (d.direction && length(n.values[i]) < 1e-9) params.fail("a direction must not be zero", key);
+        }
+        params.finish("unknown parameter of " + kind + " '" + id + "' (it has: " + (known.empty() ? "none" : known) +
+                      ")");
+    } catch (const PresetError& e) {
+        throw PresetError(e.file(), e.field(), "block " + std::to_string(listNumber) + " '" + id + "': " + e.reason());
+    }
+}
 template <class NodeT>
 void writeNodeSchedule(const NodeT& n, nlohmann::json& node) {
     if (!n.enabled) node["enabled"] = false;

@@ -264,10 +264,10 @@ void CoreViewportView::pathFrame(const Preset& preset, const ViewSettings& setti
     const int cap = settings.pathSppCap, h = tracer.height();
     // A frame path-traces for up to three frame-time targets (100 ms by default) in bands of rows,
     // so the window answers within about that even when one sample pass of the whole view takes
-    // seconds (llvmpipe). Three, not one: the editor's own work costs ~48 ms a frame on llvmpipe
-    // (bench/README.md, dynamic resolution), so a budget of one 33 ms target would leave the
-    // samples under half of the time; at three they get about two thirds. Target 0: a whole pass
-    // per frame.
+    // seconds (llvmpipe). Three, not one: the editor's own work (panels, display, swap) takes
+    // 10-20 ms a frame on an idle 2-core llvmpipe machine and about 48 ms under load
+    // (bench/README.md, dynamic resolution), so a budget of one 33 ms target could leave the
+    // samples half of the time or less. Target 0: a whole pass per frame.
     const double budgetMs = 3.0 * settings.frameTimeTargetMs;
     const auto start = Clock::now();
     int draws = 0;

@@ -25,23 +25,7 @@ PlaneNode parseNode(const ReadContext& context, const json& j, const std::string
         r.fail("unknown 2D block '" + id.get<std::string>() + "' (known 2D blocks: " + knownBlocks() + ")", "block");
     PlaneNode n = PlaneNode::make(*block);
     readNodeSchedule(r, n);
-    // Parameter errors name the block as the 3D reader does: 1-based number and id.
-    const std::string listed = "block " + std::to_string(listNumber) + " '" + std::string(block->id) + "': ";
-    if (r.has("params")) try {
-            FieldReader params(context, r.at("params"), r.child("params"));
-            std::string known;
-            for (size_t i = 0; i < block->params.size(); ++i) {
-                const ParamDecl& d = block->params[i];
-                known += (known.empty() ? "" : ", ") + std::string(d.name);
-                const std::string key(d.name);
-                n.values[i].x = d.type == ParamType::Toggle ? (params.toggle(key, d.defaultValue.x > 0.5) ? 1.0 : 0.0)
-                                                            : params.number(key, d.defaultValue.x, d.min, d.max);
-            }
-            params.finish("unknown parameter of 2D block '" + std::string(block->id) +
-                          "' (it has: " + (known.empty() ? "none" : known) + ")");
-        } catch (const PresetError& e) {
-            throw PresetError(e.file(), e.field(), listed + e.reason());
-        }
+    readNodeParams(r, n, listNumber, "2D block");
     r.finish();
     return n;
 }
