@@ -99,3 +99,16 @@ TEST(KleinianPresets, CameraInsideTheObjectFailsTheCheck) {
     const test::CliRun ok = test::runCli("check --rays 40 " + (test::sourceDir() / "presets/kleinian.json").string());
     EXPECT_EQ(ok.output.find("camera is inside"), std::string::npos) << ok.output;
 }
+
+// A bound wholly inside the object: every ray of the check starts inside, so nothing is measured;
+// the check says so and fails rather than calling the empty sample conservative.
+TEST(KleinianPresets, BoundWhollyInsideFailsTheCheck) {
+    Preset p = shipped("kleinian.json");
+    p.formula.nodes.clear();
+    p.formula.estimator = Node::make(*findBlock("sphere"));
+    p.formula.estimator.values[0].x = 50.0;  // radius: the bound (6) lies within it
+    const test::CliRun r = checkPreset(p, "all_inside");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("PROBLEM: every ray started inside the fractal"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("PROBLEM: no ray hit"), std::string::npos) << r.output;
+}

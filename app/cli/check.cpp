@@ -152,6 +152,10 @@ int runCheck(const CheckOptions& o) {
     if (c.raysHit == 0) {
         std::printf("PROBLEM: no ray hit the fractal: check the camera and formula.boundRadius\n");
         status = 1;
+    } else if (c.samples == 0) {
+        // Every hit was at the ray's start (inside already): there is no gap to measure the DE on.
+        std::printf("PROBLEM: every ray started inside the fractal: nothing was measured\n");
+        status = 1;
     }
     if (c.conservative()) {
         std::printf("conservative: the DE never overshoots by more than 1%%; step multiplier 1 is safe\n");
