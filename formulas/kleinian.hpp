@@ -59,14 +59,15 @@ struct Kleinian {
     }
 };
 
-// Jos Leys' Kleinian distance (Fragmentarium "Kleinian", Jos Leys and Knighty, fractalforums.com
-// "Kleinian group limit set" thread, 2014): after the loop the orbit has been mapped into the
-// strip 0 <= y <= a between the two tangent planes, whose half-spaces y < 0 and y > a the group
-// maps onto the balls of the picture. min(y, a - y) is the distance to those half-spaces, capped
-// at clamp_y (far from both planes the orbit's image says little) and divided by the running
-// derivative, at least clamp_df (Jos Leys' max(DF, ...): the inversion near the unit sphere can
-// leave the derivative below 1 where the map still stretches its neighbourhood). Negative inside
-// the balls, so the set has an inside.
+// Jos Leys' Kleinian distance (the closing line of Fragmentarium's Jos Leys / Knighty Kleinian
+// example: DE = min(y, Clamp_y) / max(DF, Clamp_DF), y = min(z.y, a - z.y)): after the loop the
+// orbit has been mapped into the strip 0 <= y <= a between the two tangent planes, whose
+// half-spaces y < 0 and y > a the group maps onto the balls of the picture. min(y, a - y) is the
+// distance to those half-spaces, capped at clamp_y (the half turn is applied on one side of the
+// separation line only, so a neighbour across it can follow another orbit into a ball: far from
+// both planes the end point says little) and divided by the running derivative, at least
+// clamp_df. Negative inside the balls, so the set has an inside. The cap makes the estimate
+// small in open space; `fraktal check` measures the factor that keeps it under the distance.
 struct KleinianEstimator {
     static constexpr std::string_view id = "kleinian_de";
     static constexpr std::string_view label = "Kleinian distance";
