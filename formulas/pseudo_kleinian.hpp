@@ -48,7 +48,7 @@ struct PseudoKleinianEstimator {
         ParamDecl{"thickness", ParamType::Float, {0.01, 0.0, 0.0}, 0.0, 1.0, "Thickness of the limit set's sheets."},
         ParamDecl{"offset",
                   ParamType::Float,
-                  {0.002, 0.0, 0.0},
+                  {0.004, 0.0, 0.0},
                   0.0,
                   0.1,
                   "Subtracted after the division (Knighty's DEoffset): thickens the sheets by this much."},
