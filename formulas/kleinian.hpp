@@ -59,4 +59,38 @@ struct Kleinian {
     }
 };
 
+// Jos Leys' Kleinian distance (the closing line of Fragmentarium's Jos Leys / Knighty Kleinian
+// example: DE = min(y, Clamp_y) / max(DF, Clamp_DF), y = min(z.y, a - z.y)): after the loop the
+// orbit has been mapped into the strip 0 <= y <= a between the two tangent planes, whose
+// half-spaces y < 0 and y > a the group maps onto the balls of the picture. min(y, a - y) is the
+// distance to those half-spaces, capped at clamp_y (the half turn is applied on one side of the
+// separation line only, so a neighbour across it can follow another orbit into a ball: far from
+// both planes the end point says little) and divided by the running derivative, at least
+// clamp_df. Negative inside the balls, so the set has an inside. The cap makes the estimate
+// small in open space; `fraktal check` measures the factor that keeps it under the distance.
+struct KleinianEstimator {
+    static constexpr std::string_view id = "kleinian_de";
+    static constexpr std::string_view label = "Kleinian distance";
+    static constexpr std::string_view help =
+        "Jos Leys' Kleinian estimate: distance to the strip's planes y = 0 and y = a, over the running derivative.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::Distance;
+    static constexpr std::array params{
+        ParamDecl{
+            "klein_r", ParamType::Float, {1.94, 0.0, 0.0}, 1.5, 2.1, "Strip height a: the kleinian step's klein_r."},
+        ParamDecl{"clamp_y", ParamType::Float, {0.3, 0.0, 0.0}, 0.01, 2.0, "Cap of the distance to the planes."},
+        ParamDecl{"clamp_df", ParamType::Float, {2.0, 0.0, 0.0}, 0.1, 8.0, "Least running derivative divided by."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float y = min(p.y, klein_r - p.y);
+    return min(y, clamp_y) / max(abs(p.w), clamp_df);
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const double klein_r = a.f(0), clamp_y = a.f(1), clamp_df = a.f(2);
+        double y = std::min(p.xyz.y, klein_r - p.xyz.y);
+        return std::min(y, clamp_y) / std::max(abs(p.w), clamp_df);
+    }
+};
+
 }  // namespace fraktal::blocks

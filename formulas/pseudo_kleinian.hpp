@@ -33,7 +33,11 @@ struct PseudoKleinian {
 };
 
 // Knighty's pseudo-Kleinian distance: the orbit's end point against a thin cylinder about the
-// z axis, max(rxy - thickness, |rxy z| / r) - offset, over the running derivative.
+// z axis, max(rxy - thickness, |rxy z| / r), over the running derivative, less offset
+// (Knighty's DEoffset, Fragmentarium "PseudoKleinian.frag", subtracted after the division as
+// there). The limit set's sheets have no inside of their own (the estimate stays above 0); the
+// offset thickens them by that much in world units, so a marcher's hit threshold and the
+// baseline marcher's fixed step both meet a solid of known thickness.
 struct PseudoKleinianEstimator {
     static constexpr std::string_view id = "pseudo_kleinian_de";
     static constexpr std::string_view label = "Pseudo-Kleinian distance";
@@ -44,20 +48,20 @@ struct PseudoKleinianEstimator {
         ParamDecl{"thickness", ParamType::Float, {0.01, 0.0, 0.0}, 0.0, 1.0, "Thickness of the limit set's sheets."},
         ParamDecl{"offset",
                   ParamType::Float,
-                  {0.002, 0.0, 0.0},
+                  {0.004, 0.0, 0.0},
                   0.0,
                   0.1,
-                  "Subtracted before the division (Knighty's DEoffset): gives the sheets an inside."},
+                  "Subtracted after the division (Knighty's DEoffset): thickens the sheets by this much."},
     };
 
     static constexpr std::string_view glsl = R"(
     float rxy = length(p.xy);
-    return (max(rxy - thickness, abs(rxy * p.z) / max(length(p.xyz), 1e-12)) - offset) / abs(p.w);
+    return max(rxy - thickness, abs(rxy * p.z) / max(length(p.xyz), 1e-12)) / abs(p.w) - offset;
 )";
     static double estimate(const P4& p, const vec3&, Args a) {
         const double thickness = a.f(0), offset = a.f(1);
         double rxy = std::hypot(p.xyz.x, p.xyz.y);
-        return (max(rxy - thickness, abs(rxy * p.xyz.z) / std::max(length(p.xyz), 1e-12)) - offset) / abs(p.w);
+        return max(rxy - thickness, abs(rxy * p.xyz.z) / std::max(length(p.xyz), 1e-12)) / abs(p.w) - offset;
     }
 };
 

@@ -66,6 +66,7 @@ constexpr std::array kBlocks{
     describe<EscapeLogEstimator>(),
     describe<EscapeLinearEstimator>(),
     describe<PseudoKleinianEstimator>(),
+    describe<KleinianEstimator>(),
     describe<PlaneCombine>(),
     describe<SphereCombine>(),
     describe<BoxCombine>(),

@@ -214,6 +214,31 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     EXPECT_EQ(f.deFactor, 0.3);
 }
 
+// A structure whose object the check's rays never reach (the pseudo-Kleinian's sheets without the
+// offset that gives them an inside) is not measured as safe at factor 1: the editor keeps the
+// factor and says so; with the offset the same structure is measured.
+TEST(SafeStep, EditorKeepsTheFactorWhenNoRayHits) {
+    Preset p = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/pseudo_kleinian.json");
+    Formula& f = p.formula;
+    const double own = f.deFactor;
+    const size_t offset = size_t(f.estimator.block->paramIndex("offset"));
+    const ParamValue shipped = f.estimator.values[offset];
+    f.estimator.values[offset].x = 0.0;
+    editor::AutoStepFactor a;  // a structure not measured yet
+    ASSERT_TRUE(a.update(f, p.camera));
+    EXPECT_TRUE(a.noHits);
+    EXPECT_EQ(a.measured, 0.0);
+    EXPECT_EQ(f.deFactor, own);
+
+    f.estimator.values[offset] = shipped;
+    editor::AutoStepFactor b;
+    ASSERT_TRUE(b.update(f, p.camera));
+    EXPECT_FALSE(b.noHits);
+    EXPECT_GT(b.measured, 0.0);
+    EXPECT_LT(b.measured, 1.0);  // the estimate overshoots (Knighty's 0.5): the check finds it
+    EXPECT_EQ(f.deFactor, b.measured);
+}
+
 // The Mandelbulb's derivative is the largest singular value of its Jacobian: along r, theta and
 // phi (the map's singular directions) the stretch, by finite differences, is at most p.w, and the
 // largest of the three equals it. Integer powers (|sin(n theta)| <= n |sin(theta)| holds there),

@@ -22,6 +22,7 @@ struct CheckOptions {
     std::string preset;
     int grid = 24;
     int rays = 120;
+    int steps = ConservativenessOptions{}.stepsAcrossBound;
     uint64_t seed = 1;
 };
 
@@ -125,19 +126,35 @@ int runCheck(const CheckOptions& o) {
 
     ConservativenessOptions co;
     co.rays = o.rays;
+    co.stepsAcrossBound = o.steps;
     co.seed = o.seed;
     const RaySamples samples = sampleRays(*sampler, preset.camera, co);
     const ConservativenessReport c = compareWithSamples(*sampler, samples);
     std::printf(
-        "baseline marcher: %d rays, %d hit, %ld samples; worst DE / true distance = %.4f at (%.4f, %.4f, %.4f)\n",
-        c.rays, c.raysHit, c.samples, c.worstRatio, c.worstPoint.x, c.worstPoint.y, c.worstPoint.z);
+        "baseline marcher (step %.3g): %d rays, %d hit, %ld samples; worst DE / true distance = %.4f at (%.4f, %.4f, "
+        "%.4f)\n",
+        2.0 * f.boundRadius / co.stepsAcrossBound, c.rays, c.raysHit, c.samples, c.worstRatio, c.worstPoint.x,
+        c.worstPoint.y, c.worstPoint.z);
 
     if (g.nonFinite > 0) {
         std::printf("PROBLEM: the DE is not finite at %ld grid points\n", g.nonFinite);
         status = 1;
     }
+    // Scenes viewed from within (the Kleinian strip, the pseudo-Kleinian lattice) need the camera
+    // in their empty part: from inside the object every camera ray hits at once and the image is
+    // one colour, while the rays above still count as hits.
+    Evaluation atCamera;
+    sampler->evaluate(std::span(&preset.camera.position, 1), std::span(&atCamera, 1));
+    if (atCamera.inside) {
+        std::printf("PROBLEM: the camera is inside the fractal: move camera.position\n");
+        status = 1;
+    }
     if (c.raysHit == 0) {
         std::printf("PROBLEM: no ray hit the fractal: check the camera and formula.boundRadius\n");
+        status = 1;
+    } else if (c.samples == 0) {
+        // Every hit was at the ray's start (inside already): there is no gap to measure the DE on.
+        std::printf("PROBLEM: every ray started inside the fractal: nothing was measured\n");
         status = 1;
     }
     if (c.conservative()) {
@@ -181,6 +198,9 @@ void addCheckCommand(CLI::App& app, Action& action) {
     cmd->add_option("preset", o->preset, "Preset file (JSON)")->required();
     cmd->add_option("--grid", o->grid, "Grid points per axis for the DE survey")->check(CLI::Range(2, 256));
     cmd->add_option("--rays", o->rays, "Rays for the conservativeness check")->check(CLI::Range(1, 100000));
+    cmd->add_option("--steps", o->steps,
+                    "Baseline march steps across the bound's diameter (finer finds thinner parts; default 4000)")
+        ->check(CLI::Range(100, 1000000));
     cmd->add_option("--seed", o->seed, "Random seed");
     cmd->callback([&action, o] { action = [o] { return runCheck(*o); }; });
 }

@@ -156,9 +156,11 @@ bool AutoStepFactor::update(Formula& f, const Camera& camera) {
     measuredKey = std::move(key);
     if (!f.cpuEvaluable() || !f.estimator.block) return false;
     const auto start = std::chrono::steady_clock::now();
-    measured = measureSafeStep(f, camera).factor;
+    const EstimatorMeasurement m = measureSafeStep(f, camera);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!overridden) f.deFactor = measured;
+    noHits = m.report.samples == 0;
+    measured = noHits ? 0.0 : m.factor;
+    if (!overridden && !noHits) f.deFactor = measured;
     return true;
 }
 

@@ -62,12 +62,16 @@ struct AutoStepFactor {
     bool overridden = false;
     double measured = 0.0;  // the last measured factor (0: none this session)
     double seconds = 0.0;   // how long measuring it took
+    // The last measurement met nothing to compare with: none of the check's rays reached the
+    // object from outside it (sheets with no inside, a camera looking away). The factor is kept
+    // rather than set to the 1 an empty sample would allow.
+    bool noHits = false;
 
     // Takes f's factor as the one for its structure (an opened document).
     static AutoStepFactor adopting(const Formula& f) { return {f.structureKey()}; }
     // When f's structure differs from measuredKey: measures its estimator from `camera` (CPU;
     // formulas with custom GLSL blocks keep their factor) and, unless overridden, sets
-    // f.deFactor. True when it measured.
+    // f.deFactor (not when noHits). True when it measured.
     bool update(Formula& f, const Camera& camera);
 };
 

@@ -125,7 +125,9 @@ void drawStepFactorSection(AutoStepFactor& a, Formula& f) {
     dragDouble("Step factor", f.deFactor, kMinStepFactor, kMaxStepFactor, 0.005f, "%.3f",
                "Multiplies the distance estimate: smaller is safer and slower.");
     ImGui::EndDisabled();
-    if (a.measured > 0.0)
+    if (a.noHits)
+        ImGui::TextDisabled("Not measured: no ray of the check met the object from this camera; the factor is kept.");
+    else if (a.measured > 0.0)
         ImGui::TextDisabled("Measured for this structure: %.3f (%.2f s)", a.measured, a.seconds);
     else
         ImGui::TextDisabled("The preset's own factor (measured after a structure change).");
