@@ -149,7 +149,9 @@ SurfaceSample shadeSurface(vec3 pos, vec3 rd, float t, float pixelAngle, inout f
     vec3 n = surfaceNormal(pos, rd, eps, deEvals);
     vec3 albedo = trapAlbedo(pos, deEvals);
     float ao = ambientOcclusion(pos, n, deEvals);
-    float shadow = softShadow(pos + n * (2.0 * eps), u_lightDirection, eps, deEvals);
+    // Facing away from the key light, the surface gets neither its diffuse nor its specular term,
+    // which are all the shadow scales: no shadow ray (about half the shaded samples).
+    float shadow = dot(n, u_lightDirection) > 0.0 ? softShadow(pos + n * (2.0 * eps), u_lightDirection, eps, deEvals) : 1.0;
     vec3 color = lightSurface(n, rd, albedo, ao, shadow);
     if (u_reflection > 0.0) {
         float cosine = clamp(-dot(rd, n), 0.0, 1.0);

@@ -10,12 +10,18 @@
 //
 // Adaptive sampling: a pixel stops early once its samples agree. After ADAPTIVE_MIN_SAMPLES
 // samples, and after each one from then on, it stops when every sample so far has the same
-// coverage (all hit or all missed) and the spread of their colours, max - min per channel of
-// sqrt(colour) (roughly perceptual), is within u_adaptiveTolerance. Flat sky and smooth surfaces
-// stop at the minimum; edges and sub-pixel detail, where samples disagree, take all u_spp. The
-// test is conservative in the sense of Mitchell's adaptive sampling ("Generating antialiased images
-// at low sampling densities", SIGGRAPH 1987): a contrast test on the samples taken, never on
-// fewer than two. u_adaptiveTolerance = 0 turns it off.
+// coverage (all hit or all missed), none of them lies near a silhouette, and the spread of their
+// colours, max - min per channel of sqrt(colour) (roughly perceptual), is within
+// u_adaptiveTolerance. Flat sky and smooth surfaces stop at the minimum; edges and sub-pixel
+// detail, where samples disagree, take all u_spp. The test is conservative in the sense of
+// Mitchell's adaptive sampling ("Generating antialiased images at low sampling densities",
+// SIGGRAPH 1987): a contrast test on the samples taken, never on fewer than two. Agreement alone
+// misses thin coverage: where the object covers a tenth of the filter's footprint, two samples
+// both miss it four times in five, and a silhouette pixel stopped at 0 (16 adaptive samples had
+// the coverage error of 4 fixed ones, bench/stills/equal_quality.sh). So the distance estimate
+// says where an edge may be: a missed ray that passed within the footprint's width of the surface
+// (its smallest d / t, the half-angle of an empty cone about the ray), or a hit at a grazing angle,
+// keeps the pixel sampling. u_adaptiveTolerance = 0 turns it off.
 //
 // Framebuffer row j of a tile is image row u_tileOrigin.y + j, counted from the top, so a
 // glReadPixels of the tile gives the image's rows in file order.
@@ -31,6 +37,7 @@
 //   float u_adaptiveTolerance            spread of sqrt(colour) under which a pixel stops (0: off)
 #define FILTER_TABLE_SIZE 65
 #define ADAPTIVE_MIN_SAMPLES 2
+#define GRAZING_COSINE 0.2
 uniform ivec2 u_imageSize;
 uniform ivec2 u_tileOrigin;
 uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
@@ -69,10 +76,11 @@ void main() {
     vec2 rotation = vec2(float(h & 0xffffu), float(h >> 16u)) / 65536.0;
 
     vec3 color = vec3(0.0), normal = vec3(0.0), albedo = vec3(0.0);
-    float coverage = 0.0, ao = 0.0, depth = 1e30, deEvals = 0.0, steps = 0.0;
+    float coverage = 0.0, ao = 0.0, depth = 1e30, deEvals = 0.0, shadeEvals = 0.0, steps = 0.0;
     int spp = max(u_spp, 1);
     vec3 sampleMin = vec3(1e30), sampleMax = vec3(-1e30);
     int taken = 0;
+    bool nearEdge = false;
     for (int k = 0; k < spp; ++k) {
         vec2 offset = vec2(0.0);
         if (spp > 1) {
@@ -91,21 +99,33 @@ void main() {
         MarchState s = marchStart(0.0);
         if (clipToBound(ro, rd, tStart, tEnd)) {
             s = marchStart(tStart);
-            marchRay(ro, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
+            // marchRay, a step at a time, keeping the smallest d / t of the points the ray passed.
+            float closest = 1e30;
+            for (int i = 0; i < u_maxSteps && s.status == MARCH_MARCHING; ++i) {
+                float t = s.t;
+                marchSteps(ro, rd, tEnd, pixelAngle, 1, s, deEvals);
+                if (s.status != MARCH_HIT) closest = min(closest, s.lastD / max(t, 1e-20));
+            }
+            if (s.status == MARCH_HIT) refineHit(ro, rd, pixelAngle, s.lastD, s, deEvals);
             // Out of steps: a ray crawling along a grazing surface is a hit.
             hit = s.status == MARCH_HIT ||
                   (s.status == MARCH_MARCHING && s.lastD < 10.0 * pixelAngle * s.t * u_detail);
             steps += float(s.steps);
+            // The pixel's samples lie within 2 u_filterRadius pixels of each other.
+            nearEdge = nearEdge || (!hit && closest < 2.0 * u_filterRadius * pixelAngle);
         }
         vec3 sampleColor = vec3(0.0);
         if (hit) {
+            float marchEvals = deEvals;
             SurfaceSample surface = shadeSurface(ro + rd * s.t, rd, s.t, pixelAngle, deEvals);
+            shadeEvals += deEvals - marchEvals;
             sampleColor = surface.color;
             normal += surface.normal;
             albedo += surface.albedo;
             ao += surface.ao;
             coverage += 1.0;
             depth = min(depth, s.t);
+            nearEdge = nearEdge || abs(dot(surface.normal, rd)) < GRAZING_COSINE;
         } else if (u_transparentBackground == 0) {
             sampleColor = shadeBackground(rd);
         }
@@ -115,7 +135,7 @@ void main() {
         sampleMin = min(sampleMin, perceptual);
         sampleMax = max(sampleMax, perceptual);
         bool sameCoverage = coverage == 0.0 || coverage == float(taken);
-        if (u_adaptiveTolerance > 0.0 && taken >= ADAPTIVE_MIN_SAMPLES && sameCoverage &&
+        if (u_adaptiveTolerance > 0.0 && taken >= ADAPTIVE_MIN_SAMPLES && sameCoverage && !nearEdge &&
             all(lessThanEqual(sampleMax - sampleMin, vec3(u_adaptiveTolerance))))
             break;
     }
@@ -123,6 +143,7 @@ void main() {
     outColor = vec4(color * w, coverage * w);
     outNormalDepth = vec4(normal * w, depth);
     outAlbedoAO = vec4(albedo * w, ao * w);
-    // DE evaluations over the nominal spp, so that (this) x spp is the pixel's total (bench/stills/de_count.cpp).
-    outStats = vec4(deEvals / float(spp), steps * w, float(taken), 0.0);
+    // DE evaluations over the nominal spp, so that (this) x spp is the pixel's total, and the part
+    // of them spent shading (normals, albedo, AO, shadows, reflections) (bench/stills/de_count.cpp).
+    outStats = vec4(deEvals / float(spp), steps * w, float(taken), shadeEvals / float(spp));
 }

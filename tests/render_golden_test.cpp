@@ -77,9 +77,11 @@ TEST_P(GoldenTest, GlMatchesCpuReference) {
     std::printf("%s: PSNR %.1f dB, coverage GL %.3f CPU %.3f\n", GetParam().filename().c_str(), p, gpu.coverage,
                 cpu.coverage);
     EXPECT_GE(p, 35.0);
-    // Non-trivial: the fractal covers a sensible share of the frame and the image is not flat.
+    // Non-trivial: the fractal covers a sensible share of the frame and the image is not flat. A
+    // camera inside the bound (the Kleinian scenes, seen from within their endless structure)
+    // may see the object in every pixel.
     EXPECT_GT(cpu.coverage, 0.05);
-    EXPECT_LT(cpu.coverage, 0.98);
+    if (length(preset.camera.position) > preset.formula.boundRadius) EXPECT_LT(cpu.coverage, 0.98);
     EXPECT_NEAR(gpu.coverage, cpu.coverage, 0.03);
     EXPECT_GT(standardDeviation(gpu.rgb), 0.05);
 }
@@ -92,8 +94,8 @@ INSTANTIATE_TEST_SUITE_P(ShippedPresets, GoldenTest, ::testing::ValuesIn(test::s
 TEST(StillAdaptive, StopsWhereSamplesAgreeAndKeepsTheImage) {
     const Preset preset = loadPreset(test::sourceDir() / "presets" / "mandelbulb.json");
     RenderSettings r = preset.render;
-    r.width = 96;
-    r.height = 64;
+    r.width = 192;
+    r.height = 128;
     r.spp = 8;
     const ShadingParams shading = resolveShading(preset.shading, r, preset.formula);
     const ImageStrip fixed = renderGL(preset, r, shading, 0.0);
@@ -115,10 +117,26 @@ TEST(StillAdaptive, StopsWhereSamplesAgreeAndKeepsTheImage) {
     EXPECT_EQ(fewest, 2.0f);  // ADAPTIVE_MIN_SAMPLES
     EXPECT_EQ(most, 8.0f);    // some pixel (an edge) took every sample
     EXPECT_LT(samplesAdaptive / pixels, 6.0);
-    EXPECT_LT(deAdaptive, 0.9 * deFixed);  // the pixels that stop early are mostly cheap sky
+    // The pixels that stop early are mostly cheap sky (5.3 samples and 0.93 of the DE evaluations
+    // here; 4.7 and 0.86 when edges could stop too).
+    EXPECT_LT(deAdaptive, 0.96 * deFixed);
     const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
     const DisplayTransform display(color, "scene_linear", "sRGB", "Standard", 0.0);
     EXPECT_GE(psnr(toDisplay(adaptive, display).rgb, toDisplay(fixed, display).rgb), 35.0);
+
+    // Silhouettes keep their samples: against a converged coverage (64 fixed samples), the adaptive
+    // image's coverage is as good as the fixed one's. Stopping on agreement alone had 1.6x its
+    // error here (two samples both miss a thin rim of coverage most of the time).
+    r.spp = 64;
+    const ImageStrip converged = renderGL(preset, r, shading, 0.0);
+    const auto coverageError = [&](const ImageStrip& image) {
+        double squares = 0.0;
+        for (size_t i = 3; i < image.rgba.size(); i += 4) squares += std::pow(image.rgba[i] - converged.rgba[i], 2);
+        return std::sqrt(squares / pixels);
+    };
+    std::printf("coverage RMSE against 64 samples: fixed %.4f, adaptive %.4f\n", coverageError(fixed),
+                coverageError(adaptive));
+    EXPECT_LE(coverageError(adaptive), 1.1 * coverageError(fixed));
 }
 
 // The reference really depends on the shading: turning shadows off changes the image (so the

@@ -1,5 +1,5 @@
 // Counts the work of a still: DE evaluations per pixel (camera rays, normals, shadows, AO: all of
-// them) and march steps per camera ray, averaged over the image, from the still renderer's stats
+// them, and the shading's part of them) and march steps per camera ray, averaged over the image, from the still renderer's stats
 // target. The same setup as renderStillJob (core/render/still_job.cpp) without writing files.
 // Built and run by bench/stills/run.sh. Usage: de_count PRESET WxH SPP [ADAPTIVE_TOLERANCE]
 #include <cstdio>
@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     constexpr int tileSize = 256;
     gl::StillRenderer renderer(preset.formula, tileSize);
     renderer.setScene(preset.formula, preset.camera, r, shading, adaptiveTolerance);
-    double deEvalsOverSpp = 0.0, stepsPerRay = 0.0, samples = 0.0;
+    double deEvalsOverSpp = 0.0, stepsPerRay = 0.0, samples = 0.0, shadeEvalsOverSpp = 0.0;
     ImageStrip strip;
     for (const TileRect& s : stripsOf(r.width, r.height, stillStripRows(r.width, tileSize))) {
         strip.resize(r.width, s.y, s.height);
@@ -42,11 +42,14 @@ int main(int argc, char** argv) {
             deEvalsOverSpp += strip.stats[i];
             stepsPerRay += strip.stats[i + 1];
             samples += strip.stats[i + 2];
+            shadeEvalsOverSpp += strip.stats[i + 3];
         }
     }
     const double pixels = double(r.width) * r.height;
     std::printf(
-        "%.1f DE evaluations per pixel (%.1f per sample), %.1f march steps per camera ray, %.2f samples per pixel\n",
-        deEvalsOverSpp / pixels * r.spp, deEvalsOverSpp * r.spp / samples, stepsPerRay / pixels, samples / pixels);
+        "%.1f DE evaluations per pixel (%.1f per sample), %.1f march steps per camera ray, %.2f samples per pixel, "
+        "%.1f of the DE evaluations per pixel shading\n",
+        deEvalsOverSpp / pixels * r.spp, deEvalsOverSpp * r.spp / samples, stepsPerRay / pixels, samples / pixels,
+        shadeEvalsOverSpp / pixels * r.spp);
     return 0;
 }

@@ -5,7 +5,7 @@
 # Usage: bench/stills/equal_quality.sh BUILD_DIR [WxH]   (default 640x360)
 # Environment: SCENES (default "mandelbulb menger sierpinski_tetrahedron mandelbox"),
 # PEER_AA (mandelbulber2 antialiasing sizes, default "1 2 3": 1, 4 and 9 samples per pixel),
-# FRAKTAL_SPP (default "1 2 4 8 16"), TRUTH_SPP (a square, default 64).
+# FRAKTAL_SPP (default "1 2 4 6 8 12 16"), TRUTH_SPP (a square, default 64).
 #
 # Why coverage: the two programs shade differently (their own lights, AO and colouring), so a
 # colour metric measures that difference and not sampling error. Both write the share of each
@@ -35,7 +35,7 @@ truthAa=$(echo "sqrt($truthSpp)" | bc)
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 read -r -a scenes <<< "${SCENES:-mandelbulb menger sierpinski_tetrahedron mandelbox}"
 read -r -a peerAa <<< "${PEER_AA:-1 2 3}"
-read -r -a fraktalSpp <<< "${FRAKTAL_SPP:-1 2 4 8 16}"
+read -r -a fraktalSpp <<< "${FRAKTAL_SPP:-1 2 4 6 8 12 16}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 
 source "$root/bench/stills/peer.sh"
@@ -77,7 +77,7 @@ for name in "${scenes[@]}"; do
   # white, the background black; no lights, shadows, AO or glow) to save time.
   sed "s/^antialiasing_enabled .*/antialiasing_enabled true;\nantialiasing_size $truthAa;/" "$root/bench/stills/$name.fract" |
     sed '/^shadows_enabled \|^ambient_occlusion_enabled \|^glow_enabled /d' |
-    sed '/^\[fractal_1\]/i main_light_enable false;\nshadows_enabled false;\nambient_occlusion_enabled false;\nglow_enabled false;\nbackground_brightness 0;\nbackground_color_1 0000 0000 0000;\nbackground_color_2 0000 0000 0000;\nbackground_color_3 0000 0000 0000;\nmat1_is_defined true;\nmat1_luminosity 1;\nmat1_luminosity_color ffff ffff ffff;\nmat1_use_colors_from_palette false;\nmat1_surface_color 0000 0000 0000;\nmat1_specular 0;\nmat1_specular_plastic_enable false;\nmat1_metallic false;\nmat1_reflectance 0;' \
+    sed '/^\[main_parameters\]/a main_light_enable false;\nshadows_enabled false;\nambient_occlusion_enabled false;\nglow_enabled false;\nbackground_brightness 0;\nbackground_color_1 0000 0000 0000;\nbackground_color_2 0000 0000 0000;\nbackground_color_3 0000 0000 0000;\nmat1_is_defined true;\nmat1_luminosity 1;\nmat1_luminosity_color ffff ffff ffff;\nmat1_use_colors_from_palette false;\nmat1_surface_color 0000 0000 0000;\nmat1_specular 0;\nmat1_specular_plastic_enable false;\nmat1_metallic false;\nmat1_reflectance 0;' \
     > "$tmp/truth_$name.fract"
   HOME="$tmp" mandelbulber2 -n -f png16 -r "$size" -o "$tmp/mb_truth_$name" "$tmp/truth_$name.fract" > "$tmp/mb.log" 2>&1
   for aa in "${peerAa[@]}"; do

@@ -175,7 +175,9 @@ SurfaceSample shadeSurface(const Scene& scene, const vec3& pos, const vec3& rd, 
     const vec3 n = surfaceNormal(scene, pos, rd, eps, deEvals);
     const vec3 albedo = trapAlbedo(scene, pos, deEvals);
     const double ao = ambientOcclusion(scene, pos, n, deEvals);
-    const double shadow = softShadow(scene, pos + n * (2.0 * eps), s.lightDirection, eps, deEvals);
+    // As in shaders/shade.glsl: facing away from the key light, nothing the shadow scales is lit.
+    const double shadow =
+        dot(n, s.lightDirection) > 0.0 ? softShadow(scene, pos + n * (2.0 * eps), s.lightDirection, eps, deEvals) : 1.0;
     vec3 color = lightSurface(scene, n, rd, albedo, ao, shadow);
     if (s.reflection > 0.0) {
         const double cosine = std::clamp(-dot(rd, n), 0.0, 1.0);
