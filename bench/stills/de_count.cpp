@@ -1,7 +1,8 @@
 // Counts the work of a still: DE evaluations per pixel (camera rays, normals, shadows, AO: all of
-// them, and the shading's part of them) and march steps per camera ray, averaged over the image, from the still renderer's stats
-// target. The same setup as renderStillJob (core/render/still_job.cpp) without writing files.
-// Built and run by bench/stills/run.sh. Usage: de_count PRESET WxH SPP [ADAPTIVE_TOLERANCE]
+// them, and the shading's part of them) and march steps per camera ray, averaged over the image,
+// from the still renderer's stats target. The same setup as renderStillJob
+// (core/render/still_job.cpp) without writing files. Built and run by bench/stills/run.sh.
+// Usage: de_count PRESET WxH SPP [ADAPTIVE_TOLERANCE]
 #include <cstdio>
 #include <cstdlib>
 
