@@ -107,19 +107,20 @@ TEST(TimelineEdits, AKeyedValueShowsAsChangedOnlyWhenItDiffers) {
     const Animation& a = d.preset.animation;
     applyAnimationFrame(d.preset, 60);
     const Track& power = *findTrack(a, kPower);
-    EXPECT_FALSE(differsFromTrack(a, power, 60, {d.preset.formula.nodes[0].values[0].x}));
-    EXPECT_TRUE(differsFromTrack(a, power, 60, {d.preset.formula.nodes[0].values[0].x + 0.01}));
-    EXPECT_TRUE(differsFromTrack(a, power, 61, {d.preset.formula.nodes[0].values[0].x}));
+    EXPECT_FALSE(differsFromTrack(d.preset, power, 60, {d.preset.formula.nodes[0].values[0].x}));
+    EXPECT_TRUE(differsFromTrack(d.preset, power, 60, {d.preset.formula.nodes[0].values[0].x + 0.01}));
+    EXPECT_TRUE(differsFromTrack(d.preset, power, 61, {d.preset.formula.nodes[0].values[0].x}));
     // An orientation keyed from the camera reads back the same, whichever sign the quaternion has.
-    Animation o;
-    o.lastFrame = 10;
-    addKey(o, kCameraOrientationTarget, 0, cameraOrientation(d.preset.camera));
+    Preset o = d.preset;
+    o.animation = Animation{};
+    o.animation.lastFrame = 10;
+    addKey(o.animation, kCameraOrientationTarget, 0, cameraOrientation(d.preset.camera));
     std::vector<double> flipped = cameraOrientation(d.preset.camera);
     for (double& c : flipped) c = -c;
-    EXPECT_FALSE(differsFromTrack(o, o.tracks[0], 5, flipped));
+    EXPECT_FALSE(differsFromTrack(o, o.animation.tracks[0], 5, flipped));
     Camera turned = d.preset.camera;
     turned.target += vec3(0.3, 0.0, 0.0);
-    EXPECT_TRUE(differsFromTrack(o, o.tracks[0], 5, cameraOrientation(turned)));
+    EXPECT_TRUE(differsFromTrack(o, o.animation.tracks[0], 5, cameraOrientation(turned)));
 }
 
 TEST(TimelineEdits, PlaybackFollowsTheWallClockAndSkipsFramesWhenSlow) {
