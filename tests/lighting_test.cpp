@@ -14,6 +14,7 @@
 #include "core/render/environment.hpp"
 #include "core/render/path_tracer.hpp"
 #include "test_support.hpp"
+#include "uniform_lookups.hpp"
 
 namespace fraktal {
 namespace {
@@ -271,6 +272,21 @@ const char* kMengerLit = R"({
   "environment": {"map": "env/sky.exr"},
   "pathTrace": {"bounces": 2}
 })";
+
+// The path tracer's draws (whole passes, and the rows the editor spreads over its frames) look up
+// no uniform locations: they are found when the program is built.
+TEST(PathTracer, DrawsLookUpNoUniformLocations) {
+    test::glContext();
+    const TracedScene s = litScene(kMengerLit, 32, 18);
+    gl::PathTracer tracer(s.preset.formula, 32, 18);
+    tracer.setScene(s.scene());
+    const test::UniformLookups counter;
+    tracer.addSamples(2, 1);
+    while (!tracer.addSampleRows(6)) {
+    }
+    EXPECT_EQ(tracer.samplesTaken(), 3);
+    EXPECT_EQ(test::UniformLookups::calls, 0);
+}
 
 TEST(PathTracer, GlConvergesToTheCpuReference) {
     test::glContext();
