@@ -123,6 +123,28 @@ TEST(TimelineEdits, AKeyedValueShowsAsChangedOnlyWhenItDiffers) {
     EXPECT_TRUE(differsFromTrack(o, o.animation.tracks[0], 5, cameraOrientation(turned)));
 }
 
+// A toggle keyed off and on steps, in the document and in the key marker's check: between its keys
+// it is off, and off is no change from the animation.
+TEST(TimelineEdits, AKeyedToggleStepsInTheDocumentAndItsMarker) {
+    Document d;
+    d.preset = loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "juliabulb.json");
+    const std::string julia = paramTarget(1, "julia");
+    Animation& a = d.preset.animation;
+    addKey(a, julia, 0, {0.0});
+    addKey(a, julia, 10, {1.0});
+    a.lastFrame = 20;
+    const Track& track = *findTrack(a, julia);
+    ASSERT_EQ(track.interpolation, Interpolation::Smooth);
+    const size_t index = size_t(d.preset.formula.nodes[1].block->paramIndex("julia"));
+    for (int frame : {0, 3, 5, 9, 10, 15}) {
+        applyAnimationFrame(d.preset, frame);
+        const double on = frame < 10 ? 0.0 : 1.0;
+        EXPECT_EQ(d.preset.formula.nodes[1].values[index].x, on) << frame;
+        EXPECT_FALSE(differsFromTrack(d.preset, track, frame, {on})) << frame;
+        EXPECT_TRUE(differsFromTrack(d.preset, track, frame, {1.0 - on})) << frame;
+    }
+}
+
 TEST(TimelineEdits, PlaybackFollowsTheWallClockAndSkipsFramesWhenSlow) {
     Animation a;
     a.firstFrame = 10;
