@@ -212,6 +212,18 @@ TEST(Animation, TogglesStepAtTheirKeysUnderEveryInterpolation) {
         if (how == Interpolation::Linear)
             EXPECT_DOUBLE_EQ(presetAtFrame(p, 0.5).formula.nodes[1].values[weight].x, 0.5);
     }
+    // The closing estimator's toggle, which a file lists as the last node.
+    const Preset e = parsePreset(R"({"format": "fraktal-preset", "version": 3,
+      "formula": {"nodes": [{"block": "mandelbulb"}, {"block": "plane_combine"}]},
+      "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+      "animation": {"lastFrame": 3, "tracks": [{"target": "formula.nodes[1].params.intersect",
+        "keys": [{"frame": 0, "value": 0}, {"frame": 1, "value": 1}]}]}})",
+                                 "estimator.json");
+    const size_t intersect = size_t(e.formula.estimator.block->paramIndex("intersect"));
+    EXPECT_TRUE(stepsAtKeys(e, "formula.nodes[1].params.intersect"));
+    EXPECT_FALSE(stepsAtKeys(e, "formula.nodes[2].params.intersect"));
+    for (double f : before) EXPECT_EQ(presetAtFrame(e, f).formula.estimator.values[intersect].x, 0.0) << f;
+    for (double f : from) EXPECT_EQ(presetAtFrame(e, f).formula.estimator.values[intersect].x, 1.0) << f;
 }
 
 // Lights and the environment are keyed like any other field: a light fading in and moving, the

@@ -192,8 +192,9 @@ KeyedParam keyedParam(const Formula& f, const std::string& target) {
         const bool number =
             !index.empty() && index.size() < 9 && index.find_first_not_of("0123456789") == std::string::npos;
         const size_t i = number ? std::stoul(index) : f.nodes.size();
-        if (i >= f.nodes.size()) return k;
-        k.node = &f.nodes[i];
+        // A file lists the closing estimator last among its nodes.
+        if (i > f.nodes.size()) return k;
+        k.node = i == f.nodes.size() ? &f.estimator : &f.nodes[i];
         k.name = target.substr(close + params.size());
     }
     if (k.node && k.node->block)

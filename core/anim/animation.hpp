@@ -56,9 +56,10 @@ struct Animation {
 // shorter arc, so the camera never flips.
 std::vector<double> evaluateTrack(const Track& track, double frame);
 
-// The block parameter a target keys: "formula.nodes[N].params.NAME" or
-// "formula.estimator.params.NAME". `node` is null for other targets and for a node that does not
-// exist; `decl` is null also when the node's block has no parameter NAME.
+// The block parameter a target keys: "formula.nodes[N].params.NAME" (N counts the closing
+// estimator last, as a preset file lists it) or "formula.estimator.params.NAME". `node` is null for
+// other targets and for a node that does not exist; `decl` is null also when the node's block has
+// no parameter NAME.
 struct KeyedParam {
     const Node* node = nullptr;
     std::string name;
