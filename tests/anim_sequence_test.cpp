@@ -95,6 +95,29 @@ TEST(FrameSequence, RendersEveryFrameSkipsCompleteOnesAndRedoesBrokenOnes) {
     std::filesystem::remove_all(dir);
 }
 
+// An on/off parameter keyed off at frame 0 and on at frame 4 (smooth, the default): every rendered
+// frame embeds it off until frame 4 and on from there, never a value in between.
+TEST(FrameSequence, AKeyedToggleIsOffOrOnInEveryFrame) {
+    const auto dir = freshFolder("fraktal_sequence_toggle_test");
+    const auto preset = dir / "toggle.json";
+    std::string text = kTinyAnimation;
+    const std::string power = R"({"target": "formula.nodes[0].params.power")";
+    text.insert(text.find(power), R"({"target": "formula.nodes[1].params.julia",
+     "keys": [{"frame": 0, "value": 0}, {"frame": 4, "value": 1}]},
+    )");
+    std::ofstream(preset) << text;
+    const test::CliRun run =
+        test::runCli("render " + preset.string() + " -q --frames 0-5 -o " + (dir / "f_#.exr").string());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    for (int f = 0; f <= 5; ++f) {
+        const auto path = dir / ("f_" + std::to_string(f) + ".exr");
+        const Preset embedded = parsePreset(readExrPreset(path), path.string());
+        const Node& addC = embedded.formula.nodes[1];
+        EXPECT_EQ(addC.values[size_t(addC.block->paramIndex("julia"))].x, f < 4 ? 0.0 : 1.0) << path;
+    }
+    std::filesystem::remove_all(dir);
+}
+
 TEST(FrameSequence, BadRangesAndFoldersAreClearErrors) {
     const auto dir = freshFolder("fraktal_sequence_bad_test");
     const auto preset = dir / "tiny.json";

@@ -166,6 +166,66 @@ TEST(Animation, PresetRoundTripsAndFramesApplyTheTracks) {
     EXPECT_NEAR(dot(normalize(f0.camera.target - f0.camera.position), vec3(0, 0, -1)), 1.0, 1e-9);
 }
 
+// A Julia-mode switch and a float of the same block, both keyed 0 at frame 0 and 1 at frame 1.
+const char* const kToggleAndFloatKeyed = R"({
+  "format": "fraktal-preset", "version": 3,
+  "formula": {"nodes": [{"block": "mandelbulb"}, {"block": "add_c"}, {"block": "escape_log"}]},
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+  "animation": {"lastFrame": 3, "tracks": [
+    {"target": "formula.nodes[1].params.julia", "keys": [{"frame": 0, "value": 0}, {"frame": 1, "value": 1}]},
+    {"target": "formula.nodes[1].params.weight", "keys": [{"frame": 0, "value": 0}, {"frame": 1, "value": 1}]}
+  ]}
+})";
+
+// A toggle holds the last key at or before the frame under every interpolation (never an
+// in-between value, which its reader refuses); a float keyed the same still interpolates.
+TEST(Animation, TogglesStepAtTheirKeysUnderEveryInterpolation) {
+    Preset p = parsePreset(kToggleAndFloatKeyed, "toggle.json");
+    const Node& addC = p.formula.nodes[1];
+    const size_t julia = size_t(addC.block->paramIndex("julia")), weight = size_t(addC.block->paramIndex("weight"));
+    EXPECT_TRUE(stepsAtKeys(p, "formula.nodes[1].params.julia"));
+    EXPECT_FALSE(stepsAtKeys(p, "formula.nodes[1].params.weight"));
+    EXPECT_FALSE(stepsAtKeys(p, "formula.nodes[0].params.power"));
+    EXPECT_FALSE(stepsAtKeys(p, "formula.nodes[7].params.julia"));
+    EXPECT_FALSE(stepsAtKeys(p, "camera.fovY"));
+    const std::vector<double> before = {0.0, 1e-6, 0.25, 0.5, 0.75, 0.999999}, from = {1.0, 1.5, 3.0};
+    for (Interpolation how : {Interpolation::Constant, Interpolation::Linear, Interpolation::Smooth}) {
+        for (Track& t : p.animation.tracks) t.interpolation = how;
+        const Track &toggle = p.animation.tracks[0], &number = p.animation.tracks[1];
+        EXPECT_EQ(interpolationIn(p, toggle), Interpolation::Constant);
+        EXPECT_EQ(interpolationIn(p, number), how);
+        for (double f : before) {
+            EXPECT_EQ(trackValueIn(p, toggle, f), std::vector<double>{0.0}) << int(how) << " at " << f;
+            EXPECT_EQ(presetAtFrame(p, f).formula.nodes[1].values[julia].x, 0.0) << int(how) << " at " << f;
+        }
+        for (double f : from) {
+            EXPECT_EQ(trackValueIn(p, toggle, f), std::vector<double>{1.0}) << int(how) << " at " << f;
+            EXPECT_EQ(presetAtFrame(p, f).formula.nodes[1].values[julia].x, 1.0) << int(how) << " at " << f;
+        }
+        const double mid = presetAtFrame(p, 0.25).formula.nodes[1].values[weight].x;
+        if (how == Interpolation::Constant) {
+            EXPECT_EQ(mid, 0.0);
+        } else {
+            EXPECT_GT(mid, 0.0) << int(how);
+            EXPECT_LT(mid, 1.0) << int(how);
+        }
+        if (how == Interpolation::Linear)
+            EXPECT_DOUBLE_EQ(presetAtFrame(p, 0.5).formula.nodes[1].values[weight].x, 0.5);
+    }
+    // The closing estimator's toggle, which a file lists as the last node.
+    const Preset e = parsePreset(R"({"format": "fraktal-preset", "version": 3,
+      "formula": {"nodes": [{"block": "mandelbulb"}, {"block": "plane_combine"}]},
+      "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+      "animation": {"lastFrame": 3, "tracks": [{"target": "formula.nodes[1].params.intersect",
+        "keys": [{"frame": 0, "value": 0}, {"frame": 1, "value": 1}]}]}})",
+                                 "estimator.json");
+    const size_t intersect = size_t(e.formula.estimator.block->paramIndex("intersect"));
+    EXPECT_TRUE(stepsAtKeys(e, "formula.nodes[1].params.intersect"));
+    EXPECT_FALSE(stepsAtKeys(e, "formula.nodes[2].params.intersect"));
+    for (double f : before) EXPECT_EQ(presetAtFrame(e, f).formula.estimator.values[intersect].x, 0.0) << f;
+    for (double f : from) EXPECT_EQ(presetAtFrame(e, f).formula.estimator.values[intersect].x, 1.0) << f;
+}
+
 // Lights and the environment are keyed like any other field: a light fading in and moving, the
 // environment turning; a key on a light that does not exist is the target's fault.
 TEST(Animation, LightsAndEnvironmentAreKeyable) {

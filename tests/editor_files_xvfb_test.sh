@@ -10,13 +10,10 @@
 #   folders; Save As onto an existing file asks first and Escape leaves the file as it was.
 # Usage: editor_files_xvfb_test.sh FRAKTAL PRESET_DIR BAD_PRESET_DIR
 set -eu
-if [ -z "${FRAKTAL_FILES_UNDER_XVFB:-}" ]; then
-    FRAKTAL_FILES_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
-fi
+. "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$(cd "$2" && pwd)
 bad=$3
-. "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 drops="$home/drops"
 # drop FILE...: the editor takes the list on its next frame (written whole, then renamed).

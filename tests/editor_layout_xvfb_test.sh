@@ -9,12 +9,9 @@
 # flips it, and one Ctrl+Z flips it back.
 # Usage: editor_layout_xvfb_test.sh FRAKTAL PRESET_DIR
 set -eu
-if [ -z "${FRAKTAL_LAYOUT_UNDER_XVFB:-}" ]; then
-    FRAKTAL_LAYOUT_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1920x1080x24" "$0" "$@"
-fi
+xvfb_screen=1920x1080x24 . "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$2
-. "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 viewport() { q '.viewport | map(floor) | join(" ")'; }
 # The centre of parameter NAME's widget (drag or checkbox) as the editor drew it last frame.

@@ -10,12 +10,9 @@
 # says so; Ctrl+Z takes the last focus back.
 # Usage: editor_lights_xvfb_test.sh FRAKTAL PRESET_DIR
 set -eu
-if [ -z "${FRAKTAL_STORIES_UNDER_XVFB:-}" ]; then
-    FRAKTAL_STORIES_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
-fi
+. "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$2
-. "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 # Waits (at most 100 frames) until the jq expression $1 holds in the state file.
 wait_for() {

@@ -7,14 +7,11 @@
 # Prints the seconds to reach 1, 4 and 16 samples per pixel at the default 1280x800 window.
 # Usage: editor_pathtrace_xvfb_test.sh FRAKTAL PRESET_DIR OUT_DIR
 set -eu
-if [ -z "${FRAKTAL_STORIES_UNDER_XVFB:-}" ]; then
-    FRAKTAL_STORIES_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
-fi
+. "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$2
 out=$3
 mkdir -p "$out"
-. "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 # Samples per pixel the path tracer must reach before the screenshot (llvmpipe: seconds each).
 spp_wanted=${FRAKTAL_PATHTRACE_SPP:-4}

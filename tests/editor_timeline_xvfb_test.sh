@@ -8,14 +8,11 @@
 # timeline moves, Delete over the timeline removes it. More tracks than rows scroll with the wheel.
 # Usage: editor_timeline_xvfb_test.sh FRAKTAL PRESET_DIR OUT_DIR
 set -eu
-if [ -z "${FRAKTAL_STORIES_UNDER_XVFB:-}" ]; then
-    FRAKTAL_STORIES_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
-fi
+. "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$2
 out=$3
 mkdir -p "$out"
-. "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 power_target='formula.nodes[0].params.power'
 power() { q '.document.formula.nodes[0].params.power // 8'; }

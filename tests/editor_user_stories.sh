@@ -4,14 +4,11 @@
 # frame (--state-file, JSON) and on screenshots.
 # Usage: editor_user_stories.sh FRAKTAL PRESET_DIR OUT_DIR
 set -eu
-if [ -z "${FRAKTAL_STORIES_UNDER_XVFB:-}" ]; then
-    FRAKTAL_STORIES_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
-fi
+. "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$2
 out=$3
 mkdir -p "$out"
-. "$(dirname "$0")/editor_xvfb_helpers.sh"
 
 # 1. Frames of 400 ms: a click in the viewport after using a panel leaves the camera where it
 #    is, and so does a press that wobbles by 2 pixels; a drag ends where the same drag ends at

@@ -1,7 +1,12 @@
 # Helpers for the tests that drive the real editor under Xvfb with xdotool (sourced, not run):
 # a private HOME, the editor in the background writing its state file, waits on its frames,
-# pointer moves and drags in window coordinates. Expects $fraktal set; sets $home, $state, $pid,
-# $window.
+# pointer moves and drags in window coordinates. Sourced first thing, it re-runs the calling script
+# under its own Xvfb server (a sourced file sees the caller's "$0" and "$@"); the screen is
+# $xvfb_screen, 1280x800x24 unless the caller sets it. The functions expect $fraktal set; sets
+# $home, $state, $pid, $window.
+if [ -z "${FRAKTAL_UNDER_XVFB:-}" ]; then
+    FRAKTAL_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 ${xvfb_screen:-1280x800x24}" "$0" "$@"
+fi
 # A private HOME and config folder: the editor's ini and recent list must not leak in or out.
 home=$(mktemp -d)
 export XDG_CONFIG_HOME="$home/config"

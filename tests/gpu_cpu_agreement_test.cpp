@@ -163,6 +163,35 @@ TEST(GpuCpuAgreement, AddCJuliaModeAndItsToggle) {
     EXPECT_GT(differ, 500u) << "Julia mode hardly changes the estimate";
 }
 
+// add_c's Julia switch keyed off at frame 0 and on at frame 4, smoothly: the uniform the GPU
+// receives for each frame is off or on, never a value between (a smooth curve passes 0.5 near
+// frame 2), so every frame's GPU estimate is bit for bit that of the formula with the switch off
+// (frames before 4) or on (from 4).
+TEST(GpuCpuAgreement, AnimatedToggleReachesTheGpuOffOrOn) {
+    Preset p = loadPreset(test::sourceDir() / "presets/juliabulb.json");
+    const size_t julia = size_t(p.formula.nodes[1].block->paramIndex("julia"));
+    p.animation.lastFrame = 6;
+    p.animation.tracks.push_back(
+        Track{"formula.nodes[1].params.julia", Interpolation::Smooth, {Key{0, {0.0}}, Key{4, {1.0}}}});
+    Formula off = p.formula, on = p.formula;
+    off.nodes[1].values[julia].x = 0.0;
+    on.nodes[1].values[julia].x = 1.0;
+    test::glContext();
+    gl::DEProbe probe(p.formula);
+    const auto points = test::randomPoints(512, p.formula.boundRadius, 17);
+    const auto distances = [&](const Formula& f) {
+        std::vector<float> d;
+        for (const gl::GpuSample& s : probe.evaluate(f, points)) d.push_back(s.distance);
+        return d;
+    };
+    const std::vector<float> offDistances = distances(off), onDistances = distances(on);
+    ASSERT_NE(offDistances, onDistances);
+    for (double frame : {0.0, 1.0, 2.0, 2.5, 3.0, 3.9, 4.0, 5.0}) {
+        const std::vector<float> gpu = distances(presetAtFrame(p, frame).formula);
+        EXPECT_EQ(gpu, frame < 4.0 ? offDistances : onDistances) << "frame " << frame;
+    }
+}
+
 TEST(GpuCpuAgreement, EveryShippedPreset) {
     const auto presets = test::shippedPresets();
     ASSERT_GE(presets.size(), 5u);

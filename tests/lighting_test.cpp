@@ -14,6 +14,7 @@
 #include "core/render/environment.hpp"
 #include "core/render/path_tracer.hpp"
 #include "test_support.hpp"
+#include "uniform_lookups.hpp"
 
 namespace fraktal {
 namespace {
@@ -71,6 +72,35 @@ TEST(LightingPreset, RoundTripsEveryField) {
     EXPECT_EQ(serializePreset(again), serializePreset(p));
 }
 
+// One table names the light types: presets write its name ("point" reads as a sphere and is
+// written "sphere"), the editor shows its label.
+TEST(LightingPreset, TypeNamesComeFromOneTable) {
+    const Preset p = parsePreset(kLitPreset, presetPath());
+    const nlohmann::json lights = presetToJson(p)["lights"];
+    ASSERT_EQ(lights.size(), 4u);
+    EXPECT_EQ(lights[0]["type"], "directional");
+    EXPECT_EQ(lights[1]["type"], "sphere");
+    EXPECT_EQ(lights[2]["type"], "sphere");
+    EXPECT_EQ(lights[3]["type"], "rect");
+    for (const LightTypeNames& n : kLightTypeNames) {
+        EXPECT_EQ(&lightTypeNames(n.type), &n);
+        for (const char* name : {n.name, n.alias}) {
+            if (!name) continue;
+            const Preset one = parsePreset(R"({"format": "fraktal-preset", "version": 3,
+                "formula": {"iterations": 0, "nodes": [{"block": "sphere"}]}, "camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
+                "lights": [{"type": ")" + std::string(name) +
+                                               R"("}]})",
+                                           presetPath());
+            ASSERT_EQ(one.lighting.lights.size(), 1u);
+            EXPECT_EQ(one.lighting.lights[0].type, n.type) << name;
+            EXPECT_EQ(presetToJson(one)["lights"][0]["type"], n.name) << name;
+        }
+    }
+    EXPECT_STREQ(lightTypeNames(LightType::Directional).label, "Directional");
+    EXPECT_STREQ(lightTypeNames(LightType::Sphere).label, "Sphere");
+    EXPECT_STREQ(lightTypeNames(LightType::Rect).label, "Rect");
+}
+
 TEST(LightingPreset, FastModeSaysWhatItLeavesOut) {
     Lighting lighting;
     EXPECT_EQ(lightingIgnoredByFastMode(lighting), "");
@@ -113,7 +143,8 @@ TEST(LightingPreset, BadInputNamesFileFieldAndReason) {
     EXPECT_NE(expectError(replaced(kLitPreset, "\"aperture\": 0.05", "\"aperture\": 0"), "camera.aperture")
                   .find("no depth of field"),
               std::string::npos);
-    expectError(replaced(kLitPreset, "\"type\": \"rect\"", "\"type\": \"spot\""), "lights[3].type");
+    EXPECT_EQ(expectError(replaced(kLitPreset, "\"type\": \"rect\"", "\"type\": \"spot\""), "lights[3].type"),
+              "unknown light type 'spot' (known: directional, sphere, point, rect)");
     expectError(replaced(kLitPreset, "\"bounces\": 2", "\"bounces\": 99"), "pathTrace.bounces");
     expectError(replaced(kLitPreset, "\"blades\": 6", "\"blades\": 2"), "camera.blades");
     expectError(replaced(kLitPreset, "\"size\": 0.5", "\"size\": 0.5, \"sizes\": 1"), "lights[0].sizes");
@@ -241,6 +272,21 @@ const char* kMengerLit = R"({
   "environment": {"map": "env/sky.exr"},
   "pathTrace": {"bounces": 2}
 })";
+
+// The path tracer's draws (whole passes, and the rows the editor spreads over its frames) look up
+// no uniform locations: they are found when the program is built.
+TEST(PathTracer, DrawsLookUpNoUniformLocations) {
+    test::glContext();
+    const TracedScene s = litScene(kMengerLit, 32, 18);
+    gl::PathTracer tracer(s.preset.formula, 32, 18);
+    tracer.setScene(s.scene());
+    const test::UniformLookups counter;
+    tracer.addSamples(2, 1);
+    while (!tracer.addSampleRows(6)) {
+    }
+    EXPECT_EQ(tracer.samplesTaken(), 3);
+    EXPECT_EQ(test::UniformLookups::calls, 0);
+}
 
 TEST(PathTracer, GlConvergesToTheCpuReference) {
     test::glContext();

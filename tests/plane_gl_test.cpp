@@ -12,6 +12,7 @@
 #include "core/plane/plane_renderer.hpp"
 #include "core/plane/plane_view.hpp"
 #include "tests/test_support.hpp"
+#include "tests/uniform_lookups.hpp"
 
 namespace fraktal {
 namespace {
@@ -232,6 +233,23 @@ TEST(PlaneViewGl, PassesInBandsGiveTheSameImage) {
     float alphaMin = 1e9f;
     for (size_t i = 3; i < b.size(); i += 4) alphaMin = std::min(alphaMin, b[i]);
     EXPECT_EQ(alphaMin, 7.0f) << "every pixel holds all its samples";
+}
+
+// The 2D renderer finds its uniforms' locations when it builds the program: passes of the same
+// formula, in bands or whole, after a zoom or with new values, look none up.
+TEST(PlaneViewGl, PassesLookUpNoUniformLocations) {
+    test::glContext();
+    PlaneView view;
+    PlanePreset preset = shipped2d("julia.json");
+    view.setPreset(preset);
+    view.refinement().target = 4;
+    ASSERT_TRUE(view.update(24, 16));  // builds the program
+    const test::UniformLookups counter;
+    while (view.update(24, 16, 5)) {
+    }
+    view.zoomAt(12, 8, 2.0);
+    EXPECT_TRUE(view.update(24, 16));
+    EXPECT_EQ(test::UniformLookups::calls, 0);
 }
 
 TEST(PlaneViewGl, RefinesWhileStillAndRestartsOnZoom) {

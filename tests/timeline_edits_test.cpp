@@ -107,19 +107,42 @@ TEST(TimelineEdits, AKeyedValueShowsAsChangedOnlyWhenItDiffers) {
     const Animation& a = d.preset.animation;
     applyAnimationFrame(d.preset, 60);
     const Track& power = *findTrack(a, kPower);
-    EXPECT_FALSE(differsFromTrack(a, power, 60, {d.preset.formula.nodes[0].values[0].x}));
-    EXPECT_TRUE(differsFromTrack(a, power, 60, {d.preset.formula.nodes[0].values[0].x + 0.01}));
-    EXPECT_TRUE(differsFromTrack(a, power, 61, {d.preset.formula.nodes[0].values[0].x}));
+    EXPECT_FALSE(differsFromTrack(d.preset, power, 60, {d.preset.formula.nodes[0].values[0].x}));
+    EXPECT_TRUE(differsFromTrack(d.preset, power, 60, {d.preset.formula.nodes[0].values[0].x + 0.01}));
+    EXPECT_TRUE(differsFromTrack(d.preset, power, 61, {d.preset.formula.nodes[0].values[0].x}));
     // An orientation keyed from the camera reads back the same, whichever sign the quaternion has.
-    Animation o;
-    o.lastFrame = 10;
-    addKey(o, kCameraOrientationTarget, 0, cameraOrientation(d.preset.camera));
+    Preset o = d.preset;
+    o.animation = Animation{};
+    o.animation.lastFrame = 10;
+    addKey(o.animation, kCameraOrientationTarget, 0, cameraOrientation(d.preset.camera));
     std::vector<double> flipped = cameraOrientation(d.preset.camera);
     for (double& c : flipped) c = -c;
-    EXPECT_FALSE(differsFromTrack(o, o.tracks[0], 5, flipped));
+    EXPECT_FALSE(differsFromTrack(o, o.animation.tracks[0], 5, flipped));
     Camera turned = d.preset.camera;
     turned.target += vec3(0.3, 0.0, 0.0);
-    EXPECT_TRUE(differsFromTrack(o, o.tracks[0], 5, cameraOrientation(turned)));
+    EXPECT_TRUE(differsFromTrack(o, o.animation.tracks[0], 5, cameraOrientation(turned)));
+}
+
+// A toggle keyed off and on steps, in the document and in the key marker's check: between its keys
+// it is off, and off is no change from the animation.
+TEST(TimelineEdits, AKeyedToggleStepsInTheDocumentAndItsMarker) {
+    Document d;
+    d.preset = loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "juliabulb.json");
+    const std::string julia = paramTarget(1, "julia");
+    Animation& a = d.preset.animation;
+    addKey(a, julia, 0, {0.0});
+    addKey(a, julia, 10, {1.0});
+    a.lastFrame = 20;
+    const Track& track = *findTrack(a, julia);
+    ASSERT_EQ(track.interpolation, Interpolation::Smooth);
+    const size_t index = size_t(d.preset.formula.nodes[1].block->paramIndex("julia"));
+    for (int frame : {0, 3, 5, 9, 10, 15}) {
+        applyAnimationFrame(d.preset, frame);
+        const double on = frame < 10 ? 0.0 : 1.0;
+        EXPECT_EQ(d.preset.formula.nodes[1].values[index].x, on) << frame;
+        EXPECT_FALSE(differsFromTrack(d.preset, track, frame, {on})) << frame;
+        EXPECT_TRUE(differsFromTrack(d.preset, track, frame, {1.0 - on})) << frame;
+    }
 }
 
 TEST(TimelineEdits, PlaybackFollowsTheWallClockAndSkipsFramesWhenSlow) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/viewport/camera_path.hpp"
@@ -12,6 +13,7 @@
 #include "core/viewport/image_error.hpp"
 #include "core/viewport/viewport.hpp"
 #include "test_support.hpp"
+#include "uniform_lookups.hpp"
 
 namespace fraktal::viewport {
 namespace {
@@ -350,6 +352,45 @@ TEST(ViewportGL, SettledFrameCostsUnderTwoDeEvaluationsPerPixel) {
     EXPECT_EQ(rest.action, FrameAction::Continue);
     EXPECT_LT(rest.deEvalsPerPixel, 2.0);
     EXPECT_GE(displayPsnr(v.readImage(), c.image), 99.0) << "a settled frame changed the image";
+}
+
+// Uniform locations are found once per program when it is built: a frame, moving (reprojection,
+// the march list, the motion filter) or at rest (accumulation), with the cone pre-pass and the
+// display pass, looks none up.
+TEST(ViewportGL, FramesLookUpNoUniformLocations) {
+    test::glContext();
+    const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbox.json");
+    ViewportOptions options;
+    options.maxSamples = 4;
+    options.coneTile = 8;
+    Viewport v(options);
+    GLuint target = 0, framebuffer = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &target);
+    glTextureStorage2D(target, 1, GL_RGBA8, kW, kH);
+    glCreateFramebuffers(1, &framebuffer);
+    glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, target, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, kW, kH);
+    v.render(s.preset.formula, s.preset.camera, s.render, s.preset.shading, kW, kH);  // builds the programs
+    v.drawDisplay(0.0f);
+    constexpr int kFrames = 12;
+    int moving = 0;
+    {
+        const test::UniformLookups counter;
+        for (int f = 1; f <= kFrames; ++f) {
+            const Camera camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, std::min(f, kFrames / 2), 1.0);
+            moving +=
+                v.render(s.preset.formula, camera, s.render, s.preset.shading, kW, kH).action == FrameAction::Reproject;
+            v.drawDisplay(0.0f);
+        }
+        std::printf("%d frames (%d reprojected): %d uniform lookups, %.3f ms in them\n", kFrames, moving,
+                    test::UniformLookups::calls, test::UniformLookups::seconds * 1e3);
+        EXPECT_EQ(test::UniformLookups::calls, 0);
+    }
+    EXPECT_GE(moving, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &target);
 }
 
 }  // namespace

@@ -12,15 +12,6 @@ namespace fraktal::editor {
 
 namespace fs = std::filesystem;
 
-const char* lightTypeName(LightType type) {
-    switch (type) {
-        case LightType::Directional: return "Directional";
-        case LightType::Sphere: return "Sphere";
-        case LightType::Rect: return "Rect";
-    }
-    return "Light";
-}
-
 Light newLight(LightType type) {
     Light l;
     l.type = type;

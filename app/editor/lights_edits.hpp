@@ -31,8 +31,6 @@ struct LightsPanel {
     std::map<std::string, std::array<float, 4>> widgets;
 };
 
-const char* lightTypeName(LightType type);
-
 // A light of `type` where the default scene can see its effect: a directional light from above
 // and to the side, a sphere light above the object, a rectangle facing down onto it.
 Light newLight(LightType type);

@@ -24,8 +24,6 @@ namespace fraktal::editor {
 
 namespace {
 
-constexpr LightType kLightTypes[] = {LightType::Directional, LightType::Sphere, LightType::Rect};
-
 // The last item's window rectangle under `name`, for the state file.
 void record(LightsPanel& p, const std::string& name) {
     const ImVec2 a = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
@@ -75,8 +73,10 @@ void changeType(Light& l, LightType type) {
 void drawLightSettings(EditorState& s, LightsPanel& p, Light& l, int index) {
     const std::string target = "lights[" + std::to_string(index) + "].";
     int type = int(l.type);
-    const char* names[] = {lightTypeName(kLightTypes[0]), lightTypeName(kLightTypes[1]), lightTypeName(kLightTypes[2])};
-    if (ImGui::Combo("Type", &type, names, int(std::size(names)))) changeType(l, LightType(type));
+    // The table is in the enum's order, so an item's index is its LightType.
+    const char* labels[std::size(kLightTypeNames)];
+    for (size_t i = 0; i < std::size(kLightTypeNames); ++i) labels[i] = kLightTypeNames[i].label;
+    if (ImGui::Combo("Type", &type, labels, int(std::size(labels)))) changeType(l, kLightTypeNames[type].type);
     keyMarker(s, target + "color", keyValue(l.color));
     colorEdit("Colour", l.color, nullptr);
     recordWithHelp(p, "light.color", "Linear Rec.709; multiplies the intensity.");
@@ -132,7 +132,7 @@ void drawLightList(EditorState& s, Lighting& lighting, LightsPanel& p) {
         record(p, "lights[" + std::to_string(i) + "].enabled");
         ImGui::SameLine();
         char label[96];
-        std::snprintf(label, sizeof label, "%d  %s  %.3g%s", i + 1, lightTypeName(l.type), l.intensity,
+        std::snprintf(label, sizeof label, "%d  %s  %.3g%s", i + 1, lightTypeNames(l.type).label, l.intensity,
                       l.enabled ? "" : "  (off)");
         if (ImGui::Selectable(label, p.selected == i)) p.selected = i;
         record(p, "lights[" + std::to_string(i) + "]");
@@ -141,8 +141,9 @@ void drawLightList(EditorState& s, Lighting& lighting, LightsPanel& p) {
     if (ImGui::Button("Add light")) ImGui::OpenPopup("add_light");
     record(p, "addLight");
     if (ImGui::BeginPopup("add_light")) {
-        for (LightType type : kLightTypes) {
-            const std::string name = lightTypeName(type);
+        for (const LightTypeNames& names : kLightTypeNames) {
+            const LightType type = names.type;
+            const std::string name = names.label;
             if (ImGui::Selectable(name.c_str())) {
                 if (std::string refused = addLight(lighting, type); refused.empty()) {
                     p.selected = int(lights.size()) - 1;

@@ -115,21 +115,26 @@ void OcioDisplayPass::configure(const ColorPipeline& color, const DisplayKey& ke
     program_ = std::move(program);
     luts_ = std::move(luts);
     key_ = key;
+    const GLuint id = program_.id();
+    gainLocation_ = glGetUniformLocation(id, "u_gain");
+    divideByCountLocation_ = glGetUniformLocation(id, "u_divideByCount");
+    toWorkingLocation_ = glGetUniformLocation(id, "u_toWorking");
+    for (LutTexture& t : luts_) t.location = glGetUniformLocation(id, t.sampler.c_str());
 }
 
 void OcioDisplayPass::draw(GLuint linearImage, double exposureStops, const SumInput& input) const {
     if (!program_) return;
     const GLuint program = program_.id();
     glUseProgram(program);
-    glUniform1f(glGetUniformLocation(program, "u_gain"), float(std::exp2(exposureStops)));
-    glUniform1i(glGetUniformLocation(program, "u_divideByCount"), input.divideByCount ? 1 : 0);
+    glUniform1f(gainLocation_, float(std::exp2(exposureStops)));
+    glUniform1i(divideByCountLocation_, input.divideByCount ? 1 : 0);
     const glm::mat3 toWorking(input.toWorking);
-    glUniformMatrix3fv(glGetUniformLocation(program, "u_toWorking"), 1, GL_FALSE, &toWorking[0][0]);
+    glUniformMatrix3fv(toWorkingLocation_, 1, GL_FALSE, &toWorking[0][0]);
     glBindTextureUnit(0, linearImage);
     for (size_t i = 0; i < luts_.size(); ++i) {
         const GLint unit = GLint(i) + 1;
         glBindTextureUnit(GLuint(unit), luts_[i].id);
-        glUniform1i(glGetUniformLocation(program, luts_[i].sampler.c_str()), unit);
+        glUniform1i(luts_[i].location, unit);
     }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);

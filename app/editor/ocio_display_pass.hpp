@@ -53,11 +53,13 @@ class OcioDisplayPass {
         GLuint id = 0;
         GLenum target = GL_TEXTURE_2D;
         std::string sampler;
+        GLint location = -1;  // the sampler's, looked up once when the program is built
     };
     void releaseLuts();
 
     gl::Program program_;
     std::vector<LutTexture> luts_;
+    GLint gainLocation_ = -1, divideByCountLocation_ = -1, toWorkingLocation_ = -1;  // looked up once, as above
     DisplayKey key_;
     GLuint emptyVertexArray_ = 0;
 };

@@ -14,7 +14,7 @@ namespace {
 json lightsJson(const Lighting& l, const LightsPanel& p) {
     json lights = json::array();
     for (const Light& light : l.lights)
-        lights.push_back({{"type", lightTypeName(light.type)},
+        lights.push_back({{"type", lightTypeNames(light.type).label},
                           {"enabled", light.enabled},
                           {"intensity", light.intensity},
                           {"size", light.size}});

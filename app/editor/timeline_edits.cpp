@@ -72,9 +72,9 @@ const Key* keyAt(const Track& track, double frame) {
     return nullptr;
 }
 
-bool differsFromTrack(const Animation& a, const Track& track, double frame, const std::vector<double>& value) {
+bool differsFromTrack(const Preset& p, const Track& track, double frame, const std::vector<double>& value) {
     const bool camera = track.target.rfind("camera.", 0) == 0;
-    const std::vector<double> animated = evaluateTrack(track, camera ? cameraTime(a, frame) : frame);
+    const std::vector<double> animated = trackValueIn(p, track, camera ? cameraTime(p.animation, frame) : frame);
     if (animated.size() != value.size()) return true;
     // q and -q are the same orientation.
     double sign = 1.0;
@@ -135,24 +135,9 @@ bool setInterpolation(Animation& a, const std::string& target, Interpolation int
 }
 
 std::string targetLabel(const Preset& p, const std::string& target) {
-    const std::string nodes = "formula.nodes[", estimator = "formula.estimator.params.";
-    const Formula& f = p.formula;
-    const Node* node = nullptr;
-    std::string param;
-    if (target.rfind(estimator, 0) == 0) {
-        node = &f.estimator;
-        param = target.substr(estimator.size());
-    } else if (target.rfind(nodes, 0) == 0) {
-        const size_t close = target.find("].params.");
-        if (close != std::string::npos) {
-            const std::string index = target.substr(nodes.size(), close - nodes.size());
-            const size_t i = index.find_first_not_of("0123456789") == std::string::npos && !index.empty()
-                                 ? std::stoul(index)
-                                 : f.nodes.size();
-            node = i < f.nodes.size() ? &f.nodes[i] : nullptr;
-            param = target.substr(close + 9);
-        }
-    }
+    const KeyedParam keyed = keyedParam(p.formula, target);
+    const Node* node = keyed.node;
+    const std::string& param = keyed.name;
     // The block's label and the parameter, unless the label names it already ("Mandelbulb power").
     if (node && node->block) {
         const std::string label(node->block->label);

@@ -64,9 +64,10 @@ const Track* findTrack(const Animation& a, const std::string& target);
 // The key of `track` at `frame` (keys sit on whole frames in the editor), or nullptr.
 const Key* keyAt(const Track& track, double frame);
 
-// Whether `value` differs from what `track` of `a` gives at `frame` (camera tracks at the camera's
-// time, cameraTime): a keyed value the user edited since the frame was shown.
-bool differsFromTrack(const Animation& a, const Track& track, double frame, const std::vector<double>& value);
+// Whether `value` differs from what `track` of `p`'s animation gives at `frame` (camera tracks at
+// the camera's time, cameraTime; a toggle steps, trackValueIn): a keyed value the user edited since
+// the frame was shown.
+bool differsFromTrack(const Preset& p, const Track& track, double frame, const std::vector<double>& value);
 // The camera's orientation as an orientation track keys it (w, x, y, z).
 std::vector<double> cameraOrientation(const Camera& c);
 

@@ -87,6 +87,10 @@ void interpolationItems(EditorState& s, const std::string& target) {
     const Track* track = findTrack(s.doc.preset.animation, target);
     if (!track) return;
     ImGui::Separator();
+    if (stepsAtKeys(s.doc.preset, target)) {
+        ImGui::TextDisabled("On/off: steps at each key");
+        return;
+    }
     const char* names[] = {"Constant", "Linear", "Smooth"};
     for (int i = 0; i < 3; ++i)
         if (ImGui::MenuItem(names[i], nullptr, int(track->interpolation) == i))
@@ -192,7 +196,7 @@ void scrubBar(EditorState& s) {
         ImGui::PushID(r);
         const std::string name = targetLabel(s.doc.preset, track.target);
         ImGui::InvisibleButton("track", ImVec2(kLabelWidth - 4, kRowHeight));
-        const char interp = "CLS"[int(track.interpolation)];
+        const char interp = "CLS"[int(interpolationIn(s.doc.preset, track))];
         dl->PushClipRect(ImVec2(origin.x, y), ImVec2(origin.x + kLabelWidth - 4, y + kRowHeight), true);
         dl->AddText(ImVec2(origin.x, y), ImGui::GetColorU32(ImGuiCol_Text),
                     (std::string(1, interp) + " " + name).c_str());
@@ -331,7 +335,7 @@ void keyMarker(EditorState& s, const std::string& target, const std::vector<doub
     Animation& a = s.doc.preset.animation;
     const Track* track = findTrack(a, target);
     const Key* key = track ? keyAt(*track, t.frame) : nullptr;
-    const bool changed = track && differsFromTrack(a, *track, t.frame, value);
+    const bool changed = track && differsFromTrack(s.doc.preset, *track, t.frame, value);
     const float size = ImGui::GetFrameHeight();
     ImGui::PushID(target.c_str());
     const ImVec2 at = ImGui::GetCursorScreenPos();

@@ -64,7 +64,7 @@ std::string lightListChange(const std::vector<Light>& before, const std::vector<
     const std::vector<Light>& shorter = added ? before : after;
     size_t i = 0;
     while (i < shorter.size() && shorter[i] == longer[i]) ++i;
-    return (added ? "add " : "remove ") + std::string(lightTypeName(longer[i].type)) + " light";
+    return (added ? "add " : "remove ") + std::string(lightTypeNames(longer[i].type).label) + " light";
 }
 
 }  // namespace

@@ -79,17 +79,41 @@ glm::dquat slerpDirect(const glm::dquat& a, const glm::dquat& b, double t) {
     return a * (std::sin((1.0 - t) * angle) / s) + b * (std::sin(t * angle) / s);
 }
 
-std::vector<double> evaluateOrientation(const Track& track, double frame) {
+std::vector<double> evaluateOrientation(const Track& track, Interpolation how, double frame) {
     const std::vector<Key>& keys = track.keys;
     const std::vector<glm::dquat> q = alignedQuaternions(keys);
     const size_t i = segmentStart(keys, frame);
-    if (frame <= keys.front().frame || i + 1 >= keys.size() || track.interpolation == Interpolation::Constant)
+    if (frame <= keys.front().frame || i + 1 >= keys.size() || how == Interpolation::Constant)
         return fromQuat(q[frame <= keys.front().frame ? 0 : i]);
     const double t = (frame - keys[i].frame) / (keys[i + 1].frame - keys[i].frame);
-    if (track.interpolation == Interpolation::Linear) return fromQuat(slerpShortest(q[i], q[i + 1], t));
+    if (how == Interpolation::Linear) return fromQuat(slerpShortest(q[i], q[i + 1], t));
     const glm::dquat s0 = squadControl(q, i), s1 = squadControl(q, i + 1);
     return fromQuat(
         glm::normalize(slerpDirect(slerpDirect(q[i], q[i + 1], t), slerpDirect(s0, s1, t), 2.0 * t * (1.0 - t))));
+}
+
+// `track` at `frame`, read with `how` in place of the track's own interpolation.
+std::vector<double> evaluateWith(const Track& track, Interpolation how, double frame) {
+    if (track.target == kCameraOrientationTarget) return evaluateOrientation(track, how, frame);
+    const std::vector<Key>& keys = track.keys;
+    if (frame <= keys.front().frame) return keys.front().value;
+    if (frame >= keys.back().frame) return keys.back().value;
+    const size_t i = segmentStart(keys, frame);
+    if (how == Interpolation::Constant) return keys[i].value;
+    const Key &a = keys[i], &b = keys[i + 1];
+    const double span = b.frame - a.frame, t = (frame - a.frame) / span;
+    std::vector<double> out(a.value.size());
+    for (size_t c = 0; c < out.size(); ++c) {
+        if (how == Interpolation::Linear) {
+            out[c] = a.value[c] + (b.value[c] - a.value[c]) * t;
+            continue;
+        }
+        // Cubic Hermite basis.
+        const double t2 = t * t, t3 = t2 * t;
+        out[c] = (2 * t3 - 3 * t2 + 1) * a.value[c] + (t3 - 2 * t2 + t) * span * tangent(keys, i, c) +
+                 (-2 * t3 + 3 * t2) * b.value[c] + (t3 - t2) * span * tangent(keys, i + 1, c);
+    }
+    return out;
 }
 
 const Track* findTrack(const Animation& a, const std::string& target) {
@@ -110,7 +134,8 @@ void setField(json& document, const std::string& target, const std::vector<doubl
 }
 
 // The tracks of `animation` written into `document` (a preset without its animation) at `frame`.
-void applyTracks(const Animation& animation, json& document, double frame) {
+void applyTracks(const Preset& animated, json& document, double frame) {
+    const Animation& animation = animated.animation;
     const double cameraFrame = cameraTime(animation, frame);
     const Track* orientation = nullptr;
     for (const Track& t : animation.tracks) {
@@ -118,7 +143,7 @@ void applyTracks(const Animation& animation, json& document, double frame) {
             orientation = &t;
             continue;
         }
-        setField(document, t.target, evaluateTrack(t, isCameraTarget(t.target) ? cameraFrame : frame));
+        setField(document, t.target, trackValueIn(animated, t, isCameraTarget(t.target) ? cameraFrame : frame));
     }
     if (!orientation) return;
     json& camera = document["camera"];
@@ -151,26 +176,43 @@ glm::dquat orientationOf(const vec3& forward, const vec3& up) {
 }
 
 std::vector<double> evaluateTrack(const Track& track, double frame) {
-    if (track.target == kCameraOrientationTarget) return evaluateOrientation(track, frame);
-    const std::vector<Key>& keys = track.keys;
-    if (frame <= keys.front().frame) return keys.front().value;
-    if (frame >= keys.back().frame) return keys.back().value;
-    const size_t i = segmentStart(keys, frame);
-    if (track.interpolation == Interpolation::Constant) return keys[i].value;
-    const Key &a = keys[i], &b = keys[i + 1];
-    const double span = b.frame - a.frame, t = (frame - a.frame) / span;
-    std::vector<double> out(a.value.size());
-    for (size_t c = 0; c < out.size(); ++c) {
-        if (track.interpolation == Interpolation::Linear) {
-            out[c] = a.value[c] + (b.value[c] - a.value[c]) * t;
-            continue;
-        }
-        // Cubic Hermite basis.
-        const double t2 = t * t, t3 = t2 * t;
-        out[c] = (2 * t3 - 3 * t2 + 1) * a.value[c] + (t3 - 2 * t2 + t) * span * tangent(keys, i, c) +
-                 (-2 * t3 + 3 * t2) * b.value[c] + (t3 - t2) * span * tangent(keys, i + 1, c);
+    return evaluateWith(track, track.interpolation, frame);
+}
+
+KeyedParam keyedParam(const Formula& f, const std::string& target) {
+    const std::string nodes = "formula.nodes[", estimator = "formula.estimator.params.", params = "].params.";
+    KeyedParam k;
+    if (target.rfind(estimator, 0) == 0) {
+        k.node = &f.estimator;
+        k.name = target.substr(estimator.size());
+    } else if (target.rfind(nodes, 0) == 0) {
+        const size_t close = target.find(params);
+        if (close == std::string::npos) return k;
+        const std::string index = target.substr(nodes.size(), close - nodes.size());
+        const bool number =
+            !index.empty() && index.size() < 9 && index.find_first_not_of("0123456789") == std::string::npos;
+        const size_t i = number ? std::stoul(index) : f.nodes.size();
+        // A file lists the closing estimator last among its nodes.
+        if (i > f.nodes.size()) return k;
+        k.node = i == f.nodes.size() ? &f.estimator : &f.nodes[i];
+        k.name = target.substr(close + params.size());
     }
-    return out;
+    if (k.node && k.node->block)
+        if (const int i = k.node->block->paramIndex(k.name); i >= 0) k.decl = &k.node->block->params[size_t(i)];
+    return k;
+}
+
+bool stepsAtKeys(const Preset& preset, const std::string& target) {
+    const ParamDecl* d = keyedParam(preset.formula, target).decl;
+    return d && d->type == ParamType::Toggle;
+}
+
+Interpolation interpolationIn(const Preset& preset, const Track& track) {
+    return stepsAtKeys(preset, track.target) ? Interpolation::Constant : track.interpolation;
+}
+
+std::vector<double> trackValueIn(const Preset& preset, const Track& track, double frame) {
+    return evaluateWith(track, interpolationIn(preset, track), frame);
 }
 
 double cameraTime(const Animation& animation, double frame) {
@@ -324,7 +366,7 @@ json animationJson(const Animation& a) {
 
 Preset presetAtFrame(const Preset& animated, double frame) {
     json j = stillDocument(animated);
-    applyTracks(animated.animation, j, frame);
+    applyTracks(animated, j, frame);
     return parsePreset(j.dump(), animated.name.empty() ? "animated preset" : animated.name);
 }
 

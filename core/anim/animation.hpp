@@ -8,10 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "core/block.hpp"
 #include "core/vec.hpp"
 
 namespace fraktal {
 
+struct Formula;
+struct Node;
 struct Preset;
 struct ReadContext;
 
@@ -52,6 +55,29 @@ struct Animation {
 // Orientation tracks interpolate quaternions (linear: slerp; smooth: squad), always along the
 // shorter arc, so the camera never flips.
 std::vector<double> evaluateTrack(const Track& track, double frame);
+
+// The block parameter a target keys: "formula.nodes[N].params.NAME" (N counts the closing
+// estimator last, as a preset file lists it) or "formula.estimator.params.NAME". `node` is null for
+// other targets and for a node that does not exist; `decl` is null also when the node's block has
+// no parameter NAME.
+struct KeyedParam {
+    const Node* node = nullptr;
+    std::string name;
+    const ParamDecl* decl = nullptr;
+};
+KeyedParam keyedParam(const Formula& formula, const std::string& target);
+
+// Whether the field at `target` steps from key to key in `preset`: a toggle parameter
+// (ParamType::Toggle) holds the last key at or before the frame whatever its track's
+// interpolation says, so it is never read between on and off.
+bool stepsAtKeys(const Preset& preset, const std::string& target);
+// The interpolation `track` is read with in `preset`: Constant where it steps, else the track's own.
+Interpolation interpolationIn(const Preset& preset, const Track& track);
+
+// The value of `track` at `frame` for `preset` (evaluateTrack with interpolationIn): what
+// presetAtFrame writes into the preset, and so what the CPU, the GPU's uniforms and rendered
+// frames see.
+std::vector<double> trackValueIn(const Preset& preset, const Track& track, double frame);
 
 // The frame (in key time) at which the camera tracks are evaluated for output frame `frame`: the
 // frame itself, or when evenCameraSpeed, the key time at which the position path has covered the

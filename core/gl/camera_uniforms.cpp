@@ -2,16 +2,21 @@
 
 namespace fraktal::gl {
 
-void setCameraUniforms(GLuint program, const Camera& camera, const CameraUniformNames& names) {
+CameraLocations::CameraLocations(GLuint program, const CameraUniformNames& names)
+    : position(glGetUniformLocation(program, names.position)),
+      right(glGetUniformLocation(program, names.right)),
+      up(glGetUniformLocation(program, names.up)),
+      forward(glGetUniformLocation(program, names.forward)),
+      tanHalfFovY(glGetUniformLocation(program, names.tanHalfFovY)) {}
+
+void setCameraUniforms(const CameraLocations& at, const Camera& camera) {
     const CameraBasis basis = camera.basis();
-    auto set3 = [&](const char* name, const vec3& v) {
-        glUniform3f(glGetUniformLocation(program, name), float(v.x), float(v.y), float(v.z));
-    };
-    set3(names.position, camera.position);
-    set3(names.right, basis.right);
-    set3(names.up, basis.up);
-    set3(names.forward, basis.forward);
-    glUniform1f(glGetUniformLocation(program, names.tanHalfFovY), float(camera.tanHalfFovY()));
+    auto set3 = [](GLint location, const vec3& v) { glUniform3f(location, float(v.x), float(v.y), float(v.z)); };
+    set3(at.position, camera.position);
+    set3(at.right, basis.right);
+    set3(at.up, basis.up);
+    set3(at.forward, basis.forward);
+    glUniform1f(at.tanHalfFovY, float(camera.tanHalfFovY()));
 }
 
 }  // namespace fraktal::gl

@@ -15,7 +15,14 @@ struct CameraUniformNames {
 inline constexpr CameraUniformNames kCameraUniforms{"u_cameraPosition", "u_cameraRight", "u_cameraUp",
                                                     "u_cameraForward", "u_tanHalfFovY"};
 
-// Sets them on `program`, which must be in use.
-void setCameraUniforms(GLuint program, const Camera& camera, const CameraUniformNames& names = kCameraUniforms);
+// Their locations in one program, looked up once when it is built (-1: not in the program).
+struct CameraLocations {
+    GLint position = -1, right = -1, up = -1, forward = -1, tanHalfFovY = -1;
+    CameraLocations() = default;
+    explicit CameraLocations(GLuint program, const CameraUniformNames& names = kCameraUniforms);
+};
+
+// Sets them on the program they were found in, which must be in use.
+void setCameraUniforms(const CameraLocations& at, const Camera& camera);
 
 }  // namespace fraktal::gl

@@ -7,8 +7,10 @@
 namespace fraktal::gl {
 
 DEProbe::DEProbe(const Formula& formula) : structure_(formula.structureKey()) {
-    program_ = compileCompute(assembleShader(generateFormulaGLSL(formula), "de_probe.comp", shaderTemplate("de_probe.comp")));
+    program_ =
+        compileCompute(assembleShader(generateFormulaGLSL(formula), "de_probe.comp", shaderTemplate("de_probe.comp")));
     uniforms_ = FormulaUniforms(program_.id(), formula);
+    countLocation_ = glGetUniformLocation(program_.id(), "u_count");
     glCreateBuffers(2, buffers_);
 }
 
@@ -24,7 +26,7 @@ std::vector<GpuSample> DEProbe::evaluate(const Formula& formula, std::span<const
     glNamedBufferData(buffers_[1], 2 * inBytes, nullptr, GL_STREAM_READ);
     glUseProgram(program_.id());
     uniforms_.upload(formula);
-    glUniform1ui(glGetUniformLocation(program_.id(), "u_count"), GLuint(points.size()));
+    glUniform1ui(countLocation_, GLuint(points.size()));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers_[1]);
     glDispatchCompute(GLuint((points.size() + 63) / 64), 1, 1);

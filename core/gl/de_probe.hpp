@@ -19,7 +19,7 @@ struct GpuSample {
 };
 
 class DEProbe {
-public:
+   public:
     // Compiles the probe for the formula's structure; throws on a GLSL error (naming the node).
     explicit DEProbe(const Formula& formula);
     ~DEProbe();
@@ -29,22 +29,23 @@ public:
     // `formula` may differ from the constructor's in values only (same structureKey()).
     std::vector<GpuSample> evaluate(const Formula& formula, std::span<const vec3> points);
 
-private:
+   private:
     std::string structure_;
     Program program_;
     FormulaUniforms uniforms_;
+    GLint countLocation_ = -1;  // looked up once: evaluate runs per batch of points
     GLuint buffers_[2] = {0, 0};
 };
 
 // The formula's samples taken on the GL context: how checks and tools evaluate formulas with
 // custom GLSL blocks, which have no CPU body. Single precision.
 class GpuSampler final : public FormulaSampler {
-public:
+   public:
     explicit GpuSampler(const Formula& f) : formula_(f), probe_(f) {}
     const Formula& formula() const override { return formula_; }
     void evaluate(std::span<const vec3> points, std::span<Evaluation> out) override;
 
-private:
+   private:
     const Formula& formula_;
     DEProbe probe_;
 };

@@ -73,6 +73,26 @@ void PlaneRenderer::prepare(const PlaneFormula& formula, PlanePrecision precisio
         for (const PlaneNode& n : formula.start) locate(n);
         for (const PlaneNode& n : formula.nodes) locate(n);
         locate(formula.estimator);
+        const auto at = [p = program_.id()](const char* name) { return glGetUniformLocation(p, name); };
+        at_.iterations = at("u_iterations");
+        at_.bailout = at("u_bailout");
+        at_.center = at("u_center");
+        at_.pixelSize = at("u_pixelSize");
+        at_.imageSize = at("u_imageSize");
+        at_.tileOrigin = at("u_tileOrigin");
+        at_.tileSize = at("u_tileSize");
+        at_.storeOrigin = at("u_storeOrigin");
+        at_.sampleBegin = at("u_sampleBegin");
+        at_.sampleCount = at("u_sampleCount");
+        at_.accumulate = at("u_accumulate");
+        at_.paletteA = at("u_paletteA");
+        at_.paletteB = at("u_paletteB");
+        at_.paletteC = at("u_paletteC");
+        at_.paletteD = at("u_paletteD");
+        at_.interior = at("u_interior");
+        at_.paletteFrequency = at("u_paletteFrequency");
+        at_.paletteOffset = at("u_paletteOffset");
+        at_.edgeWidth = at("u_edgeWidth");
     }
 }
 
@@ -86,7 +106,6 @@ void PlaneRenderer::render(const PlaneFormula& formula, const PlaneColouring& co
         target.resize(tile.width, tile.height);
     const GLuint p = program_.id();
     glUseProgram(p);
-    auto loc = [p](const char* name) { return glGetUniformLocation(p, name); };
 
     // Parameters: every node's values by the locations found at compile time.
     size_t k = 0;
@@ -98,33 +117,33 @@ void PlaneRenderer::render(const PlaneFormula& formula, const PlaneColouring& co
     for (const PlaneNode& n : formula.start) upload(n);
     for (const PlaneNode& n : formula.nodes) upload(n);
     upload(formula.estimator);
-    glUniform1i(loc("u_iterations"), formula.iterations);
-    glUniform1f(loc("u_bailout"), float(formula.bailout));
+    glUniform1i(at_.iterations, formula.iterations);
+    glUniform1f(at_.bailout, float(formula.bailout));
 
     const double pixelSize = view.pixelSize(tile.imageWidth);
     if (double_) {
-        glUniform2d(loc("u_center"), view.center.x, view.center.y);
-        glUniform1d(loc("u_pixelSize"), pixelSize);
+        glUniform2d(at_.center, view.center.x, view.center.y);
+        glUniform1d(at_.pixelSize, pixelSize);
     } else {
-        glUniform2f(loc("u_center"), float(view.center.x), float(view.center.y));
-        glUniform1f(loc("u_pixelSize"), float(pixelSize));
+        glUniform2f(at_.center, float(view.center.x), float(view.center.y));
+        glUniform1f(at_.pixelSize, float(pixelSize));
     }
-    glUniform2i(loc("u_imageSize"), tile.imageWidth, tile.imageHeight);
-    glUniform2i(loc("u_tileOrigin"), tile.x0, tile.y0);
-    glUniform2i(loc("u_tileSize"), tile.width, tile.height);
-    glUniform2i(loc("u_storeOrigin"), inImage ? tile.x0 : 0, inImage ? tile.y0 : 0);
-    glUniform1i(loc("u_sampleBegin"), sampleBegin);
-    glUniform1i(loc("u_sampleCount"), sampleCount);
-    glUniform1i(loc("u_accumulate"), accumulate ? 1 : 0);
-    auto vec = [&](const char* name, const vec3& v) { glUniform3f(loc(name), float(v.x), float(v.y), float(v.z)); };
-    vec("u_paletteA", colouring.paletteA);
-    vec("u_paletteB", colouring.paletteB);
-    vec("u_paletteC", colouring.paletteC);
-    vec("u_paletteD", colouring.paletteD);
-    vec("u_interior", colouring.interior);
-    glUniform1f(loc("u_paletteFrequency"), float(colouring.frequency));
-    glUniform1f(loc("u_paletteOffset"), float(colouring.offset));
-    glUniform1f(loc("u_edgeWidth"), float(colouring.edgeWidth));
+    glUniform2i(at_.imageSize, tile.imageWidth, tile.imageHeight);
+    glUniform2i(at_.tileOrigin, tile.x0, tile.y0);
+    glUniform2i(at_.tileSize, tile.width, tile.height);
+    glUniform2i(at_.storeOrigin, inImage ? tile.x0 : 0, inImage ? tile.y0 : 0);
+    glUniform1i(at_.sampleBegin, sampleBegin);
+    glUniform1i(at_.sampleCount, sampleCount);
+    glUniform1i(at_.accumulate, accumulate ? 1 : 0);
+    auto vec = [](GLint location, const vec3& v) { glUniform3f(location, float(v.x), float(v.y), float(v.z)); };
+    vec(at_.paletteA, colouring.paletteA);
+    vec(at_.paletteB, colouring.paletteB);
+    vec(at_.paletteC, colouring.paletteC);
+    vec(at_.paletteD, colouring.paletteD);
+    vec(at_.interior, colouring.interior);
+    glUniform1f(at_.paletteFrequency, float(colouring.frequency));
+    glUniform1f(at_.paletteOffset, float(colouring.offset));
+    glUniform1f(at_.edgeWidth, float(colouring.edgeWidth));
 
     glBindImageTexture(0, target.colourTexture(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     glBindImageTexture(1, target.aovTexture(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);

@@ -89,6 +89,14 @@ class PlaneRenderer {
     bool double_ = false;
     std::vector<std::string> warnings_;
     std::vector<std::vector<GLint>> paramLocations_;  // [node][param]: start, loop, estimator
+    // The other uniforms' locations, looked up once when the program is built (render runs per
+    // band of every frame).
+    struct Locations {
+        GLint iterations = -1, bailout = -1, center = -1, pixelSize = -1, imageSize = -1, tileOrigin = -1,
+              tileSize = -1, storeOrigin = -1, sampleBegin = -1, sampleCount = -1, accumulate = -1;
+        GLint paletteA = -1, paletteB = -1, paletteC = -1, paletteD = -1, interior = -1, paletteFrequency = -1,
+              paletteOffset = -1, edgeWidth = -1;
+    } at_;
 };
 
 // Reads a target back (waits for the GPU).

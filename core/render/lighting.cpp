@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "core/preset.hpp"
 
@@ -11,27 +12,23 @@ using nlohmann::json;
 
 namespace {
 
-const char* typeName(LightType t) {
-    switch (t) {
-        case LightType::Directional: return "directional";
-        case LightType::Sphere: return "sphere";
-        case LightType::Rect: return "rect";
-    }
-    return "directional";
-}
-
 Light parseLight(const ReadContext& context, const json& j, const std::string& path) {
     FieldReader r(context, j, path);
     Light l;
-    const std::string type = r.string("type", "directional", 32);
-    if (type == "directional")
-        l.type = LightType::Directional;
-    else if (type == "sphere" || type == "point")
-        l.type = LightType::Sphere;
-    else if (type == "rect")
-        l.type = LightType::Rect;
-    else
-        r.fail("unknown light type '" + type + "' (known: directional, sphere, point, rect)", "type");
+    const std::string type = r.string("type", kLightTypeNames[0].name, 32);
+    std::string known;
+    bool found = false;
+    for (const LightTypeNames& n : kLightTypeNames) {
+        for (const char* name : {n.name, n.alias}) {
+            if (!name) continue;
+            known += (known.empty() ? "" : ", ") + std::string(name);
+            if (type == name && !found) {
+                l.type = n.type;
+                found = true;
+            }
+        }
+    }
+    if (!found) r.fail("unknown light type '" + type + "' (known: " + known + ")", "type");
     l.enabled = r.boolean("enabled", true);
     l.color = r.vector<3>("color", l.color, 0.0, 1e4);
     l.intensity = r.number("intensity", l.intensity, 0.0, 1e9);
@@ -62,6 +59,16 @@ Light parseLight(const ReadContext& context, const json& j, const std::string& p
 }
 
 }  // namespace
+
+static_assert(
+    [] {
+        for (size_t i = 0; i < std::size(kLightTypeNames); ++i)
+            if (kLightTypeNames[i].type != LightType(i)) return false;
+        return std::size(kLightTypeNames) == size_t(LightType::Rect) + 1;
+    }(),
+    "kLightTypeNames lists every LightType in the enum's order");
+
+const LightTypeNames& lightTypeNames(LightType type) { return kLightTypeNames[size_t(type)]; }
 
 double apertureRadiusFromFStop(double fStop, double fovYDegrees) {
     const double focalLength = 0.5 * kSensorHeight / std::tan(0.5 * fovYDegrees * 3.14159265358979323846 / 180.0);
@@ -137,7 +144,7 @@ void writeLighting(const Lighting& l, json& preset) {
         const Light d;
         for (const Light& light : l.lights) {
             json o = json::object();
-            o["type"] = typeName(light.type);
+            o["type"] = lightTypeNames(light.type).name;
             if (!light.enabled) o["enabled"] = false;
             if (light.color != d.color) o["color"] = vecJson(light.color);
             if (light.intensity != d.intensity) o["intensity"] = light.intensity;

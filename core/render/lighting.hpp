@@ -18,6 +18,21 @@ inline constexpr int kMaxLights = 16;
 
 enum class LightType { Directional, Sphere, Rect };
 
+// The one table of light type names: each type's "type" in presets (and an alias the reader also
+// takes), and its label in the editor, in the enum's order.
+struct LightTypeNames {
+    LightType type;
+    const char* name;   // written to presets
+    const char* alias;  // also read, or null
+    const char* label;  // the editor's
+};
+inline constexpr LightTypeNames kLightTypeNames[] = {
+    {LightType::Directional, "directional", nullptr, "Directional"},
+    {LightType::Sphere, "sphere", "point", "Sphere"},
+    {LightType::Rect, "rect", nullptr, "Rect"},
+};
+const LightTypeNames& lightTypeNames(LightType type);
+
 // Intensities are radiometric-ish: a directional light's `intensity` is the irradiance it gives a
 // surface facing it; a sphere light's is its radiant intensity (irradiance at distance 1 facing
 // it, falling off as 1/d^2); a rectangle's is its radiance (emitted per unit area and solid angle).

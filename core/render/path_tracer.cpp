@@ -33,6 +33,10 @@ PathTracer::PathTracer(const Formula& formula, int width, int height)
                                assembleShader(generated, "pathtrace.frag", pathTraceProgramSource()));
     formulaUniforms_ = FormulaUniforms(program_.id(), formula);
     shadingUniforms_ = ShadingUniforms(program_.id());
+    cameraLocations_ = CameraLocations(program_.id());
+    firstSampleLocation_ = glGetUniformLocation(program_.id(), "u_firstSample");
+    writeDepthLocation_ = glGetUniformLocation(program_.id(), "u_writeDepth");
+    samplesLocation_ = glGetUniformLocation(program_.id(), "u_samples");
     glCreateFramebuffers(1, &framebuffer_);
     glCreateTextures(GL_TEXTURE_2D, kPassCount, targets_);
     GLenum buffers[kPassCount];
@@ -64,7 +68,7 @@ void PathTracer::setScene(const PathScene& scene, int firstSampleIndex) {
     glUseProgram(p);
     formulaUniforms_.upload(scene.formula);
     shadingUniforms_.upload(scene.shading);
-    setCameraUniforms(p, scene.camera);
+    setCameraUniforms(cameraLocations_, scene.camera);
     auto loc = [&](const char* name) { return glGetUniformLocation(p, name); };
     glUniform2i(loc("u_imageSize"), width_, height_);
     glUniform1i(loc("u_maxSteps"), scene.render.maxSteps);
@@ -128,10 +132,9 @@ void PathTracer::endDraws() {
 }
 
 void PathTracer::draw(int samples) {
-    const GLuint p = program_.id();
-    glUniform1i(glGetUniformLocation(p, "u_firstSample"), firstSampleIndex_ + samples_);
-    glUniform1i(glGetUniformLocation(p, "u_writeDepth"), samples_ == 0 ? 1 : 0);
-    glUniform1i(glGetUniformLocation(p, "u_samples"), samples);
+    glUniform1i(firstSampleLocation_, firstSampleIndex_ + samples_);
+    glUniform1i(writeDepthLocation_, samples_ == 0 ? 1 : 0);
+    glUniform1i(samplesLocation_, samples);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glFinish();  // one draw at a time: llvmpipe runs a queued batch of long draws at once
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/cpu_render/cpu_path_tracer.hpp"
+#include "core/gl/camera_uniforms.hpp"
 #include "core/gl/formula_uniforms.hpp"
 #include "core/gl/program.hpp"
 #include "core/render/shading_uniforms.hpp"
@@ -58,6 +59,9 @@ class PathTracer {
     Program program_;
     FormulaUniforms formulaUniforms_;
     ShadingUniforms shadingUniforms_;
+    CameraLocations cameraLocations_;
+    // Looked up once when the program is built: draw() runs many times per frame.
+    GLint firstSampleLocation_ = -1, writeDepthLocation_ = -1, samplesLocation_ = -1;
     GLuint framebuffer_ = 0, vertexArray_ = 0;
     GLuint targets_[kPassCount] = {};
     GLuint envBuffers_[3] = {};

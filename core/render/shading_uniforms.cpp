@@ -2,41 +2,55 @@
 
 namespace fraktal::gl {
 
-ShadingUniforms::ShadingUniforms(GLuint program) : program_(program) {}
+namespace {
+
+void setUniform(GLint location, double v) { glUniform1f(location, float(v)); }
+void setUniform(GLint location, int v) { glUniform1i(location, v); }
+void setUniform(GLint location, const vec3& v) { glUniform3f(location, float(v.x), float(v.y), float(v.z)); }
+void setUniform(GLint location, const glm::vec4& v) { glUniform4f(location, v.x, v.y, v.z, v.w); }
+
+// Every uniform with its value, in one list: set(name, value) for each, in the same order on
+// every call, so that the locations found on one pass over it serve every later upload.
+template <class Set>
+void eachUniform(const ShadingParams& p, Set&& set) {
+    set("u_detail", p.detail);
+    set("u_overRelaxation", p.overRelaxation);
+    const ShadingSettings& s = p.s;
+    set("u_lightDirection", s.lightDirection);
+    set("u_lightColor", s.lightColor);
+    set("u_fillColor", s.fillColor);
+    set("u_specular", s.specular);
+    set("u_shininess", s.shininess);
+    set("u_shadowSteps", s.shadowSteps);
+    set("u_shadowSoftness", s.shadowSoftness);
+    set("u_aoSteps", s.aoSteps);
+    set("u_aoDistance", s.aoDistance);
+    set("u_aoStrength", s.aoStrength);
+    set("u_trapWeights", glm::vec4(s.trapWeights));
+    set("u_trapScale", s.trapScale);
+    set("u_trapOffset", s.trapOffset);
+    set("u_paletteA", s.paletteA);
+    set("u_paletteB", s.paletteB);
+    set("u_paletteC", s.paletteC);
+    set("u_paletteD", s.paletteD);
+    set("u_fogColor", s.fogColor);
+    set("u_fogDensity", s.fogDensity);
+    set("u_reflection", s.reflection);
+    set("u_reflectionSteps", s.reflectionSteps);
+    set("u_backgroundTop", s.backgroundTop);
+    set("u_backgroundBottom", s.backgroundBottom);
+}
+
+}  // namespace
+
+ShadingUniforms::ShadingUniforms(GLuint program) {
+    eachUniform(ShadingParams{},
+                [&](const char* name, const auto&) { locations_.push_back(glGetUniformLocation(program, name)); });
+}
 
 void ShadingUniforms::upload(const ShadingParams& p) const {
-    // Few uniforms, set once per render: looking them up by name here keeps one list of names.
-    auto loc = [&](const char* name) { return glGetUniformLocation(program_, name); };
-    auto f = [&](const char* name, double v) { glUniform1f(loc(name), float(v)); };
-    auto i = [&](const char* name, int v) { glUniform1i(loc(name), v); };
-    auto v3 = [&](const char* name, const vec3& v) { glUniform3f(loc(name), float(v.x), float(v.y), float(v.z)); };
-    const ShadingSettings& s = p.s;
-    f("u_detail", p.detail);
-    f("u_overRelaxation", p.overRelaxation);
-    v3("u_lightDirection", s.lightDirection);
-    v3("u_lightColor", s.lightColor);
-    v3("u_fillColor", s.fillColor);
-    f("u_specular", s.specular);
-    f("u_shininess", s.shininess);
-    i("u_shadowSteps", s.shadowSteps);
-    f("u_shadowSoftness", s.shadowSoftness);
-    i("u_aoSteps", s.aoSteps);
-    f("u_aoDistance", s.aoDistance);
-    f("u_aoStrength", s.aoStrength);
-    glUniform4f(loc("u_trapWeights"), float(s.trapWeights.x), float(s.trapWeights.y), float(s.trapWeights.z),
-                float(s.trapWeights.w));
-    f("u_trapScale", s.trapScale);
-    f("u_trapOffset", s.trapOffset);
-    v3("u_paletteA", s.paletteA);
-    v3("u_paletteB", s.paletteB);
-    v3("u_paletteC", s.paletteC);
-    v3("u_paletteD", s.paletteD);
-    v3("u_fogColor", s.fogColor);
-    f("u_fogDensity", s.fogDensity);
-    f("u_reflection", s.reflection);
-    i("u_reflectionSteps", s.reflectionSteps);
-    v3("u_backgroundTop", s.backgroundTop);
-    v3("u_backgroundBottom", s.backgroundBottom);
+    size_t k = 0;
+    eachUniform(p, [&](const char*, const auto& value) { setUniform(locations_[k++], value); });
 }
 
 }  // namespace fraktal::gl

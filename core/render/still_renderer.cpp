@@ -26,7 +26,16 @@ StillRenderer::StillRenderer(const Formula& formula, int tileSize)
                                assembleShader(generated, "still.frag", stillProgramSource()));
     formulaUniforms_ = FormulaUniforms(program_.id(), formula);
     shadingUniforms_ = ShadingUniforms(program_.id());
-    tileOriginLocation_ = glGetUniformLocation(program_.id(), "u_tileOrigin");
+    const auto at = [p = program_.id()](const char* name) { return glGetUniformLocation(p, name); };
+    at_.camera = CameraLocations(program_.id());
+    at_.tileOrigin = at("u_tileOrigin");
+    at_.imageSize = at("u_imageSize");
+    at_.spp = at("u_spp");
+    at_.maxSteps = at("u_maxSteps");
+    at_.filterRadius = at("u_filterRadius");
+    at_.transparentBackground = at("u_transparentBackground");
+    at_.adaptiveTolerance = at("u_adaptiveTolerance");
+    at_.filterInverseCdf = at("u_filterInverseCdf");
 
     glCreateFramebuffers(1, &framebuffer_);
     glCreateTextures(GL_TEXTURE_2D, 4, targets_);
@@ -58,15 +67,15 @@ void StillRenderer::setScene(const Formula& formula, const Camera& camera, const
     glUseProgram(p);
     formulaUniforms_.upload(formula);
     shadingUniforms_.upload(shading);
-    gl::setCameraUniforms(p, camera);
-    glUniform2i(glGetUniformLocation(p, "u_imageSize"), render.width, render.height);
-    glUniform1i(glGetUniformLocation(p, "u_spp"), render.spp);
-    glUniform1i(glGetUniformLocation(p, "u_maxSteps"), render.maxSteps);
-    glUniform1f(glGetUniformLocation(p, "u_filterRadius"), float(render.filterRadius));
-    glUniform1i(glGetUniformLocation(p, "u_transparentBackground"), render.transparentBackground ? 1 : 0);
-    glUniform1f(glGetUniformLocation(p, "u_adaptiveTolerance"), float(adaptiveTolerance));
+    gl::setCameraUniforms(at_.camera, camera);
+    glUniform2i(at_.imageSize, render.width, render.height);
+    glUniform1i(at_.spp, render.spp);
+    glUniform1i(at_.maxSteps, render.maxSteps);
+    glUniform1f(at_.filterRadius, float(render.filterRadius));
+    glUniform1i(at_.transparentBackground, render.transparentBackground ? 1 : 0);
+    glUniform1f(at_.adaptiveTolerance, float(adaptiveTolerance));
     const std::vector<float> table = blackmanHarrisInverseCdfTable(kFilterTableSize);
-    glUniform1fv(glGetUniformLocation(p, "u_filterInverseCdf"), kFilterTableSize, table.data());
+    glUniform1fv(at_.filterInverseCdf, kFilterTableSize, table.data());
 }
 
 void StillRenderer::renderTile(const TileRect& tile, ImageStrip& strip) {
@@ -74,7 +83,7 @@ void StillRenderer::renderTile(const TileRect& tile, ImageStrip& strip) {
         tile.y + tile.height > strip.y0 + strip.rows || tile.x + tile.width > strip.width)
         throw std::logic_error("StillRenderer::renderTile: tile outside the strip or larger than the targets");
     glUseProgram(program_.id());
-    glUniform2i(tileOriginLocation_, tile.x, tile.y);
+    glUniform2i(at_.tileOrigin, tile.x, tile.y);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, tile.width, tile.height);
     glDisable(GL_BLEND);

@@ -9,6 +9,7 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/gl/camera_uniforms.hpp"
 #include "core/gl/formula_uniforms.hpp"
 #include "core/gl/program.hpp"
 #include "core/render/image_strip.hpp"
@@ -43,7 +44,13 @@ class StillRenderer {
     Program program_;
     FormulaUniforms formulaUniforms_;
     ShadingUniforms shadingUniforms_;
-    GLint tileOriginLocation_ = -1;  // looked up once: renderTile runs per tile
+    // Uniform locations, looked up once when the program is built: setScene runs per frame of a
+    // sequence, renderTile per tile.
+    struct Locations {
+        CameraLocations camera;
+        GLint tileOrigin = -1, imageSize = -1, spp = -1, maxSteps = -1, filterRadius = -1, transparentBackground = -1,
+              adaptiveTolerance = -1, filterInverseCdf = -1;
+    } at_;
     GLuint framebuffer_ = 0, vertexArray_ = 0;
     GLuint targets_[4] = {0, 0, 0, 0};
     int imageWidth_ = 0, imageHeight_ = 0;

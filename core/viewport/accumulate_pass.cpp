@@ -4,11 +4,12 @@
 namespace fraktal::viewport {
 
 void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
-    const GLuint program = c.atRest ? p.accumulateAtRest.id() : p.accumulateMoving.id();
+    const Pass& pass = c.atRest ? p.accumulateAtRest : p.accumulateMoving;
+    const GLuint program = pass.id();
     glUseProgram(program);
-    setViewUniforms(program, c.camera, s.width(), s.height());
-    setInt(program, "u_maxSamples", c.options.maxSamples);
-    setFloat(program, "u_initialOmega", float(std::max(c.shading.overRelaxation, 1.0)));
+    setViewUniforms(pass.uniforms, c.camera, s.width(), s.height());
+    glUniform1i(pass.uniforms.maxSamples, c.options.maxSamples);
+    glUniform1f(pass.uniforms.initialOmega, float(std::max(c.shading.overRelaxation, 1.0)));
     gl::dispatchOver(program, s.width(), s.height());
     imageBarrier();
 }
@@ -23,8 +24,8 @@ void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameC
     }
     const GLuint program = p.resolve.id();
     glUseProgram(program);
-    setViewUniforms(program, c.camera, s.width(), s.height());
-    setFloat(program, "u_radius", float(c.options.motionFilterRadius));
+    setViewUniforms(p.resolve.uniforms, c.camera, s.width(), s.height());
+    glUniform1f(p.resolve.uniforms.radius, float(c.options.motionFilterRadius));
     gl::dispatchOver(program, s.width(), s.height());
     imageBarrier();
 }

@@ -6,9 +6,9 @@ namespace fraktal::viewport {
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
     const GLuint program = p.cone.program.id();
     p.cone.use(c.formula, c.shading);
-    setViewUniforms(program, c.camera, s.width(), s.height());
-    setInt(program, "u_coneTile", c.options.coneTile);
-    setInt(program, "u_coneSteps", c.options.coneSteps);
+    setViewUniforms(p.cone.uniforms, c.camera, s.width(), s.height());
+    glUniform1i(p.cone.uniforms.coneTile, c.options.coneTile);
+    glUniform1i(p.cone.uniforms.coneSteps, c.options.coneSteps);
     const int tile = c.options.coneTile;
     gl::dispatchOver(program, (s.width() + tile - 1) / tile, (s.height() + tile - 1) / tile);
     imageBarrier();

@@ -6,8 +6,8 @@ namespace fraktal::viewport {
 void runDisplayPass(const ViewportPrograms& p, const MarchState& s, float exposure, bool flipY, GLuint vertexArray) {
     const GLuint program = p.display.id();
     glUseProgram(program);
-    setFloat(program, "u_exposure", exposure);
-    setInt(program, "u_flipY", flipY ? 1 : 0);
+    glUniform1f(p.display.uniforms.exposure, exposure);
+    glUniform1i(p.display.uniforms.flipY, flipY ? 1 : 0);
     glBindTextureUnit(0, s.shown);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(vertexArray);

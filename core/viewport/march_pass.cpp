@@ -16,16 +16,16 @@ int stepsBeforeList(const FrameContext& c, FrameAction action) {
 
 // The uniforms every variant of viewport_march.comp reads.
 void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const FrameContext& c, FrameAction action) {
-    const GLuint program = pass.program.id();
+    const PassUniforms& at = pass.uniforms;
     pass.use(c.formula, c.shading);
-    setViewUniforms(program, c.camera, s.width(), s.height());
-    setInt(program, "u_stepsPerFrame", c.options.stepsPerFrame);
-    setInt(program, "u_maxSteps", c.maxSteps);
-    setInt(program, "u_atRest", c.atRest ? 1 : 0);
-    setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);  // keepsCarriedColour
-    setInt(program, "u_coarseHits", c.options.coarseHits ? 1 : 0);
+    setViewUniforms(at, c.camera, s.width(), s.height());
+    glUniform1i(at.stepsPerFrame, c.options.stepsPerFrame);
+    glUniform1i(at.maxSteps, c.maxSteps);
+    glUniform1i(at.atRest, c.atRest ? 1 : 0);
+    glUniform1i(at.maxCarryFrames, c.options.maxCarryFrames);  // keepsCarriedColour
+    glUniform1i(at.coarseHits, c.options.coarseHits ? 1 : 0);
     const int deferAfter = stepsBeforeList(c, action);
-    setInt(program, "u_deferAfter", deferAfter > 0 ? deferAfter : INT_MAX);
+    glUniform1i(at.deferAfter, deferAfter > 0 ? deferAfter : INT_MAX);
 }
 
 }  // namespace
@@ -36,8 +36,8 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     const GLuint program = pass.program.id();
     setMarchUniforms(pass, s, c, action);
     if (newView) {
-        setInt(program, "u_resetAll", action == FrameAction::Reset ? 1 : 0);
-        setInt(program, "u_coneTile", c.options.coneTile);
+        glUniform1i(pass.uniforms.resetAll, action == FrameAction::Reset ? 1 : 0);
+        glUniform1i(pass.uniforms.coneTile, c.options.coneTile);
         glBindImageTexture(12, s.reprojDepth, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
         glBindTextureUnit(1, s.reprojColor);
         glBindTextureUnit(2, s.reprojCarried);

@@ -23,12 +23,11 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& from, const M
     glBindImageTexture(8, s.reprojColor, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(9, s.reprojCarried, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(12, s.reprojDepth, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    for (const gl::Program* pass : {&p.reprojectClaim, &p.reprojectWrite}) {
+    for (const Pass* pass : {&p.reprojectClaim, &p.reprojectWrite}) {
         glUseProgram(pass->id());
-        setViewUniforms(pass->id(), previous, w, h);  // the points' rays
-        glUniform2i(glGetUniformLocation(pass->id(), "u_newSize"), s.width(), s.height());
-        gl::setCameraUniforms(pass->id(), current,
-                              {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"});
+        setViewUniforms(pass->uniforms, previous, w, h);  // the points' rays
+        glUniform2i(pass->uniforms.newSize, s.width(), s.height());
+        gl::setCameraUniforms(pass->uniforms.newCamera, current);
         gl::dispatchOver(pass->id(), w, h);
         imageBarrier();
     }

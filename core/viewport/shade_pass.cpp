@@ -7,9 +7,9 @@ namespace fraktal::viewport {
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
     const GLuint program = p.shade.program.id();
     p.shade.use(c.formula, c.shading);
-    setViewUniforms(program, c.camera, s.width(), s.height());
-    setInt(program, "u_atRest", c.atRest ? 1 : 0);
-    setInt(program, "u_maxCarryFrames", c.options.maxCarryFrames);
+    setViewUniforms(p.shade.uniforms, c.camera, s.width(), s.height());
+    glUniform1i(p.shade.uniforms.atRest, c.atRest ? 1 : 0);
+    glUniform1i(p.shade.uniforms.maxCarryFrames, c.options.maxCarryFrames);
     dispatchOverList(p, program, s.shadeList);
 }
 

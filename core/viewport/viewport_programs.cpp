@@ -18,21 +18,55 @@ std::string concat(std::initializer_list<const char*> names) {
 }
 
 // A compute pass without the formula, from viewport_common.glsl and its own file.
-gl::Program compileViewportPass(const char* name, const char* defines = "") {
+gl::Program compileViewportProgram(const char* name, const char* defines = "") {
     const GeneratedFormula none;
     return gl::compileCompute(assembleShader(none, name, concat({"viewport_common.glsl", name}), defines));
+}
+
+Pass withUniforms(gl::Program program) {
+    Pass p{std::move(program), {}};
+    p.uniforms = PassUniforms(p.program.id());
+    return p;
+}
+
+Pass compileViewportPass(const char* name, const char* defines = "") {
+    return withUniforms(compileViewportProgram(name, defines));
 }
 
 FormulaProgram compileFormulaPass(const Formula& f, const GeneratedFormula& g, const char* name, const char* defines,
                                   std::initializer_list<const char*> sources) {
     FormulaProgram p;
     p.program = gl::compileCompute(assembleShader(g, name, concat(sources), defines));
+    p.uniforms = PassUniforms(p.program.id());
     p.formula = gl::FormulaUniforms(p.program.id(), f);
     p.shading = gl::ShadingUniforms(p.program.id());
     return p;
 }
 
 }  // namespace
+
+PassUniforms::PassUniforms(GLuint program)
+    : camera(program),
+      newCamera(program, {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"}) {
+    const auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
+    size = at("u_size");
+    pixelAngle = at("u_pixelAngle");
+    newSize = at("u_newSize");
+    stepsPerFrame = at("u_stepsPerFrame");
+    maxSteps = at("u_maxSteps");
+    atRest = at("u_atRest");
+    maxCarryFrames = at("u_maxCarryFrames");
+    coarseHits = at("u_coarseHits");
+    deferAfter = at("u_deferAfter");
+    resetAll = at("u_resetAll");
+    coneTile = at("u_coneTile");
+    coneSteps = at("u_coneSteps");
+    maxSamples = at("u_maxSamples");
+    initialOmega = at("u_initialOmega");
+    radius = at("u_radius");
+    exposure = at("u_exposure");
+    flipY = at("u_flipY");
+}
 
 void FormulaProgram::use(const Formula& f, const ShadingParams& params) const {
     glUseProgram(program.id());
@@ -56,23 +90,19 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
     accumulateAtRest = compileViewportPass("viewport_accumulate.comp", "#define AT_REST 1");
     accumulateMoving = compileViewportPass("viewport_accumulate.comp", "#define AT_REST 0");
     resolve = compileViewportPass("viewport_resolve.comp");
-    listGroups = compileViewportPass("viewport_list_groups.comp");
+    listGroups = compileViewportProgram("viewport_list_groups.comp");
     reprojectClaim = compileViewportPass("viewport_reproject.comp", "#define CLAIM 1");
     reprojectWrite = compileViewportPass("viewport_reproject.comp", "#define CLAIM 0");
     const GeneratedFormula none;
-    display = gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
-                                  assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"})));
+    display = withUniforms(
+        gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
+                            assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"}))));
 }
 
-void setInt(GLuint program, const char* name, int value) { glUniform1i(glGetUniformLocation(program, name), value); }
-void setFloat(GLuint program, const char* name, float value) {
-    glUniform1f(glGetUniformLocation(program, name), value);
-}
-
-void setViewUniforms(GLuint program, const Camera& camera, int width, int height) {
-    gl::setCameraUniforms(program, camera);
-    glUniform2i(glGetUniformLocation(program, "u_size"), width, height);
-    setFloat(program, "u_pixelAngle", float(camera.pixelAngle(height)));
+void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, int height) {
+    gl::setCameraUniforms(at.camera, camera);
+    glUniform2i(at.size, width, height);
+    glUniform1f(at.pixelAngle, float(camera.pixelAngle(height)));
 }
 
 }  // namespace fraktal::viewport

@@ -14,9 +14,33 @@
 
 namespace fraktal::viewport {
 
+// The locations of the uniforms the viewport passes set, looked up once when a program is built,
+// so that a frame sets values without looking up names. A pass's program has the ones its
+// shaders use; the others are -1, which GL ignores.
+struct PassUniforms {
+    gl::CameraLocations camera;
+    gl::CameraLocations newCamera;  // the reprojection's current camera (the points' is `camera`)
+    GLint size = -1, pixelAngle = -1, newSize = -1;
+    GLint stepsPerFrame = -1, maxSteps = -1, atRest = -1, maxCarryFrames = -1, coarseHits = -1, deferAfter = -1,
+          resetAll = -1;
+    GLint coneTile = -1, coneSteps = -1;
+    GLint maxSamples = -1, initialOmega = -1, radius = -1;
+    GLint exposure = -1, flipY = -1;
+    PassUniforms() = default;
+    explicit PassUniforms(GLuint program);
+};
+
+// A program with its uniforms' locations.
+struct Pass {
+    gl::Program program;
+    PassUniforms uniforms;
+    GLuint id() const { return program.id(); }
+};
+
 // A program that evaluates the formula, with its uniform uploaders.
 struct FormulaProgram {
     gl::Program program;
+    PassUniforms uniforms;
     gl::FormulaUniforms formula;
     gl::ShadingUniforms shading;
     // Binds the program and uploads the formula's values and the shading parameters.
@@ -30,16 +54,14 @@ struct ViewportPrograms {
     // marchFromList marches on the rays either left on the march list.
     FormulaProgram march, marchFromStart, marchFromList, shade, cone;
     // accumulateAtRest raises the AA level; accumulateMoving finds the samples' positions instead.
-    gl::Program accumulateAtRest, accumulateMoving, resolve, display;
+    Pass accumulateAtRest, accumulateMoving, resolve, display;
     // Sets the shade and march lists' group counts from their entry counts (dispatchOverList).
     gl::Program listGroups;
     // The reprojection scatter's two passes (shaders/viewport_reproject.comp): claim, then write.
-    gl::Program reprojectClaim, reprojectWrite;
+    Pass reprojectClaim, reprojectWrite;
 };
 
-// Sets viewport_common.glsl's camera uniforms on the bound program.
-void setViewUniforms(GLuint program, const Camera& camera, int width, int height);
-void setInt(GLuint program, const char* name, int value);
-void setFloat(GLuint program, const char* name, float value);
+// Sets viewport_common.glsl's camera uniforms on the bound program whose locations `at` holds.
+void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, int height);
 
 }  // namespace fraktal::viewport
