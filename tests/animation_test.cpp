@@ -305,3 +305,34 @@ TEST(Animation, StillPresetsHaveNoAnimationSection) {
         EXPECT_EQ(presetToJson(p).contains("animation"), !p.animation.empty()) << path;
     }
 }
+
+// The editor keys the closing estimator's parameters as "formula.estimator.params.NAME": such a
+// preset loads, saves back unchanged, and its frames set the estimator (the last node of the file),
+// also after a node is added in front of it. An unknown estimator parameter is still refused.
+TEST(Animation, EstimatorParameterTracksLoadAndApply) {
+    const char* const keyed = R"({
+  "format": "fraktal-preset", "version": 3,
+  "formula": {"iterations": 1, "bailout": 100, "boundRadius": 1.8,
+              "nodes": [{"block": "quaternion_julia"}]},
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+  "animation": {"lastFrame": 10, "tracks": [
+    {"target": "formula.estimator.params.slice", "keys": [{"frame": 0, "value": -0.5}, {"frame": 10, "value": 0.5}]}
+  ]}
+})";
+    Preset p = parsePreset(keyed, "estimator.json");
+    const size_t slice = size_t(p.formula.estimator.block->paramIndex("slice"));
+    EXPECT_EQ(serializePreset(parsePreset(serializePreset(p), "saved")), serializePreset(p));
+    EXPECT_DOUBLE_EQ(presetAtFrame(p, 0).formula.estimator.values[slice].x, -0.5);
+    EXPECT_DOUBLE_EQ(presetAtFrame(p, 5).formula.estimator.values[slice].x, 0.0);
+    p.formula.nodes.insert(p.formula.nodes.begin(), Node::make(*findBlock("rotate")));
+    EXPECT_DOUBLE_EQ(presetAtFrame(p, 10).formula.estimator.values[slice].x, 0.5);
+
+    std::string unknown = keyed;
+    unknown.replace(unknown.find("params.slice"), 12, "params.nope");
+    try {
+        parsePreset(unknown, "estimator.json");
+        ADD_FAILURE() << "an unknown estimator parameter was accepted";
+    } catch (const PresetError& e) {
+        EXPECT_EQ(e.field(), "animation.tracks[0].target") << e.what();
+    }
+}

@@ -124,9 +124,24 @@ const Track* findTrack(const Animation& a, const std::string& target) {
 
 bool isCameraTarget(const std::string& target) { return target.rfind("camera.", 0) == 0; }
 
+// The JSON pointer of `target` in a preset document. "formula.estimator.params.NAME" (what the
+// editor keys for the closing estimator, so that adding or removing a node keeps the track on it)
+// is the last of the document's nodes, where a file lists the estimator.
+json::json_pointer targetPointer(const json& document, const std::string& target) {
+    const std::string estimator = "formula.estimator.params.";
+    if (target.rfind(estimator, 0) == 0) {
+        const json::json_pointer nodes("/formula/nodes");
+        const size_t count = document.contains(nodes) && document.at(nodes).is_array() ? document.at(nodes).size() : 0;
+        if (count > 0)
+            return json::json_pointer(pointerFromPath("formula.nodes[" + std::to_string(count - 1) + "].params." +
+                                                      target.substr(estimator.size())));
+    }
+    return json::json_pointer(pointerFromPath(target));
+}
+
 // Writes `value` at `target` (a field path) into a preset document.
 void setField(json& document, const std::string& target, const std::vector<double>& value) {
-    json& field = document[json::json_pointer(pointerFromPath(target))];
+    json& field = document[targetPointer(document, target)];
     if (value.size() == 1)
         field = value[0];
     else
@@ -312,7 +327,7 @@ Animation parseAnimation(const ReadContext& context, const json& j, const Preset
             if (!orientation) {
                 json probe = stillJson;
                 try {
-                    const json::json_pointer pointer(pointerFromPath(track.target));
+                    const json::json_pointer pointer = targetPointer(probe, track.target);
                     const json::json_pointer parent = pointer.parent_pointer();
                     // A section or a block's "params" left out for being at its defaults is no missing field.
                     const bool omittedSection = !parent.empty() && parent.parent_pointer().empty();
