@@ -16,6 +16,7 @@
 #include "app/editor/formula_edits.hpp"
 #include "app/editor/preset_files.hpp"
 #include "app/editor/undo_history.hpp"
+#include "core/anim/animation.hpp"
 
 namespace fraktal::editor {
 namespace {
@@ -318,6 +319,51 @@ TEST(EditorFiles, UnsavedMarkFollowsEditsAndSaves) {
     EXPECT_TRUE(s.status.error);
     EXPECT_NE(s.status.text.find("missing.json"), std::string::npos);
     fs::remove_all(dir);
+}
+
+
+// Node-list edits keep the animation's parameter tracks on the nodes they key: inserting,
+// duplicating and moving renumber them, removing a node or replacing the estimator drops its
+// tracks, and the edited document still loads (every remaining track names a parameter it has).
+TEST(FormulaEditsWithTracks, TracksFollowTheirNodes) {
+    Preset p = parsePreset(R"({
+  "format": "fraktal-preset", "version": 3,
+  "formula": {"nodes": [{"block": "mandelbulb"}, {"block": "add_c"}, {"block": "quaternion_julia"}]},
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+  "animation": {"lastFrame": 10, "tracks": [
+    {"target": "formula.nodes[0].params.power", "keys": [{"frame": 0, "value": 4}, {"frame": 10, "value": 8}]},
+    {"target": "formula.nodes[1].params.weight", "keys": [{"frame": 0, "value": 0.5}, {"frame": 10, "value": 1}]},
+    {"target": "formula.nodes[2].params.slice", "keys": [{"frame": 0, "value": 0}, {"frame": 10, "value": 0.5}]}
+  ]}
+})",
+                           "tracks.json");
+    ASSERT_EQ(p.animation.tracks.size(), 3u);
+    const auto targets = [&] {
+        std::vector<std::string> t;
+        for (const Track& track : p.animation.tracks) t.push_back(track.target);
+        return t;
+    };
+    const auto reloads = [&] { EXPECT_NO_THROW(parsePreset(serializePreset(p), "edited")); };
+
+    ASSERT_TRUE(addNode(p, *findBlock("rotate"), 0));
+    EXPECT_EQ(targets(), (std::vector<std::string>{"formula.nodes[1].params.power", "formula.nodes[2].params.weight",
+                                                   "formula.nodes[3].params.slice"}));
+    reloads();
+    ASSERT_TRUE(moveNode(p, 0, 2));  // rotate after add_c: mandelbulb 0, add_c 1, rotate 2
+    EXPECT_EQ(targets(), (std::vector<std::string>{"formula.nodes[0].params.power", "formula.nodes[1].params.weight",
+                                                   "formula.nodes[3].params.slice"}));
+    reloads();
+    ASSERT_TRUE(duplicateNode(p, 0));  // the copy has no tracks
+    EXPECT_EQ(targets(), (std::vector<std::string>{"formula.nodes[0].params.power", "formula.nodes[2].params.weight",
+                                                   "formula.nodes[4].params.slice"}));
+    reloads();
+    ASSERT_TRUE(removeNode(p, 0));
+    EXPECT_EQ(targets(), (std::vector<std::string>{"formula.nodes[1].params.weight", "formula.nodes[3].params.slice"}));
+    EXPECT_DOUBLE_EQ(presetAtFrame(p, 10).formula.nodes[1].values[0].x, 1.0);  // add_c's weight, still keyed
+    reloads();
+    ASSERT_TRUE(setEstimator(p, *findBlock("escape_linear")));
+    EXPECT_EQ(targets(), (std::vector<std::string>{"formula.nodes[1].params.weight"}));
+    reloads();
 }
 
 }  // namespace

@@ -174,11 +174,11 @@ void drawCustomBlockEditor(EditorState& s, const std::string& compileError) {
         if (e.error.empty() && isNew) {
             const CustomBlock* b = findCustomBlock(f, d.id);
             if (b->desc().isEstimator()) {
-                setEstimator(f, b->desc());
+                setEstimator(s.doc.preset, b->desc());
                 s.selectedNode = int(f.nodes.size());
             } else {
                 const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
-                if (addNode(f, b->desc(), at)) s.selectedNode = at;
+                if (addNode(s.doc.preset, b->desc(), at)) s.selectedNode = at;
             }
         }
     }

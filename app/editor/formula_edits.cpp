@@ -4,6 +4,7 @@
 #include <chrono>
 #include <regex>
 
+#include "core/anim/animation.hpp"
 #include "core/safe_step.hpp"
 
 namespace fraktal::editor {
@@ -120,6 +121,59 @@ bool setNodeEnabled(Formula& f, int index, bool enabled) {
 bool setEstimator(Formula& f, const BlockDesc& estimator) {
     if (!estimator.isEstimator()) return false;
     f.estimator = Node::make(estimator);
+    return true;
+}
+
+namespace {
+
+// Old node i is at newIndexOf(i) after the edit (-1: removed).
+template <typename Where>
+void followNodes(Preset& p, size_t oldCount, Where newIndexOf) {
+    std::vector<int> to(oldCount);
+    for (size_t i = 0; i < oldCount; ++i) to[i] = newIndexOf(int(i));
+    remapNodeTracks(p.animation, to, p.formula.nodes.size());
+}
+
+}  // namespace
+
+bool addNode(Preset& p, const BlockDesc& block, int insertAt) {
+    if (block.isEstimator()) return setEstimator(p, block);
+    const size_t count = p.formula.nodes.size();
+    if (insertAt < 0 || insertAt > int(count)) insertAt = int(count);
+    if (!addNode(p.formula, block, insertAt)) return false;
+    followNodes(p, count, [&](int i) { return i < insertAt ? i : i + 1; });
+    return true;
+}
+
+bool removeNode(Preset& p, int index) {
+    const size_t count = p.formula.nodes.size();
+    if (!removeNode(p.formula, index)) return false;
+    followNodes(p, count, [&](int i) { return i == index ? -1 : i < index ? i : i - 1; });
+    return true;
+}
+
+bool duplicateNode(Preset& p, int index) {
+    const size_t count = p.formula.nodes.size();
+    if (!duplicateNode(p.formula, index)) return false;
+    followNodes(p, count, [&](int i) { return i <= index ? i : i + 1; });
+    return true;
+}
+
+bool moveNode(Preset& p, int from, int to) {
+    const size_t count = p.formula.nodes.size();
+    if (!moveNode(p.formula, from, to)) return false;
+    followNodes(p, count, [&](int i) {
+        if (i == from) return to;
+        if (from < to && i > from && i <= to) return i - 1;
+        if (to < from && i >= to && i < from) return i + 1;
+        return i;
+    });
+    return true;
+}
+
+bool setEstimator(Preset& p, const BlockDesc& estimator) {
+    if (!setEstimator(p.formula, estimator)) return false;
+    dropEstimatorTracks(p.animation, p.formula.nodes.size());
     return true;
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/preset.hpp"
 
 namespace fraktal::editor {
 
@@ -23,6 +24,13 @@ bool duplicateNode(Formula& f, int index);    // the copy goes right after the o
 bool moveNode(Formula& f, int from, int to);  // `to` is the index the node ends at
 bool setNodeEnabled(Formula& f, int index, bool enabled);
 bool setEstimator(Formula& f, const BlockDesc& estimator);  // keeps nothing of the old one
+// The same edits on a document's formula, keeping its animation's parameter tracks on the nodes
+// they key (a removed or replaced node's tracks go with it).
+bool addNode(Preset& p, const BlockDesc& block, int insertAt = -1);
+bool removeNode(Preset& p, int index);
+bool duplicateNode(Preset& p, int index);
+bool moveNode(Preset& p, int from, int to);
+bool setEstimator(Preset& p, const BlockDesc& estimator);
 // Sets parameter `param` of node `index` (nodes.size() means the estimator), clamped to the
 // declared range.
 bool setParam(Formula& f, int index, int param, const ParamValue& value);

@@ -6,6 +6,7 @@
 
 #include "app/editor/camera_controller.hpp"
 #include "app/editor/formula_edits.hpp"
+#include "core/anim/animation.hpp"
 
 namespace fraktal::editor {
 
@@ -137,6 +138,13 @@ bool fitFormulaAfterEdit(Formula& f, Camera& camera) {
     const Camera framed = framedCamera(f, de, camera);
     const double away = length(camera.position - framed.target), fits = length(framed.position - framed.target);
     if (!(de(camera.position) > 0.01 * f.boundRadius) || away > kSmallInView * fits) camera = framed;
+    return changed;
+}
+
+bool fitFormulaAfterEdit(Preset& p) {
+    const BlockDesc* estimator = p.formula.estimator.block;
+    const bool changed = fitFormulaAfterEdit(p.formula, p.camera);
+    if (p.formula.estimator.block != estimator) dropEstimatorTracks(p.animation, p.formula.nodes.size());
     return changed;
 }
 

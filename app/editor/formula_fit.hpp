@@ -5,6 +5,7 @@
 #include "app/editor/fly_speed.hpp"
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/preset.hpp"
 
 namespace fraktal::editor {
 
@@ -36,5 +37,7 @@ Camera framedCamera(const Formula& f, const DistanceAt& de, const Camera& curren
 // inside the surface, closer to it than 1% of the bound, or so far away that the object is small
 // in view (more than 2 times the framed distance). Returns whether the formula changed.
 bool fitFormulaAfterEdit(Formula& f, Camera& camera);
+// The same on a document: when the fit replaces the estimator, its parameter tracks go with it.
+bool fitFormulaAfterEdit(Preset& p);
 
 }  // namespace fraktal::editor

@@ -28,9 +28,9 @@ void addBlockMenu(EditorState& s) {
         for (const BlockDesc* b : customBlocksIn(f, c)) blocks.push_back(b);  // the formula's GLSL blocks
         if (const BlockDesc* b = blockMenuItems(blocks)) {
             const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
-            if (addNode(f, *b, at)) {
+            if (addNode(s.doc.preset, *b, at)) {
                 s.selectedNode = at;
-                fitFormulaAfterEdit(f, s.doc.preset.camera);
+                fitFormulaAfterEdit(s.doc.preset);
             }
         }
         ImGui::EndMenu();
@@ -40,7 +40,7 @@ void addBlockMenu(EditorState& s) {
         std::vector<const BlockDesc*> estimators = blocksIn(Category::Estimator);
         for (const BlockDesc* b : customBlocksIn(f, Category::Estimator)) estimators.push_back(b);
         if (const BlockDesc* b = blockMenuItems(estimators, f.estimator.block)) {
-            setEstimator(f, *b);
+            setEstimator(s.doc.preset, *b);
             s.selectedNode = int(f.nodes.size());
         }
         ImGui::EndMenu();
@@ -131,11 +131,11 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     ImGui::EndDisabled();
 
     // Apply list edits after drawing the list, so no row is drawn from a moved vector.
-    if (req.moveFrom >= 0 && moveNode(f, req.moveFrom, req.moveTo)) s.selectedNode = req.moveTo;
-    if (req.duplicate >= 0 && duplicateNode(f, req.duplicate)) s.selectedNode = req.duplicate + 1;
-    if (req.remove >= 0 && removeNode(f, req.remove)) {
+    if (req.moveFrom >= 0 && moveNode(s.doc.preset, req.moveFrom, req.moveTo)) s.selectedNode = req.moveTo;
+    if (req.duplicate >= 0 && duplicateNode(s.doc.preset, req.duplicate)) s.selectedNode = req.duplicate + 1;
+    if (req.remove >= 0 && removeNode(s.doc.preset, req.remove)) {
         s.selectedNode = std::max(0, std::min(req.remove, int(f.nodes.size()) - 1));
-        fitFormulaAfterEdit(f, s.doc.preset.camera);
+        fitFormulaAfterEdit(s.doc.preset);
     }
     s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
 

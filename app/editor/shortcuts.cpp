@@ -87,10 +87,10 @@ void handleShortcuts(EditorState& s) {
         }
     }
     if (!io.WantCaptureKeyboard || !ImGui::IsAnyItemActive()) {
-        if (pressed(GLFW_KEY_D, true) && duplicateNode(f, s.selectedNode)) ++s.selectedNode;
-        if (pressed(GLFW_KEY_DELETE) && removeNode(f, s.selectedNode)) {
+        if (pressed(GLFW_KEY_D, true) && duplicateNode(s.doc.preset, s.selectedNode)) ++s.selectedNode;
+        if (pressed(GLFW_KEY_DELETE) && removeNode(s.doc.preset, s.selectedNode)) {
             s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
-            fitFormulaAfterEdit(f, s.doc.preset.camera);
+            fitFormulaAfterEdit(s.doc.preset);
         }
     }
 }

@@ -217,6 +217,42 @@ KeyedParam keyedParam(const Formula& f, const std::string& target) {
     return k;
 }
 
+namespace {
+
+// The node index of "formula.nodes[N].params.NAME" and where its parameter name starts; npos when
+// the target is not one.
+std::pair<size_t, size_t> nodeIndexOf(const std::string& target) {
+    const std::string nodes = "formula.nodes[", params = "].params.";
+    if (target.rfind(nodes, 0) != 0) return {std::string::npos, 0};
+    const size_t close = target.find(params);
+    const std::string index = close == std::string::npos ? "" : target.substr(nodes.size(), close - nodes.size());
+    if (index.empty() || index.size() > 8 || index.find_first_not_of("0123456789") != std::string::npos)
+        return {std::string::npos, 0};
+    return {std::stoul(index), close + params.size()};
+}
+
+}  // namespace
+
+void remapNodeTracks(Animation& animation, const std::vector<int>& newIndexOf, size_t newCount) {
+    std::vector<Track> kept;
+    for (Track& t : animation.tracks) {
+        const auto [index, name] = nodeIndexOf(t.target);
+        if (index != std::string::npos && index <= newIndexOf.size()) {
+            const int to = index == newIndexOf.size() ? int(newCount) : newIndexOf[index];
+            if (to < 0) continue;
+            t.target = "formula.nodes[" + std::to_string(to) + "].params." + t.target.substr(name);
+        }
+        kept.push_back(std::move(t));
+    }
+    animation.tracks = std::move(kept);
+}
+
+void dropEstimatorTracks(Animation& animation, size_t nodeCount) {
+    std::erase_if(animation.tracks, [&](const Track& t) {
+        return t.target.rfind("formula.estimator.params.", 0) == 0 || nodeIndexOf(t.target).first == nodeCount;
+    });
+}
+
 bool stepsAtKeys(const Preset& preset, const std::string& target) {
     const ParamDecl* d = keyedParam(preset.formula, target).decl;
     return d && d->type == ParamType::Toggle;

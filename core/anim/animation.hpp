@@ -97,4 +97,12 @@ nlohmann::json animationJson(const Animation& animation);
 // The still preset at `frame` (no animation section): the tracks applied to `animated`.
 Preset presetAtFrame(const Preset& animated, double frame);
 
+// Keeps block-parameter tracks on their nodes when the node list changes: old node i is now node
+// newIndexOf[i], or gone (-1, and its tracks with it); newCount is the new number of nodes. A
+// target that names the closing estimator by index (one past the last node, as a file lists it)
+// follows the count; "formula.estimator.params.NAME" needs nothing. Other targets are untouched.
+void remapNodeTracks(Animation& animation, const std::vector<int>& newIndexOf, size_t newCount);
+// Drops the tracks of the closing estimator's parameters (when the estimator is replaced).
+void dropEstimatorTracks(Animation& animation, size_t nodeCount);
+
 }  // namespace fraktal
