@@ -17,6 +17,7 @@ cd "$root"
 benchmarks=(
   "viewport|bench/viewport/run.sh $build"
   "stills|JSON=$out/stills.native.json bench/stills/run.sh $build 1280x720 1 4"
+  "equal_quality|bench/stills/equal_quality.sh $build 640x360"
   "de_count|bench/stills/de_count_all.sh $build 320x180 1"
   "exr_write|bench/stills/exr_write.sh $build 8192x8192"
   "plane|bench/plane/run.sh $build 2"

@@ -30,6 +30,7 @@ int runPlaneRender(const PlaneRenderRequest& q, PlanePreset preset) {
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     validatePlaneStillJob(job, color);  // before the GL start-up: bad input fails fast
     if (q.threads > 0) ::setenv("LP_NUM_THREADS", std::to_string(q.threads).c_str(), 1);
+    job.cancel = &cancelOnSignal();  // before the driver starts, as render does
     auto context = gl::HeadlessContext::create();
     if (!q.quiet) {
         std::fprintf(stderr, "rendering %s (2D): %dx%d, %d spp, %s\n", q.input.c_str(), r.width, r.height, r.spp,
@@ -39,7 +40,6 @@ int runPlaneRender(const PlaneRenderRequest& q, PlanePreset preset) {
             std::fprintf(stderr, "progress: %d/%d tiles (%d%%)\n", done, total, 100 * done / std::max(1, total));
         };
     }
-    job.cancel = &cancelOnSignal();
     try {
         for (const std::string& w : renderPlaneStill(job, color))
             std::fprintf(stderr, "fraktal: warning: %s\n", w.c_str());

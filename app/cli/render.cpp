@@ -197,8 +197,10 @@ int runRender(RenderOptions o) {
 
     // llvmpipe reads its thread count when the context is made.
     if (o.threads > 0) ::setenv("LP_NUM_THREADS", std::to_string(o.threads).c_str(), 1);
-    auto context = gl::HeadlessContext::create();
+    // Before the context: a Ctrl+C while the driver starts (seconds on a loaded machine) is then a
+    // request the render sees at its first check, not the default action's abrupt end.
     job.cancel = &cancelOnSignal();
+    auto context = gl::HeadlessContext::create();
     if (sequence) {
         sequence->cancel = job.cancel;
         if (!o.quiet)
