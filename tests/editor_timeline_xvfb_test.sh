@@ -179,4 +179,31 @@ wait_frames 3
 echo "track rows: scrolled to $(q .timeline.firstRow) of 8 tracks in 6 rows"
 stop
 
+# A node deleted in front of a keyed one: a Rotate before the Mandelbulb whose power is keyed
+# (node 1). Delete over the viewport removes the selected Rotate, the power track follows the
+# Mandelbulb to node 0, and the saved file opens again with it. (A track left on index 1 would key
+# Add c, which has no power, and the file would not load.)
+shifted="$home/shifted.json"
+jq '.formula.nodes = [{"block": "rotate"}] + .formula.nodes |
+    (.animation.tracks[] | select(.target == "formula.nodes[0].params.power") | .target) = "formula.nodes[1].params.power"' \
+  "$presets/mandelbulb_power_morph.json" > "$shifted"
+start "$shifted"
+[ "$(q '.document.formula.nodes[0].block')" = rotate ] && [ "$(q .selectedNode)" = 0 ] ||
+    fail "the editor did not open the Rotate-first file with node 0 selected ($(q .selectedNode))"
+set -- $(viewport_centre)
+to "$1" "$2"
+xdotool key Delete
+wait_for '.document.formula.nodes[0].block == "mandelbulb"'
+targets() { q '[.document.animation.tracks[].target] | sort | join(",")'; }
+[ "$(q '.document.formula.nodes[0].block')" = mandelbulb ] || fail "Delete over the viewport did not remove the Rotate"
+[ "$(targets)" = "camera.position,$power_target" ] || fail "after the delete the tracks key $(targets)"
+xdotool key ctrl+s
+wait_frames 3
+stop
+start "$shifted"
+[ "$(q '.document.formula.nodes[0].block')" = mandelbulb ] && [ "$(targets)" = "camera.position,$power_target" ] ||
+    fail "the saved file reopened with nodes $(q '[.document.formula.nodes[].block] | join(",")') and tracks $(targets)"
+echo "node delete: the power track followed the Mandelbulb to node 0 and the saved file reopens ($(targets))"
+stop
+
 [ $failures -eq 0 ] && echo "editor_timeline_xvfb_test: all OK" || { echo "editor_timeline_xvfb_test: $failures failure(s)"; exit 1; }
