@@ -81,7 +81,9 @@ TEST_P(GoldenTest, GlMatchesCpuReference) {
     // camera inside the bound (the Kleinian scenes, seen from within their endless structure)
     // may see the object in every pixel.
     EXPECT_GT(cpu.coverage, 0.05);
-    if (length(preset.camera.position) > preset.formula.boundRadius) EXPECT_LT(cpu.coverage, 0.98);
+    if (length(preset.camera.position) > preset.formula.boundRadius) {
+        EXPECT_LT(cpu.coverage, 0.98);
+    }
     EXPECT_NEAR(gpu.coverage, cpu.coverage, 0.03);
     EXPECT_GT(standardDeviation(gpu.rgb), 0.05);
 }
