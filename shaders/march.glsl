@@ -26,6 +26,7 @@ struct MarchState {
     float omega;  // current relaxation factor; drops to 1 at the first failure
     int status;
     int steps;    // DE evaluations made by this ray's marcher
+    float closest;  // the smallest d / t of the points passed (not the hit): half-angle of an empty cone
 };
 
 // Hit refinement. The march stops at the first point with d < threshold, anywhere in the hit band
@@ -49,7 +50,9 @@ void refineHit(vec3 ro, vec3 rd, float pixelAngle, float d, inout MarchState s, 
     }
 }
 
-MarchState marchStart(float tStart) { return MarchState(tStart, 0.0, max(u_overRelaxation, 1.0), MARCH_MARCHING, 0); }
+MarchState marchStart(float tStart) {
+    return MarchState(tStart, 0.0, max(u_overRelaxation, 1.0), MARCH_MARCHING, 0, 1e30);
+}
 
 // The marcher without the hit refinement; a hit leaves the DE at the hit point in lastD, so that
 // the refinement can follow later (the viewport skips it for a pixel that keeps a carried colour:
@@ -78,6 +81,7 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
             break;
         }
         s.lastD = abs(d);
+        s.closest = min(s.closest, s.lastD / max(s.t, 1e-20));
         s.t += s.omega * d;
     }
 }

@@ -99,20 +99,13 @@ void main() {
         MarchState s = marchStart(0.0);
         if (clipToBound(ro, rd, tStart, tEnd)) {
             s = marchStart(tStart);
-            // marchRay, a step at a time, keeping the smallest d / t of the points the ray passed.
-            float closest = 1e30;
-            for (int i = 0; i < u_maxSteps && s.status == MARCH_MARCHING; ++i) {
-                float t = s.t;
-                marchSteps(ro, rd, tEnd, pixelAngle, 1, s, deEvals);
-                if (s.status != MARCH_HIT) closest = min(closest, s.lastD / max(t, 1e-20));
-            }
-            if (s.status == MARCH_HIT) refineHit(ro, rd, pixelAngle, s.lastD, s, deEvals);
+            marchRay(ro, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
             // Out of steps: a ray crawling along a grazing surface is a hit.
             hit = s.status == MARCH_HIT ||
                   (s.status == MARCH_MARCHING && s.lastD < 10.0 * pixelAngle * s.t * u_detail);
             steps += float(s.steps);
             // The pixel's samples lie within 2 u_filterRadius pixels of each other.
-            nearEdge = nearEdge || (!hit && closest < 2.0 * u_filterRadius * pixelAngle);
+            nearEdge = nearEdge || (!hit && s.closest < 2.0 * u_filterRadius * pixelAngle);
         }
         vec3 sampleColor = vec3(0.0);
         if (hit) {

@@ -80,7 +80,7 @@ void main() {
 #endif
     int sampleIndex = info.z;
     vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(sampleIndex));
-    MarchState s = MarchState(state.x, state.y, state.z, MARCH_MARCHING, info.y);
+    MarchState s = MarchState(state.x, state.y, state.z, MARCH_MARCHING, info.y, 1e30);
     float covered = state.w;
     float deEvals = 0.0;
     bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
@@ -128,7 +128,7 @@ void main() {
                 // threshold of a surface may lie behind a thin shell, so the ray restarts.
                 verifying = false;
                 if (s.status == MARCH_HIT) {
-                    s = MarchState(start.restartAt, 0.0, initialOmega, MARCH_MARCHING, 0);
+                    s = MarchState(start.restartAt, 0.0, initialOmega, MARCH_MARCHING, 0, 1e30);
                     budget = i + 1 + min(u_stepsPerFrame, u_maxSteps);
                 } else {
                     covered = t0;  // reprojection vouches for the cone up to the start

@@ -53,6 +53,7 @@ void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd,
             break;
         }
         s.lastD = std::abs(d);
+        s.closest = std::min(s.closest, s.lastD / std::max(s.t, 1e-20));
         s.t += s.omega * d;
     }
 }

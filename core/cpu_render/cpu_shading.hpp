@@ -13,6 +13,7 @@ struct MarchState {
     double t = 0.0, lastD = 0.0, omega = 1.0;
     MarchStatus status = MarchStatus::Marching;
     int steps = 0;
+    double closest = 1e30;  // the smallest d / t of the points passed (not the hit), as in shaders/march.glsl
 };
 
 struct SurfaceSample {
