@@ -55,11 +55,6 @@ nlohmann::json timelineJson(const TimelineState& t) {
     return j;
 }
 
-std::string paramTarget(int node, const std::string& param) {
-    return "formula.nodes[" + std::to_string(node) + "].params." + param;
-}
-std::string estimatorParamTarget(const std::string& param) { return "formula.estimator.params." + param; }
-
 const Track* findTrack(const Animation& a, const std::string& target) {
     for (const Track& t : a.tracks)
         if (t.target == target) return &t;

@@ -56,10 +56,6 @@ int shownLastFrame(const Animation& a);
 // The timeline's state and controls' positions for the editor's state file.
 nlohmann::json timelineJson(const TimelineState& t);
 
-// Field paths of keyable values, as core/anim names them.
-std::string paramTarget(int node, const std::string& param);  // "formula.nodes[0].params.power"
-std::string estimatorParamTarget(const std::string& param);   // "formula.estimator.params.X"
-
 const Track* findTrack(const Animation& a, const std::string& target);
 // The key of `track` at `frame` (keys sit on whole frames in the editor), or nullptr.
 const Key* keyAt(const Track& track, double frame);

@@ -128,13 +128,10 @@ bool isCameraTarget(const std::string& target) { return target.rfind("camera.", 
 // editor keys for the closing estimator, so that adding or removing a node keeps the track on it)
 // is the last of the document's nodes, where a file lists the estimator.
 json::json_pointer targetPointer(const json& document, const std::string& target) {
-    const std::string estimator = "formula.estimator.params.";
-    if (target.rfind(estimator, 0) == 0) {
+    if (const auto p = parseParamTarget(target); p && p->estimator) {
         const json::json_pointer nodes("/formula/nodes");
         const size_t count = document.contains(nodes) && document.at(nodes).is_array() ? document.at(nodes).size() : 0;
-        if (count > 0)
-            return json::json_pointer(pointerFromPath("formula.nodes[" + std::to_string(count - 1) + "].params." +
-                                                      target.substr(estimator.size())));
+        if (count > 0) return json::json_pointer(pointerFromPath(paramTarget(count - 1, p->name)));
     }
     return json::json_pointer(pointerFromPath(target));
 }
@@ -194,53 +191,43 @@ std::vector<double> evaluateTrack(const Track& track, double frame) {
     return evaluateWith(track, track.interpolation, frame);
 }
 
+std::string paramTarget(size_t node, const std::string& param) {
+    return "formula.nodes[" + std::to_string(node) + "].params." + param;
+}
+
+std::string estimatorParamTarget(const std::string& param) { return "formula.estimator.params." + param; }
+
+std::optional<ParamTarget> parseParamTarget(const std::string& target) {
+    const std::string nodes = "formula.nodes[", estimator = estimatorParamTarget(""), params = "].params.";
+    if (target.rfind(estimator, 0) == 0) return ParamTarget{true, 0, target.substr(estimator.size())};
+    if (target.rfind(nodes, 0) != 0) return std::nullopt;
+    const size_t close = target.find(params);
+    const std::string index = close == std::string::npos ? "" : target.substr(nodes.size(), close - nodes.size());
+    if (index.empty() || index.size() > 8 || index.find_first_not_of("0123456789") != std::string::npos)
+        return std::nullopt;
+    return ParamTarget{false, std::stoul(index), target.substr(close + params.size())};
+}
+
 KeyedParam keyedParam(const Formula& f, const std::string& target) {
-    const std::string nodes = "formula.nodes[", estimator = "formula.estimator.params.", params = "].params.";
     KeyedParam k;
-    if (target.rfind(estimator, 0) == 0) {
-        k.node = &f.estimator;
-        k.name = target.substr(estimator.size());
-    } else if (target.rfind(nodes, 0) == 0) {
-        const size_t close = target.find(params);
-        if (close == std::string::npos) return k;
-        const std::string index = target.substr(nodes.size(), close - nodes.size());
-        const bool number =
-            !index.empty() && index.size() < 9 && index.find_first_not_of("0123456789") == std::string::npos;
-        const size_t i = number ? std::stoul(index) : f.nodes.size();
-        // A file lists the closing estimator last among its nodes.
-        if (i > f.nodes.size()) return k;
-        k.node = i == f.nodes.size() ? &f.estimator : &f.nodes[i];
-        k.name = target.substr(close + params.size());
-    }
-    if (k.node && k.node->block)
+    const auto p = parseParamTarget(target);
+    // A file lists the closing estimator last among its nodes.
+    if (!p || (!p->estimator && p->node > f.nodes.size())) return k;
+    k.node = p->estimator || p->node == f.nodes.size() ? &f.estimator : &f.nodes[p->node];
+    k.name = p->name;
+    if (k.node->block)
         if (const int i = k.node->block->paramIndex(k.name); i >= 0) k.decl = &k.node->block->params[size_t(i)];
     return k;
 }
 
-namespace {
-
-// The node index of "formula.nodes[N].params.NAME" and where its parameter name starts; npos when
-// the target is not one.
-std::pair<size_t, size_t> nodeIndexOf(const std::string& target) {
-    const std::string nodes = "formula.nodes[", params = "].params.";
-    if (target.rfind(nodes, 0) != 0) return {std::string::npos, 0};
-    const size_t close = target.find(params);
-    const std::string index = close == std::string::npos ? "" : target.substr(nodes.size(), close - nodes.size());
-    if (index.empty() || index.size() > 8 || index.find_first_not_of("0123456789") != std::string::npos)
-        return {std::string::npos, 0};
-    return {std::stoul(index), close + params.size()};
-}
-
-}  // namespace
-
 void remapNodeTracks(Animation& animation, const std::vector<int>& newIndexOf, size_t newCount) {
     std::vector<Track> kept;
     for (Track& t : animation.tracks) {
-        const auto [index, name] = nodeIndexOf(t.target);
-        if (index != std::string::npos && index <= newIndexOf.size()) {
-            const int to = index == newIndexOf.size() ? int(newCount) : newIndexOf[index];
+        const auto p = parseParamTarget(t.target);
+        if (p && !p->estimator && p->node <= newIndexOf.size()) {
+            const int to = p->node == newIndexOf.size() ? int(newCount) : newIndexOf[p->node];
             if (to < 0) continue;
-            t.target = "formula.nodes[" + std::to_string(to) + "].params." + t.target.substr(name);
+            t.target = paramTarget(size_t(to), p->name);
         }
         kept.push_back(std::move(t));
     }
@@ -249,7 +236,8 @@ void remapNodeTracks(Animation& animation, const std::vector<int>& newIndexOf, s
 
 void dropEstimatorTracks(Animation& animation, size_t nodeCount) {
     std::erase_if(animation.tracks, [&](const Track& t) {
-        return t.target.rfind("formula.estimator.params.", 0) == 0 || nodeIndexOf(t.target).first == nodeCount;
+        const auto p = parseParamTarget(t.target);
+        return p && (p->estimator || p->node == nodeCount);
     });
 }
 

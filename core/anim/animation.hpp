@@ -5,6 +5,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,10 +57,21 @@ struct Animation {
 // shorter arc, so the camera never flips.
 std::vector<double> evaluateTrack(const Track& track, double frame);
 
-// The block parameter a target keys: "formula.nodes[N].params.NAME" (N counts the closing
-// estimator last, as a preset file lists it) or "formula.estimator.params.NAME". `node` is null for
-// other targets and for a node that does not exist; `decl` is null also when the node's block has
-// no parameter NAME.
+// Targets of block parameters: "formula.nodes[N].params.NAME" (N counts the closing estimator
+// last, as a preset file lists it) or "formula.estimator.params.NAME" (what the editor keys for
+// the estimator, which stays on it when nodes are added or removed).
+std::string paramTarget(size_t node, const std::string& param);
+std::string estimatorParamTarget(const std::string& param);
+struct ParamTarget {
+    bool estimator = false;  // named as formula.estimator; else by `node`
+    size_t node = 0;
+    std::string name;
+};
+// Null for any other target (and for an index that is not a number).
+std::optional<ParamTarget> parseParamTarget(const std::string& target);
+
+// The block parameter a target keys. `node` is null for other targets and for a node that does
+// not exist; `decl` is null also when the node's block has no parameter NAME.
 struct KeyedParam {
     const Node* node = nullptr;
     std::string name;
