@@ -57,6 +57,27 @@ enum class Membership {
     EscapeTime,  // inside where the orbit never passed the bailout (Mandelbulb, Mandelbox)
 };
 
+// How far the factor a step applies to the running derivative p.w bounds the step's stretch
+// (its Jacobian's largest singular value). A primitive's distance over p.w is a proven lower
+// bound of the distance to the object only when every step's bound is Global; otherwise it is
+// an estimate whose step factor is measured with a margin (core/safe_step.hpp).
+enum class DerivativeBound {
+    // The same bound everywhere: isometries, reflection and clamp folds, uniform scales, adding
+    // c. The map is continuous, so the bound holds between any two points.
+    Global,
+    // A bound at the point only: sphere folds, inversions, twist and bend, powers. A neighbour
+    // whose orbit passes nearer a centre of inversion stretches more.
+    Local,
+    // The map jumps (wraps, conditional shifts): nothing bounds the distance across a jump.
+    None,
+};
+
+// A spherical power's map is continuous where the power n is an integer; otherwise n phi jumps by
+// 2 pi n (mod 2 pi) across the atan2 cut.
+constexpr DerivativeBound sphericalPowerBound(double n) {
+    return n == double(static_cast<long long>(n)) ? DerivativeBound::Local : DerivativeBound::None;
+}
+
 // The type-erased description that the rest of the program sees, for one family of blocks: the
 // state a step transforms, the point `c` it sees and how its estimators decide membership. 3D
 // blocks are BlockDesc below; 2D blocks (core/plane/plane_block.hpp) are the same template over
@@ -82,6 +103,12 @@ struct BlockDescOf {
     EstimateFn estimate = nullptr;  // estimators
     MembershipT membership{};       // the family's first kind unless the estimator says
     bool custom = false;            // a user's GLSL block (core/custom_block.hpp): no CPU body
+    // 3D steps declare it; estimators, 2D blocks and custom blocks (unknown GLSL) bound nothing.
+    DerivativeBound derivative = DerivativeBound::None;
+    // Where the bound depends on the parameters (a power's map jumps at the atan2 cut unless the
+    // power is an integer): the bound for these values, in place of `derivative`.
+    DerivativeBound (*derivativeFor)(Args a) = nullptr;
+    DerivativeBound derivativeAt(Args a) const { return derivativeFor ? derivativeFor(a) : derivative; }
 
     bool isEstimator() const { return category == Category::Estimator; }
     int paramIndex(std::string_view name) const {
@@ -120,7 +147,9 @@ concept EstimatorBlockFor = BlockCommon<B> &&
 };
 
 template <class B>
-concept StepBlock = StepBlockFor<B, BlockDesc>;
+concept StepBlock = StepBlockFor<B, BlockDesc> && requires {
+    { B::derivative } -> std::convertible_to<DerivativeBound>;
+};
 template <class B>
 concept EstimatorBlock = EstimatorBlockFor<B, BlockDesc>;
 
@@ -136,6 +165,8 @@ constexpr Desc describeAs() {
     } else {
         static_assert(B::category != Category::Estimator, "an estimator block needs estimate()");
         d.apply = &B::apply;
+        if constexpr (requires { B::derivative; }) d.derivative = B::derivative;
+        if constexpr (requires(Args a) { B::derivativeFor(a); }) d.derivativeFor = &B::derivativeFor;
     }
     return d;
 }

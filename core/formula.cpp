@@ -57,6 +57,13 @@ bool canBoundEscape(const std::vector<Node>& nodes) {
     return false;
 }
 
+DerivativeBound derivativeBound(const std::vector<Node>& nodes) {
+    DerivativeBound weakest = DerivativeBound::Global;
+    for (const Node& n : nodes)
+        if (n.enabled) weakest = std::max(weakest, n.block->derivativeAt(n.args()));
+    return weakest;
+}
+
 bool Formula::cpuEvaluable() const {
     for (const Node& n : nodes)
         if (n.block->custom) return false;

@@ -75,6 +75,10 @@ inline bool isInside(const BlockDesc& estimator, double distance, bool escaped) 
 // every orbit bounded, or none).
 bool canBoundEscape(const std::vector<Node>& nodes);
 
+// The weakest DerivativeBound of the enabled steps (Global for none): whether the estimator's
+// distance over p.w is a proven bound.
+DerivativeBound derivativeBound(const std::vector<Node>& nodes);
+
 // Throws std::logic_error for a formula that is not cpuEvaluable().
 Evaluation evaluate(const Formula& f, const vec3& pos);
 inline double distanceEstimate(const Formula& f, const vec3& pos) { return evaluate(f, pos).distance; }

@@ -10,6 +10,38 @@ double safeStepFactor(double worstRatio, double margin) {
     return std::clamp(std::floor(1000.0 * margin / worstRatio) / 1000.0, kMinStepFactor, kMaxStepFactor);
 }
 
+RaySamples sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options) {
+    RaySamples all;
+    double worst = 0.0;
+    int quiet = 0;  // rounds in a row that did not raise the worst
+    for (int round = 0; round < std::max(1, options.maxRounds); ++round) {
+        ConservativenessOptions o = options.rays;
+        o.seed = options.rays.seed + uint64_t(round);
+        RaySamples more = sampleRays(sampler, camera, o);
+        const double roundWorst = compareWithSamples(sampler, more).worstRatio;
+        all.rays += more.rays;
+        all.raysHit += more.raysHit;
+        all.points.insert(all.points.end(), more.points.begin(), more.points.end());
+        all.distances.insert(all.distances.end(), more.distances.begin(), more.distances.end());
+        const bool raised = !(roundWorst <= worst * (1.0 + options.settled));
+        worst = std::max(worst, roundWorst);
+        quiet = raised ? 0 : quiet + 1;
+        // Nothing measured yet (no hit): more rounds of the same camera will not find the object.
+        if (all.points.empty() || quiet >= options.settledRounds || !std::isfinite(worst)) break;
+    }
+    return all;
+}
+
+double SafeStepOptions::factorFor(double worstRatio, const BlockDesc& estimator, const std::vector<Node>& steps) const {
+    const double measured = safeStepFactor(worstRatio, marginFor(steps));
+    if (!proven(estimator, steps)) return measured;
+    return std::max(measured, std::min(safeStepFactor(worstRatio, boundMargin), 1.0));
+}
+
+bool hasSafeStepFactor(double worstRatio, double margin) {
+    return std::isfinite(worstRatio) && worstRatio * kMinStepFactor <= margin;
+}
+
 namespace {
 
 // The report as if the formula's deFactor were 1 (the sampler applies its own).
@@ -19,10 +51,11 @@ ConservativenessReport atUnitFactor(ConservativenessReport r, double deFactor) {
     return r;
 }
 
-EstimatorMeasurement measured(const Node& estimator, const ConservativenessReport& atUnit,
+// `estimator` closing the steps of `f`, measured at factor 1.
+EstimatorMeasurement measured(const Formula& f, const Node& estimator, const ConservativenessReport& atUnit,
                               const SafeStepOptions& options) {
-    EstimatorMeasurement m{estimator, atUnit, 1.0};
-    m.factor = atUnit.samples > 0 ? safeStepFactor(atUnit.worstRatio, options.marginFor(estimator)) : 1.0;
+    EstimatorMeasurement m{estimator, atUnit, 1.0, options.marginFor(f.nodes)};
+    m.factor = atUnit.samples > 0 ? options.factorFor(atUnit.worstRatio, *estimator.block, f.nodes) : 1.0;
     return m;
 }
 
@@ -30,8 +63,8 @@ EstimatorMeasurement measured(const Node& estimator, const ConservativenessRepor
 
 EstimatorMeasurement measureSafeStep(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options) {
     const Formula& f = sampler.formula();
-    const ConservativenessReport r = checkConservativeness(sampler, camera, options.rays);
-    return measured(f.estimator, atUnitFactor(r, f.deFactor), options);
+    const ConservativenessReport r = compareWithSamples(sampler, sampleSafeStepRays(sampler, camera, options));
+    return measured(f, f.estimator, atUnitFactor(r, f.deFactor), options);
 }
 
 EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, const SafeStepOptions& options) {
@@ -44,7 +77,7 @@ Node linearEstimator() { return Node::make(*findBlock("escape_linear")); }
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Camera& camera,
                                                     const SafeStepOptions& options) {
     CpuSampler s(f);
-    return compareEstimators(f, sampleRays(s, camera, options.rays), options);
+    return compareEstimators(f, sampleSafeStepRays(s, camera, options), options);
 }
 
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RaySamples& samples,
@@ -52,7 +85,7 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RayS
     Formula unit = f;
     unit.deFactor = 1.0;
     CpuSampler own(unit);
-    std::vector<EstimatorMeasurement> out{measured(f.estimator, compareWithSamples(own, samples), options)};
+    std::vector<EstimatorMeasurement> out{measured(f, f.estimator, compareWithSamples(own, samples), options)};
     if (f.estimator.block->membership != Membership::EscapeTime) return out;
 
     auto add = [&](const Node& estimator) {
@@ -61,7 +94,7 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RayS
         Formula g = unit;
         g.estimator = estimator;
         CpuSampler s(g);
-        out.push_back(measured(estimator, compareWithSamples(s, samples), options));
+        out.push_back(measured(f, estimator, compareWithSamples(s, samples), options));
     };
     add(linearEstimator());
     add(Node::make(*findBlock("escape_log")));

@@ -5,10 +5,12 @@
 // folds multiply it by their scale (1 for rotations, translations, box and plane folds; |s| for
 // scales; the fold factor for sphere folds and inversions), non-conformal deforms by a bound of
 // their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight| (nothing in Julia
-// mode). The Mandelbulb power multiplies it by its largest stretch,
-// n r^(n-1) max(1, |sin(n theta) / sin(theta)|) (formulas/mandelbulb.hpp); the other power blocks
-// by the analytic scalar n r^(n-1) (White/Nylander; Syntopia, "Distance estimated 3D fractals"
-// part V). The escape-time estimators divide by it:
+// mode). The spherical powers multiply it by their largest stretch,
+// n r^(n-1) max(1, |sin(n theta + phase) / sin(theta)|) clamped to n (formulas/mandelbulb.hpp,
+// formulas/mandelbulb_variants.hpp), the Bristorbrot by 2 |x| plus the Frobenius norm of its
+// Jacobian's off-diagonal part, the quaternion orbits by the analytic scalar 2 |q| (White/Nylander;
+// Syntopia, "Distance estimated 3D fractals" part V). Each step block declares how far its factor
+// bounds its stretch (DerivativeBound, core/block.hpp). The escape-time estimators divide by it:
 // - log, 0.5 log(r) r / w: the Hubbard-Douady potential's lower bound, for power iterations
 //   (Syntopia part V; Knighty's notes on fractalforums.com, "Mandelbulb distance estimation").
 // - linear, r / w: Syntopia part VI's Mandelbox form, for fold-and-scale stacks.
@@ -16,12 +18,12 @@
 // deterministic 3-D fractals", 1989) never overshoots where w bounds the stretch, but it
 // vanishes on every escape level set |F_k| = B, not only at the fractal: a marcher stops on those
 // false shells, so it is not offered here.
-// Neither estimate is a proven bound for every stack: the scalar derivative of the other power
-// blocks underestimates their Jacobian near the poles (the phi direction stretches by up to n
-// times more), a non-integer power's map jumps where atan2 wraps, the log form outgrows the
-// distance far from the object, and a bailout that a following fold undoes leaves a shell where
-// the estimate is large and the object near. So the factor is measured on sampled rays and a
-// margin is kept for the rays that were not sampled.
+// Neither escape-time estimate is a proven bound: the log form outgrows the distance far from the
+// object, a non-integer power's map jumps where atan2 wraps, a phase sends a pole to a circle, and
+// a bailout that a following fold undoes leaves a shell where the estimate is large and the
+// object near. A primitive's distance over w is one only after Global steps. So the factor is
+// measured on sampled rays and, where nothing proves it, a margin is kept for the rays that were
+// not sampled: the wider where a step jumps.
 #pragma once
 
 #include <string>
@@ -32,16 +34,39 @@
 namespace fraktal {
 
 struct SafeStepOptions {
-    ConservativenessOptions rays{48, 2000, 1};
-    // Of the largest factor the sampled rays allow, for escape-time estimates (approximations:
-    // rays that were not sampled may be worse).
-    double margin = 0.6;
-    // The same for IFS primitive estimates (membership by distance): the primitive's distance
-    // over the running scale is a Lipschitz bound when every block's factor bounds its stretch
-    // (tests/safe_step_test.cpp checks each block), so only rounding is left.
+    // Rays are sampled in rounds of rays.rays (seeds rays.seed, rays.seed + 1, ...) until
+    // `settledRounds` rounds in a row raise the worst DE / true distance of the formula's own
+    // estimator by less than `settled`, or `maxRounds` rounds: a formula whose worst case is rare
+    // (a jump, a pole) gets more rays than one whose every ray shows it.
+    ConservativenessOptions rays{64, 2000, 1};
+    int maxRounds = 8;
+    int settledRounds = 2;
+    double settled = 0.02;
+    // Of the largest factor the sampled rays allow, for estimates that are approximations
+    // (escape-time ones, and primitives after Local steps): rays that were not sampled may be
+    // worse. tests/safe_step_test.cpp measures how often they are on random stacks.
+    double margin = 0.8;
+    // After a step that jumps (DerivativeBound::None: wraps, conditional shifts, non-integer
+    // powers): the worst case sits at the jumps, which few rays pass close to.
+    double jumpMargin = 0.6;
+    // IFS primitive estimates (membership by distance) after Global steps only: the primitive's
+    // distance over the running scale is a Lipschitz bound (tests/safe_step_test.cpp checks each
+    // block's declaration), so factor 1 is safe whatever the rays show, up to rounding; a
+    // larger factor, where the bound is loose, is measured like any estimate.
     double boundMargin = 0.99;
-    double marginFor(const Node& estimator) const {
-        return estimator.block->membership == Membership::Distance ? boundMargin : margin;
+
+    bool proven(const BlockDesc& estimator, const std::vector<Node>& steps) const {
+        return estimator.membership == Membership::Distance && derivativeBound(steps) == DerivativeBound::Global;
+    }
+    // The margin kept below the factor the rays allow.
+    double marginFor(const std::vector<Node>& steps) const {
+        return derivativeBound(steps) == DerivativeBound::None ? jumpMargin : margin;
+    }
+    // The safe step factor for a stack whose rays showed `worstRatio` (DE / true distance at
+    // factor 1).
+    double factorFor(double worstRatio, const BlockDesc& estimator, const std::vector<Node>& steps) const;
+    double factorFor(double worstRatio, const Formula& f) const {
+        return factorFor(worstRatio, *f.estimator.block, f.nodes);
     }
 };
 
@@ -49,18 +74,31 @@ struct SafeStepOptions {
 inline constexpr double kMinStepFactor = 1e-3;
 inline constexpr double kMaxStepFactor = 2.0;
 
+// The rays the safe step is measured on, in rounds as SafeStepOptions says.
+RaySamples sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options = {});
+
 // margin / worstRatio, clamped to the preset's range and rounded down to 3 decimals.
 double safeStepFactor(double worstRatio, double margin);
+// Whether margin / worstRatio is finite and at least kMinStepFactor: a stack whose estimate
+// overshoots by more (dust, jumps into a neighbour's cell) has no safe factor a preset may hold.
+bool hasSafeStepFactor(double worstRatio, double margin);
 
 struct EstimatorMeasurement {
     Node estimator;                 // the closing block measured
     ConservativenessReport report;  // at step factor 1
     double factor = 1.0;            // the safe step factor for it
+    double margin = 1.0;            // SafeStepOptions' margin the factor keeps
     // The safe factor times the median ratio: the share of the gap a typical march step covers.
     // A proxy only: it cannot see an estimate that vanishes away from the surface (false hits
     // look fast), so a choice is confirmed by rendering and by the DE count.
     double speed() const { return factor * report.medianRatio; }
 };
+
+// hasSafeStepFactor for a measured estimator (true when no ray reached the object: nothing was
+// measured against).
+inline bool hasSafeStepFactor(const EstimatorMeasurement& m) {
+    return m.report.samples == 0 || hasSafeStepFactor(m.report.worstRatio, m.margin);
+}
 
 // The formula's own estimator, measured.
 EstimatorMeasurement measureSafeStep(FormulaSampler& sampler, const Camera& camera,

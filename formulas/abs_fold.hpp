@@ -9,6 +9,7 @@ struct AbsFold {
     static constexpr std::string_view label = "Abs fold";
     static constexpr std::string_view help = "Mirror across the three coordinate planes: p = |p|.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array<ParamDecl, 0> params{};
 
     static constexpr std::string_view glsl = R"(

@@ -16,6 +16,7 @@ struct AddC {
         "Add the starting point c (Mandelbrot-type formulas); the derivative gains 1. Julia mode adds a fixed "
         "constant instead.";
     static constexpr Category category = Category::Transform;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{
             "weight", ParamType::Float, {1.0, 0.0, 0.0}, -2.0, 2.0, "Multiple of c that is added (not in Julia mode)."},

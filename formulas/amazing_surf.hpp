@@ -13,6 +13,7 @@ struct AmazingSurf {
     static constexpr std::string_view help =
         "Box fold of x and y, then sphere fold with scale (Kali's Amazing Surf); add c after it.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr std::array params{
         ParamDecl{"fold", ParamType::Vec3, {1.0, 1.0, 0.0}, 0.0, 4.0, "Folding limits of x and y (z is unused)."},
         ParamDecl{"min_radius", ParamType::Float, {0.5, 0.0, 0.0}, 0.05, 1.0, "Inner radius Rm of the sphere fold."},

@@ -10,6 +10,7 @@ struct BoxFold {
     static constexpr std::string_view help =
         "Mandelbox box fold: reflect each coordinate that leaves [-L, L] back inside.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"limit", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 4.0, "Folding limit L."},
     };

@@ -83,14 +83,16 @@ struct EscapeLogEstimator {
     // an orbit that stayed inside the unit ball, a point inside, where the running derivative may
     // have shrunk towards 0 and the quotient is no distance (down to -1.6e10 on the juliabulb's
     // grid; float and double differ there), and a hit refinement that steps by it (t += d - level)
-    // would jump far back along the ray. Inside is 0.
+    // would jump far back along the ray. Inside is 0, tested on r rather than on the quotient: an
+    // orbit that collapsed to the origin (a power of r below 1 underflows to 0, and the power
+    // block sets p.w to 0 there) gives log(0) * 0 / 0, not a number.
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
-    return max(0.5 * log(r) * r / abs(p.w), 0.0);
+    return r > 1.0 ? 0.5 * log(r) * r / abs(p.w) : 0.0;
 )";
     static double estimate(const P4& p, const vec3&, Args) {
         double r = length(p.xyz);
-        return max(0.5 * std::log(r) * r / abs(p.w), 0.0);
+        return r > 1.0 ? 0.5 * std::log(r) * r / abs(p.w) : 0.0;
     }
 };
 

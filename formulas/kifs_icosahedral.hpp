@@ -14,6 +14,7 @@ struct KifsIcosahedral {
     static constexpr std::string_view help =
         "Kaleidoscopic IFS: icosahedral mirrors, rotate, scale about the offset vertex.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"scale", ParamType::Float, {2.0, 0.0, 0.0}, 1.0, 4.0, "Scale s per iteration."},
         ParamDecl{"offset", ParamType::Vec3, {0.850651, 0.525731, 0.0}, -4.0, 4.0, "Vertex the scaling keeps fixed."},

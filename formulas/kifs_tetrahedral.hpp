@@ -13,6 +13,7 @@ struct KifsTetrahedral {
     static constexpr std::string_view help =
         "Kaleidoscopic IFS: tetrahedral mirrors, rotate, scale about the offset vertex.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"scale", ParamType::Float, {2.0, 0.0, 0.0}, 1.0, 4.0, "Scale s per iteration."},
         ParamDecl{"offset", ParamType::Vec3, {1.0, 1.0, 1.0}, -4.0, 4.0, "Vertex the scaling keeps fixed."},

@@ -14,6 +14,7 @@ struct Kleinian {
     static constexpr std::string_view help =
         "Jos Leys' Kleinian limit set step: wrap, half turn above the separation line, Mobius inversion.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
     static constexpr std::array params{
         ParamDecl{"klein_r", ParamType::Float, {1.94, 0.0, 0.0}, 1.5, 2.1, "Real part a of the generator's trace."},
         ParamDecl{

@@ -4,9 +4,14 @@
 namespace fraktal::blocks {
 
 // Mandelbulb variants that artists know from Mandelbulber2. All are spherical power maps
-// v -> r^n S(n theta + theta_phase, n phi + phi_phase); their running derivative is the
-// analytic scalar one, dr -> n r^(n-1) dr (White/Nylander, Syntopia part V), which
-// underestimates the stretch near the poles (the classic bulb, mandelbulb.hpp, bounds it).
+// v -> r^n S(n theta + theta_phase, n phi + phi_phase). As for the classic bulb
+// (mandelbulb.hpp), the running derivative is the Jacobian's largest stretch: n r^(n-1) along r
+// and theta, times the ratio of the image's to the source's circle of latitude along phi,
+// |sin(n theta + phase)| / |sin(theta)| (for the sine bulb, whose theta is a latitude, the
+// cosines), at least 1 and clamped to n. For the cosine bulb at integer n that is a bound
+// everywhere (|sin(n theta)| <= n |sin(theta)|); a phase or the sine bulb's latitude sends a
+// pole to a whole circle, so near the poles the clamp is an estimate and `fraktal check`
+// measures the rest.
 
 // The seed's bulb (mandelbulb.hpp) with phase offsets added to the multiplied angles.
 struct MandelbulbPhase {
@@ -15,6 +20,7 @@ struct MandelbulbPhase {
     static constexpr std::string_view help =
         "Mandelbulb power with theta and phi phase offsets (degrees) added after the multiplication.";
     static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;  // a phase sends a pole to a circle
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
         ParamDecl{"theta_phase", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Added to n theta, degrees."},
@@ -24,9 +30,12 @@ struct MandelbulbPhase {
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (r > 0.0) {
-        float theta = atan(length(p.xz), p.y) * power + radians(theta_phase);
+        float theta0 = atan(length(p.xz), p.y);
+        float theta = theta0 * power + radians(theta_phase);
         float phi = atan(p.x, p.z) * power + radians(phi_phase);
-        p.w *= power * pow(r, power - 1.0);
+        float sinTheta = length(p.xz) / r, sinImage = abs(sin(theta));
+        float phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
+        p.w *= power * pow(r, power - 1.0) * phiStretch;
         p.xyz = pow(r, power) * vec3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
     } else {
         p.w = 0.0;
@@ -36,9 +45,12 @@ struct MandelbulbPhase {
         const double power = a.f(0), theta_phase = a.f(1), phi_phase = a.f(2);
         double r = length(p.xyz);
         if (r > 0.0) {
-            double theta = std::atan2(std::hypot(p.xyz.x, p.xyz.z), p.xyz.y) * power + glm::radians(theta_phase);
+            double theta0 = std::atan2(std::hypot(p.xyz.x, p.xyz.z), p.xyz.y);
+            double theta = theta0 * power + glm::radians(theta_phase);
             double phi = std::atan2(p.xyz.x, p.xyz.z) * power + glm::radians(phi_phase);
-            p.w *= power * std::pow(r, power - 1.0);
+            double sinTheta = std::hypot(p.xyz.x, p.xyz.z) / r, sinImage = abs(sin(theta));
+            double phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
+            p.w *= power * std::pow(r, power - 1.0) * phiStretch;
             p.xyz = std::pow(r, power) * vec3(sin(theta) * sin(phi), cos(theta), sin(theta) * cos(phi));
         } else {
             p.w = 0.0;
@@ -53,6 +65,7 @@ struct MandelbulbSine {
     static constexpr std::string_view label = "Mandelbulb (sine)";
     static constexpr std::string_view help = "Mandelbulb with latitude theta = asin(z/r): z = r^n sin(n theta).";
     static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;  // the poles go to circles unless n is odd
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
     };
@@ -60,9 +73,12 @@ struct MandelbulbSine {
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (r > 0.0) {
-        float theta = atan(p.z, length(p.xy)) * power;
+        float theta0 = atan(p.z, length(p.xy));
+        float theta = theta0 * power;
         float phi = atan(p.y, p.x) * power;
-        p.w *= power * pow(r, power - 1.0);
+        float cosTheta = length(p.xy) / r, cosImage = abs(cos(theta));
+        float phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
+        p.w *= power * pow(r, power - 1.0) * phiStretch;
         p.xyz = pow(r, power) * vec3(cos(theta) * cos(phi), cos(theta) * sin(phi), sin(theta));
     } else {
         p.w = 0.0;
@@ -72,9 +88,12 @@ struct MandelbulbSine {
         const double power = a.f(0);
         double r = length(p.xyz);
         if (r > 0.0) {
-            double theta = std::atan2(p.xyz.z, std::hypot(p.xyz.x, p.xyz.y)) * power;
+            double theta0 = std::atan2(p.xyz.z, std::hypot(p.xyz.x, p.xyz.y));
+            double theta = theta0 * power;
             double phi = std::atan2(p.xyz.y, p.xyz.x) * power;
-            p.w *= power * std::pow(r, power - 1.0);
+            double cosTheta = std::hypot(p.xyz.x, p.xyz.y) / r, cosImage = abs(cos(theta));
+            double phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
+            p.w *= power * std::pow(r, power - 1.0) * phiStretch;
             p.xyz = std::pow(r, power) * vec3(cos(theta) * cos(phi), cos(theta) * sin(phi), sin(theta));
         } else {
             p.w = 0.0;
@@ -90,6 +109,8 @@ struct MandelbulbCosine {
     static constexpr std::string_view label = "Mandelbulb (cosine)";
     static constexpr std::string_view help = "Mandelbulb with polar theta = acos(z/r): z = r^n cos(n theta).";
     static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::Local;
+    static DerivativeBound derivativeFor(Args a) { return sphericalPowerBound(a.f(0)); }
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
     };
@@ -97,9 +118,12 @@ struct MandelbulbCosine {
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (r > 0.0) {
-        float theta = atan(length(p.xy), p.z) * power;
+        float theta0 = atan(length(p.xy), p.z);
+        float theta = theta0 * power;
         float phi = atan(p.y, p.x) * power;
-        p.w *= power * pow(r, power - 1.0);
+        float sinTheta = length(p.xy) / r, sinImage = abs(sin(theta));
+        float phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
+        p.w *= power * pow(r, power - 1.0) * phiStretch;
         p.xyz = pow(r, power) * vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));
     } else {
         p.w = 0.0;
@@ -109,9 +133,12 @@ struct MandelbulbCosine {
         const double power = a.f(0);
         double r = length(p.xyz);
         if (r > 0.0) {
-            double theta = std::atan2(std::hypot(p.xyz.x, p.xyz.y), p.xyz.z) * power;
+            double theta0 = std::atan2(std::hypot(p.xyz.x, p.xyz.y), p.xyz.z);
+            double theta = theta0 * power;
             double phi = std::atan2(p.xyz.y, p.xyz.x) * power;
-            p.w *= power * std::pow(r, power - 1.0);
+            double sinTheta = std::hypot(p.xyz.x, p.xyz.y) / r, sinImage = abs(sin(theta));
+            double phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
+            p.w *= power * std::pow(r, power - 1.0) * phiStretch;
             p.xyz = std::pow(r, power) * vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));
         } else {
             p.w = 0.0;
@@ -120,14 +147,17 @@ struct MandelbulbCosine {
 };
 
 // Bristorbrot (Doug Bristor; Mandelbulber2 bristorbrot): a quadratic, Riemann-type power
-// x' = x^2 - y^2 - z^2, y' = y (2x - z), z' = z (2x + y). Its Jacobian grows like r; the
-// derivative follows the degree-2 rule dr -> 2 r dr, as Mandelbulber does, and `fraktal check`
-// measures the step factor that keeps the result conservative.
+// x' = x^2 - y^2 - z^2, y' = y (2x - t z), z' = z (2x + t y). The running derivative is its
+// Jacobian's largest singular value, the square root of the largest eigenvalue of J^T J (a
+// symmetric 3x3: the closed form of O. K. Smith, "Eigenvalues of a symmetric 3 x 3 matrix",
+// CACM 4(4), 1961). Mandelbulber's degree-2 rule dr -> 2 r dr is that value on the x axis only;
+// off it the estimate overshot 4-6x at the surface.
 struct Bristorbrot {
     static constexpr std::string_view id = "bristorbrot";
     static constexpr std::string_view label = "Bristorbrot";
     static constexpr std::string_view help = "Quadratic hypercomplex power: (x^2 - y^2 - z^2, y (2x - z), z (2x + y)).";
     static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr std::array params{
         ParamDecl{"twist",
                   ParamType::Float,
@@ -138,14 +168,31 @@ struct Bristorbrot {
     };
 
     static constexpr std::string_view glsl = R"(
-    float r = length(p.xyz);
-    p.w *= 2.0 * r;
+    mat3 J = mat3(2.0 * p.xyz, vec3(-2.0 * p.y, 2.0 * p.x - twist * p.z, twist * p.z),
+                  vec3(-2.0 * p.z, -twist * p.y, 2.0 * p.x + twist * p.y));
+    mat3 M = transpose(J) * J;
+    float q = (M[0][0] + M[1][1] + M[2][2]) / 3.0;
+    float off = M[1][0] * M[1][0] + M[2][0] * M[2][0] + M[2][1] * M[2][1];
+    vec3 diagonal = vec3(M[0][0], M[1][1], M[2][2]) - q;
+    float spread = sqrt((dot(diagonal, diagonal) + 2.0 * off) / 6.0);
+    float half_det = spread > 0.0 ? determinant((M - mat3(q)) / spread) * 0.5 : 0.0;
+    float largest = q + 2.0 * spread * cos(acos(clamp(half_det, -1.0, 1.0)) / 3.0);
+    p.w *= sqrt(max(largest, 0.0));
     p.xyz = vec3(p.x * p.x - p.y * p.y - p.z * p.z, p.y * (2.0 * p.x - twist * p.z), p.z * (2.0 * p.x + twist * p.y));
 )";
     static void apply(P4& p, const vec3&, Args a) {
         const double twist = a.f(0);
-        double r = length(p.xyz);
-        p.w *= 2.0 * r;
+        const vec3 v0 = p.xyz;
+        glm::dmat3 J(2.0 * v0, vec3(-2.0 * v0.y, 2.0 * v0.x - twist * v0.z, twist * v0.z),
+                     vec3(-2.0 * v0.z, -twist * v0.y, 2.0 * v0.x + twist * v0.y));
+        glm::dmat3 M = glm::transpose(J) * J;
+        double q = (M[0][0] + M[1][1] + M[2][2]) / 3.0;
+        double off = M[1][0] * M[1][0] + M[2][0] * M[2][0] + M[2][1] * M[2][1];
+        const vec3 diagonal = vec3(M[0][0], M[1][1], M[2][2]) - q;
+        double spread = std::sqrt((dot(diagonal, diagonal) + 2.0 * off) / 6.0);
+        double half_det = spread > 0.0 ? glm::determinant((M - glm::dmat3(q)) / spread) * 0.5 : 0.0;
+        double largest = q + 2.0 * spread * std::cos(std::acos(clamp(half_det, -1.0, 1.0)) / 3.0);
+        p.w *= std::sqrt(max(largest, 0.0));
         const vec3 v = p.xyz;
         p.xyz =
             vec3(v.x * v.x - v.y * v.y - v.z * v.z, v.y * (2.0 * v.x - twist * v.z), v.z * (2.0 * v.x + twist * v.y));

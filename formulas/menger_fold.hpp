@@ -10,6 +10,7 @@ struct MengerFold {
     static constexpr std::string_view label = "Menger fold";
     static constexpr std::string_view help = "Mirror across x=y, x=z and y=z so that x >= y >= z.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array<ParamDecl, 0> params{};
 
     static constexpr std::string_view glsl = R"(

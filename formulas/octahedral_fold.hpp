@@ -10,6 +10,7 @@ struct OctahedralFold {
     static constexpr std::string_view label = "Octahedral fold";
     static constexpr std::string_view help = "Octahedral fold: mirror across x+y=0, x+z=0, x=y and x=z.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array<ParamDecl, 0> params{};
 
     static constexpr std::string_view glsl = R"(

@@ -13,6 +13,7 @@ struct PseudoKleinian {
     static constexpr std::string_view help =
         "Knighty's pseudo-Kleinian step: box fold into [-C, C], then invert where |v|^2 < size.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr std::array params{
         ParamDecl{"box_size", ParamType::Vec3, {0.92436, 0.90756, 0.92436}, 0.1, 4.0, "Half-size C of the fold box."},
         ParamDecl{"size", ParamType::Float, {1.0, 0.0, 0.0}, 0.1, 4.0, "Squared radius of the inversion sphere."},

@@ -9,6 +9,7 @@ struct Rotate {
     static constexpr std::string_view label = "Rotate";
     static constexpr std::string_view help = "Rotate about an axis through the origin.";
     static constexpr Category category = Category::Transform;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"axis", ParamType::Vec3, {0.0, 1.0, 0.0}, -1.0, 1.0, "Rotation axis (normalised before use).", true},
         ParamDecl{"angle", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Angle in degrees."},

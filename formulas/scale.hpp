@@ -11,6 +11,7 @@ struct Scale {
     static constexpr std::string_view help =
         "Scale about a centre: p = (p - centre) * s + centre; the running scale grows by |s|.";
     static constexpr Category category = Category::Transform;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"scale", ParamType::Float, {2.0, 0.0, 0.0}, -4.0, 4.0, "Scale factor s."},
         ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Fixed point of the scaling."},

@@ -10,6 +10,7 @@ struct SierpinskiFold {
     static constexpr std::string_view label = "Sierpinski fold";
     static constexpr std::string_view help = "Tetrahedral fold: mirror across x+y=0, x+z=0 and y+z=0.";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array<ParamDecl, 0> params{};
 
     static constexpr std::string_view glsl = R"(

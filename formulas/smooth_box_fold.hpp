@@ -12,6 +12,7 @@ struct SmoothBoxFold {
     static constexpr std::string_view label = "Smooth box fold";
     static constexpr std::string_view help = "Mandelbox box fold with rounded corners: |t| becomes sqrt(t^2 + k^2).";
     static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"limit", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 4.0, "Folding limit L."},
         ParamDecl{"smoothness", ParamType::Float, {0.1, 0.0, 0.0}, 0.001, 1.0, "Rounding k of the fold's corners."},

@@ -12,6 +12,7 @@ struct SphereInvert {
     static constexpr std::string_view help =
         "Invert in a sphere of radius R about a point (the centre); conformal, derivative scaled alike.";
     static constexpr Category category = Category::Transform;
+    static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr std::array params{
         ParamDecl{"radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.05, 4.0, "Radius R of the sphere of inversion."},
         ParamDecl{

@@ -9,6 +9,7 @@ struct Translate {
     static constexpr std::string_view label = "Translate";
     static constexpr std::string_view help = "Move the point by a fixed offset (a Julia-style constant).";
     static constexpr Category category = Category::Transform;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"offset", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Offset added to p."},
     };

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "app/editor/formula_edits.hpp"
 #include "core/de_check.hpp"
 #include "core/safe_step.hpp"
 #include "test_support.hpp"
@@ -18,11 +19,11 @@ constexpr const char* kPresets[] = {"kleinian.json", "pseudo_kleinian.json"};
 
 Preset shipped(const char* name) { return loadPreset(test::sourceDir() / "presets" / name); }
 
-// Runs `fraktal check` on `p`, written to a temporary file.
-test::CliRun checkPreset(const Preset& p, const std::string& name) {
+// Runs `fraktal check --rays N` on `p`, written to a temporary file.
+test::CliRun checkPreset(const Preset& p, const std::string& name, int rays = 40) {
     const auto file = std::filesystem::temp_directory_path() / ("fraktal_" + name + ".json");
     savePresetFile(file, p);
-    const test::CliRun r = test::runCli("check --rays 40 " + file.string());
+    const test::CliRun r = test::runCli("check --rays " + std::to_string(rays) + " " + file.string());
     std::filesystem::remove(file);
     std::filesystem::remove(file.string() + ".bak");
     return r;
@@ -48,8 +49,7 @@ TEST(KleinianPresets, CheckFindsHitsAndTheStepFactorNeverOvershoots) {
             EXPECT_GT(r.samples, 5000) << name << " seed " << seed;
             EXPECT_LE(r.worstRatio, 1.0) << name << " seed " << seed << ": DE * deFactor exceeds the true distance at ("
                                          << r.worstPoint.x << ", " << r.worstPoint.y << ", " << r.worstPoint.z << ")";
-            const double safe =
-                safeStepFactor(r.worstRatio / p.formula.deFactor, SafeStepOptions{}.marginFor(p.formula.estimator));
+            const double safe = SafeStepOptions{}.factorFor(r.worstRatio / p.formula.deFactor, p.formula);
             EXPECT_GE(safe, p.formula.deFactor) << name << " seed " << seed;
             EXPECT_GT(r.medianRatio, 0.005) << name << ": the estimate vanishes away from the surface";
             std::printf(
@@ -84,6 +84,40 @@ TEST(KleinianPresets, SheetsWithoutAnInsideFailTheCheck) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("PROBLEM: no ray hit the fractal"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("NOT SOUND"), std::string::npos) << r.output;
+}
+
+// The Kleinian step with wrap widths that are not its group's (1, any, 1) jumps at every wrap, and
+// a box primitive after it overshoots the distance by hundreds of times near the jumps: no step
+// factor a preset may hold makes that safe. The check says so and fails; the editor applies the
+// smallest factor and says the structure has none.
+TEST(KleinianPresets, WrapOutsideItsGroupHasNoSafeStepFactor) {
+    Preset p = shipped("kleinian.json");
+    Formula& f = p.formula;
+    Node step = Node::make(*findBlock("kleinian"));
+    step.values[0].x = 1.92;
+    step.values[1].x = -0.224;
+    step.values[2] = vec3(1.13, 3.6, 2.7);
+    step.values[3].x = 0.741;
+    f.nodes = {step};
+    f.estimator = Node::make(*findBlock("box"));
+    f.iterations = 6;
+    f.bailout = 1000.0;
+    f.boundRadius = 3.0;
+    f.deFactor = 1.0;
+    p.camera = Camera{};
+    p.camera.position = vec3(0.0, 0.0, 6.0);
+    p.camera.target = vec3(0.0);
+    p.animation = {};
+    ASSERT_EQ(derivativeBound(f.nodes), DerivativeBound::None);
+
+    const test::CliRun r = checkPreset(p, "kleinian_wrap_outside_group", 512);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("PROBLEM: no step factor down to 0.001"), std::string::npos) << r.output;
+
+    editor::AutoStepFactor a;
+    ASSERT_TRUE(a.update(f, p.camera));
+    EXPECT_TRUE(a.noSafeFactor) << "worst " << a.worst;
+    EXPECT_EQ(f.deFactor, kMinStepFactor);
 }
 
 // A camera below the Kleinian's floor sits inside the lower half-space's ball: the check names it.

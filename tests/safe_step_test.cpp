@@ -15,6 +15,7 @@
 #include <string>
 
 #include "app/editor/formula_edits.hpp"
+#include "app/editor/formula_fit.hpp"
 #include "core/preset.hpp"
 
 using namespace fraktal;
@@ -115,12 +116,80 @@ TEST(SafeStep, EveryFoldAndTransformBoundsItsJacobian) {
     }
 }
 
-// 200 random stacks of 1-4 shipped blocks with random in-range parameters (seeded). For each, the
-// check's choice (compareEstimators on its own rays) is applied, and on other rays every sampled
-// DE * factor stays at or under the true distance along the ray (baseline marcher with
-// bisection); over all samples the median ratio is above 0.5. Stacks a preset may not hold (no
-// power, fold or scale: canBoundEscape) and stacks whose object the check's rays never reach
-// from outside (nothing inside the bound, or everything) are drawn again.
+// A block declared DerivativeBound::Global applies the same factor at every point, and it bounds
+// the stretch between any two points, not only at each: for random pairs up to 1.7 apart (random
+// in-range parameters), |F(x) - F(y)| <= |x - y| times the factor. A map whose stretch varies
+// with position (a sphere fold) or that jumps (a wrap, a conditional shift) fails here, and must
+// say Local or None.
+TEST(SafeStep, GlobalBoundsHoldBetweenDistantPoints) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const vec3 c(0.3, -0.2, 0.1);
+    int blocks = 0;
+    for (const BlockDesc* block : stepBlocks()) {
+        if (block->derivative != DerivativeBound::Global) continue;
+        ++blocks;
+        for (int trial = 0; trial < 4000; ++trial) {
+            const Node n = randomNode(*block, rng);
+            const vec3 x = vec3(u(rng), u(rng), u(rng)) * 3.0;
+            const vec3 y = x + vec3(u(rng), u(rng), u(rng)) * (trial % 2 ? 1.0 : 0.05);
+            P4 px{x, 1.0}, py{y, 1.0};
+            block->apply(px, c, n.args());
+            block->apply(py, c, n.args());
+            ASSERT_EQ(px.w, py.w) << block->id << ": a Global factor is the same at every point";
+            ASSERT_LE(length(px.xyz - py.xyz), px.w * length(x - y) * (1.0 + 1e-9) + 1e-12)
+                << block->id << " moves (" << x.x << ", " << x.y << ", " << x.z << ") and (" << y.x << ", " << y.y
+                << ", " << y.z << ") further apart than its factor " << px.w << " allows";
+        }
+    }
+    EXPECT_GE(blocks, 12);
+}
+
+// The power blocks whose factor is a bound (the Mandelbulb and the cosine bulb at integer powers,
+// the Bristorbrot at any twist): along random directions at random points of the ball of radius
+// 1.5, the stretch by central differences stays within p.w.
+TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const vec3 c(0.0);
+    for (const char* id : {"mandelbulb", "mandelbulb_cosine", "bristorbrot"}) {
+        const BlockDesc& block = *findBlock(id);
+        int compared = 0;
+        for (int trial = 0; trial < 3000; ++trial) {
+            Node n = randomNode(block, rng);
+            if (block.paramIndex("power") >= 0) n.values[size_t(block.paramIndex("power"))].x = double(2 + trial % 11);
+            const vec3 x = vec3(u(rng), u(rng), u(rng)) * 1.5;
+            const vec3 dir = vec3(u(rng), u(rng), u(rng));
+            if (length(x) < 0.05 || length(dir) < 1e-3) continue;
+            P4 p{x, 1.0};
+            block.apply(p, c, n.args());
+            auto image = [&](const vec3& q) {
+                P4 s{q, 1.0};
+                block.apply(s, c, n.args());
+                return s.xyz;
+            };
+            const double h = 1e-6;
+            const vec3 d = normalize(dir);
+            const double stretch = length(image(x + d * h) - image(x - d * h)) / (2.0 * h);
+            ++compared;
+            ASSERT_LE(stretch, p.w * (1.0 + 1e-4))
+                << id << " at (" << x.x << ", " << x.y << ", " << x.z << "), parameters " << n.values[0].x;
+        }
+        EXPECT_GT(compared, 2500) << id;
+    }
+}
+
+// 200 random stacks of 1-4 shipped blocks with random in-range parameters (seeded), closed as the
+// editor closes a stack after a structure change (fitEstimatorToBlocks: the log estimate for
+// power stacks, the linear one for stacks that add c, a box primitive for pure IFS stacks). For
+// each, the check's choice (compareEstimators on its own rays) is applied, and on other rays
+// every sampled DE * factor stays at or under the true distance along the ray (baseline marcher
+// with bisection). Stacks a preset may not hold (no power, fold or scale: canBoundEscape), stacks
+// the check reports NOT SOUND (no safe step factor) and stacks whose object the check's rays
+// never reach from outside (nothing inside the bound, or everything) are drawn again.
+// The median ratio over all samples is printed with its distribution. The goal is above
+// 0.5; with the margins SafeStepOptions keeps for estimates (0.8, jumps 0.6) it is about 0.38,
+// and the assertion holds it there.
 TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     const std::vector<const BlockDesc*> blocks = stepBlocks();
     std::mt19937_64 rng(20);
@@ -129,11 +198,12 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     Camera camera;
     camera.position = vec3(0.0, 0.0, 6.0);
     SafeStepOptions check;
-    check.rays = {96, 1200, 1};
+    check.rays = {64, 1200, 1};
     const ConservativenessOptions fresh{16, 1200, 99};
 
     std::vector<double> ratios, stackMedians, factors;
     std::map<std::string, int> chosen;
+    std::map<DerivativeBound, int> bounds;
     int stacks = 0, redrawn = 0, unsound = 0, overshooting = 0;
     while (stacks < 200) {
         Formula f;
@@ -143,9 +213,10 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
         f.estimator = Node::make(*findBlock("escape_log"));
         for (int i = pickCount(rng); i > 0; --i) f.nodes.push_back(randomNode(*blocks[pickBlock(rng)], rng));
         if (!canBoundEscape(f.nodes)) continue;  // a preset with this stack is refused
+        editor::fitEstimatorToBlocks(f);
         const std::vector<EstimatorMeasurement> options = compareEstimators(f, camera, check);
-        if (!std::isfinite(options.front().report.worstRatio)) {
-            ++unsound;  // the estimate overflows somewhere: `fraktal check` reports the stack NOT SOUND
+        if (!hasSafeStepFactor(options.front())) {
+            ++unsound;  // the estimate overflows, or overshoots more than any factor makes up for
             continue;
         }
         if (options.front().report.samples == 0) {
@@ -158,6 +229,7 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
         g.estimator = options.front().estimator;
         g.deFactor = options.front().factor;
         ++chosen[std::string(g.estimator.block->id)];
+        ++bounds[derivativeBound(g.nodes)];
         factors.push_back(g.deFactor);
 
         CpuSampler sampler(g);
@@ -176,15 +248,17 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
                               << " (the check's worst " << options.front().report.worstRatio << ")";
     }
     std::printf(
-        "%d stacks (redrawn: %d with no surface the rays reach from outside, %d with a non-finite DE), %d "
+        "%d stacks (redrawn: %d with no surface the rays reach from outside, %d with no safe step factor), %d "
         "overshooting\n",
         stacks, redrawn, unsound, overshooting);
     for (const auto& [id, count] : chosen) std::printf("  estimator %s chosen for %d\n", id.c_str(), count);
+    std::printf("  steps' derivative bound: global %d, local %d, jumps %d\n", bounds[DerivativeBound::Global],
+                bounds[DerivativeBound::Local], bounds[DerivativeBound::None]);
     printDistribution("DE * factor / true distance", ratios);
     printDistribution("per-stack median ratio", stackMedians);
     printDistribution("step factor", factors);
     EXPECT_GT(ratios.size(), 20000u);
-    EXPECT_GT(percentile(ratios, 0.5), 0.2) << "safe only by being slow";
+    EXPECT_GT(percentile(ratios, 0.5), 0.33) << "safe only by being slow";
 }
 
 // The editor's hook: an opened document keeps its factor; a change of structure sets the one the
@@ -298,7 +372,7 @@ TEST(SafeStep, BulbPresetsShipWithAMeasuredFactorOfAtLeast08) {
         checkRays.seed = 1;
         const ConservativenessReport c = compareWithSamples(sampler, sampleRays(sampler, p.camera, checkRays));
         ASSERT_GT(c.samples, 10000) << name;
-        const double safe = safeStepFactor(c.worstRatio / f.deFactor, SafeStepOptions{}.marginFor(f.estimator));
+        const double safe = SafeStepOptions{}.factorFor(c.worstRatio / f.deFactor, f);
         std::printf("%s: worst DE / true distance %.4f at factor %.3f, median %.4f; safe step factor %.3f\n", name,
                     c.worstRatio, f.deFactor, c.medianRatio, safe);
         EXPECT_GE(safe, 0.8) << name;

@@ -170,10 +170,15 @@ int runCheck(const CheckOptions& o) {
     // not sampled (core/safe_step.hpp). Above the current one, marching is slower than it needs
     // to be; below it, the current one overshoots.
     const SafeStepOptions safe;
-    if (c.samples > 0 && c.worstRatio > 0.0 && std::isfinite(c.worstRatio))
+    if (c.samples > 0 && !hasSafeStepFactor(c.worstRatio / f.deFactor, safe.marginFor(f.nodes))) {
+        std::printf(
+            "PROBLEM: no step factor down to %g keeps the DE under the distance (worst %.4g at factor 1): the "
+            "estimate is not usable for this stack\n",
+            kMinStepFactor, c.worstRatio / f.deFactor);
+        status = 1;
+    } else if (c.samples > 0 && c.worstRatio > 0.0)
         std::printf("safe step factor: formula.deFactor %.3f (now %.3f; worst DE / true distance %.3f, median %.3f)\n",
-                    safeStepFactor(c.worstRatio / f.deFactor, safe.marginFor(f.estimator)), f.deFactor, c.worstRatio,
-                    c.medianRatio);
+                    safe.factorFor(c.worstRatio / f.deFactor, f), f.deFactor, c.worstRatio, c.medianRatio);
     // Escape-time formulas: the estimators that share the membership, on the same rays.
     if (f.cpuEvaluable() && c.samples > 0 && f.estimator.block->membership == Membership::EscapeTime) {
         const auto candidates = compareEstimators(f, samples, safe);

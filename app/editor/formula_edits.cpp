@@ -213,6 +213,8 @@ bool AutoStepFactor::update(Formula& f, const Camera& camera) {
     const EstimatorMeasurement m = measureSafeStep(f, camera);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     noHits = m.report.samples == 0;
+    noSafeFactor = !hasSafeStepFactor(m);
+    worst = m.report.worstRatio;
     measured = noHits ? 0.0 : m.factor;
     if (!overridden && !noHits) f.deFactor = measured;
     return true;

@@ -74,6 +74,11 @@ struct AutoStepFactor {
     // object from outside it (sheets with no inside, a camera looking away). The factor is kept
     // rather than set to the 1 an empty sample would allow.
     bool noHits = false;
+    // The last measurement found the estimate overshooting by more than the smallest factor a
+    // preset may hold makes up for (dust, jumps): the smallest factor is applied and the panel
+    // says the structure has no safe one. `worst` is the DE / true distance it saw at factor 1.
+    bool noSafeFactor = false;
+    double worst = 0.0;
 
     // Takes f's factor as the one for its structure (an opened document).
     static AutoStepFactor adopting(const Formula& f) { return {f.structureKey()}; }

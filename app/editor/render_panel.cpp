@@ -127,6 +127,11 @@ void drawStepFactorSection(AutoStepFactor& a, Formula& f) {
     ImGui::EndDisabled();
     if (a.noHits)
         ImGui::TextDisabled("Not measured: no ray of the check met the object from this camera; the factor is kept.");
+    else if (a.noSafeFactor)
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1),
+                           "No safe factor: the estimate overshoots %.3g times the distance (jumps or dust); "
+                           "marching at %.3f may still show specks.",
+                           a.worst, f.deFactor);
     else if (a.measured > 0.0)
         ImGui::TextDisabled("Measured for this structure: %.3f (%.2f s)", a.measured, a.seconds);
     else
