@@ -193,7 +193,7 @@ start "$shifted"
 set -- $(viewport_centre)
 to "$1" "$2"
 xdotool key Delete
-wait_for '.document.formula.nodes[0].block == "mandelbulb"'
+wait_for '.document.formula.nodes[0].block == "mandelbulb"' true
 targets() { q '[.document.animation.tracks[].target] | sort | join(",")'; }
 [ "$(q '.document.formula.nodes[0].block')" = mandelbulb ] || fail "Delete over the viewport did not remove the Rotate"
 [ "$(targets)" = "camera.position,$power_target" ] || fail "after the delete the tracks key $(targets)"

@@ -186,4 +186,44 @@ to 966 710; wait_frames 1; xdotool mousedown 1; wait_frames 1; xdotool mouseup 1
 [ "$(q .blockEditorOpen)" = false ] || fail "the block editor's close button under the compile-error banner did not close it"
 stop
 
+# 6. The step factor follows the structure. Deleting a Rotate in front of the Mandelbulb changes the
+#    structure: the check measures the new stack and the document's factor becomes the measured
+#    one. A Kleinian step whose wrap widths are not its group's, between a rotation and two folds,
+#    has no safe factor: after the same delete the editor applies the smallest factor and says so
+#    in the DE step factor section.
+bulb="$home/rotate_bulb.json"
+jq '.formula.nodes = [{"block": "rotate"}] + .formula.nodes' "$presets/mandelbulb.json" >"$bulb"
+start "$bulb"
+[ "$(q .stepFactor.measured)" = 0 ] || fail "opening a file measured its factor ($(q .stepFactor.measured))"
+opened=$(q .document.formula.deFactor)
+set -- $(viewport_centre)
+to "$1" "$2"
+xdotool key Delete
+wait_for '.stepFactor.measured > 0' true
+measured=$(q .stepFactor.measured)
+[ "$(q .document.formula.deFactor)" = "$measured" ] ||
+    fail "after the delete the factor is $(q .document.formula.deFactor), not the measured $measured"
+[ "$(q .stepFactor.noSafeFactor)" = false ] || fail "the Mandelbulb has no safe factor (worst $(q .stepFactor.worst))"
+echo "step factor: opened at $opened, measured $measured after deleting the Rotate"
+stop
+wrap="$home/kleinian_wrap.json"
+jq '.formula.nodes = [{"block": "rotate"}, {"block": "rotate", "params": {"axis": [-0.765, -0.0866, -0.585], "angle": 55.6}},
+      {"block": "kleinian", "params": {"klein_r": 1.51, "klein_i": 0.382, "box_size": [3.77, 3.05, 1.92], "separation": 0.631}},
+      {"block": "sierpinski_fold"}, {"block": "abs_fold"}, {"block": "box"}]
+    | .formula.iterations = 6 | .formula.bailout = 1000
+    | .formula.boundRadius = 3 | .formula.deFactor = 1 | .camera.position = [0, 0, 6] | .camera.target = [0, 0, 0]
+    | del(.animation)' "$presets/kleinian.json" >"$wrap"
+start "$wrap"
+set -- $(viewport_centre)
+to "$1" "$2"
+xdotool key Delete
+wait_for '.document.formula.nodes | length' 5
+wait_for '.stepFactor.measured > 0 or .stepFactor.noHits' true
+[ "$(q .stepFactor.noSafeFactor)" = true ] ||
+    fail "the Kleinian wrap outside its group got a safe factor $(q .stepFactor.measured) (worst $(q .stepFactor.worst))"
+[ "$(q .document.formula.deFactor)" = 0.001 ] || fail "without a safe factor the editor applied $(q .document.formula.deFactor)"
+import -window root "$out/story_no_safe_factor.png"
+echo "no safe factor: worst DE / true distance $(q .stepFactor.worst), factor $(q .document.formula.deFactor)"
+stop
+
 [ $failures -eq 0 ] && echo "editor_user_stories: all OK" || { echo "editor_user_stories: $failures failure(s)"; exit 1; }

@@ -87,6 +87,13 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                                  s.layout.renderModeCombo[3]}}};
     j["timeline"] = timelineJson(s.timeline);
     j["selectedNode"] = s.selectedNode;
+    // The step factor the check measured after the last structure change (AutoStepFactor).
+    const AutoStepFactor& a = s.stepFactor;
+    j["stepFactor"] = {{"measured", a.measured},
+                       {"overridden", a.overridden},
+                       {"noHits", a.noHits},
+                       {"noSafeFactor", a.noSafeFactor},
+                       {"worst", a.worst}};
     // The parameter widgets of the selected node as drawn (window coordinates) and the help text
     // of the parameter tooltip shown, as the widget wrote them this frame.
     json widgets = json::array();
