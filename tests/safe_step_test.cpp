@@ -46,6 +46,13 @@ Node randomNode(const BlockDesc& block, std::mt19937_64& rng) {
     return n;
 }
 
+// Where one step of `block` (node n's values) takes the point q, with the point c it sees.
+vec3 stepImage(const BlockDesc& block, const Node& n, const vec3& c, const vec3& q) {
+    P4 s{q, 1.0};
+    block.apply(s, c, n.args());
+    return s.xyz;
+}
+
 std::string describe(const Formula& f) {
     std::string s;
     for (const Node& n : f.nodes) {
@@ -98,11 +105,7 @@ TEST(SafeStep, EveryFoldAndTransformBoundsItsJacobian) {
             dir = normalize(dir);
             P4 p{x, 1.0};
             block->apply(p, c, n.args());
-            auto image = [&](const vec3& q) {
-                P4 s{q, 1.0};
-                block->apply(s, c, n.args());
-                return s.xyz;
-            };
+            auto image = [&](const vec3& q) { return stepImage(*block, n, c, q); };
             const double h = 1e-6;
             const double forward = length(image(x + dir * h) - p.xyz) / h;
             const double backward = length(p.xyz - image(x - dir * h)) / h;
@@ -163,11 +166,7 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
             if (length(x) < 0.05 || length(dir) < 1e-3) continue;
             P4 p{x, 1.0};
             block.apply(p, c, n.args());
-            auto image = [&](const vec3& q) {
-                P4 s{q, 1.0};
-                block.apply(s, c, n.args());
-                return s.xyz;
-            };
+            auto image = [&](const vec3& q) { return stepImage(block, n, c, q); };
             const double h = 1e-6;
             const vec3 d = normalize(dir);
             const double stretch = length(image(x + d * h) - image(x - d * h)) / (2.0 * h);
@@ -336,11 +335,7 @@ TEST(SafeStep, MandelbulbDerivativeIsItsLargestStretch) {
         const vec3 phiHat(std::cos(phi), 0.0, -std::sin(phi));
         P4 p{x, 1.0};
         block.apply(p, c, n.args());
-        auto image = [&](const vec3& q) {
-            P4 s{q, 1.0};
-            block.apply(s, c, n.args());
-            return s.xyz;
-        };
+        auto image = [&](const vec3& q) { return stepImage(block, n, c, q); };
         const double h = 1e-7 * std::min(1.0, std::hypot(x.x, x.z) * 10.0);
         double largest = 0.0;
         for (const vec3& dir : {radial, thetaHat, phiHat}) {
