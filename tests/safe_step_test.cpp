@@ -354,20 +354,20 @@ TEST(SafeStep, MandelbulbDerivativeIsItsLargestStretch) {
 }
 
 // The Mandelbulb (12 iterations) and the box+bulb hybrid ship with a step factor of at least 0.8
-// that the check measures as safe: `fraktal check`'s rays (120, seed 1) and margin, the same
-// code. On other rays the shipped factor never overshoots.
+// that the check measures as safe: `fraktal check`'s safe-step rays (rounds from seed 1 at 4000
+// steps across the bound) and margin, the same code. On other rays the shipped factor never
+// overshoots.
 TEST(SafeStep, BulbPresetsShipWithAMeasuredFactorOfAtLeast08) {
     for (const char* name : {"mandelbulb.json", "hybrid_box_bulb.json"}) {
         const Preset p = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/" + name);
         const Formula& f = p.formula;
         if (std::string(name) == "mandelbulb.json") EXPECT_EQ(f.iterations, 12);
         CpuSampler sampler(f);
-        ConservativenessOptions checkRays;
-        checkRays.rays = 120;
-        checkRays.seed = 1;
-        const ConservativenessReport c = compareWithSamples(sampler, sampleRays(sampler, p.camera, checkRays));
+        SafeStepOptions check;
+        check.rays.stepsAcrossBound = 4000;  // `fraktal check`'s default --steps
+        const ConservativenessReport c = compareWithSamples(sampler, sampleSafeStepRays(sampler, p.camera, check));
         ASSERT_GT(c.samples, 10000) << name;
-        const double safe = SafeStepOptions{}.factorFor(c.worstRatio / f.deFactor, f);
+        const double safe = check.factorFor(c.worstRatio / f.deFactor, f);
         std::printf("%s: worst DE / true distance %.4f at factor %.3f, median %.4f; safe step factor %.3f\n", name,
                     c.worstRatio, f.deFactor, c.medianRatio, safe);
         EXPECT_GE(safe, 0.8) << name;

@@ -166,22 +166,30 @@ int runCheck(const CheckOptions& o) {
             100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier());
         status = 1;
     }
-    // The step factor the sampled rays allow, with SafeStepOptions' margin for the rays that were
-    // not sampled (core/safe_step.hpp). Above the current one, marching is slower than it needs
-    // to be; below it, the current one overshoots.
-    const SafeStepOptions safe;
-    if (c.samples > 0 && !hasSafeStepFactor(c.worstRatio / f.deFactor, safe.marginFor(f.nodes))) {
+    // The step factor the rays allow, with SafeStepOptions' margin for the rays that were not
+    // sampled (core/safe_step.hpp), measured as the editor measures it after a structure change:
+    // rays in rounds from this seed until the worst ratio settles. Above the current factor,
+    // marching is slower than it needs to be; below it, the current one overshoots.
+    SafeStepOptions safe;
+    safe.rays.stepsAcrossBound = o.steps;
+    safe.rays.seed = o.seed;
+    const RaySamples safeRays = c.samples > 0 ? sampleSafeStepRays(*sampler, preset.camera, safe) : RaySamples{};
+    const ConservativenessReport s = compareWithSamples(*sampler, safeRays);
+    const double worstAtUnit = s.worstRatio / f.deFactor;
+    if (s.samples > 0 && !hasSafeStepFactor(worstAtUnit, safe.marginFor(f.nodes))) {
         std::printf(
-            "PROBLEM: no step factor down to %g keeps the DE under the distance (worst %.4g at factor 1): the "
-            "estimate is not usable for this stack\n",
-            kMinStepFactor, c.worstRatio / f.deFactor);
+            "PROBLEM: no step factor down to %g keeps the DE under the distance (worst %.4g at factor 1 over %d "
+            "rays): the estimate is not usable for this stack\n",
+            kMinStepFactor, worstAtUnit, s.rays);
         status = 1;
-    } else if (c.samples > 0 && c.worstRatio > 0.0)
-        std::printf("safe step factor: formula.deFactor %.3f (now %.3f; worst DE / true distance %.3f, median %.3f)\n",
-                    safe.factorFor(c.worstRatio / f.deFactor, f), f.deFactor, c.worstRatio, c.medianRatio);
+    } else if (s.samples > 0 && s.worstRatio > 0.0)
+        std::printf(
+            "safe step factor: formula.deFactor %.3f (now %.3f; over %d rays, worst DE / true distance %.3f, median "
+            "%.3f)\n",
+            safe.factorFor(worstAtUnit, f), f.deFactor, s.rays, s.worstRatio, s.medianRatio);
     // Escape-time formulas: the estimators that share the membership, on the same rays.
-    if (f.cpuEvaluable() && c.samples > 0 && f.estimator.block->membership == Membership::EscapeTime) {
-        const auto candidates = compareEstimators(f, samples, safe);
+    if (f.cpuEvaluable() && s.samples > 0 && f.estimator.block->membership == Membership::EscapeTime) {
+        const auto candidates = compareEstimators(f, safeRays, safe);
         for (const EstimatorMeasurement& m : candidates) {
             char offset[48] = "";
             if (m.estimator.block->id == "escape_linear")
