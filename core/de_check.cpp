@@ -123,28 +123,36 @@ RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const Conse
     return out;
 }
 
-ConservativenessReport compareWithSamples(FormulaSampler& sampler, const RaySamples& samples) {
+std::vector<double> ratiosAt(FormulaSampler& sampler, const RaySamples& samples) {
+    const auto e = evaluateAll(sampler, samples.points);
+    std::vector<double> ratios(e.size());
+    for (size_t i = 0; i < e.size(); ++i) {
+        const double ratio = e[i].distance / samples.distances[i];
+        ratios[i] = std::isnan(ratio) ? std::numeric_limits<double>::infinity() : ratio;
+    }
+    return ratios;
+}
+
+ConservativenessReport reportOf(const RaySamples& samples, std::vector<double> ratios) {
     ConservativenessReport report;
     report.rays = samples.rays;
     report.raysHit = samples.raysHit;
-    const auto e = evaluateAll(sampler, samples.points);
-    std::vector<double> ratios;
-    ratios.reserve(e.size());
-    for (size_t i = 0; i < e.size(); ++i) {
-        const double ratio = e[i].distance / samples.distances[i];
-        ++report.samples;
-        ratios.push_back(std::isnan(ratio) ? std::numeric_limits<double>::infinity() : ratio);
-        if (!(ratio <= report.worstRatio)) {
-            report.worstRatio = std::isfinite(ratio) ? ratio : std::numeric_limits<double>::infinity();
+    report.samples = long(ratios.size());
+    for (size_t i = 0; i < ratios.size(); ++i)
+        if (!(ratios[i] <= report.worstRatio)) {
+            report.worstRatio = ratios[i];
             report.worstPoint = samples.points[i];
         }
-    }
     if (!ratios.empty()) {
         auto middle = ratios.begin() + long(ratios.size() / 2);
         std::nth_element(ratios.begin(), middle, ratios.end());
         report.medianRatio = *middle;
     }
     return report;
+}
+
+ConservativenessReport compareWithSamples(FormulaSampler& sampler, const RaySamples& samples) {
+    return reportOf(samples, ratiosAt(sampler, samples));
 }
 
 ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Camera& camera,

@@ -80,6 +80,10 @@ struct RaySamples {
 RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const ConservativenessOptions& options = {});
 // The DE of `sampler`'s formula against the samples' true distances.
 ConservativenessReport compareWithSamples(FormulaSampler& sampler, const RaySamples& samples);
+// Its two halves: DE / true distance at each sample (not a number counts as infinite), and the
+// report of those ratios (one per sample, in order).
+std::vector<double> ratiosAt(FormulaSampler& sampler, const RaySamples& samples);
+ConservativenessReport reportOf(const RaySamples& samples, std::vector<double> ratios);
 
 ConservativenessReport checkConservativeness(FormulaSampler& sampler, const Camera& camera,
                                              const ConservativenessOptions& options = {});

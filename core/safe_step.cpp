@@ -10,26 +10,31 @@ double safeStepFactor(double worstRatio, double margin) {
     return std::clamp(std::floor(1000.0 * margin / worstRatio) / 1000.0, kMinStepFactor, kMaxStepFactor);
 }
 
-RaySamples sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options) {
+SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options) {
     RaySamples all;
+    std::vector<double> ratios;
     double worst = 0.0;
     int quiet = 0;  // rounds in a row that did not raise the worst
     for (int round = 0; round < std::max(1, options.maxRounds); ++round) {
         ConservativenessOptions o = options.rays;
         o.seed = options.rays.seed + uint64_t(round);
-        RaySamples more = sampleRays(sampler, camera, o);
-        const double roundWorst = compareWithSamples(sampler, more).worstRatio;
+        const RaySamples more = sampleRays(sampler, camera, o);
+        const std::vector<double> moreRatios = ratiosAt(sampler, more);
+        double roundWorst = 0.0;
+        for (double r : moreRatios) roundWorst = std::max(roundWorst, r);
         all.rays += more.rays;
         all.raysHit += more.raysHit;
         all.points.insert(all.points.end(), more.points.begin(), more.points.end());
         all.distances.insert(all.distances.end(), more.distances.begin(), more.distances.end());
+        ratios.insert(ratios.end(), moreRatios.begin(), moreRatios.end());
         const bool raised = !(roundWorst <= worst * (1.0 + options.settled));
         worst = std::max(worst, roundWorst);
         quiet = raised ? 0 : quiet + 1;
         // Nothing measured yet (no hit): more rounds of the same camera will not find the object.
         if (all.points.empty() || quiet >= options.settledRounds || !std::isfinite(worst)) break;
     }
-    return all;
+    ConservativenessReport report = reportOf(all, std::move(ratios));
+    return {std::move(all), report};
 }
 
 double SafeStepOptions::factorFor(double worstRatio, const BlockDesc& estimator, const std::vector<Node>& steps) const {
@@ -63,7 +68,7 @@ EstimatorMeasurement measured(const Formula& f, const Node& estimator, const Con
 
 EstimatorMeasurement measureSafeStep(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options) {
     const Formula& f = sampler.formula();
-    const ConservativenessReport r = compareWithSamples(sampler, sampleSafeStepRays(sampler, camera, options));
+    const ConservativenessReport r = sampleSafeStepRays(sampler, camera, options).report;
     return measured(f, f.estimator, atUnitFactor(r, f.deFactor), options);
 }
 
@@ -77,7 +82,7 @@ Node linearEstimator() { return Node::make(*findBlock("escape_linear")); }
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Camera& camera,
                                                     const SafeStepOptions& options) {
     CpuSampler s(f);
-    return compareEstimators(f, sampleSafeStepRays(s, camera, options), options);
+    return compareEstimators(f, sampleSafeStepRays(s, camera, options).samples, options);
 }
 
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RaySamples& samples,

@@ -7,8 +7,8 @@
 // their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight| (nothing in Julia
 // mode). The spherical powers multiply it by their largest stretch,
 // n r^(n-1) max(1, |sin(n theta + phase) / sin(theta)|) clamped to n (formulas/mandelbulb.hpp,
-// formulas/mandelbulb_variants.hpp), the Bristorbrot by 2 |x| plus the Frobenius norm of its
-// Jacobian's off-diagonal part, the quaternion orbits by the analytic scalar 2 |q| (White/Nylander;
+// formulas/mandelbulb_variants.hpp), the Bristorbrot by its Jacobian's largest singular value,
+// the quaternion orbits by the analytic scalar 2 |q| (White/Nylander;
 // Syntopia, "Distance estimated 3D fractals" part V). Each step block declares how far its factor
 // bounds its stretch (DerivativeBound, core/block.hpp). The escape-time estimators divide by it:
 // - log, 0.5 log(r) r / w: the Hubbard-Douady potential's lower bound, for power iterations
@@ -74,8 +74,13 @@ struct SafeStepOptions {
 inline constexpr double kMinStepFactor = 1e-3;
 inline constexpr double kMaxStepFactor = 2.0;
 
-// The rays the safe step is measured on, in rounds as SafeStepOptions says.
-RaySamples sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options = {});
+// The rays the safe step is measured on, in rounds as SafeStepOptions says, with the report of
+// the sampler's own estimate on them (the rounds evaluate it to decide when to stop).
+struct SafeStepRays {
+    RaySamples samples;
+    ConservativenessReport report;  // at the sampler's formula's own deFactor
+};
+SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options = {});
 
 // margin / worstRatio, clamped to the preset's range and rounded down to 3 decimals.
 double safeStepFactor(double worstRatio, double margin);

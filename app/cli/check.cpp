@@ -173,8 +173,8 @@ int runCheck(const CheckOptions& o) {
     SafeStepOptions safe;
     safe.rays.stepsAcrossBound = o.steps;
     safe.rays.seed = o.seed;
-    const RaySamples safeRays = c.samples > 0 ? sampleSafeStepRays(*sampler, preset.camera, safe) : RaySamples{};
-    const ConservativenessReport s = compareWithSamples(*sampler, safeRays);
+    const SafeStepRays safeRays = c.samples > 0 ? sampleSafeStepRays(*sampler, preset.camera, safe) : SafeStepRays{};
+    const ConservativenessReport& s = safeRays.report;
     const double worstAtUnit = s.worstRatio / f.deFactor;
     if (s.samples > 0 && !hasSafeStepFactor(worstAtUnit, safe.marginFor(f.nodes))) {
         std::printf(
@@ -189,7 +189,7 @@ int runCheck(const CheckOptions& o) {
             safe.factorFor(worstAtUnit, f), f.deFactor, s.rays, s.worstRatio, s.medianRatio);
     // Escape-time formulas: the estimators that share the membership, on the same rays.
     if (f.cpuEvaluable() && s.samples > 0 && f.estimator.block->membership == Membership::EscapeTime) {
-        const auto candidates = compareEstimators(f, safeRays, safe);
+        const auto candidates = compareEstimators(f, safeRays.samples, safe);
         for (const EstimatorMeasurement& m : candidates) {
             char offset[48] = "";
             if (m.estimator.block->id == "escape_linear")
