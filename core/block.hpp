@@ -78,6 +78,15 @@ constexpr DerivativeBound sphericalPowerBound(double n) {
     return n == double(static_cast<long long>(n)) ? DerivativeBound::Local : DerivativeBound::None;
 }
 
+// The degree a power step raises its input to (|F(v)| grows as |v|^n far from the origin), by
+// the name of the parameter that holds it or as a number: the potential estimate
+// (formulas/estimators.hpp) needs the product of the degrees an orbit went through. Steps that
+// do not declare one have degree 1 (folds, scales and adding c leave the growth linear).
+struct Degree {
+    std::string_view param;
+    double fixed = 1.0;
+};
+
 // The type-erased description that the rest of the program sees, for one family of blocks: the
 // state a step transforms, the point `c` it sees and how its estimators decide membership. 3D
 // blocks are BlockDesc below; 2D blocks (core/plane/plane_block.hpp) are the same template over
@@ -109,6 +118,11 @@ struct BlockDescOf {
     // power is an integer): the bound for these values, in place of `derivative`.
     DerivativeBound (*derivativeFor)(Args a) = nullptr;
     DerivativeBound derivativeAt(Args a) const { return derivativeFor ? derivativeFor(a) : derivative; }
+    // The step's Degree: the index of the parameter that holds it (-1: the fixed value).
+    int degreeParam = -1;
+    double fixedDegree = 1.0;
+    bool raisesDegree() const { return degreeParam >= 0 || fixedDegree != 1.0; }
+    double degreeAt(Args a) const { return degreeParam >= 0 ? a.f(degreeParam) : fixedDegree; }
 
     bool isEstimator() const { return category == Category::Estimator; }
     int paramIndex(std::string_view name) const {
@@ -153,6 +167,15 @@ concept StepBlock = StepBlockFor<B, BlockDesc> && requires {
 template <class B>
 concept EstimatorBlock = EstimatorBlockFor<B, BlockDesc>;
 
+// The index of B's parameter `name`; a name B does not declare fails to compile (a throw in a
+// constant expression).
+template <class B>
+consteval int declaredParamIndex(std::string_view name) {
+    for (size_t i = 0; i < B::params.size(); ++i)
+        if (B::params[i].name == name) return int(i);
+    throw "a block's Degree names a parameter it does not declare";
+}
+
 // The description of block B in family Desc.
 template <class Desc, class B>
 requires StepBlockFor<B, Desc> || EstimatorBlockFor<B, Desc>
@@ -167,6 +190,12 @@ constexpr Desc describeAs() {
         d.apply = &B::apply;
         if constexpr (requires { B::derivative; }) d.derivative = B::derivative;
         if constexpr (requires(Args a) { B::derivativeFor(a); }) d.derivativeFor = &B::derivativeFor;
+        if constexpr (requires { B::degree; }) {
+            if constexpr (!B::degree.param.empty())
+                d.degreeParam = declaredParamIndex<B>(B::degree.param);
+            else
+                d.fixedDegree = B::degree.fixed;
+        }
     }
     return d;
 }

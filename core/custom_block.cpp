@@ -18,9 +18,9 @@ const std::regex kIdentifier("[A-Za-z][A-Za-z0-9_]*");
 // Words a snippet may not use. Loops: the formula's own loop is the only one, and it is
 // bounded (kMaxIterations), so no preset can hang the GPU. The rest would reach outside the
 // block's function or break the generated shader's structure.
-const std::set<std::string> kForbiddenWords{"for",    "while",  "do",     "uniform", "buffer", "layout",
-                                            "shared", "discard", "struct", "in",     "out",    "inout",
-                                            "main",   "formulaDE", "DE"};
+const std::set<std::string> kForbiddenWords{"for",    "while",  "do",      "uniform",   "buffer",
+                                            "layout", "shared", "discard", "struct",    "in",
+                                            "out",    "inout",  "main",    "formulaDE", "DE"};
 
 std::string findForbidden(const std::string& glsl) {
     int line = 1;
@@ -73,7 +73,8 @@ std::string CustomBlock::validate(const Definition& d) {
         const std::string where = "params[" + std::to_string(i) + "]";
         if (!std::regex_match(p.name, kIdentifier) || p.name.size() > 64)
             return where + ".name: '" + p.name + "' is not a GLSL name";
-        if (p.name == "p" || p.name == "c" || kForbiddenWords.count(p.name) || p.name.rfind("gl_", 0) == 0)
+        if (p.name == "p" || p.name == "c" || p.name == "degree" || kForbiddenWords.count(p.name) ||
+            p.name.rfind("gl_", 0) == 0)
             return where + ".name: '" + p.name + "' is reserved";
         if (!names.insert(p.name).second) return where + ".name: '" + p.name + "' is declared twice";
         if (!(p.min <= p.max)) return where + ": min is above max";
@@ -93,8 +94,7 @@ std::string CustomBlock::validate(const Definition& d) {
 }
 
 CustomBlock::CustomBlock(Definition d) : def_(std::move(d)) {
-    for (const auto& p : def_.params)
-        decls_.push_back(ParamDecl{p.name, p.type, p.defaultValue, p.min, p.max, p.help});
+    for (const auto& p : def_.params) decls_.push_back(ParamDecl{p.name, p.type, p.defaultValue, p.min, p.max, p.help});
     desc_ = BlockDesc{def_.id, def_.label.empty() ? def_.id : def_.label, def_.help, def_.category, decls_, def_.glsl};
     desc_.membership = def_.membership;
     desc_.custom = true;
@@ -131,8 +131,10 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
     d.category = categoryFromName(text("category", true, 32), ok);
     if (!ok) fail("category", "expected fold, transform, power or estimator");
     const std::string membership = text("membership", false, 32);
-    if (membership == "escape") d.membership = Membership::EscapeTime;
-    else if (!membership.empty() && membership != "distance") fail("membership", "expected distance or escape");
+    if (membership == "escape")
+        d.membership = Membership::EscapeTime;
+    else if (!membership.empty() && membership != "distance")
+        fail("membership", "expected distance or escape");
     d.glsl = text("glsl", true, kMaxCustomGlslBytes);
     if (j.contains("params")) {
         const auto& params = j["params"];
@@ -148,7 +150,8 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
                 if (!pj.contains(key)) return fallback;
                 if (!pj[key].is_number()) fail(where + "." + key, "expected a number");
                 const double v = pj[key].get<double>();
-                if (!std::isfinite(v) || std::abs(v) > 1e6) fail(where + "." + key, "expected a finite number within 1e6");
+                if (!std::isfinite(v) || std::abs(v) > 1e6)
+                    fail(where + "." + key, "expected a finite number within 1e6");
                 return v;
             };
             for (const auto& [key, value] : pj.items())
@@ -157,9 +160,12 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
             if (!pj.contains("name") || !pj["name"].is_string()) fail(where + ".name", "expected a string");
             p.name = pj["name"].get<std::string>();
             const std::string type = pj.value("type", std::string("float"));
-            if (type == "vec3") p.type = ParamType::Vec3;
-            else if (type == "toggle") p.type = ParamType::Toggle;
-            else if (type != "float") fail(where + ".type", "expected float, vec3 or toggle");
+            if (type == "vec3")
+                p.type = ParamType::Vec3;
+            else if (type == "toggle")
+                p.type = ParamType::Toggle;
+            else if (type != "float")
+                fail(where + ".type", "expected float, vec3 or toggle");
             p.min = num("min", 0.0);
             p.max = num("max", 1.0);
             if (pj.contains("default")) {

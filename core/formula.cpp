@@ -84,6 +84,7 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
             if (n.enabled && n.runsOn(i)) {
                 if (!n.block->apply) throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation");
                 n.block->apply(p, c, n.args());
+                if (n.block->raisesDegree()) p.degree *= n.block->degreeAt(n.args());
             }
         e.trap.value = min(e.trap.value, vec4(abs(p.xyz), length(p.xyz)));
         e.iterations = i + 1;

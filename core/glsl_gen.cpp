@@ -1,6 +1,7 @@
 #include "core/glsl_gen.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <regex>
 #include <stdexcept>
 
@@ -11,6 +12,15 @@ namespace fraktal {
 namespace {
 
 std::string glslType(ParamType t) { return isScalar(t) ? "float" : "vec3"; }
+
+// A number as a GLSL float literal, exact for the small integer degrees blocks declare.
+std::string glslFloat(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    std::string s = buf;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
 
 int countLines(std::string_view s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
@@ -24,12 +34,12 @@ void emitNodeFunction(GlslEmitter& e, int k, const Node& node, const std::string
         params.push_back(
             {glslType(p.type), estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name), p.name});
     const std::string head = std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
-                             (estimator ? "(vec4 p, vec3 c" : "(inout vec4 p, vec3 c");
+                             (estimator ? "(vec4 p, vec3 c, float degree" : "(inout vec4 p, vec3 c");
     e.nodeFunction(k, b.id, name, head, params, b.glsl);
 }
 
 std::string nodeCall(int k, const Node& node, bool estimator) {
-    std::string call = nodeFunctionName(k) + "(p, c";
+    std::string call = nodeFunctionName(k) + (estimator ? "(p, c, degree" : "(p, c");
     for (const ParamDecl& p : node.block->params)
         call += ", " + (estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name));
     return call + ")";
@@ -103,10 +113,17 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         const Node& n = f.nodes[k];
         if (!n.enabled) continue;
-        const std::string call = nodeCall(int(k), n, false) + ";";
+        std::string call = nodeCall(int(k), n, false) + ";";
+        // The product of the power steps' degrees (P4::degree on the CPU), for the estimator.
+        if (n.block->raisesDegree())
+            call +=
+                " degree *= " +
+                (n.block->degreeParam >= 0 ? nodeUniformName(int(k), n.block->params[size_t(n.block->degreeParam)].name)
+                                           : glslFloat(n.block->fixedDegree)) +
+                ";";
         if (n.period > 1)
-            loop +=
-                "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") " + call + "\n";
+            loop += "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") { " + call +
+                    " }\n";
         else
             loop += "        " + call + "\n";
     }

@@ -132,7 +132,7 @@ Formula parseFormula(const ReadContext& context, const json& j) {
         if (!n.block->isEstimator() && last)
             throw PresetError(context.file, nodePath,
                               "the node list must end with an estimator (box, sphere, tetrahedron, escape_log, "
-                              "escape_linear), found '" +
+                              "escape_potential, escape_linear), found '" +
                                   std::string(n.block->id) + "'");
         if (last) {
             checkEstimatorSchedule(n, context.file, nodePath);

@@ -103,6 +103,7 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RayS
     };
     add(linearEstimator());
     add(Node::make(*findBlock("escape_log")));
+    add(Node::make(*findBlock("escape_potential")));
     std::stable_sort(out.begin(), out.end(), [](const EstimatorMeasurement& a, const EstimatorMeasurement& b) {
         return a.speed() > b.speed();
     });

@@ -16,6 +16,10 @@ using mat3 = glm::dmat3;
 struct P4 {
     vec3 xyz{0.0};
     double w = 1.0;
+    // The product of the degrees of the power steps applied so far (BlockDesc::degreeAt; GLSL:
+    // `degree`, a local of formulaEval that the estimator receives): escape-time potential
+    // estimates divide log r by it.
+    double degree = 1.0;
 };
 
 using glm::abs;

@@ -21,6 +21,7 @@ struct MandelbulbPhase {
         "Mandelbulb power with theta and phi phase offsets (degrees) added after the multiplication.";
     static constexpr Category category = Category::Power;
     static constexpr DerivativeBound derivative = DerivativeBound::None;  // a phase sends a pole to a circle
+    static constexpr Degree degree{"power"};
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
         ParamDecl{"theta_phase", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Added to n theta, degrees."},
@@ -66,6 +67,7 @@ struct MandelbulbSine {
     static constexpr std::string_view help = "Mandelbulb with latitude theta = asin(z/r): z = r^n sin(n theta).";
     static constexpr Category category = Category::Power;
     static constexpr DerivativeBound derivative = DerivativeBound::None;  // the poles go to circles unless n is odd
+    static constexpr Degree degree{"power"};
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
     };
@@ -110,6 +112,7 @@ struct MandelbulbCosine {
     static constexpr std::string_view help = "Mandelbulb with polar theta = acos(z/r): z = r^n cos(n theta).";
     static constexpr Category category = Category::Power;
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
+    static constexpr Degree degree{"power"};
     static DerivativeBound derivativeFor(Args a) { return sphericalPowerBound(a.f(0)); }
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
@@ -158,6 +161,7 @@ struct Bristorbrot {
     static constexpr std::string_view help = "Quadratic hypercomplex power: (x^2 - y^2 - z^2, y (2x - z), z (2x + y)).";
     static constexpr Category category = Category::Power;
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
+    static constexpr Degree degree{{}, 2.0};
     static constexpr std::array params{
         ParamDecl{"twist",
                   ParamType::Float,

@@ -64,6 +64,7 @@ constexpr std::array kBlocks{
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),
     describe<EscapeLogEstimator>(),
+    describe<EscapePotentialEstimator>(),
     describe<EscapeLinearEstimator>(),
     describe<PseudoKleinianEstimator>(),
     describe<KleinianEstimator>(),

@@ -16,6 +16,7 @@ uniform float u_boundRadius;
 float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped) {
     vec4 p = vec4(pos, 1.0);
     vec3 c = pos;
+    float degree = 1.0;  // the power steps' degrees multiplied (P4::degree on the CPU)
     trap = vec4(1e20);
     iterations = 0;
     escaped = false;

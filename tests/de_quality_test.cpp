@@ -137,3 +137,54 @@ TEST(DEQuality, MandelbulbDistanceIsCloseAwayFromTheSurface) {
     // radial one (formulas/mandelbulb.hpp): there the estimate may be that much under.
     EXPECT_GE(lowest, 0.5 / 8.0);
 }
+
+// A power alone (no add c) keeps the unit ball: |F(v)| = |v|^n, and the object is r <= 1. The
+// potential estimate (formulas/estimators.hpp) is half the distance to it at every r for a map
+// whose running derivative is its radial stretch, the twist-free Bristorbrot
+// (x^2 - y^2 - z^2, 2xy, 2xz), whose Jacobian is 2r times a rotation; it needs the product of
+// the degrees (2^k after k steps, P4::degree). The log estimate there is 0.5 r log r, 0.82 of the
+// distance at r = 3. For the spherical powers the running derivative may be larger than the
+// radial stretch (the phi stretch near the poles), so the estimate is at most half the distance.
+TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToAPowersUnitBall) {
+    const auto points = test::randomPoints(3000, 1.0, 29);
+    for (int iterations : {1, 2, 5, 12}) {
+        Formula f;
+        f.iterations = iterations;
+        f.bailout = 4.0;
+        f.estimator = Node::make(*findBlock("escape_potential"));
+        Node square = Node::make(*findBlock("bristorbrot"));
+        square.values[0].x = 0.0;
+        f.nodes = {square};
+        Formula log = f;
+        log.estimator = Node::make(*findBlock("escape_log"));
+        double worstError = 0.0, logAtThree = 0.0;
+        for (const vec3& d : points) {
+            if (length(d) < 0.05) continue;
+            const double r = 1.02 + 1.98 * length(d);  // (1.02, 3]
+            const vec3 p = normalize(d) * r;
+            worstError = std::max(worstError, std::abs(distanceEstimate(f, p) / (0.5 * (r - 1.0)) - 1.0));
+            if (r > 2.9) logAtThree = std::max(logAtThree, distanceEstimate(log, p) / (r - 1.0));
+        }
+        EXPECT_LT(worstError, 1e-7) << iterations << " iterations";  // rounding over 2^k-fold products
+        EXPECT_GT(logAtThree, 0.78) << iterations << " iterations";
+    }
+    for (const char* id : {"mandelbulb", "mandelbulb_sine", "mandelbulb_cosine", "mandelbulb_phase"}) {
+        for (double power : {2.0, 3.0, 8.0}) {
+            Formula f;
+            f.iterations = 6;
+            f.bailout = 4.0;
+            f.estimator = Node::make(*findBlock("escape_potential"));
+            Node bulb = Node::make(*findBlock(id));
+            bulb.values[0].x = power;
+            f.nodes = {bulb};
+            double highest = 0.0;
+            for (const vec3& d : points) {
+                if (length(d) < 0.05) continue;
+                const double r = 1.02 + 1.98 * length(d);
+                highest = std::max(highest, distanceEstimate(f, normalize(d) * r) / (0.5 * (r - 1.0)));
+            }
+            EXPECT_LE(highest, 1.0 + 1e-9) << id << " power " << power;
+            EXPECT_GT(highest, 0.99) << id << " power " << power;  // reached where the stretch is radial
+        }
+    }
+}

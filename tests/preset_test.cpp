@@ -187,6 +187,8 @@ const BadPreset kBadPresets[] = {
     {"custom_glsl_preprocessor.json", "formula.customBlocks[0].glsl", "preprocessor directives are not allowed"},
     {"custom_block_builtin_id.json", "formula.customBlocks[0].id", "'box_fold' is a built-in block"},
     {"custom_block_reserved_param.json", "formula.customBlocks[0].params[0].name", "'p' is reserved"},
+    // An estimator receives the power steps' degree product as `degree`.
+    {"custom_estimator_param_degree.json", "formula.customBlocks[0].params[0].name", "'degree' is reserved"},
     {"custom_block_defined_twice.json", "formula.customBlocks[1].id", "'spin' is defined twice"},
     {"custom_block_forbidden_word.json", "formula.customBlocks[0].glsl", "'gl_WorkGroupID' is not allowed"},
     {"custom_estimator_without_return.json", "formula.customBlocks[0].glsl", "must return the distance"},

@@ -181,14 +181,15 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
 // 200 random stacks of 1-4 shipped blocks with random in-range parameters (seeded), closed as the
 // editor closes a stack after a structure change (fitEstimatorToBlocks: the log estimate for
 // power stacks, the linear one for stacks that add c, a box primitive for pure IFS stacks). For
-// each, the check's choice (compareEstimators on its own rays) is applied, and on other rays
+// each, the check's choice (compareEstimators on its own rays: the own, linear, log and potential
+// estimates) is applied, and on other rays
 // every sampled DE * factor stays at or under the true distance along the ray (baseline marcher
 // with bisection). Stacks a preset may not hold (no power, fold or scale: canBoundEscape), stacks
 // the check reports NOT SOUND (no safe step factor) and stacks whose object the check's rays
 // never reach from outside (nothing inside the bound, or everything) are drawn again.
 // The median ratio over all samples is printed with its distribution. The goal is above
-// 0.5; with the margins SafeStepOptions keeps for estimates (0.8, jumps 0.6) it is about 0.37,
-// and the assertion holds it there.
+// 0.5; with the margins SafeStepOptions keeps for estimates (0.8, jumps 0.7) it is 0.45 (0.37
+// before the potential estimate and the 0.7 jump margin), and the assertion holds it there.
 TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     const std::vector<const BlockDesc*> blocks = stepBlocks();
     std::mt19937_64 rng(20);
@@ -257,7 +258,7 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     printDistribution("per-stack median ratio", stackMedians);
     printDistribution("step factor", factors);
     EXPECT_GT(ratios.size(), 20000u);
-    EXPECT_GT(percentile(ratios, 0.5), 0.33) << "safe only by being slow";
+    EXPECT_GT(percentile(ratios, 0.5), 0.43) << "safe only by being slow";
 }
 
 // The editor's hook: an opened document keeps its factor; a change of structure sets the one the

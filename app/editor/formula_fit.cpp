@@ -49,7 +49,11 @@ bool fitEstimatorToBlocks(Formula& f) {
     };
     switch (familyOf(f)) {
         case Family::Power:
-            changed |= setEstimatorId(f, "escape_log");
+            // The potential-corrected log estimate: the same near the object, tighter far from it,
+            // so the measured step factor is larger (bench/README: DE evaluations per pixel). A
+            // user's log estimate is kept.
+            if (!f.estimator.block || f.estimator.block->id != "escape_log")
+                changed |= setEstimatorId(f, "escape_potential");
             if (f.bailout > 16.0 || f.bailout < 1.5) f.bailout = 2.0, changed = true;
             break;
         case Family::EscapeLinear:
