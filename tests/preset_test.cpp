@@ -291,6 +291,35 @@ TEST(Preset, CheckCommandFlagsAnUnsafeFormula) {
     EXPECT_NE(r.output.find("multiply formula.deFactor by"), std::string::npos) << r.output;
 }
 
+// `check --frame N` checks the preset as its animation has it at frame N. The power morph keys the
+// Mandelbulb's power from 3 through 8 to 12; between integer powers the map jumps at the atan2
+// cut, and at frames 40 and 164 the check's rays find it (safe factors 0.30 and 0.35, where most
+// frames measure 1.2-1.4): the factor the preset runs with stays under the one the check measures.
+TEST(Preset, CheckCommandChecksAnAnimationFrame) {
+    const std::string morph = (test::sourceDir() / "presets/mandelbulb_power_morph.json").string();
+    const test::CliRun atKey = test::runCli("check --rays 20 --frame 120 " + morph);
+    EXPECT_NE(atKey.output.find("at frame 120"), std::string::npos) << atKey.output;
+    EXPECT_NE(atKey.output.find("power = 8\n"), std::string::npos) << atKey.output;
+    for (int frame : {40, 100, 164}) {
+        const test::CliRun r = test::runCli("check --frame " + std::to_string(frame) + " " + morph);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        double safe = 0.0, now = 0.0;
+        const size_t at = r.output.find("safe step factor: formula.deFactor ");
+        ASSERT_NE(at, std::string::npos) << r.output;
+        ASSERT_EQ(std::sscanf(r.output.c_str() + at, "safe step factor: formula.deFactor %lf (now %lf", &safe, &now),
+                  2);
+        EXPECT_LE(now, safe) << "frame " << frame << ":\n" << r.output;
+    }
+    const test::CliRun still =
+        test::runCli("check --frame 3 " + (test::sourceDir() / "presets/mandelbulb.json").string());
+    EXPECT_EQ(still.exitCode, 2);
+    EXPECT_NE(still.output.find("--frame 3: the preset has no animation"), std::string::npos) << still.output;
+    const test::CliRun outside = test::runCli("check --frame 400 " + morph);
+    EXPECT_EQ(outside.exitCode, 2);
+    EXPECT_NE(outside.output.find("--frame 400: outside the animation's frames 0-239"), std::string::npos)
+        << outside.output;
+}
+
 // --- Fields of a newer format version -------------------------------------------------------
 
 namespace {
