@@ -64,6 +64,12 @@ DerivativeBound derivativeBound(const std::vector<Node>& nodes) {
     return weakest;
 }
 
+int firstJumpingStep(const std::vector<Node>& nodes) {
+    for (size_t k = 0; k < nodes.size(); ++k)
+        if (nodes[k].enabled && nodes[k].block->derivativeAt(nodes[k].args()) == DerivativeBound::None) return int(k);
+    return -1;
+}
+
 bool Formula::cpuEvaluable() const {
     for (const Node& n : nodes)
         if (n.block->custom) return false;

@@ -78,6 +78,9 @@ bool canBoundEscape(const std::vector<Node>& nodes);
 // The weakest DerivativeBound of the enabled steps (Global for none): whether the estimator's
 // distance over p.w is a proven bound.
 DerivativeBound derivativeBound(const std::vector<Node>& nodes);
+// The index of the first enabled step whose map jumps (DerivativeBound::None), or -1: its step
+// factor can only be measured on sampled rays, and rare rays near the jump may overshoot more.
+int firstJumpingStep(const std::vector<Node>& nodes);
 
 // Throws std::logic_error for a formula that is not cpuEvaluable().
 Evaluation evaluate(const Formula& f, const vec3& pos);

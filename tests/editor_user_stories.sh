@@ -190,7 +190,7 @@ stop
 #    structure: the check measures the new stack and the document's factor becomes the measured
 #    one. A Kleinian step whose wrap widths are not its group's, between a rotation and two folds,
 #    has no safe factor: after the same delete the editor applies the smallest factor and says so
-#    in the DE step factor section.
+#    in the DE step factor section, naming the Kleinian step as one that jumps.
 bulb="$home/rotate_bulb.json"
 jq '.formula.nodes = [{"block": "rotate"}] + .formula.nodes' "$presets/mandelbulb.json" >"$bulb"
 start "$bulb"
@@ -204,6 +204,7 @@ measured=$(q .stepFactor.measured)
 [ "$(q .document.formula.deFactor)" = "$measured" ] ||
     fail "after the delete the factor is $(q .document.formula.deFactor), not the measured $measured"
 [ "$(q .stepFactor.noSafeFactor)" = false ] || fail "the Mandelbulb has no safe factor (worst $(q .stepFactor.worst))"
+[ "$(q .stepFactor.jumpingStep)" = -1 ] || fail "the power-8 Mandelbulb is said to jump at step $(q .stepFactor.jumpingStep)"
 echo "step factor: opened at $opened, measured $measured after deleting the Rotate"
 stop
 wrap="$home/kleinian_wrap.json"
@@ -222,6 +223,8 @@ wait_for '.stepFactor.measured > 0 or .stepFactor.noHits' true
 [ "$(q .stepFactor.noSafeFactor)" = true ] ||
     fail "the Kleinian wrap outside its group got a safe factor $(q .stepFactor.measured) (worst $(q .stepFactor.worst))"
 [ "$(q .document.formula.deFactor)" = 0.001 ] || fail "without a safe factor the editor applied $(q .document.formula.deFactor)"
+# The section also says which step jumps: the Kleinian step, second after the delete.
+[ "$(q .stepFactor.jumpingStep)" = 1 ] || fail "the Kleinian step is not named as jumping ($(q .stepFactor.jumpingStep))"
 import -window root "$out/story_no_safe_factor.png"
 echo "no safe factor: worst DE / true distance $(q .stepFactor.worst), factor $(q .document.formula.deFactor)"
 stop

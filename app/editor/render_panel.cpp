@@ -136,6 +136,15 @@ void drawStepFactorSection(AutoStepFactor& a, Formula& f) {
         ImGui::TextDisabled("Measured for this structure: %.3f (%.2f s)", a.measured, a.seconds);
     else
         ImGui::TextDisabled("The preset's own factor (measured after a structure change).");
+    if (const int k = firstJumpingStep(f.nodes); k >= 0) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1),
+                           "Step %d (%s) jumps (a non-integer power's cut, a pole, a wrap): the factor is measured "
+                           "on sampled rays, not proven. Rare rays near the jump may overshoot: lower it by hand "
+                           "if specks show.",
+                           k + 1, std::string(f.nodes[size_t(k)].block->label).c_str());
+        ImGui::PopTextWrapPos();
+    }
 }
 
 void drawColourSection(EditorState& s, RenderSettings& r) {

@@ -93,7 +93,9 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                        {"overridden", a.overridden},
                        {"noHits", a.noHits},
                        {"noSafeFactor", a.noSafeFactor},
-                       {"worst", a.worst}};
+                       {"worst", a.worst},
+                       // The step the DE step factor section names as jumping (-1: none).
+                       {"jumpingStep", firstJumpingStep(s.doc.preset.formula.nodes)}};
     // The parameter widgets of the selected node as drawn (window coordinates) and the help text
     // of the parameter tooltip shown, as the widget wrote them this frame.
     json widgets = json::array();
