@@ -314,6 +314,10 @@ TEST(Preset, CheckCommandChecksAnAnimationFrame) {
         test::runCli("check --frame 3 " + (test::sourceDir() / "presets/mandelbulb.json").string());
     EXPECT_EQ(still.exitCode, 2);
     EXPECT_NE(still.output.find("--frame 3: the preset has no animation"), std::string::npos) << still.output;
+    const test::CliRun plane =
+        test::runCli("check --frame 3 " + (test::sourceDir() / "presets/2d/mandelbrot.json").string());
+    EXPECT_EQ(plane.exitCode, 2);
+    EXPECT_NE(plane.output.find("--frame 3: 2D presets have no animation"), std::string::npos) << plane.output;
     const test::CliRun outside = test::runCli("check --frame 400 " + morph);
     EXPECT_EQ(outside.exitCode, 2);
     EXPECT_NE(outside.output.find("--frame 400: outside the animation's frames 0-239"), std::string::npos)

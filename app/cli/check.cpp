@@ -78,6 +78,8 @@ void printLoadNotes(const std::vector<std::string>& migrationNotes, const KeptFi
 // for 3D ray marching; the 2D renderer evaluates every sample to the end of its orbit.
 int runPlaneCheck(const CheckOptions& o) {
     const PlanePreset preset = loadPlanePreset(o.preset);
+    if (o.frame)
+        throw std::runtime_error(o.preset + ": --frame " + std::to_string(*o.frame) + ": 2D presets have no animation");
     std::printf("%s: %s (2D)\n", o.preset.c_str(), preset.name.empty() ? "(unnamed)" : preset.name.c_str());
     printLoadNotes(preset.migrationNotes, preset.unknownFields, preset.formatVersion);
     std::printf("formula: %s", describePlaneFormula(preset.formula).c_str());
@@ -210,7 +212,7 @@ int runCheck(const CheckOptions& o) {
     // Steps whose map jumps (a non-integer power's atan2 cut, a phase's pole, a wrap): the rays
     // that pass close to a jump are rare, and the overshoot there has no bound, so no number of
     // sampled rays proves a factor (a power morph at power 7.2 overshot 8x at factor 1 on one
-    // ray in 2000 whose rounds of rays had allowed 1.26).
+    // ray in 2000 where the rounds of rays had allowed 1.25).
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         const Node& n = f.nodes[k];
         if (n.enabled && n.block->derivativeAt(n.args()) == DerivativeBound::None)
