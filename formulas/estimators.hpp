@@ -104,9 +104,9 @@ struct EscapeLogEstimator {
 // log estimate is 0.5 r log r against r - 1. (1 - e^-G) / |grad G| is r - 1 there at every r, and
 // G / |grad G| as G goes to 0, so the estimate is the log one times q = (1 - e^-G) / G: equal at
 // the surface, smaller far away, half the distance to the unit ball everywhere. One step factor
-// then fits near and far samples alike (tests/safe_step_test.cpp). Below G = 0.1 q is its series to G^4
-// (error under 2e-8): 1 - exp(-G) loses digits to cancellation in single precision, 1e-4 of
-// them at G = 1e-3. A degree that overflowed gives G = 0 and q = 1.
+// then fits near and far samples alike (tests/safe_step_test.cpp). Below G = 0.1, q is its
+// series to G^4 (error under 2e-8): 1 - exp(-G) loses digits to cancellation in single
+// precision, 1e-4 of them at G = 1e-3. A degree that overflowed gives G = 0 and q = 1.
 struct EscapePotentialEstimator {
     static constexpr std::string_view id = "escape_potential";
     static constexpr std::string_view label = "Escape time (potential)";
