@@ -66,7 +66,7 @@ DerivativeBound derivativeBound(const std::vector<Node>& nodes) {
 
 int firstJumpingStep(const std::vector<Node>& nodes) {
     for (size_t k = 0; k < nodes.size(); ++k)
-        if (nodes[k].enabled && nodes[k].block->derivativeAt(nodes[k].args()) == DerivativeBound::None) return int(k);
+        if (jumps(nodes[k])) return int(k);
     return -1;
 }
 

@@ -78,8 +78,10 @@ bool canBoundEscape(const std::vector<Node>& nodes);
 // The weakest DerivativeBound of the enabled steps (Global for none): whether the estimator's
 // distance over p.w is a proven bound.
 DerivativeBound derivativeBound(const std::vector<Node>& nodes);
-// The index of the first enabled step whose map jumps (DerivativeBound::None), or -1: its step
-// factor can only be measured on sampled rays, and rare rays near the jump may overshoot more.
+// Whether the node is an enabled step whose map jumps (DerivativeBound::None): a step factor can
+// only be measured on sampled rays, and rare rays near the jump may overshoot more.
+inline bool jumps(const Node& n) { return n.enabled && n.block->derivativeAt(n.args()) == DerivativeBound::None; }
+// The index of the first step that jumps, or -1.
 int firstJumpingStep(const std::vector<Node>& nodes);
 
 // Throws std::logic_error for a formula that is not cpuEvaluable().

@@ -82,15 +82,16 @@ Node linearEstimator() { return Node::make(*findBlock("escape_linear")); }
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Camera& camera,
                                                     const SafeStepOptions& options) {
     CpuSampler s(f);
-    return compareEstimators(f, sampleSafeStepRays(s, camera, options).samples, options);
+    return compareEstimators(f, sampleSafeStepRays(s, camera, options), options);
 }
 
-std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RaySamples& samples,
+std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const SafeStepRays& rays,
                                                     const SafeStepOptions& options) {
+    const RaySamples& samples = rays.samples;
     Formula unit = f;
     unit.deFactor = 1.0;
-    CpuSampler own(unit);
-    std::vector<EstimatorMeasurement> out{measured(f, f.estimator, compareWithSamples(own, samples), options)};
+    // The rounds evaluated f's own estimate on these samples already.
+    std::vector<EstimatorMeasurement> out{measured(f, f.estimator, atUnitFactor(rays.report, f.deFactor), options)};
     if (f.estimator.block->membership != Membership::EscapeTime) return out;
 
     auto add = [&](const Node& estimator) {

@@ -128,8 +128,9 @@ Node linearEstimator();
 // Needs a CPU-evaluable formula.
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Camera& camera,
                                                     const SafeStepOptions& options = {});
-// The same on rays already sampled (sampleRays of f, at any deFactor).
-std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const RaySamples& samples,
+// The same on rays already sampled for f (sampleSafeStepRays with a CPU sampler of f), whose
+// report is f's own estimate.
+std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const SafeStepRays& rays,
                                                     const SafeStepOptions& options);
 
 // f with the best estimator of compareEstimators and its safe step factor applied.

@@ -31,8 +31,7 @@ struct MandelbulbPhase {
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (r > 0.0) {
-        float theta0 = atan(length(p.xz), p.y);
-        float theta = theta0 * power + radians(theta_phase);
+        float theta = atan(length(p.xz), p.y) * power + radians(theta_phase);
         float phi = atan(p.x, p.z) * power + radians(phi_phase);
         float sinTheta = length(p.xz) / r, sinImage = abs(sin(theta));
         float phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
@@ -46,8 +45,7 @@ struct MandelbulbPhase {
         const double power = a.f(0), theta_phase = a.f(1), phi_phase = a.f(2);
         double r = length(p.xyz);
         if (r > 0.0) {
-            double theta0 = std::atan2(std::hypot(p.xyz.x, p.xyz.z), p.xyz.y);
-            double theta = theta0 * power + glm::radians(theta_phase);
+            double theta = std::atan2(std::hypot(p.xyz.x, p.xyz.z), p.xyz.y) * power + glm::radians(theta_phase);
             double phi = std::atan2(p.xyz.x, p.xyz.z) * power + glm::radians(phi_phase);
             double sinTheta = std::hypot(p.xyz.x, p.xyz.z) / r, sinImage = abs(sin(theta));
             double phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
@@ -75,8 +73,7 @@ struct MandelbulbSine {
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (r > 0.0) {
-        float theta0 = atan(p.z, length(p.xy));
-        float theta = theta0 * power;
+        float theta = atan(p.z, length(p.xy)) * power;
         float phi = atan(p.y, p.x) * power;
         float cosTheta = length(p.xy) / r, cosImage = abs(cos(theta));
         float phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
@@ -90,8 +87,7 @@ struct MandelbulbSine {
         const double power = a.f(0);
         double r = length(p.xyz);
         if (r > 0.0) {
-            double theta0 = std::atan2(p.xyz.z, std::hypot(p.xyz.x, p.xyz.y));
-            double theta = theta0 * power;
+            double theta = std::atan2(p.xyz.z, std::hypot(p.xyz.x, p.xyz.y)) * power;
             double phi = std::atan2(p.xyz.y, p.xyz.x) * power;
             double cosTheta = std::hypot(p.xyz.x, p.xyz.y) / r, cosImage = abs(cos(theta));
             double phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
@@ -121,8 +117,7 @@ struct MandelbulbCosine {
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (r > 0.0) {
-        float theta0 = atan(length(p.xy), p.z);
-        float theta = theta0 * power;
+        float theta = atan(length(p.xy), p.z) * power;
         float phi = atan(p.y, p.x) * power;
         float sinTheta = length(p.xy) / r, sinImage = abs(sin(theta));
         float phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
@@ -136,8 +131,7 @@ struct MandelbulbCosine {
         const double power = a.f(0);
         double r = length(p.xyz);
         if (r > 0.0) {
-            double theta0 = std::atan2(std::hypot(p.xyz.x, p.xyz.y), p.xyz.z);
-            double theta = theta0 * power;
+            double theta = std::atan2(std::hypot(p.xyz.x, p.xyz.y), p.xyz.z) * power;
             double phi = std::atan2(p.xyz.y, p.xyz.x) * power;
             double sinTheta = std::hypot(p.xyz.x, p.xyz.y) / r, sinImage = abs(sin(theta));
             double phiStretch = sinImage < power * sinTheta ? max(1.0, sinImage / sinTheta) : power;
@@ -186,9 +180,9 @@ struct Bristorbrot {
 )";
     static void apply(P4& p, const vec3&, Args a) {
         const double twist = a.f(0);
-        const vec3 v0 = p.xyz;
-        glm::dmat3 J(2.0 * v0, vec3(-2.0 * v0.y, 2.0 * v0.x - twist * v0.z, twist * v0.z),
-                     vec3(-2.0 * v0.z, -twist * v0.y, 2.0 * v0.x + twist * v0.y));
+        const vec3 v = p.xyz;
+        glm::dmat3 J(2.0 * v, vec3(-2.0 * v.y, 2.0 * v.x - twist * v.z, twist * v.z),
+                     vec3(-2.0 * v.z, -twist * v.y, 2.0 * v.x + twist * v.y));
         glm::dmat3 M = glm::transpose(J) * J;
         double q = (M[0][0] + M[1][1] + M[2][2]) / 3.0;
         double off = M[1][0] * M[1][0] + M[2][0] * M[2][0] + M[2][1] * M[2][1];
@@ -197,7 +191,6 @@ struct Bristorbrot {
         double half_det = spread > 0.0 ? glm::determinant((M - glm::dmat3(q)) / spread) * 0.5 : 0.0;
         double largest = q + 2.0 * spread * std::cos(std::acos(clamp(half_det, -1.0, 1.0)) / 3.0);
         p.w *= std::sqrt(max(largest, 0.0));
-        const vec3 v = p.xyz;
         p.xyz =
             vec3(v.x * v.x - v.y * v.y - v.z * v.z, v.y * (2.0 * v.x - twist * v.z), v.z * (2.0 * v.x + twist * v.y));
     }

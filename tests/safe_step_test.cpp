@@ -179,11 +179,11 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
 }
 
 // 200 random stacks of 1-4 shipped blocks with random in-range parameters (seeded), closed as the
-// editor closes a stack after a structure change (fitEstimatorToBlocks: the log estimate for
-// power stacks, the linear one for stacks that add c, a box primitive for pure IFS stacks). For
-// each, the check's choice (compareEstimators on its own rays: the own, linear, log and potential
-// estimates) is applied, and on other rays
-// every sampled DE * factor stays at or under the true distance along the ray (baseline marcher
+// editor closes a stack after a structure change (fitEstimatorToBlocks: power stacks keep the
+// log estimate they start with, stacks that add c get the linear one, pure IFS stacks a box
+// primitive). For each, the check's choice (compareEstimators on its own rays: the own, linear,
+// log and potential estimates) is applied, and on other rays every sampled DE * factor stays at
+// or under the true distance along the ray (baseline marcher
 // with bisection). Stacks a preset may not hold (no power, fold or scale: canBoundEscape), stacks
 // the check reports NOT SOUND (no safe step factor) and stacks whose object the check's rays
 // never reach from outside (nothing inside the bound, or everything) are drawn again.
