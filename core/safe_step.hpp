@@ -3,9 +3,9 @@
 //
 // Every block carries the running derivative w in p.w: similarity transforms and conformal
 // folds multiply it by their scale (1 for rotations, translations, box and plane folds; |s| for
-// scales; the fold factor for sphere folds and inversions), non-conformal deforms by a bound of
-// their Lipschitz constant (twist and bend: 1 + |k| r), add_c adds |weight| (nothing in Julia
-// mode). The spherical powers multiply it by their largest stretch,
+// scales; the fold factor for sphere folds and inversions), non-conformal deforms by their
+// Jacobian's largest singular value (twist and bend: that of I + u v^T, |u| = |k| r), add_c adds
+// |weight| (nothing in Julia mode). The spherical powers multiply it by their largest stretch,
 // n r^(n-1) max(1, |sin(n theta + phase) / sin(theta)|) clamped to n (formulas/mandelbulb.hpp,
 // formulas/mandelbulb_variants.hpp), the Bristorbrot by its Jacobian's largest singular value,
 // the quaternion orbits by the analytic scalar 2 |q| (White/Nylander;

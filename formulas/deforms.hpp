@@ -29,7 +29,9 @@ struct ModTile {
 };
 
 // Twist about the y axis: rotate x,z by k y radians. The Jacobian is R (I + u e_y^T) with
-// |u| = |k| rxz, so its norm is at most 1 + |k| rxz.
+// u = k (-z, 0, x) orthogonal to e_y, |u| = |k| rxz; the largest singular value of I + u v^T
+// with u orthogonal to the unit v is (|u| + sqrt(|u|^2 + 4)) / 2, under the 1 + |u| of the
+// triangle inequality by up to 1.25x per step (at |u| = 1.5).
 struct Twist {
     static constexpr std::string_view id = "twist_y";
     static constexpr std::string_view label = "Twist";
@@ -43,18 +45,23 @@ struct Twist {
     static constexpr std::string_view glsl = R"(
     float s = sin(rate * p.y), co = cos(rate * p.y);
     p.xz = vec2(co * p.x - s * p.z, s * p.x + co * p.z);
-    p.w *= 1.0 + abs(rate) * length(p.xz);
+    float u = abs(rate) * length(p.xz);
+    p.w *= 0.5 * (u + sqrt(u * u + 4.0));
 )";
     static void apply(P4& p, const vec3&, Args a) {
         const double rate = a.f(0);
         double s = sin(rate * p.xyz.y), co = cos(rate * p.xyz.y);
         const double x = p.xyz.x, z = p.xyz.z;
         p.xyz.x = co * x - s * z, p.xyz.z = s * x + co * z;
-        p.w *= 1.0 + abs(rate) * std::hypot(p.xyz.x, p.xyz.z);
+        const double u = abs(rate) * std::hypot(p.xyz.x, p.xyz.z);
+        p.w *= 0.5 * (u + sqrt(u * u + 4.0));
     }
 };
 
-// Bend about the z axis: rotate x,y by k x radians; the same bound as the twist, with rxy.
+// Bend about the z axis: rotate x,y by k x radians. The Jacobian is R (I + u e_x^T) with
+// u = k (-y, x, 0), which leans on e_x by a = -k y and across it by b = |k x|: in the plane of e_x
+// and u that is [[1 + a, 0], [b, 1]], whose largest singular value is
+// (sqrt((2 + a)^2 + b^2) + sqrt(a^2 + b^2)) / 2, and sqrt(a^2 + b^2) = |k| rxy.
 struct Bend {
     static constexpr std::string_view id = "bend_z";
     static constexpr std::string_view label = "Bend";
@@ -67,15 +74,15 @@ struct Bend {
 
     static constexpr std::string_view glsl = R"(
     float s = sin(rate * p.x), co = cos(rate * p.x);
+    p.w *= 0.5 * (length(vec2(2.0 - rate * p.y, rate * p.x)) + abs(rate) * length(p.xy));
     p.xy = vec2(co * p.x - s * p.y, s * p.x + co * p.y);
-    p.w *= 1.0 + abs(rate) * length(p.xy);
 )";
     static void apply(P4& p, const vec3&, Args a) {
         const double rate = a.f(0);
         double s = sin(rate * p.xyz.x), co = cos(rate * p.xyz.x);
         const double x = p.xyz.x, y = p.xyz.y;
+        p.w *= 0.5 * (std::hypot(2.0 - rate * y, rate * x) + abs(rate) * std::hypot(x, y));
         p.xyz.x = co * x - s * y, p.xyz.y = s * x + co * y;
-        p.w *= 1.0 + abs(rate) * std::hypot(p.xyz.x, p.xyz.y);
     }
 };
 
