@@ -99,6 +99,11 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
             break;
         }
     }
+    double remainingDegree = 1.0;
+    for (int j = e.iterations; j < iterations; ++j)
+        for (const Node& n : f.nodes)
+            if (n.enabled && n.runsOn(j) && n.block->raisesDegree()) remainingDegree *= n.block->degreeAt(n.args());
+    p.surfaceLogR = p.degree * remainingDegree > 1.0 ? std::log(f.bailout) / remainingDegree : 0.0;
     e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
     e.inside = isInside(*f.estimator.block, e.distance, e.escaped);
     return e;

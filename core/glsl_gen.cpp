@@ -34,12 +34,12 @@ void emitNodeFunction(GlslEmitter& e, int k, const Node& node, const std::string
         params.push_back(
             {glslType(p.type), estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name), p.name});
     const std::string head = std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
-                             (estimator ? "(vec4 p, vec3 c, float degree" : "(inout vec4 p, vec3 c");
+                             (estimator ? "(vec4 p, vec3 c, float degree, float surfaceLogR" : "(inout vec4 p, vec3 c");
     e.nodeFunction(k, b.id, name, head, params, b.glsl);
 }
 
 std::string nodeCall(int k, const Node& node, bool estimator) {
-    std::string call = nodeFunctionName(k) + (estimator ? "(p, c, degree" : "(p, c");
+    std::string call = nodeFunctionName(k) + (estimator ? "(p, c, degree, surfaceLogR" : "(p, c");
     for (const ParamDecl& p : node.block->params)
         call += ", " + (estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name));
     return call + ")";
@@ -109,26 +109,32 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     emitNodeFunction(e, est, f.estimator, g.nodeNames.back(), true);
 
     std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
-    std::string loop;
+    std::string loop, remaining;
+    // A statement run in the iterations the node runs on.
+    auto onItsIterations = [](const Node& n, const std::string& statement) {
+        if (n.period == 1) return "        " + statement + "\n";
+        return "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") { " + statement +
+               " }\n";
+    };
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         const Node& n = f.nodes[k];
         if (!n.enabled) continue;
         std::string call = nodeCall(int(k), n, false) + ";";
-        // The product of the power steps' degrees (P4::degree on the CPU), for the estimator.
-        if (n.block->raisesDegree())
-            call +=
-                " degree *= " +
-                (n.block->degreeParam >= 0 ? nodeUniformName(int(k), n.block->params[size_t(n.block->degreeParam)].name)
-                                           : glslFloat(n.block->fixedDegree)) +
-                ";";
-        if (n.period > 1)
-            loop += "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") { " + call +
-                    " }\n";
-        else
-            loop += "        " + call + "\n";
+        // The product of the power steps' degrees (P4::degree on the CPU), for the estimator; and
+        // that of the iterations after an escape.
+        if (n.block->raisesDegree()) {
+            const std::string d = n.block->degreeParam >= 0
+                                      ? nodeUniformName(int(k), n.block->params[size_t(n.block->degreeParam)].name)
+                                      : glslFloat(n.block->fixedDegree);
+            call += " degree *= " + d + ";";
+            remaining += onItsIterations(n, "remainingDegree *= " + d + ";");
+        }
+        loop += onItsIterations(n, call);
     }
     if (!loop.empty()) loop.pop_back();
+    if (!remaining.empty()) remaining.pop_back();
     replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
+    replaceMarker(rest, "//@FRAKTAL_REMAINING_DEGREE", remaining);
     replaceMarker(rest, "//@FRAKTAL_ESTIMATE", "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";");
     e.restoreFormulaLines();
     e.out += rest;

@@ -12,7 +12,9 @@
 // Syntopia, "Distance estimated 3D fractals" part V). Each step block declares how far its factor
 // bounds its stretch (DerivativeBound, core/block.hpp). The escape-time estimators divide by it:
 // - log, 0.5 log(r) r / w: the Hubbard-Douady potential's lower bound, for power iterations
-//   (Syntopia part V; Knighty's notes on fractalforums.com, "Mandelbulb distance estimation").
+//   (Syntopia part V; Knighty's notes on fractalforums.com, "Mandelbulb distance estimation"),
+//   with log r counted from the surface the iteration count draws (P4::surfaceLogR): the bound
+//   is for the distance to the limit set, which lies inside that surface.
 // - potential, the log form times (1 - e^-G) / G with G = log(r) / the product of the power
 //   steps' degrees (P4::degree): equal to it near the object, where G is small, and not
 //   outgrowing the distance far from it (for a power alone, half the distance to the unit ball

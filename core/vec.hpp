@@ -20,6 +20,13 @@ struct P4 {
     // `degree`, a local of formulaEval that the estimator receives): escape-time potential
     // estimates divide log r by it.
     double degree = 1.0;
+    // log r on the surface the iteration count draws, in the units of this orbit's escape: the
+    // surface is where the last iteration reaches the bailout B, at potential log(B) / (the
+    // degrees of every iteration), so an orbit that escaped with degree D meets it at
+    // log r = log(B) / (the degrees of the iterations it did not run). 0 for stacks with no power
+    // step (their level sets |F_k| = B are no surface). Set after the loop, for the estimator
+    // (GLSL: `surfaceLogR`).
+    double surfaceLogR = 0.0;
 };
 
 using glm::abs;

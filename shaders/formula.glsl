@@ -31,6 +31,13 @@ float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped)
             break;
         }
     }
+    // log r on the surface the iteration count draws, in this orbit's units (P4::surfaceLogR):
+    // the degrees of the iterations the orbit did not run divide log(bailout).
+    float remainingDegree = 1.0;
+    for (int i = iterations; i < n; ++i) {
+//@FRAKTAL_REMAINING_DEGREE
+    }
+    float surfaceLogR = degree * remainingDegree > 1.0 ? log(u_bailout) / remainingDegree : 0.0;
 //@FRAKTAL_ESTIMATE
 }
 

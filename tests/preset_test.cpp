@@ -189,6 +189,9 @@ const BadPreset kBadPresets[] = {
     {"custom_block_reserved_param.json", "formula.customBlocks[0].params[0].name", "'p' is reserved"},
     // An estimator receives the power steps' degree product as `degree`.
     {"custom_estimator_param_degree.json", "formula.customBlocks[0].params[0].name", "'degree' is reserved"},
+    // And the log radius of the surface the iterations draw as `surfaceLogR`.
+    {"custom_estimator_param_surface_log_r.json", "formula.customBlocks[0].params[0].name",
+     "'surfaceLogR' is reserved"},
     {"custom_block_defined_twice.json", "formula.customBlocks[1].id", "'spin' is defined twice"},
     {"custom_block_forbidden_word.json", "formula.customBlocks[0].glsl", "'gl_WorkGroupID' is not allowed"},
     {"custom_estimator_without_return.json", "formula.customBlocks[0].glsl", "must return the distance"},

@@ -188,8 +188,9 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
 // the check reports NOT SOUND (no safe step factor) and stacks whose object the check's rays
 // never reach from outside (nothing inside the bound, or everything) are drawn again.
 // The median ratio over all samples is printed with its distribution. The goal is above
-// 0.5; with the margins SafeStepOptions keeps for estimates (0.8, jumps 0.7) it is 0.45 (0.37
-// before the potential estimate and the 0.7 jump margin), and the assertion holds it there.
+// 0.5; with the margins SafeStepOptions keeps for estimates (0.8, jumps 0.7) it is 0.49 (0.37
+// before the potential estimate and the 0.7 jump margin, 0.45 before the log estimates counted
+// log r from the surface the 6 iterations draw), and the assertion holds it there.
 TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     const std::vector<const BlockDesc*> blocks = stepBlocks();
     std::mt19937_64 rng(20);
@@ -258,7 +259,7 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     printDistribution("per-stack median ratio", stackMedians);
     printDistribution("step factor", factors);
     EXPECT_GT(ratios.size(), 20000u);
-    EXPECT_GT(percentile(ratios, 0.5), 0.43) << "safe only by being slow";
+    EXPECT_GT(percentile(ratios, 0.5), 0.47) << "safe only by being slow";
 }
 
 // The editor's hook: an opened document keeps its factor; a change of structure sets the one the
