@@ -99,11 +99,16 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
             break;
         }
     }
-    double remainingDegree = 1.0;
-    for (int j = e.iterations; j < iterations; ++j)
-        for (const Node& n : f.nodes)
-            if (n.enabled && n.runsOn(j) && n.block->raisesDegree()) remainingDegree *= n.block->degreeAt(n.args());
-    p.surfaceLogR = p.degree * remainingDegree > 1.0 ? std::log(f.bailout) / remainingDegree : 0.0;
+    // The degrees of the iterations the orbit did not run, and of all of them, counted in log2 (a
+    // count of runs per power node: no loop over the iterations, and no overflow).
+    double remainingLog2 = 0.0, allLog2 = 0.0;
+    for (const Node& n : f.nodes)
+        if (n.enabled && n.block->raisesDegree()) {
+            const double d = std::log2(n.block->degreeAt(n.args()));
+            remainingLog2 += double(n.iterationsRunBefore(iterations) - n.iterationsRunBefore(e.iterations)) * d;
+            allLog2 += double(n.iterationsRunBefore(iterations)) * d;
+        }
+    p.surfaceLogR = allLog2 > 0.0 ? std::log(f.bailout) * std::exp2(-remainingLog2) : 0.0;
     e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
     e.inside = isInside(*f.estimator.block, e.distance, e.escaped);
     return e;

@@ -22,6 +22,8 @@ struct Node {
     static Node make(const BlockDesc& block);  // with default parameter values
     Args args() const { return Args{values.data()}; }
     bool runsOn(int iteration) const { return iteration % period == phase; }
+    // How many of the iterations 0 .. count - 1 the node runs on (GLSL: iterationsRunBefore).
+    int iterationsRunBefore(int count) const { return count > phase ? (count - phase - 1) / period + 1 : 0; }
 };
 
 // Limits that keep any formula bounded (no preset can hang the machine).

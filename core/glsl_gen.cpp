@@ -110,26 +110,28 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
 
     std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
     std::string loop, remaining;
-    // A statement run in the iterations the node runs on.
-    auto onItsIterations = [](const Node& n, const std::string& statement) {
-        if (n.period == 1) return "        " + statement + "\n";
-        return "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") { " + statement +
-               " }\n";
-    };
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         const Node& n = f.nodes[k];
         if (!n.enabled) continue;
         std::string call = nodeCall(int(k), n, false) + ";";
-        // The product of the power steps' degrees (P4::degree on the CPU), for the estimator; and
-        // that of the iterations after an escape.
+        // The product of the power steps' degrees (P4::degree on the CPU), for the estimator; and,
+        // in log2, that of the iterations an escaped orbit did not run and of all of them.
         if (n.block->raisesDegree()) {
             const std::string d = n.block->degreeParam >= 0
                                       ? nodeUniformName(int(k), n.block->params[size_t(n.block->degreeParam)].name)
                                       : glslFloat(n.block->fixedDegree);
             call += " degree *= " + d + ";";
-            remaining += onItsIterations(n, "remainingDegree *= " + d + ";");
+            const std::string periodAndPhase = ", " + std::to_string(n.period) + ", " + std::to_string(n.phase) + ")";
+            const std::string runs = "iterationsRunBefore(n" + periodAndPhase;
+            remaining += "    { float d = log2(" + d + "); remainingLog2 += float(" + runs +
+                         " - iterationsRunBefore(iterations" + periodAndPhase + ") * d; allLog2 += float(" + runs +
+                         ") * d; }\n";
         }
-        loop += onItsIterations(n, call);
+        if (n.period > 1)
+            loop += "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") { " + call +
+                    " }\n";
+        else
+            loop += "        " + call + "\n";
     }
     if (!loop.empty()) loop.pop_back();
     if (!remaining.empty()) remaining.pop_back();
