@@ -149,6 +149,23 @@ TEST(DEQuality, MandelbulbDistanceIsCloseAwayFromTheSurface) {
 // at 2 from the unit ball and 0.69 from rho = 2. For the spherical powers the running derivative
 // may be larger than the radial stretch (the phi stretch near the poles), so the estimate is at
 // most half the distance.
+// The drawn surface's log radius counts each power node's remaining runs from its period and phase
+// (formula.cpp and formula.glsl alike) instead of looping over the iterations: the count agrees
+// with the iterations the node runs on.
+TEST(DEQuality, IterationsRunBeforeCountsTheIterationsANodeRunsOn) {
+    for (int period = 1; period <= 5; ++period)
+        for (int phase = 0; phase < period; ++phase) {
+            Node n = Node::make(*findBlock("mandelbulb"));
+            n.period = period;
+            n.phase = phase;
+            int runs = 0;
+            for (int count = 0; count <= 23; ++count) {
+                EXPECT_EQ(n.iterationsRunBefore(count), runs) << "period " << period << ", phase " << phase;
+                runs += n.runsOn(count);
+            }
+        }
+}
+
 TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
     const auto points = test::randomPoints(3000, 1.0, 29);
     for (int iterations : {1, 2, 5, 12}) {
@@ -173,6 +190,28 @@ TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
         EXPECT_LT(worstError, 1e-7) << iterations << " iterations";  // rounding over 2^k-fold products
         EXPECT_GT(logFar, 0.65) << iterations << " iterations";
         EXPECT_EQ(distanceEstimate(f, vec3(0.0, 0.0, 0.999 * rho)), 0.0) << "inside the drawn ball";
+    }
+    // A node that runs on odd iterations only: 5 iterations square twice, and the drawn ball has
+    // radius B^(1/4); an orbit that escapes after the first square has one run left.
+    {
+        Formula f;
+        f.iterations = 5;
+        f.bailout = 4.0;
+        f.estimator = Node::make(*findBlock("escape_potential"));
+        Node square = Node::make(*findBlock("bristorbrot"));
+        square.values[0].x = 0.0;
+        square.period = 2;
+        square.phase = 1;
+        f.nodes = {square};
+        const double rho = std::pow(f.bailout, 0.25);
+        double worstError = 0.0;
+        for (const vec3& d : points) {
+            if (length(d) < 0.05) continue;
+            const double r = rho + 0.02 + 1.98 * length(d);
+            worstError =
+                std::max(worstError, std::abs(distanceEstimate(f, normalize(d) * r) / (0.5 * (r - rho)) - 1.0));
+        }
+        EXPECT_LT(worstError, 1e-7) << "period 2, phase 1";
     }
     for (const char* id : {"mandelbulb", "mandelbulb_sine", "mandelbulb_cosine", "mandelbulb_phase"}) {
         for (double power : {2.0, 3.0, 8.0}) {
