@@ -17,9 +17,9 @@
 //   is for the distance to the limit set, which lies inside that surface.
 // - potential, the log form times (1 - e^-G) / G with G = log(r) / the product of the power
 //   steps' degrees (P4::degree): equal to it near the object, where G is small, and not
-//   outgrowing the distance far from it (for a power alone, half the distance to the unit ball
-//   at every r, where the log form runs from 0.5 to 0.82 of it), so one step factor fits near and
-//   far samples.
+//   outgrowing the distance far from it (for a power alone, half the distance to the ball it
+//   draws at every r, where the log form runs from 0.5 to 0.82 of it at 2 from the unit ball), so
+//   one step factor fits near and far samples.
 // - linear, r / w: Syntopia part VI's Mandelbox form, for fold-and-scale stacks.
 // The Lipschitz form (r - B) / w with B the bailout (Hart, Sandin and Kauffman, "Ray tracing
 // deterministic 3-D fractals", 1989) never overshoots where w bounds the stretch, but it

@@ -110,19 +110,18 @@ struct EscapeLogEstimator {
 };
 
 // The log estimate with its far field corrected by the potential. An orbit that escaped with
-// radius r after power steps of total degree D (P4::degree) has the potential G = log(r) / D, and
-// 0.5 log(r) r / dr is 0.5 G / |grad G|. Where G is small (near the object, and after many
-// steps) that is the Hubbard-Douady bound; where it is not (a point that escaped after one or two
-// steps) G / |grad G| outgrows the distance: for a power alone, whose object is the unit ball, the
-// log estimate is 0.5 r log r against r - 1. (1 - e^-G) / |grad G| is r - 1 there at every r, and
+// radius r after power steps of total degree D (P4::degree) has the potential G = log(r) / D,
+// counted here, as in the log estimate, from the surface the iterations draw: G = (log(r) -
+// surfaceLogR) / D, and the log estimate is 0.5 G / |grad G|. Where G is small (near the surface,
+// and after many steps) that is the Hubbard-Douady bound; where it is not (a point that escaped
+// after one or two steps) G / |grad G| outgrows the distance: for a power alone, whose drawn
+// surface is the ball of radius rho = B^(1 / all iterations' degrees), the log estimate is
+// 0.5 r log(r / rho) against r - rho. (1 - e^-G) / |grad G| is r - rho there at every r, and
 // G / |grad G| as G goes to 0, so the estimate is the log one times q = (1 - e^-G) / G: equal at
-// the surface, smaller far away, half the distance to the unit ball everywhere. One step factor
+// the surface, smaller far away, half the distance to the drawn ball everywhere. One step factor
 // then fits near and far samples alike (tests/safe_step_test.cpp). Below G = 0.1, q is its
 // series to G^4 (error under 2e-8): 1 - exp(-G) loses digits to cancellation in single
 // precision, 1e-4 of them at G = 1e-3. A degree that overflowed gives G = 0 and q = 1.
-// As in the log estimate, G is counted from the surface the iterations draw (surfaceLogR): for the
-// power alone that surface is the ball of radius B^(1 / D), and the estimate is half the distance
-// to it.
 struct EscapePotentialEstimator {
     static constexpr std::string_view id = "escape_potential";
     static constexpr std::string_view label = "Escape time (potential)";
@@ -137,20 +136,20 @@ struct EscapePotentialEstimator {
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (!(r > 1.0)) return 0.0;
-    float logR = max(log(r) - surfaceLogR, 0.0);
-    float G = logR / degree;
+    float fromSurface = max(log(r) - surfaceLogR, 0.0);
+    float G = fromSurface / degree;
     float q = G < 0.1 ? 1.0 - G * (1.0 / 2.0 - G * (1.0 / 6.0 - G * (1.0 / 24.0 - G / 120.0))) : (1.0 - exp(-G)) / G;
-    return 0.5 * q * logR * r / abs(p.w);
+    return 0.5 * q * fromSurface * r / abs(p.w);
 )";
     static double estimate(const P4& p, const vec3&, Args) {
         const double degree = p.degree, surfaceLogR = p.surfaceLogR;
         double r = length(p.xyz);
         if (!(r > 1.0)) return 0.0;
-        double logR = max(std::log(r) - surfaceLogR, 0.0);
-        double G = logR / degree;
+        double fromSurface = max(std::log(r) - surfaceLogR, 0.0);
+        double G = fromSurface / degree;
         double q =
             G < 0.1 ? 1.0 - G * (1.0 / 2.0 - G * (1.0 / 6.0 - G * (1.0 / 24.0 - G / 120.0))) : (1.0 - std::exp(-G)) / G;
-        return 0.5 * q * logR * r / abs(p.w);
+        return 0.5 * q * fromSurface * r / abs(p.w);
     }
 };
 

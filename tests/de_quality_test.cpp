@@ -138,17 +138,6 @@ TEST(DEQuality, MandelbulbDistanceIsCloseAwayFromTheSurface) {
     EXPECT_GE(lowest, 0.5 / 8.0);
 }
 
-// A power alone (no add c): |F(v)| = |v|^n, and the limit set is the unit ball; the surface that
-// N iterations with bailout B draw is the ball of radius rho = B^(1 / D), D = n^N, where the last
-// iteration reaches the bailout. The potential estimate (formulas/estimators.hpp) is half the
-// distance to that ball at every r for a map whose running derivative is its radial stretch, the
-// twist-free Bristorbrot (x^2 - y^2 - z^2, 2xy, 2xz), whose Jacobian is 2r times a rotation; it
-// needs the product of the degrees (2^k after k steps, P4::degree) and the drawn surface's log
-// radius (P4::surfaceLogR). Measured against the unit ball instead, it is off by the whole gap
-// (rho = 2 at one iteration). The log estimate there is 0.5 r log(r / rho), 0.82 of the distance
-// at 2 from the unit ball and 0.69 from rho = 2. For the spherical powers the running derivative
-// may be larger than the radial stretch (the phi stretch near the poles), so the estimate is at
-// most half the distance.
 // The drawn surface's log radius counts each power node's remaining runs from its period and phase
 // (formula.cpp and formula.glsl alike) instead of looping over the iterations: the count agrees
 // with the iterations the node runs on.
@@ -166,6 +155,17 @@ TEST(DEQuality, IterationsRunBeforeCountsTheIterationsANodeRunsOn) {
         }
 }
 
+// A power alone (no add c): |F(v)| = |v|^n, and the limit set is the unit ball; the surface that
+// N iterations with bailout B draw is the ball of radius rho = B^(1 / D), D = n^N, where the last
+// iteration reaches the bailout. The potential estimate (formulas/estimators.hpp) is half the
+// distance to that ball at every r for a map whose running derivative is its radial stretch, the
+// twist-free Bristorbrot (x^2 - y^2 - z^2, 2xy, 2xz), whose Jacobian is 2r times a rotation; it
+// needs the product of the degrees (2^k after k steps, P4::degree) and the drawn surface's log
+// radius (P4::surfaceLogR). Measured against the unit ball instead, it is off by the whole gap
+// (rho = 2 at one iteration). The log estimate there is 0.5 r log(r / rho), 0.82 of the distance
+// at 2 from the unit ball and 0.69 from rho = 2. For the spherical powers the running derivative
+// may be larger than the radial stretch (the phi stretch near the poles), so the estimate is at
+// most half the distance.
 TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
     const auto points = test::randomPoints(3000, 1.0, 29);
     for (int iterations : {1, 2, 5, 12}) {
