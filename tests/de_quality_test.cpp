@@ -168,51 +168,36 @@ TEST(DEQuality, IterationsRunBeforeCountsTheIterationsANodeRunsOn) {
 // most half the distance.
 TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
     const auto points = test::randomPoints(3000, 1.0, 29);
-    for (int iterations : {1, 2, 5, 12}) {
-        Formula f;
-        f.iterations = iterations;
-        f.bailout = 4.0;
-        f.estimator = Node::make(*findBlock("escape_potential"));
-        Node square = Node::make(*findBlock("bristorbrot"));
-        square.values[0].x = 0.0;
-        f.nodes = {square};
+    // The largest relative error against half the distance to the ball of radius rho, from 0.02 to
+    // 2 outside it; and the log estimate's largest share of the distance from 1.9 outside.
+    auto againstHalfTheDistance = [&](const Formula& f, double rho, double& logFar) {
         Formula log = f;
         log.estimator = Node::make(*findBlock("escape_log"));
-        const double rho = std::pow(f.bailout, 1.0 / std::pow(2.0, iterations));
-        double worstError = 0.0, logFar = 0.0;
+        double worstError = 0.0;
+        logFar = 0.0;
         for (const vec3& d : points) {
             if (length(d) < 0.05) continue;
-            const double r = rho + 0.02 + 1.98 * length(d);  // 0.02 to 2 outside the drawn ball
+            const double r = rho + 0.02 + 1.98 * length(d);
             const vec3 p = normalize(d) * r;
             worstError = std::max(worstError, std::abs(distanceEstimate(f, p) / (0.5 * (r - rho)) - 1.0));
             if (r > rho + 1.9) logFar = std::max(logFar, distanceEstimate(log, p) / (r - rho));
         }
-        EXPECT_LT(worstError, 1e-7) << iterations << " iterations";  // rounding over 2^k-fold products
+        return worstError;
+    };
+    for (int iterations : {1, 2, 5, 12}) {
+        const Formula f = test::squaringBall(iterations);
+        const double rho = std::pow(f.bailout, 1.0 / std::pow(2.0, iterations));
+        double logFar = 0.0;
+        // Rounding over 2^k-fold products.
+        EXPECT_LT(againstHalfTheDistance(f, rho, logFar), 1e-7) << iterations << " iterations";
         EXPECT_GT(logFar, 0.65) << iterations << " iterations";
         EXPECT_EQ(distanceEstimate(f, vec3(0.0, 0.0, 0.999 * rho)), 0.0) << "inside the drawn ball";
     }
     // A node that runs on odd iterations only: 5 iterations square twice, and the drawn ball has
     // radius B^(1/4); an orbit that escapes after the first square has one run left.
-    {
-        Formula f;
-        f.iterations = 5;
-        f.bailout = 4.0;
-        f.estimator = Node::make(*findBlock("escape_potential"));
-        Node square = Node::make(*findBlock("bristorbrot"));
-        square.values[0].x = 0.0;
-        square.period = 2;
-        square.phase = 1;
-        f.nodes = {square};
-        const double rho = std::pow(f.bailout, 0.25);
-        double worstError = 0.0;
-        for (const vec3& d : points) {
-            if (length(d) < 0.05) continue;
-            const double r = rho + 0.02 + 1.98 * length(d);
-            worstError =
-                std::max(worstError, std::abs(distanceEstimate(f, normalize(d) * r) / (0.5 * (r - rho)) - 1.0));
-        }
-        EXPECT_LT(worstError, 1e-7) << "period 2, phase 1";
-    }
+    double logFar = 0.0;
+    EXPECT_LT(againstHalfTheDistance(test::squaringBall(5, 2, 1), std::pow(4.0, 0.25), logFar), 1e-7)
+        << "period 2, phase 1";
     for (const char* id : {"mandelbulb", "mandelbulb_sine", "mandelbulb_cosine", "mandelbulb_phase"}) {
         for (double power : {2.0, 3.0, 8.0}) {
             Formula f;

@@ -239,13 +239,7 @@ TEST(GpuCpuAgreement, ValuesAreUniforms) {
 // either estimate.)
 TEST(GpuCpuAgreement, PotentialEstimateFollowsThePowerDegrees) {
     test::glContext();
-    Formula ball;
-    ball.iterations = 5;
-    ball.bailout = 4.0;
-    ball.estimator = Node::make(*findBlock("escape_potential"));
-    Node square = Node::make(*findBlock("bristorbrot"));
-    square.values[0].x = 0.0;
-    ball.nodes = {square};
+    const Formula ball = test::squaringBall(5);
     const double rho = std::pow(ball.bailout, 1.0 / 32.0);
     std::vector<vec3> points;
     for (const vec3& d : test::randomPoints(2000, 1.0, 31))

@@ -34,6 +34,22 @@ inline std::vector<vec3> randomPoints(size_t n, double halfSize, uint64_t seed) 
     return points;
 }
 
+// The twist-free Bristorbrot (x^2 - y^2 - z^2, 2xy, 2xz) alone, bailout 4, closed by the potential
+// estimate: its Jacobian is 2r times a rotation, and the estimate is half the distance to the ball
+// its iterations draw, of radius 4^(1 / 2^runs) (tests/de_quality_test.cpp).
+inline Formula squaringBall(int iterations, int period = 1, int phase = 0) {
+    Formula f;
+    f.iterations = iterations;
+    f.bailout = 4.0;
+    f.estimator = Node::make(*findBlock("escape_potential"));
+    Node square = Node::make(*findBlock("bristorbrot"));
+    square.values[0].x = 0.0;
+    square.period = period;
+    square.phase = phase;
+    f.nodes = {square};
+    return f;
+}
+
 // One headless GL context for a whole test program (made on first use).
 inline gl::HeadlessContext& glContext() {
     static std::unique_ptr<gl::HeadlessContext> context = gl::HeadlessContext::create();
