@@ -2,14 +2,13 @@
 // exec, Slurm jobs) run without LeakSanitizer; the test binary itself keeps it.
 //
 // LeakSanitizer's thread tracer crashes now and then in a short-lived child ("Tracer caught
-// signal 11", then "LeakSanitizer has encountered a fatal error" and exit
-// code 1: google/sanitizers#1353). It failed two of five CI runs, in a different test each time (a
-// re-render from an EXR; the frames of the encoding test, with the leak check moved from exit to
-// the end of main, so not exit's teardown of threads), and the frame-repair test on every run on
-// one machine; about 200 runs of the same commands here did not crash it. A test cannot tell that
-// exit code from the command's own. The command line's own paths are leak-checked by
-// scripts/cli_leak_check.sh, which runs each command in a process of its own and tells the
-// tracer's crash from a leak.
+// signal 11", then "LeakSanitizer has encountered a fatal error" and exit code 1:
+// google/sanitizers#1353). It has failed CI in a different test each time (a re-render from an
+// EXR; the frames of the encoding test, also with the leak check at the end of main, so it is
+// not exit's teardown of threads), and the frame-repair test on every run on one machine; 200
+// runs of the same commands on another did not crash it. A test cannot tell that exit code from
+// the command's own. The command line's own paths are leak-checked by scripts/cli_leak_check.sh,
+// which runs each command in a process of its own and tells the tracer's crash from a leak.
 #include <cstdlib>
 #include <string>
 
