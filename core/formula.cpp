@@ -76,6 +76,39 @@ bool Formula::cpuEvaluable() const {
     return !estimator.block->custom;
 }
 
+namespace {
+
+// One iteration of the node list: the body of the loops in shaders/formula.glsl.
+void iterate(const Formula& f, P4& p, const vec3& c, int i) {
+    for (const Node& n : f.nodes)
+        if (n.enabled && n.runsOn(i)) {
+            if (!n.block->apply) throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation");
+            n.block->apply(p, c, n.args());
+            if (n.block->raisesDegree()) p.degree *= n.block->degreeAt(n.args());
+        }
+}
+
+// The estimator's orbit value at pos's orbit after exactly `count` iterations: log r for
+// escape-time estimators, the estimate at w = 1 for distance ones (P4::orbitGradient).
+double orbitValue(const Formula& f, const vec3& pos, int count) {
+    P4 p{pos, 1.0};
+    const vec3 c = pos;
+    for (int i = 0; i < count; ++i) iterate(f, p, c, i);
+    if (f.estimator.block->membership == Membership::EscapeTime) return std::log(max(length(p.xyz), 1e-30));
+    return f.estimator.block->estimate(P4{p.xyz, 1.0, p.degree}, c, f.estimator.args());
+}
+
+// |grad V| at pos by tetrahedral differences: for the vertices k of a regular tetrahedron,
+// sum k (k . g) = 4 g.
+double orbitValueGradient(const Formula& f, const vec3& pos, int count, double h) {
+    const vec3 k0(1.0, -1.0, -1.0), k1(-1.0, -1.0, 1.0), k2(-1.0, 1.0, -1.0), k3(1.0, 1.0, 1.0);
+    vec3 g = k0 * orbitValue(f, pos + h * k0, count) + k1 * orbitValue(f, pos + h * k1, count) +
+             k2 * orbitValue(f, pos + h * k2, count) + k3 * orbitValue(f, pos + h * k3, count);
+    return length(g) / (4.0 * h);
+}
+
+}  // namespace
+
 // Mirrors formulaDE() in shaders/formula.glsl: keep the two in step.
 Evaluation evaluate(const Formula& f, const vec3& pos) {
     if (f.estimator.block->custom)
@@ -86,12 +119,7 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
     const double bailout2 = f.bailout * f.bailout;
     const int iterations = std::clamp(f.iterations, 0, kMaxIterations);
     for (int i = 0; i < iterations; ++i) {
-        for (const Node& n : f.nodes)
-            if (n.enabled && n.runsOn(i)) {
-                if (!n.block->apply) throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation");
-                n.block->apply(p, c, n.args());
-                if (n.block->raisesDegree()) p.degree *= n.block->degreeAt(n.args());
-            }
+        iterate(f, p, c, i);
         e.trap.value = min(e.trap.value, vec4(abs(p.xyz), length(p.xyz)));
         e.iterations = i + 1;
         if (dot(p.xyz, p.xyz) > bailout2) {
@@ -109,6 +137,18 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
             allLog2 += double(n.iterationsRunBefore(iterations)) * d;
         }
     p.surfaceLogR = allLog2 > 0.0 ? std::log(f.bailout) * std::exp2(-remainingLog2) : 0.0;
+    if (f.estimator.block->usesOrbitGradient) {
+        // The difference step: a fifth of the estimate with the running derivative (the estimator
+        // without the gradient), so that the orbit value is close to linear across it, and no finer
+        // than single precision resolves at pos. 0 there (inside, for escape-time estimates): no
+        // gradient.
+        const double running = std::abs(f.estimator.block->estimate(p, c, f.estimator.args()));
+        const double reach = 1.0 + length(pos);
+        if (running > 0.0)
+            p.orbitGradient =
+                orbitValueGradient(f, pos, e.iterations, std::clamp(0.02 * running, 1e-5 * reach, 1e-2 * reach));
+    }
+    e.orbitGradient = p.orbitGradient;
     e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
     e.inside = isInside(*f.estimator.block, e.distance, e.escaped);
     return e;

@@ -64,6 +64,7 @@ struct Evaluation {
     int iterations = 0;    // iterations run before escape (or all of them)
     bool escaped = false;  // the orbit passed the bailout
     bool inside = false;   // membership, per the estimator's Membership rule
+    double orbitGradient = 0.0;  // P4::orbitGradient, for estimators that read it (else 0)
 };
 
 // Membership by the estimator's rule: escape-time formulas are inside where the orbit stayed

@@ -34,12 +34,15 @@ void emitNodeFunction(GlslEmitter& e, int k, const Node& node, const std::string
         params.push_back(
             {glslType(p.type), estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name), p.name});
     const std::string head = std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
-                             (estimator ? "(vec4 p, vec3 c, float degree, float surfaceLogR" : "(inout vec4 p, vec3 c");
+                             (estimator ? "(vec4 p, vec3 c, float degree, float surfaceLogR, float orbitGradient" : "(inout vec4 p, vec3 c");
     e.nodeFunction(k, b.id, name, head, params, b.glsl);
 }
 
-std::string nodeCall(int k, const Node& node, bool estimator) {
-    std::string call = nodeFunctionName(k) + (estimator ? "(p, c, degree, surfaceLogR" : "(p, c");
+// The estimator's arguments before its parameters, as formulaEval passes them.
+constexpr const char* kEstimatorArgs = "p, c, degree, surfaceLogR, orbitGradient";
+
+std::string nodeCall(int k, const Node& node, bool estimator, const std::string& args = "") {
+    std::string call = nodeFunctionName(k) + "(" + (!args.empty() ? args : estimator ? kEstimatorArgs : "p, c");
     for (const ParamDecl& p : node.block->params)
         call += ", " + (estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name));
     return call + ")";
@@ -93,7 +96,9 @@ std::string estimatorUniformName(std::string_view param) { return "u_est_" + std
 
 GeneratedFormula generateFormulaGLSL(const Formula& f) {
     GeneratedFormula g;
-    const std::string tmpl(shaderTemplate("formula.glsl"));
+    std::string tmpl(shaderTemplate("formula.glsl"));
+    // One line either way, so the template keeps its line numbers.
+    replaceMarker(tmpl, "//@FRAKTAL_OPTIONS", f.estimator.block->usesOrbitGradient ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
     const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
     if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
 
@@ -135,9 +140,18 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     }
     if (!loop.empty()) loop.pop_back();
     if (!remaining.empty()) remaining.pop_back();
+    replaceMarker(rest, "//@FRAKTAL_ORBIT_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_REMAINING_DEGREE", remaining);
     replaceMarker(rest, "//@FRAKTAL_ESTIMATE", "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";");
+    // The orbit gradient (estimators that read it): the estimate without it sets the difference
+    // step; the orbit value is log r for escape-time estimates, else the estimate at w = 1.
+    const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
+    replaceMarker(rest, "//@FRAKTAL_RUNNING_ESTIMATE",
+                  "    float running = abs(" + nodeCall(est, f.estimator, true, "p, c, degree, surfaceLogR, 0.0") + ");");
+    replaceMarker(rest, "//@FRAKTAL_ORBIT_VALUE",
+                  escapeTime ? "    return log(max(length(p.xyz), 1e-30));"
+                             : "    return " + nodeCall(est, f.estimator, true, "vec4(p.xyz, 1.0), c, degree, 0.0, 0.0") + ";");
     e.restoreFormulaLines();
     e.out += rest;
     g.code = std::move(e.out);

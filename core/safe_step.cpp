@@ -92,8 +92,6 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Safe
     unit.deFactor = 1.0;
     // The rounds evaluated f's own estimate on these samples already.
     std::vector<EstimatorMeasurement> out{measured(f, f.estimator, atUnitFactor(rays.report, f.deFactor), options)};
-    if (f.estimator.block->membership != Membership::EscapeTime) return out;
-
     auto add = [&](const Node& estimator) {
         for (const EstimatorMeasurement& m : out)
             if (m.estimator.block == estimator.block && m.estimator.values == estimator.values) return;
@@ -102,9 +100,21 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Safe
         CpuSampler s(g);
         out.push_back(measured(f, estimator, compareWithSamples(s, samples), options));
     };
-    add(linearEstimator());
-    add(Node::make(*findBlock("escape_log")));
-    add(Node::make(*findBlock("escape_potential")));
+    if (f.estimator.block->membership == Membership::EscapeTime) {
+        add(linearEstimator());
+        add(Node::make(*findBlock("escape_log")));
+        add(Node::make(*findBlock("escape_potential")));
+    }
+    // The gradient twins of the estimators measured so far, with their parameters.
+    for (size_t i = 0, measuredSoFar = out.size(); i < measuredSoFar; ++i)
+        for (const BlockDesc& twin : allBlocks())
+            if (twin.usesOrbitGradient && twin.gradientOf == out[i].estimator.block->id) {
+                Node g = Node::make(twin);
+                g.values = out[i].estimator.values;
+                add(g);
+                if (out.back().estimator.block == &twin && out.back().report.worstRatio > options.gradientWorst)
+                    out.pop_back();
+            }
     std::stable_sort(out.begin(), out.end(), [](const EstimatorMeasurement& a, const EstimatorMeasurement& b) {
         return a.speed() > b.speed();
     });

@@ -21,6 +21,12 @@
 //   draws at every r, where the log form runs from 0.5 to 0.82 of it at 2 from the unit ball), so
 //   one step factor fits near and far samples.
 // - linear, r / w: Syntopia part VI's Mandelbox form, for fold-and-scale stacks.
+// - gradient twins (escape_gradient beside the escape-time estimates, box_gradient beside a box):
+//   the same estimate over |grad| of the composed map's orbit value, by tetrahedral differences of
+//   the orbit, in place of w. w multiplies each step's largest stretch, and where the stretched
+//   direction turns from step to step (twists, bends) that product outgrows the composed map's
+//   stretch; the difference is no derivative across a fold or a jump. Five orbits an estimate:
+//   their speed is weighed by it.
 // The Lipschitz form (r - B) / w with B the bailout (Hart, Sandin and Kauffman, "Ray tracing
 // deterministic 3-D fractals", 1989) never overshoots where w bounds the stretch, but it
 // vanishes on every escape level set |F_k| = B, not only at the fractal: a marcher stops on those
@@ -65,9 +71,16 @@ struct SafeStepOptions {
     // block's declaration), so factor 1 is safe whatever the rays show, up to rounding; a
     // larger factor, where the bound is loose, is measured like any estimate.
     double boundMargin = 0.99;
+    // A gradient twin whose rays showed it above this many times the distance at factor 1 is not
+    // offered. Where the differences straddle a fold or a jump the estimate is no distance, and
+    // rays pass close to those places rarely: on random stacks (tests/safe_step_test.cpp, stacks
+    // seed 22) a box_gradient the rounds saw at 110x overshot other rays 1.32x at the factor
+    // they allowed, 0.007.
+    double gradientWorst = 2.0;
 
     bool proven(const BlockDesc& estimator, const std::vector<Node>& steps) const {
-        return estimator.membership == Membership::Distance && derivativeBound(steps) == DerivativeBound::Global;
+        return estimator.membership == Membership::Distance && !estimator.usesOrbitGradient &&
+               derivativeBound(steps) == DerivativeBound::Global;
     }
     // The margin kept below the factor the rays allow.
     double marginFor(const std::vector<Node>& steps) const {
@@ -104,10 +117,11 @@ struct EstimatorMeasurement {
     ConservativenessReport report;  // at step factor 1
     double factor = 1.0;            // the safe step factor for it
     double margin = 1.0;            // SafeStepOptions' margin the factor keeps
-    // The safe factor times the median ratio: the share of the gap a typical march step covers.
-    // A proxy only: it cannot see an estimate that vanishes away from the surface (false hits
-    // look fast), so a choice is confirmed by rendering and by the DE count.
-    double speed() const { return factor * report.medianRatio; }
+    // The safe factor times the median ratio, the share of the gap a typical march step covers,
+    // per orbit an estimate runs (the gradient estimate runs five). A proxy only: it cannot see
+    // an estimate that vanishes away from the surface (false hits look fast), so a choice is
+    // confirmed by rendering and by the DE count.
+    double speed() const { return factor * report.medianRatio / estimator.block->orbitsPerEstimate(); }
 };
 
 // hasSafeStepFactor for a measured estimator (true when no ray reached the object: nothing was
@@ -124,7 +138,7 @@ EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, con
 // The linear estimator r / w.
 Node linearEstimator();
 
-// Escape-time formulas: the formula's own estimator, linear r / w, log and potential, each measured on
+// Escape-time formulas: the formula's own estimator, linear r / w, log, potential and gradient, each measured on
 // the same rays (they share the membership, so the object is the same); best first (the largest
 // speed()). Other formulas (IFS primitives, custom estimators): their own estimator alone.
 // Needs a CPU-evaluable formula.

@@ -27,6 +27,13 @@ struct P4 {
     // step (their level sets |F_k| = B are no surface). Set after the loop, for the estimator
     // (GLSL: `surfaceLogR`).
     double surfaceLogR = 0.0;
+    // |grad V|, V the estimator's orbit value at the last point as a function of the starting
+    // point: log r for escape-time estimators, the estimate at w = 1 for distance ones (a
+    // primitive's distance in the last point's space). By tetrahedral differences of the orbit run
+    // for the same iterations (orbitValueGradient in core/formula.cpp and shaders/formula.glsl).
+    // Set only for estimators that ask for it (BlockDesc::usesOrbitGradient), else 0 (GLSL:
+    // `orbitGradient`).
+    double orbitGradient = 0.0;
 };
 
 using glm::abs;

@@ -2,11 +2,18 @@
 // code built from the formula's node list; values are uniforms, so only a change of structure
 // (blocks, order, enable, period, phase) recompiles. Mirrors fraktal::evaluate() on the CPU.
 #define FRAKTAL_MAX_ITERATIONS 1000
+//@FRAKTAL_OPTIONS
 
 uniform int u_iterations;
 uniform float u_bailout;
 uniform float u_deFactor;
 uniform float u_boundRadius;
+
+// (1 - e^-G) / G: the potential estimate's share of the log one (potentialShare in
+// formulas/estimators.hpp, which says why the series).
+float potentialShare(float G) {
+    return G < 0.1 ? 1.0 - G * (1.0 / 2.0 - G * (1.0 / 6.0 - G * (1.0 / 24.0 - G / 120.0))) : (1.0 - exp(-G)) / G;
+}
 
 //@FRAKTAL_NODES
 
@@ -15,6 +22,31 @@ uniform float u_boundRadius;
 int iterationsRunBefore(int count, int period, int phase) {
     return count > phase ? (count - phase - 1) / period + 1 : 0;
 }
+
+#ifdef FRAKTAL_ORBIT_GRADIENT
+// The orbit gradient, for estimators that read it (P4::orbitGradient); mirrors orbitValue and
+// orbitValueGradient in core/formula.cpp.
+// The estimator's orbit value at pos's orbit after exactly `count` iterations: log r for
+// escape-time estimators, the estimate at w = 1 for distance ones.
+float orbitValue(vec3 pos, int count) {
+    vec4 p = vec4(pos, 1.0);
+    vec3 c = pos;
+    float degree = 1.0;
+    for (int i = 0; i < count; ++i) {
+//@FRAKTAL_ORBIT_LOOP
+    }
+//@FRAKTAL_ORBIT_VALUE
+}
+
+// |grad V| at pos by tetrahedral differences: for the vertices k of a regular tetrahedron,
+// sum k (k . g) = 4 g.
+float orbitValueGradient(vec3 pos, int count, float h) {
+    const vec2 k = vec2(1.0, -1.0);
+    vec3 g = k.xyy * orbitValue(pos + h * k.xyy, count) + k.yyx * orbitValue(pos + h * k.yyx, count) +
+             k.yxy * orbitValue(pos + h * k.yxy, count) + k.xxx * orbitValue(pos + h * k.xxx, count);
+    return length(g) / (4.0 * h);
+}
+#endif
 
 // Returns the distance estimate at pos; trap receives the orbit trap (min |x|, |y|, |z| and
 // min |p| over the iterations, seed 3.3); iterations the count before escape; escaped whether
@@ -44,6 +76,17 @@ float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped)
     float remainingLog2 = 0.0, allLog2 = 0.0;
 //@FRAKTAL_REMAINING_DEGREE
     float surfaceLogR = allLog2 > 0.0 ? log(u_bailout) * exp2(-remainingLog2) : 0.0;
+    float orbitGradient = 0.0;
+#ifdef FRAKTAL_ORBIT_GRADIENT
+    // The difference step: a fifth of the estimate with the running derivative (the estimator
+    // without the gradient), so that the orbit value is close to linear across it, and no finer
+    // than single precision resolves at pos. 0 there (inside, for escape-time estimates): no
+    // gradient.
+//@FRAKTAL_RUNNING_ESTIMATE
+    float reach = 1.0 + length(pos);
+    if (running > 0.0)
+        orbitGradient = orbitValueGradient(pos, iterations, clamp(0.02 * running, 1e-5 * reach, 1e-2 * reach));
+#endif
 //@FRAKTAL_ESTIMATE
 }
 

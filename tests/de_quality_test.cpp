@@ -219,3 +219,100 @@ TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
         }
     }
 }
+
+namespace {
+
+// log |F^count(pos)|, stepped block by block here: a reference for the orbit gradient.
+double logRadiusAfter(const Formula& f, const vec3& pos, int count) {
+    P4 p{pos, 1.0};
+    for (int i = 0; i < count; ++i)
+        for (const Node& n : f.nodes)
+            if (n.enabled && n.runsOn(i)) n.block->apply(p, pos, n.args());
+    return std::log(length(p.xyz));
+}
+
+// |grad log |F^count|| at pos by central differences at a step far finer than the estimators'.
+double referenceGradient(const Formula& f, const vec3& pos, int count) {
+    const double h = 1e-6;
+    vec3 g;
+    for (int axis = 0; axis < 3; ++axis) {
+        vec3 step(0.0);
+        step[axis] = h;
+        g[axis] = (logRadiusAfter(f, pos + step, count) - logRadiusAfter(f, pos - step, count)) / (2.0 * h);
+    }
+    return length(g);
+}
+
+}  // namespace
+
+// The gradient estimators divide by |grad| of the composed map's orbit value where the others
+// divide by the running derivative, the product of each step's largest stretch:
+// - where every step stretches alike in all directions (the twist-free squaring ball; a scale
+//   before a box), the two are the same estimate, up to the differences' error;
+// - after a twist the gradient is that of central differences at a fine step, never above the
+//   running derivative's |w| / r, and the estimate is larger than the potential one: the twist's
+//   largest stretch turns from step to step, and the product of the stretches outgrows the
+//   composed map's.
+TEST(DEQuality, GradientEstimatesTakeTheComposedMapsGradient) {
+    const auto points = test::randomPoints(2000, 1.0, 31);
+    for (int iterations : {2, 5}) {
+        Formula f = test::squaringBall(iterations);
+        f.estimator = Node::make(*findBlock("escape_gradient"));
+        const double rho = std::pow(f.bailout, 1.0 / std::pow(2.0, iterations));
+        double worst = 0.0;
+        for (const vec3& d : points) {
+            if (length(d) < 0.05) continue;
+            const double r = rho + 0.02 + 1.98 * length(d);
+            worst = std::max(worst, std::abs(distanceEstimate(f, normalize(d) * r) / (0.5 * (r - rho)) - 1.0));
+        }
+        std::printf("squaring ball, %d iterations: gradient estimate within %.2g of half the distance\n", iterations,
+                    worst);
+        EXPECT_LT(worst, 2e-2) << iterations << " iterations";
+    }
+
+    Formula scaled;
+    scaled.iterations = 3;
+    scaled.bailout = 1e6;
+    Node scale = Node::make(*findBlock("scale"));
+    scale.values[0].x = 2.0;
+    scaled.nodes = {scale};
+    scaled.estimator = Node::make(*findBlock("box"));
+    Formula scaledGradient = scaled;
+    scaledGradient.estimator = Node::make(*findBlock("box_gradient"));
+    double worstBox = 0.0;
+    for (const vec3& d : points) {
+        const vec3 p = d * 0.5;
+        const double box = distanceEstimate(scaled, p);
+        if (box < 1e-3) continue;  // the box's edges and inside, where its distance bends
+        worstBox = std::max(worstBox, std::abs(distanceEstimate(scaledGradient, p) / box - 1.0));
+    }
+    std::printf("scale 2 before a box: the gradient estimate within %.2g of the box estimate\n", worstBox);
+    EXPECT_LT(worstBox, 2e-2);
+
+    Formula twisted = test::squaringBall(4);
+    Node twist = Node::make(*findBlock("twist_y"));
+    twist.values[0].x = 1.5;
+    twisted.nodes.insert(twisted.nodes.begin(), twist);
+    Formula gradient = twisted;
+    gradient.estimator = Node::make(*findBlock("escape_gradient"));
+    std::vector<double> gains;
+    double worstGradient = 0.0;
+    for (const vec3& d : points) {
+        const vec3 p = d * 1.5;
+        const Evaluation e = evaluate(gradient, p);
+        const double potential = distanceEstimate(twisted, p);
+        if (!(potential > 1e-4)) continue;
+        const double reference = referenceGradient(twisted, p, e.iterations);
+        worstGradient = std::max(worstGradient, std::abs(e.orbitGradient / reference - 1.0));
+        EXPECT_GE(e.distance, potential * (1.0 - 1e-9)) << "at (" << p.x << ", " << p.y << ", " << p.z << ")";
+        gains.push_back(e.distance / potential);
+    }
+    std::sort(gains.begin(), gains.end());
+    ASSERT_GT(gains.size(), 500u);
+    const double medianGain = gains[gains.size() / 2];
+    std::printf("twist 1.5 before a square, 4 iterations: gradient within %.2g of the reference; the estimate "
+                "%.3f x the potential one (median), up to %.3f x\n",
+                worstGradient, medianGain, gains.back());
+    EXPECT_LT(worstGradient, 2e-2);
+    EXPECT_GT(medianGain, 1.2);
+}

@@ -192,6 +192,9 @@ const BadPreset kBadPresets[] = {
     // And the log radius of the surface the iterations draw as `surfaceLogR`.
     {"custom_estimator_param_surface_log_r.json", "formula.customBlocks[0].params[0].name",
      "'surfaceLogR' is reserved"},
+    // And |grad| of its orbit value as `orbitGradient`.
+    {"custom_estimator_param_orbit_gradient.json", "formula.customBlocks[0].params[0].name",
+     "'orbitGradient' is reserved"},
     {"custom_block_defined_twice.json", "formula.customBlocks[1].id", "'spin' is defined twice"},
     {"custom_block_forbidden_word.json", "formula.customBlocks[0].glsl", "'gl_WorkGroupID' is not allowed"},
     {"custom_estimator_without_return.json", "formula.customBlocks[0].glsl", "must return the distance"},
