@@ -73,8 +73,8 @@ std::string CustomBlock::validate(const Definition& d) {
         const std::string where = "params[" + std::to_string(i) + "]";
         if (!std::regex_match(p.name, kIdentifier) || p.name.size() > 64)
             return where + ".name: '" + p.name + "' is not a GLSL name";
-        if (p.name == "p" || p.name == "c" || p.name == "degree" || p.name == "surfaceLogR" || p.name == "orbitGradient" ||
-            kForbiddenWords.count(p.name) || p.name.rfind("gl_", 0) == 0)
+        if (p.name == "p" || p.name == "c" || p.name == "degree" || p.name == "surfaceLogR" ||
+            p.name == "orbitGradient" || kForbiddenWords.count(p.name) || p.name.rfind("gl_", 0) == 0)
             return where + ".name: '" + p.name + "' is reserved";
         if (!names.insert(p.name).second) return where + ".name: '" + p.name + "' is declared twice";
         if (!(p.min <= p.max)) return where + ": min is above max";

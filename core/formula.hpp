@@ -61,9 +61,9 @@ struct OrbitTrap {
 struct Evaluation {
     double distance = 0.0;
     OrbitTrap trap;
-    int iterations = 0;    // iterations run before escape (or all of them)
-    bool escaped = false;  // the orbit passed the bailout
-    bool inside = false;   // membership, per the estimator's Membership rule
+    int iterations = 0;          // iterations run before escape (or all of them)
+    bool escaped = false;        // the orbit passed the bailout
+    bool inside = false;         // membership, per the estimator's Membership rule
     double orbitGradient = 0.0;  // P4::orbitGradient, for estimators that read it (else 0)
 };
 

@@ -33,8 +33,9 @@ void emitNodeFunction(GlslEmitter& e, int k, const Node& node, const std::string
     for (const ParamDecl& p : b.params)
         params.push_back(
             {glslType(p.type), estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name), p.name});
-    const std::string head = std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
-                             (estimator ? "(vec4 p, vec3 c, float degree, float surfaceLogR, float orbitGradient" : "(inout vec4 p, vec3 c");
+    const std::string head =
+        std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
+        (estimator ? "(vec4 p, vec3 c, float degree, float surfaceLogR, float orbitGradient" : "(inout vec4 p, vec3 c");
     e.nodeFunction(k, b.id, name, head, params, b.glsl);
 }
 
@@ -98,7 +99,8 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     GeneratedFormula g;
     std::string tmpl(shaderTemplate("formula.glsl"));
     // One line either way, so the template keeps its line numbers.
-    replaceMarker(tmpl, "//@FRAKTAL_OPTIONS", f.estimator.block->usesOrbitGradient ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
+    replaceMarker(tmpl, "//@FRAKTAL_OPTIONS",
+                  f.estimator.block->usesOrbitGradient ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
     const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
     if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
 
@@ -147,11 +149,13 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     // The orbit gradient (estimators that read it): the estimate without it sets the difference
     // step; the orbit value is log r for escape-time estimates, else the estimate at w = 1.
     const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
-    replaceMarker(rest, "//@FRAKTAL_RUNNING_ESTIMATE",
-                  "    float running = abs(" + nodeCall(est, f.estimator, true, "p, c, degree, surfaceLogR, 0.0") + ");");
-    replaceMarker(rest, "//@FRAKTAL_ORBIT_VALUE",
-                  escapeTime ? "    return log(max(length(p.xyz), 1e-30));"
-                             : "    return " + nodeCall(est, f.estimator, true, "vec4(p.xyz, 1.0), c, degree, 0.0, 0.0") + ";");
+    replaceMarker(
+        rest, "//@FRAKTAL_RUNNING_ESTIMATE",
+        "    float running = abs(" + nodeCall(est, f.estimator, true, "p, c, degree, surfaceLogR, 0.0") + ");");
+    replaceMarker(
+        rest, "//@FRAKTAL_ORBIT_VALUE",
+        escapeTime ? "    return log(max(length(p.xyz), 1e-30));"
+                   : "    return " + nodeCall(est, f.estimator, true, "vec4(p.xyz, 1.0), c, degree, 0.0, 0.0") + ";");
     e.restoreFormulaLines();
     e.out += rest;
     g.code = std::move(e.out);

@@ -29,12 +29,13 @@ struct BoxEstimator {
 
 // The box primitive's distance over |grad| of that distance with respect to the starting point
 // (P4::orbitGradient, tetrahedral differences of the orbit: four more orbits) instead of the
-// running scale: the first-order distance |f| / |grad f| to the zero set of f (Taubin,
-// "Distance approximations for rasterizing implicit curves", 1994). The running scale multiplies each step's largest stretch, and where the stretched
-// direction turns from step to step (twists, bends, folds between them) the product outgrows the
-// composed map's own. No bound: the distance's gradient jumps across the folds, and where a fold
-// lies within the difference step the difference is none, so its factor is measured. Without a
-// gradient (0 or not a number) it is the box estimate.
+// running scale: the first-order distance |f| / |grad f| to the zero set of f (Taubin, "Distance
+// approximations for rasterizing implicit curves", 1994). The running scale multiplies each
+// step's largest stretch, and where the stretched direction turns from step to step (twists,
+// bends, folds between them) the product outgrows the composed map's own. No bound: the
+// distance's gradient jumps across the folds, and where a fold lies within the difference step
+// the difference is none, so its factor is measured. Without a gradient (0 or not a number) it is
+// the box estimate.
 struct BoxGradientEstimator {
     static constexpr std::string_view id = "box_gradient";
     static constexpr std::string_view label = "Box (gradient)";

@@ -310,9 +310,10 @@ TEST(DEQuality, GradientEstimatesTakeTheComposedMapsGradient) {
     std::sort(gains.begin(), gains.end());
     ASSERT_GT(gains.size(), 500u);
     const double medianGain = gains[gains.size() / 2];
-    std::printf("twist 1.5 before a square, 4 iterations: gradient within %.2g of the reference; the estimate "
-                "%.3f x the potential one (median), up to %.3f x\n",
-                worstGradient, medianGain, gains.back());
+    std::printf(
+        "twist 1.5 before a square, 4 iterations: gradient within %.2g of the reference; the estimate "
+        "%.3f x the potential one (median), up to %.3f x\n",
+        worstGradient, medianGain, gains.back());
     EXPECT_LT(worstGradient, 2e-2);
     EXPECT_GT(medianGain, 1.2);
 }

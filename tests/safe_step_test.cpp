@@ -298,7 +298,8 @@ TEST(SafeStep, GradientEstimatesAreMeasuredBesideTheirTwinsAtTheirCost) {
 
     Formula bulb = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/mandelbulb.json").formula;
     std::vector<std::string> ids;
-    for (const EstimatorMeasurement& m : compareEstimators(bulb, camera, check)) ids.push_back(std::string(m.estimator.block->id));
+    for (const EstimatorMeasurement& m : compareEstimators(bulb, camera, check))
+        ids.push_back(std::string(m.estimator.block->id));
     std::sort(ids.begin(), ids.end());
     EXPECT_EQ(ids, (std::vector<std::string>{"escape_gradient", "escape_linear", "escape_log", "escape_potential"}));
 }
