@@ -297,6 +297,21 @@ TEST(Preset, CheckCommandFlagsAnUnsafeFormula) {
     EXPECT_NE(r.output.find("multiply formula.deFactor by"), std::string::npos) << r.output;
 }
 
+// `check` measures a primitive beside its gradient twin on the same rays and ranks them by speed
+// per orbit: on the Menger sponge the box (a proven bound, factor 1) before box_gradient, whose
+// differences straddle the sponge's folds.
+TEST(Preset, CheckCommandComparesAPrimitiveWithItsGradientTwin) {
+    const test::CliRun r = test::runCli("check " + (test::sourceDir() / "presets/menger.json").string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    const size_t box = r.output.find("estimator box: "), twin = r.output.find("estimator box_gradient: ");
+    ASSERT_NE(box, std::string::npos) << r.output;
+    ASSERT_NE(twin, std::string::npos) << r.output;
+    EXPECT_LT(box, twin) << r.output;
+    EXPECT_NE(r.output.find("<- largest factor x median per orbit", box), std::string::npos) << r.output;
+    EXPECT_GT(r.output.find("<- largest factor x median per orbit", box), box) << r.output;
+    EXPECT_LT(r.output.find("<- largest factor x median per orbit", box), twin) << r.output;
+}
+
 // `check --frame N` checks the preset as its animation has it at frame N. The power morph keys the
 // Mandelbulb's power from 3 through 8 to 12; between integer powers the map jumps at the atan2
 // cut, and at frames 40 and 164 the check's rays find it (safe factors 0.30 and 0.35, where most

@@ -219,16 +219,18 @@ int runCheck(const CheckOptions& o) {
                 "note: step %zu (%s) jumps: the factor is measured, not proven; rays that pass close to the jump "
                 "may overshoot more than any sampled one (more --rays sample more of them)\n",
                 k + 1, std::string(f.nodes[k].block->id).c_str());
-    // Escape-time formulas: the estimators that share the membership, on the same rays.
-    if (f.cpuEvaluable() && s.samples > 0 && f.estimator.block->membership == Membership::EscapeTime) {
-        const auto candidates = compareEstimators(f, safeRays, safe);
+    // The estimators that share the membership (escape-time ones; a primitive and its gradient
+    // twin), on the same rays.
+    const auto candidates =
+        f.cpuEvaluable() && s.samples > 0 ? compareEstimators(f, safeRays, safe) : std::vector<EstimatorMeasurement>{};
+    if (candidates.size() > 1) {
         for (const EstimatorMeasurement& m : candidates) {
             char offset[48] = "";
             if (m.estimator.block->id == "escape_linear")
                 std::snprintf(offset, sizeof offset, " (offset %.3g)", m.estimator.values[0].x);
             std::printf("estimator %s%s: worst %.3f, median %.3f at factor 1; safe step factor %.3f; speed %.3f%s\n",
                         std::string(m.estimator.block->id).c_str(), offset, m.report.worstRatio, m.report.medianRatio,
-                        m.factor, m.speed(), &m == &candidates.front() ? "  <- largest factor x median" : "");
+                        m.factor, m.speed(), &m == &candidates.front() ? "  <- largest factor x median per orbit" : "");
         }
     }
     std::printf(status == 0 ? "OK\n" : "NOT SOUND\n");
