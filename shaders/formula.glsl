@@ -78,10 +78,11 @@ float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped)
     float surfaceLogR = allLog2 > 0.0 ? log(u_bailout) * exp2(-remainingLog2) : 0.0;
     float orbitGradient = 0.0;
 #ifdef FRAKTAL_ORBIT_GRADIENT
-    // The difference step: a fifth of the estimate with the running derivative (the estimator
-    // without the gradient), so that the orbit value is close to linear across it, and no finer
-    // than single precision resolves at pos. 0 there (inside, for escape-time estimates): no
-    // gradient.
+    // The difference step: 0.02 of the estimate with the running derivative (the estimator
+    // without the gradient), so that the orbit value is close to linear across it (the
+    // tetrahedral stencil's error is first order in the step: 0.9% on the squaring ball at 0.02,
+    // tests/de_quality_test.cpp), and no finer than single precision resolves at pos. 0 there
+    // (inside, for escape-time estimates): no gradient.
 //@FRAKTAL_RUNNING_ESTIMATE
     float reach = 1.0 + length(pos);
     if (running > 0.0)
