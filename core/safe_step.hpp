@@ -21,7 +21,8 @@
 //   draws at every r, where the log form runs from 0.5 to 0.82 of it at 2 from the unit ball), so
 //   one step factor fits near and far samples.
 // - linear, r / w: Syntopia part VI's Mandelbox form, for fold-and-scale stacks.
-// - gradient twins (escape_gradient beside the escape-time estimates, box_gradient beside a box):
+// - gradient twins (escape_gradient beside the escape-time estimates, box_gradient beside a box,
+//   sphere_gradient and tetrahedron_gradient beside theirs):
 //   the same estimate over |grad| of the composed map's orbit value, by tetrahedral differences of
 //   the orbit, in place of w. w multiplies each step's largest stretch, and where the stretched
 //   direction turns from step to step (twists, bends) that product outgrows the composed map's

@@ -2,6 +2,8 @@
 // 3.2: "return the distance to the reference cube divided by the total scale applied"); the
 // escape-time estimators use the running derivative (Hart et al. 1989; Syntopia part V).
 #pragma once
+#include <algorithm>
+
 #include "core/block.hpp"
 
 namespace fraktal::blocks {
@@ -24,41 +26,6 @@ struct BoxEstimator {
         const vec3 size = a.v3(0);
         vec3 q = abs(p.xyz) - size;
         return (length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0)) / abs(p.w);
-    }
-};
-
-// The box primitive's distance over |grad| of that distance with respect to the starting point
-// (P4::orbitGradient, tetrahedral differences of the orbit: four more orbits) instead of the
-// running scale: the first-order distance |f| / |grad f| to the zero set of f (Taubin, "Distance
-// approximations for rasterizing implicit curves", 1994). The running scale multiplies each
-// step's largest stretch, and where the stretched direction turns from step to step (twists,
-// bends, folds between them) the product outgrows the composed map's own. No bound: the
-// distance's gradient jumps across the folds, and where a fold lies within the difference step
-// the difference is none, so its factor is measured. Without a gradient (0 or not a number) it is
-// the box estimate.
-struct BoxGradientEstimator {
-    static constexpr std::string_view id = "box_gradient";
-    static constexpr std::string_view label = "Box (gradient)";
-    static constexpr std::string_view help =
-        "Distance to a box of the given half-size, over the gradient of that distance by differences of the orbit "
-        "(four more orbits per estimate) instead of the running scale: tighter after twists and bends, five times "
-        "the cost.";
-    static constexpr Category category = Category::Estimator;
-    static constexpr Membership membership = Membership::Distance;
-    static constexpr std::string_view gradientOf = "box";
-    static constexpr std::array params = BoxEstimator::params;
-
-    static constexpr std::string_view glsl = R"(
-    vec3 q = abs(p.xyz) - size;
-    float grad = orbitGradient > 0.0 ? orbitGradient : abs(p.w);
-    return (length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0)) / grad;
-)";
-    static double estimate(const P4& p, const vec3&, Args a) {
-        const vec3 size = a.v3(0);
-        const double orbitGradient = p.orbitGradient;
-        vec3 q = abs(p.xyz) - size;
-        double grad = orbitGradient > 0.0 ? orbitGradient : abs(p.w);
-        return (length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0)) / grad;
     }
 };
 
@@ -102,6 +69,55 @@ struct TetrahedronEstimator {
         const vec3 q = p.xyz;
         double md = max(max(-q.x - q.y - q.z, -q.x + q.y + q.z), max(q.x - q.y + q.z, q.x + q.y - q.z));
         return (md - size) / (std::sqrt(3.0) * abs(p.w));
+    }
+};
+
+// The constant strings Parts joined, as a constant string: a twin's id, label and GLSL built
+// from its primitive's.
+template <const std::string_view&... Parts>
+struct JoinedText {
+    static constexpr auto chars = [] {
+        std::array<char, (Parts.size() + ... + 0)> joined{};
+        size_t at = 0;
+        ((std::copy(Parts.begin(), Parts.end(), joined.begin() + at), at += Parts.size()), ...);
+        return joined;
+    }();
+    static constexpr std::string_view value{chars.data(), chars.size()};
+};
+
+inline constexpr std::string_view kGradientTwinId = "_gradient";
+inline constexpr std::string_view kGradientTwinLabel = " (gradient)";
+inline constexpr std::string_view kGradientTwinHelp =
+    " primitive over |grad| of its distance by differences of the orbit (four more orbits per estimate) instead of "
+    "the running scale: tighter after twists and bends, five times the cost.";
+inline constexpr std::string_view kGradientTwinGlsl = R"(
+    p.w = orbitGradient > 0.0 ? orbitGradient : abs(p.w);)";
+
+// A primitive's gradient twin: the primitive's distance over |grad| of that distance with respect
+// to the starting point (P4::orbitGradient, tetrahedral differences of the orbit: four more
+// orbits) in place of the running scale, the first-order distance |f| / |grad f| to the zero set
+// of f (Taubin, "Distance approximations for rasterizing implicit curves", 1994). The running scale
+// multiplies each step's largest stretch, and where the stretched direction turns from step to
+// step (twists, bends, folds between them) the product outgrows the composed map's own. No bound:
+// the distance's gradient jumps across the folds, and where a fold lies within the difference step
+// the difference is none, so its factor is measured. Without a gradient (0 or not a number) it is
+// the primitive's estimate. The primitive's own body runs with the gradient in p.w, in GLSL and
+// C++ alike.
+template <class Primitive>
+struct GradientTwin {
+    static constexpr std::string_view id = JoinedText<Primitive::id, kGradientTwinId>::value;
+    static constexpr std::string_view label = JoinedText<Primitive::label, kGradientTwinLabel>::value;
+    static constexpr std::string_view help = JoinedText<Primitive::label, kGradientTwinHelp>::value;
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Primitive::membership;
+    static constexpr std::string_view gradientOf = Primitive::id;
+    static constexpr std::array params = Primitive::params;
+
+    static constexpr std::string_view glsl = JoinedText<kGradientTwinGlsl, Primitive::glsl>::value;
+    static double estimate(const P4& p, const vec3& c, Args a) {
+        P4 q = p;
+        q.w = p.orbitGradient > 0.0 ? p.orbitGradient : abs(p.w);
+        return Primitive::estimate(q, c, a);
     }
 };
 
@@ -202,8 +218,9 @@ struct EscapePotentialEstimator {
 // it 0.5 G / |grad G| is the Hubbard-Douady form itself (Hubbard and Douady; Syntopia, "Distance
 // estimated 3D fractals" part V, and Mandelbulber's "delta DE", which takes the same
 // differences). It is no bound either: where the map jumps within the difference step the
-// difference is no derivative, so its factor is measured like the others'. An orbit whose
-// differences gave no gradient (0 or not a number) falls back to the running derivative, |dr| / r.
+// difference is no derivative, so its factor is measured like the others'. It runs the potential
+// estimate's own body with r |grad log r| in p.w, in GLSL and C++ alike; an orbit whose
+// differences gave no gradient (0 or not a number) keeps the running derivative there.
 struct EscapeGradientEstimator {
     static constexpr std::string_view id = "escape_gradient";
     static constexpr std::string_view label = "Escape time (gradient)";
@@ -213,27 +230,17 @@ struct EscapeGradientEstimator {
         "step, five times the cost.";
     static constexpr Category category = Category::Estimator;
     static constexpr Membership membership = Membership::EscapeTime;
-    static constexpr std::string_view gradientOf = "escape_potential";
-    static constexpr std::array<ParamDecl, 0> params{};
+    static constexpr std::string_view gradientOf = EscapePotentialEstimator::id;
+    static constexpr std::array params = EscapePotentialEstimator::params;
 
-    static constexpr std::string_view glsl = R"(
-    float r = length(p.xyz);
-    if (!(r > 1.0)) return 0.0;
-    float fromSurface = max(log(r) - surfaceLogR, 0.0);
-    float G = fromSurface / degree;
-    float q = potentialShare(G);
-    float grad = orbitGradient > 0.0 ? orbitGradient : abs(p.w) / r;
-    return 0.5 * q * fromSurface / grad;
-)";
-    static double estimate(const P4& p, const vec3&, Args) {
-        const double degree = p.degree, surfaceLogR = p.surfaceLogR, orbitGradient = p.orbitGradient;
-        double r = length(p.xyz);
-        if (!(r > 1.0)) return 0.0;
-        double fromSurface = max(std::log(r) - surfaceLogR, 0.0);
-        double G = fromSurface / degree;
-        double q = potentialShare(G);
-        double grad = orbitGradient > 0.0 ? orbitGradient : abs(p.w) / r;
-        return 0.5 * q * fromSurface / grad;
+    // The potential estimate's body, with r |grad log r| in p.w (|dr| / r is what it divides by).
+    static constexpr std::string_view prologue = R"(
+    p.w = orbitGradient > 0.0 ? orbitGradient * length(p.xyz) : p.w;)";
+    static constexpr std::string_view glsl = JoinedText<prologue, EscapePotentialEstimator::glsl>::value;
+    static double estimate(const P4& p, const vec3& c, Args a) {
+        P4 q = p;
+        q.w = p.orbitGradient > 0.0 ? p.orbitGradient * length(p.xyz) : p.w;
+        return EscapePotentialEstimator::estimate(q, c, a);
     }
 };
 
