@@ -112,14 +112,14 @@ struct BlockDescOf {
     EstimateFn estimate = nullptr;  // estimators
     MembershipT membership{};       // the family's first kind unless the estimator says
     bool custom = false;            // a user's GLSL block (core/custom_block.hpp): no CPU body
-    // Estimators that read P4::orbitGradient: the formula runs four more orbits per estimate for
-    // it. `gradientOf` names the estimator whose orbit value it differentiates (the same
-    // parameters), so that the check measures the two side by side.
-    bool usesOrbitGradient = false;
+    // A gradient twin names the estimator whose orbit value it differentiates (the same
+    // parameters), so that the check measures the two side by side; it reads P4::orbitGradient,
+    // for which the formula runs four more orbits per estimate.
     std::string_view gradientOf;
+    bool usesOrbitGradient() const { return !gradientOf.empty(); }
     // Orbits evaluated per estimate (1, or 5 with the orbit gradient): the check weighs an
     // estimator's speed by it.
-    int orbitsPerEstimate() const { return usesOrbitGradient ? 5 : 1; }
+    int orbitsPerEstimate() const { return usesOrbitGradient() ? 5 : 1; }
     // 3D steps declare it; estimators, 2D blocks and custom blocks (unknown GLSL) bound nothing.
     DerivativeBound derivative = DerivativeBound::None;
     // Where the bound depends on the parameters (a power's map jumps at the atan2 cut unless the
@@ -193,10 +193,7 @@ constexpr Desc describeAs() {
         static_assert(B::category == Category::Estimator, "an estimator block must say so");
         d.estimate = &B::estimate;
         d.membership = B::membership;
-        if constexpr (requires { B::gradientOf; }) {
-            d.usesOrbitGradient = true;
-            d.gradientOf = B::gradientOf;
-        }
+        if constexpr (requires { B::gradientOf; }) d.gradientOf = B::gradientOf;
     } else {
         static_assert(B::category != Category::Estimator, "an estimator block needs estimate()");
         d.apply = &B::apply;

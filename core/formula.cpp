@@ -137,7 +137,7 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
             allLog2 += double(n.iterationsRunBefore(iterations)) * d;
         }
     p.surfaceLogR = allLog2 > 0.0 ? std::log(f.bailout) * std::exp2(-remainingLog2) : 0.0;
-    if (f.estimator.block->usesOrbitGradient) {
+    if (f.estimator.block->usesOrbitGradient()) {
         // The difference step: 0.02 of the estimate with the running derivative (the estimator
         // without the gradient), so that the orbit value is close to linear across it (the
         // tetrahedral stencil's error is first order in the step: 0.9% on the squaring ball at 0.02,

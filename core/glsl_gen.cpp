@@ -100,7 +100,7 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     std::string tmpl(shaderTemplate("formula.glsl"));
     // One line either way, so the template keeps its line numbers.
     replaceMarker(tmpl, "//@FRAKTAL_OPTIONS",
-                  f.estimator.block->usesOrbitGradient ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
+                  f.estimator.block->usesOrbitGradient() ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
     const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
     if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
 

@@ -108,7 +108,7 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Safe
     // The gradient twins of the estimators measured so far, with their parameters.
     for (size_t i = 0, measuredSoFar = out.size(); i < measuredSoFar; ++i)
         for (const BlockDesc& twin : allBlocks())
-            if (twin.usesOrbitGradient && twin.gradientOf == out[i].estimator.block->id) {
+            if (twin.gradientOf == out[i].estimator.block->id) {
                 Node g = Node::make(twin);
                 g.values = out[i].estimator.values;
                 add(g);

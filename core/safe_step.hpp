@@ -80,7 +80,7 @@ struct SafeStepOptions {
     double gradientWorst = 2.0;
 
     bool proven(const BlockDesc& estimator, const std::vector<Node>& steps) const {
-        return estimator.membership == Membership::Distance && !estimator.usesOrbitGradient &&
+        return estimator.membership == Membership::Distance && !estimator.usesOrbitGradient() &&
                derivativeBound(steps) == DerivativeBound::Global;
     }
     // The margin kept below the factor the rays allow.
@@ -139,9 +139,10 @@ EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, con
 // The linear estimator r / w.
 Node linearEstimator();
 
-// Escape-time formulas: the formula's own estimator, linear r / w, log, potential and gradient, each measured on
-// the same rays (they share the membership, so the object is the same); best first (the largest
-// speed()). Other formulas (IFS primitives, custom estimators): their own estimator alone.
+// The formula's own estimator and, for escape-time formulas, linear r / w, log and potential, then
+// the gradient twins of those measured (a primitive's too), each measured on the same rays (they
+// share the membership, so the object is the same); best first (the largest speed()). A custom
+// estimator has no twin: it is measured alone.
 // Needs a CPU-evaluable formula.
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Camera& camera,
                                                     const SafeStepOptions& options = {});

@@ -31,7 +31,7 @@ struct P4 {
     // point: log r for escape-time estimators, the estimate at w = 1 for distance ones (a
     // primitive's distance in the last point's space). By tetrahedral differences of the orbit run
     // for the same iterations (orbitValueGradient in core/formula.cpp and shaders/formula.glsl).
-    // Set only for estimators that ask for it (BlockDesc::usesOrbitGradient), else 0 (GLSL:
+    // Set only for estimators that ask for it (BlockDesc::usesOrbitGradient()), else 0 (GLSL:
     // `orbitGradient`).
     double orbitGradient = 0.0;
 };

@@ -73,7 +73,7 @@ struct TetrahedronEstimator {
 };
 
 // The constant strings Parts joined, as a constant string: a twin's id, label and GLSL built
-// from its primitive's.
+// from its original's.
 template <const std::string_view&... Parts>
 struct JoinedText {
     static constexpr auto chars = [] {
@@ -90,36 +90,55 @@ inline constexpr std::string_view kGradientTwinLabel = " (gradient)";
 inline constexpr std::string_view kGradientTwinHelp =
     " primitive over |grad| of its distance by differences of the orbit (four more orbits per estimate) instead of "
     "the running scale: tighter after twists and bends, five times the cost.";
-inline constexpr std::string_view kGradientTwinGlsl = R"(
+// What stands in for the running derivative w in the original's body: |grad V| for a distance
+// estimate (V the primitive's distance), r |grad log r| for an escape-time one (which divides by
+// |w| / r). Without a gradient (0 or not a number) w stays.
+inline constexpr std::string_view kGradientInWForEscape = R"(
+    p.w = orbitGradient > 0.0 ? orbitGradient * length(p.xyz) : p.w;)";
+inline constexpr std::string_view kGradientInWForDistance = R"(
     p.w = orbitGradient > 0.0 ? orbitGradient : abs(p.w);)";
+template <Membership M>
+inline constexpr std::string_view kGradientInW =
+    M == Membership::EscapeTime ? kGradientInWForEscape : kGradientInWForDistance;
 
-// A primitive's gradient twin: the primitive's distance over |grad| of that distance with respect
-// to the starting point (P4::orbitGradient, tetrahedral differences of the orbit: four more
-// orbits) in place of the running scale, the first-order distance |f| / |grad f| to the zero set
-// of f (Taubin, "Distance approximations for rasterizing implicit curves", 1994). The running scale
-// multiplies each step's largest stretch, and where the stretched direction turns from step to
-// step (twists, bends, folds between them) the product outgrows the composed map's own. No bound:
-// the distance's gradient jumps across the folds, and where a fold lies within the difference step
-// the difference is none, so its factor is measured. Without a gradient (0 or not a number) it is
-// the primitive's estimate. The primitive's own body runs with the gradient in p.w, in GLSL and
-// C++ alike.
-template <class Primitive>
+// An estimator's gradient twin: the original estimate with |grad| of the composed map's orbit
+// value (P4::orbitGradient, tetrahedral differences of the orbit: four more orbits) in place of
+// the running derivative w. w multiplies each step's largest stretch, and where the stretched
+// direction turns from step to step (twists, bends, folds between them) the product outgrows the
+// composed map's own. For a primitive that is the first-order distance |f| / |grad f| to the zero
+// set of f (Taubin, "Distance approximations for rasterizing implicit curves", 1994). No bound:
+// the gradient jumps across folds and jumps, and where one lies within the difference step the
+// difference is none, so the factor is measured. The original's own body runs with the gradient
+// in p.w, in GLSL and C++ alike. The id, label and help are the primitive's with "gradient"; an
+// escape-time twin names its own (EscapeGradientEstimator).
+template <class Original>
 struct GradientTwin {
-    static constexpr std::string_view id = JoinedText<Primitive::id, kGradientTwinId>::value;
-    static constexpr std::string_view label = JoinedText<Primitive::label, kGradientTwinLabel>::value;
-    static constexpr std::string_view help = JoinedText<Primitive::label, kGradientTwinHelp>::value;
+    static constexpr bool escapeTime = Original::membership == Membership::EscapeTime;
+    static constexpr std::string_view id = JoinedText<Original::id, kGradientTwinId>::value;
+    static constexpr std::string_view label = JoinedText<Original::label, kGradientTwinLabel>::value;
+    static constexpr std::string_view help = JoinedText<Original::label, kGradientTwinHelp>::value;
     static constexpr Category category = Category::Estimator;
-    static constexpr Membership membership = Primitive::membership;
-    static constexpr std::string_view gradientOf = Primitive::id;
-    static constexpr std::array params = Primitive::params;
+    static constexpr Membership membership = Original::membership;
+    static constexpr std::string_view gradientOf = Original::id;
+    static constexpr std::array params = Original::params;
 
-    static constexpr std::string_view glsl = JoinedText<kGradientTwinGlsl, Primitive::glsl>::value;
+    static constexpr std::string_view glsl = JoinedText<kGradientInW<Original::membership>, Original::glsl>::value;
     static double estimate(const P4& p, const vec3& c, Args a) {
         P4 q = p;
-        q.w = p.orbitGradient > 0.0 ? p.orbitGradient : abs(p.w);
-        return Primitive::estimate(q, c, a);
+        if constexpr (escapeTime)
+            q.w = p.orbitGradient > 0.0 ? p.orbitGradient * length(p.xyz) : p.w;
+        else
+            q.w = p.orbitGradient > 0.0 ? p.orbitGradient : abs(p.w);
+        return Original::estimate(q, c, a);
     }
 };
+
+// (1 - e^-G) / G: the potential estimate's share of the log one. Below G = 0.1 its series to G^4
+// (error under 2e-8): 1 - exp(-G) loses digits to cancellation in single precision, 1e-4 of them
+// at G = 1e-3. The GLSL twin is in shaders/formula.glsl.
+inline double potentialShare(double G) {
+    return G < 0.1 ? 1.0 - G * (1.0 / 2.0 - G * (1.0 / 6.0 - G * (1.0 / 24.0 - G / 120.0))) : (1.0 - std::exp(-G)) / G;
+}
 
 // 0.5 log(r) r / dr: for power iterations (Mandelbulb), Hubbard-Douady potential. That is
 // 0.5 G / |grad G| with the potential G = log(r) / D (D the power steps' degrees, P4::degree),
@@ -131,13 +150,6 @@ struct GradientTwin {
 // Green's function of the filled level set, so the bound holds for it with log(r) replaced by
 // log(r) - surfaceLogR (P4::surfaceLogR: the surface's log radius in this orbit's units; 0
 // without power steps).
-// (1 - e^-G) / G: the potential estimate's share of the log one. Below G = 0.1 its series to G^4
-// (error under 2e-8): 1 - exp(-G) loses digits to cancellation in single precision, 1e-4 of them
-// at G = 1e-3. The GLSL twin is in shaders/formula.glsl.
-inline double potentialShare(double G) {
-    return G < 0.1 ? 1.0 - G * (1.0 / 2.0 - G * (1.0 / 6.0 - G * (1.0 / 24.0 - G / 120.0))) : (1.0 - std::exp(-G)) / G;
-}
-
 struct EscapeLogEstimator {
     static constexpr std::string_view id = "escape_log";
     static constexpr std::string_view label = "Escape time (log)";
@@ -218,30 +230,15 @@ struct EscapePotentialEstimator {
 // it 0.5 G / |grad G| is the Hubbard-Douady form itself (Hubbard and Douady; Syntopia, "Distance
 // estimated 3D fractals" part V, and Mandelbulber's "delta DE", which takes the same
 // differences). It is no bound either: where the map jumps within the difference step the
-// difference is no derivative, so its factor is measured like the others'. It runs the potential
-// estimate's own body with r |grad log r| in p.w, in GLSL and C++ alike; an orbit whose
-// differences gave no gradient (0 or not a number) keeps the running derivative there.
-struct EscapeGradientEstimator {
+// difference is no derivative, so its factor is measured like the others'. GradientTwin runs the
+// potential estimate's own body with r |grad log r| in p.w.
+struct EscapeGradientEstimator : GradientTwin<EscapePotentialEstimator> {
     static constexpr std::string_view id = "escape_gradient";
     static constexpr std::string_view label = "Escape time (gradient)";
     static constexpr std::string_view help =
         "The potential estimate with |grad log r| from differences of the orbit (four more orbits per estimate) "
         "instead of the running derivative: tighter where twists, bends and folds turn the stretch from step to "
         "step, five times the cost.";
-    static constexpr Category category = Category::Estimator;
-    static constexpr Membership membership = Membership::EscapeTime;
-    static constexpr std::string_view gradientOf = EscapePotentialEstimator::id;
-    static constexpr std::array params = EscapePotentialEstimator::params;
-
-    // The potential estimate's body, with r |grad log r| in p.w (|dr| / r is what it divides by).
-    static constexpr std::string_view prologue = R"(
-    p.w = orbitGradient > 0.0 ? orbitGradient * length(p.xyz) : p.w;)";
-    static constexpr std::string_view glsl = JoinedText<prologue, EscapePotentialEstimator::glsl>::value;
-    static double estimate(const P4& p, const vec3& c, Args a) {
-        P4 q = p;
-        q.w = p.orbitGradient > 0.0 ? p.orbitGradient * length(p.xyz) : p.w;
-        return EscapePotentialEstimator::estimate(q, c, a);
-    }
 };
 
 // r / |dr|: for fold-and-scale escape-time formulas (Mandelbox; Lowe, Syntopia part VI).

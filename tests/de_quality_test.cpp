@@ -166,6 +166,27 @@ TEST(DEQuality, IterationsRunBeforeCountsTheIterationsANodeRunsOn) {
 // at 2 from the unit ball and 0.69 from rho = 2. For the spherical powers the running derivative
 // may be larger than the radial stretch (the phi stretch near the poles), so the estimate is at
 // most half the distance.
+namespace {
+
+// Points from 0.02 to 2 outside the ball of radius rho, along the directions of `directions`
+// (those shorter than 0.05 left out), with their distance to the ball.
+std::vector<std::pair<vec3, double>> outsideTheBall(const std::vector<vec3>& directions, double rho) {
+    std::vector<std::pair<vec3, double>> out;
+    for (const vec3& d : directions)
+        if (length(d) >= 0.05) out.push_back({normalize(d) * (rho + 0.02 + 1.98 * length(d)), 0.02 + 1.98 * length(d)});
+    return out;
+}
+
+// The largest relative error of f's estimate against half the distance to the ball of radius rho.
+double worstAgainstHalfTheDistance(const Formula& f, const std::vector<vec3>& directions, double rho) {
+    double worst = 0.0;
+    for (const auto& [p, distance] : outsideTheBall(directions, rho))
+        worst = std::max(worst, std::abs(distanceEstimate(f, p) / (0.5 * distance) - 1.0));
+    return worst;
+}
+
+}  // namespace
+
 TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
     const auto points = test::randomPoints(3000, 1.0, 29);
     // The largest relative error against half the distance to the ball of radius rho, from 0.02 to
@@ -173,16 +194,10 @@ TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
     auto againstHalfTheDistance = [&](const Formula& f, double rho, double& logFar) {
         Formula log = f;
         log.estimator = Node::make(*findBlock("escape_log"));
-        double worstError = 0.0;
         logFar = 0.0;
-        for (const vec3& d : points) {
-            if (length(d) < 0.05) continue;
-            const double r = rho + 0.02 + 1.98 * length(d);
-            const vec3 p = normalize(d) * r;
-            worstError = std::max(worstError, std::abs(distanceEstimate(f, p) / (0.5 * (r - rho)) - 1.0));
-            if (r > rho + 1.9) logFar = std::max(logFar, distanceEstimate(log, p) / (r - rho));
-        }
-        return worstError;
+        for (const auto& [p, distance] : outsideTheBall(points, rho))
+            if (distance > 1.9) logFar = std::max(logFar, distanceEstimate(log, p) / distance);
+        return worstAgainstHalfTheDistance(f, points, rho);
     };
     for (int iterations : {1, 2, 5, 12}) {
         const Formula f = test::squaringBall(iterations);
@@ -209,11 +224,8 @@ TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
             f.nodes = {bulb};
             const double rho = std::pow(f.bailout, 1.0 / std::pow(power, f.iterations));
             double highest = 0.0;
-            for (const vec3& d : points) {
-                if (length(d) < 0.05) continue;
-                const double r = rho + 0.02 + 1.98 * length(d);
-                highest = std::max(highest, distanceEstimate(f, normalize(d) * r) / (0.5 * (r - rho)));
-            }
+            for (const auto& [p, distance] : outsideTheBall(points, rho))
+                highest = std::max(highest, distanceEstimate(f, p) / (0.5 * distance));
             EXPECT_LE(highest, 1.0 + 1e-9) << id << " power " << power;
             EXPECT_GT(highest, 0.99) << id << " power " << power;  // reached where the stretch is radial
         }
@@ -258,13 +270,8 @@ TEST(DEQuality, GradientEstimatesTakeTheComposedMapsGradient) {
     for (int iterations : {2, 5}) {
         Formula f = test::squaringBall(iterations);
         f.estimator = Node::make(*findBlock("escape_gradient"));
-        const double rho = std::pow(f.bailout, 1.0 / std::pow(2.0, iterations));
-        double worst = 0.0;
-        for (const vec3& d : points) {
-            if (length(d) < 0.05) continue;
-            const double r = rho + 0.02 + 1.98 * length(d);
-            worst = std::max(worst, std::abs(distanceEstimate(f, normalize(d) * r) / (0.5 * (r - rho)) - 1.0));
-        }
+        const double worst =
+            worstAgainstHalfTheDistance(f, points, std::pow(f.bailout, 1.0 / std::pow(2.0, iterations)));
         std::printf("squaring ball, %d iterations: gradient estimate within %.2g of half the distance\n", iterations,
                     worst);
         EXPECT_LT(worst, 2e-2) << iterations << " iterations";
