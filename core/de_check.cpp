@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -119,6 +120,8 @@ RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const Conse
             out.points.push_back(origin + dir * t);
             out.distances.push_back(hit.t - t);
         }
+        if (out.rayEnds.empty() ? !out.points.empty() : out.rayEnds.back() < out.points.size())
+            out.rayEnds.push_back(out.points.size());
     }
     return out;
 }
@@ -143,6 +146,10 @@ ConservativenessReport reportOf(const RaySamples& samples, std::vector<double> r
             report.worstRatio = ratios[i];
             report.worstPoint = samples.points[i];
         }
+    for (size_t ray = 0, begin = 0; ray < samples.rayEnds.size(); begin = samples.rayEnds[ray++])
+        report.rayWorst.push_back(
+            *std::max_element(ratios.begin() + long(begin), ratios.begin() + long(samples.rayEnds[ray])));
+    std::sort(report.rayWorst.begin(), report.rayWorst.end(), std::greater<>());
     if (!ratios.empty()) {
         auto middle = ratios.begin() + long(ratios.size() / 2);
         std::nth_element(ratios.begin(), middle, ratios.end());

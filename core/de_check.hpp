@@ -60,6 +60,9 @@ struct ConservativenessReport {
     double worstRatio = 0.0;   // max over samples of DE / distance-to-hit
     double medianRatio = 0.0;  // how fast marching is: near 1, each step covers the whole gap
     vec3 worstPoint{0.0};
+    // The worst ratio of each hit ray with samples, largest first: the rays are independent
+    // draws where the samples along one ray are not, so the tail of the ratios is estimated on these.
+    std::vector<double> rayWorst;
     // Largest multiplier of the DE that keeps every sample at or under the true distance.
     double safeStepMultiplier() const { return worstRatio > 1.0 ? 1.0 / worstRatio : 1.0; }
     bool conservative(double tolerance = 0.01) const { return worstRatio <= 1.0 + tolerance; }
@@ -73,6 +76,9 @@ struct RaySamples {
     int raysHit = 0;
     std::vector<vec3> points;
     std::vector<double> distances;
+    // One past each hit ray's last sample, in order: the samples of hit ray i are
+    // [rayEnds[i - 1], rayEnds[i]) (from 0 for the first).
+    std::vector<size_t> rayEnds;
 };
 
 // Half the rays start at the camera through random pixels, half at random points on the bound

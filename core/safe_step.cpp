@@ -24,6 +24,7 @@ SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, c
         for (double r : moreRatios) roundWorst = std::max(roundWorst, r);
         all.rays += more.rays;
         all.raysHit += more.raysHit;
+        for (size_t end : more.rayEnds) all.rayEnds.push_back(all.points.size() + end);
         all.points.insert(all.points.end(), more.points.begin(), more.points.end());
         all.distances.insert(all.distances.end(), more.distances.begin(), more.distances.end());
         ratios.insert(ratios.end(), moreRatios.begin(), moreRatios.end());
@@ -37,10 +38,39 @@ SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, c
     return {std::move(all), report};
 }
 
-double SafeStepOptions::factorFor(double worstRatio, const BlockDesc& estimator, const std::vector<Node>& steps) const {
-    const double measured = safeStepFactor(worstRatio, marginFor(steps));
+double projectedWorst(const ConservativenessReport& report, double rays) {
+    const std::vector<double>& y = report.rayWorst;  // largest first
+    const size_t kMax = std::clamp<size_t>(y.size() / 5, 5, 100);
+    if (y.size() < kMax + 2 || !(y[kMax] > 0.0)) return 2.0 * report.worstRatio;
+    const double n = double(y.size());
+    double projected = report.worstRatio, sumOfLogs = 0.0;
+    for (size_t k = 1; k <= kMax; ++k) {
+        sumOfLogs += std::log(y[k - 1]);
+        if (k < 2) continue;
+        const double hill = sumOfLogs / double(k) - std::log(y[k]);
+        projected = std::max(projected, y[k] * std::pow(double(k) * rays / n, hill));
+    }
+    return projected;
+}
+
+ConservativenessReport atUnitFactor(ConservativenessReport r, double deFactor) {
+    r.worstRatio /= deFactor;
+    r.medianRatio /= deFactor;
+    for (double& ratio : r.rayWorst) ratio /= deFactor;
+    return r;
+}
+
+double SafeStepOptions::factorFor(const ConservativenessReport& atUnit, const BlockDesc& estimator,
+                                  const std::vector<Node>& steps) const {
+    const double measured = std::max(safeStepFactor(atUnit.worstRatio, marginFor(steps)),
+                                     safeStepFactor(projectedWorst(atUnit, raysAhead), tailMargin));
     if (!proven(estimator, steps)) return measured;
-    return std::max(measured, std::min(safeStepFactor(worstRatio, boundMargin), 1.0));
+    return std::max(measured, std::min(safeStepFactor(atUnit.worstRatio, boundMargin), 1.0));
+}
+
+bool SafeStepOptions::hasFactor(const ConservativenessReport& atUnit, const std::vector<Node>& steps) const {
+    return hasSafeStepFactor(atUnit.worstRatio, marginFor(steps)) ||
+           hasSafeStepFactor(projectedWorst(atUnit, raysAhead), tailMargin);
 }
 
 bool hasSafeStepFactor(double worstRatio, double margin) {
@@ -49,27 +79,23 @@ bool hasSafeStepFactor(double worstRatio, double margin) {
 
 namespace {
 
-// The report as if the formula's deFactor were 1 (the sampler applies its own).
-ConservativenessReport atUnitFactor(ConservativenessReport r, double deFactor) {
-    r.worstRatio /= deFactor;
-    r.medianRatio /= deFactor;
-    return r;
-}
-
 // `estimator` closing the steps of `f`, measured at factor 1.
 EstimatorMeasurement measured(const Formula& f, const Node& estimator, const ConservativenessReport& atUnit,
                               const SafeStepOptions& options) {
-    EstimatorMeasurement m{estimator, atUnit, 1.0, options.marginFor(f.nodes)};
-    m.factor = atUnit.samples > 0 ? options.factorFor(atUnit.worstRatio, *estimator.block, f.nodes) : 1.0;
+    EstimatorMeasurement m{estimator, atUnit, projectedWorst(atUnit, options.raysAhead)};
+    m.factor = atUnit.samples > 0 ? options.factorFor(atUnit, *estimator.block, f.nodes) : 1.0;
+    m.hasFactor = options.hasFactor(atUnit, f.nodes);
     return m;
 }
 
 }  // namespace
 
 EstimatorMeasurement measureSafeStep(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options) {
-    const Formula& f = sampler.formula();
-    const ConservativenessReport r = sampleSafeStepRays(sampler, camera, options).report;
-    return measured(f, f.estimator, atUnitFactor(r, f.deFactor), options);
+    return measureSafeStep(sampler.formula(), sampleSafeStepRays(sampler, camera, options), options);
+}
+
+EstimatorMeasurement measureSafeStep(const Formula& f, const SafeStepRays& rays, const SafeStepOptions& options) {
+    return measured(f, f.estimator, atUnitFactor(rays.report, f.deFactor), options);
 }
 
 EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, const SafeStepOptions& options) {
@@ -91,7 +117,7 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Safe
     Formula unit = f;
     unit.deFactor = 1.0;
     // The rounds evaluated f's own estimate on these samples already.
-    std::vector<EstimatorMeasurement> out{measured(f, f.estimator, atUnitFactor(rays.report, f.deFactor), options)};
+    std::vector<EstimatorMeasurement> out{measureSafeStep(f, rays, options)};
     auto add = [&](const Node& estimator) {
         for (const EstimatorMeasurement& m : out)
             if (m.estimator.block == estimator.block && m.estimator.values == estimator.values) return;

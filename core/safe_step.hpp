@@ -37,7 +37,8 @@
 // a bailout that a following fold undoes leaves a shell where the estimate is large and the
 // object near. A primitive's distance over w is one only after Global steps. So the factor is
 // measured on sampled rays and, where nothing proves it, a margin is kept for the rays that were
-// not sampled: the wider where a step jumps.
+// not sampled: the wider where a step jumps, the narrower where the sampled rays' tail shows a
+// ceiling.
 #pragma once
 
 #include <string>
@@ -67,6 +68,14 @@ struct SafeStepOptions {
     // wrapped outside its group (2.8x), which has no safe factor, and stacks whose factor is
     // held at kMaxStepFactor; 0.7 keeps 1.43x.
     double jumpMargin = 0.7;
+    // Where the sampled rays' worst ratios crowd under a ceiling, the fixed margins above are
+    // wider than the rays call for: the factor may then be `tailMargin` of the one for the worst
+    // their tail projects over `raysAhead` rays (projectedWorst), when that is larger. On the
+    // random stacks' escape-time estimates after 6 iterations the rays' worst ratios sit within
+    // a few percent of the log estimate's 0.5; after 12 iterations (the shipped bulbs) they
+    // spread, and the projection is more cautious than the margins.
+    double raysAhead = 10000;
+    double tailMargin = 0.95;
     // IFS primitive estimates (membership by distance) after Global steps only: the primitive's
     // distance over the running scale is a Lipschitz bound (tests/safe_step_test.cpp checks each
     // block's declaration), so factor 1 is safe whatever the rays show, up to rounding; a
@@ -87,13 +96,36 @@ struct SafeStepOptions {
     double marginFor(const std::vector<Node>& steps) const {
         return derivativeBound(steps) == DerivativeBound::None ? jumpMargin : margin;
     }
-    // The safe step factor for a stack whose rays showed `worstRatio` (DE / true distance at
-    // factor 1).
-    double factorFor(double worstRatio, const BlockDesc& estimator, const std::vector<Node>& steps) const;
-    double factorFor(double worstRatio, const Formula& f) const {
-        return factorFor(worstRatio, *f.estimator.block, f.nodes);
+    // The safe step factor for a stack whose rays showed `atUnit` (DE / true distance at factor
+    // 1): the larger of the fixed margin's and the tail's (above; a proven bound's, below).
+    double factorFor(const ConservativenessReport& atUnit, const BlockDesc& estimator,
+                     const std::vector<Node>& steps) const;
+    double factorFor(const ConservativenessReport& atUnit, const Formula& f) const {
+        return factorFor(atUnit, *f.estimator.block, f.nodes);
     }
+    // Whether either of those factors is at least kMinStepFactor.
+    bool hasFactor(const ConservativenessReport& atUnit, const std::vector<Node>& steps) const;
 };
+
+// The worst DE / true distance expected over `rays` rays, projected from the tail of the sampled
+// rays' worst ratios (report.rayWorst): each ray is an independent draw, and the largest few
+// tell how fast the ratio grows with more rays. For the k largest, Hill's estimate of the tail
+// index, gamma = mean of log(Y_i / Y_k+1) over i <= k (B. M. Hill, "A simple general approach to
+// inference about the tail of a distribution", Ann. Statist. 3(5), 1975), extrapolated as
+// Weissman's quantile Y_k+1 (k rays / (n p))^gamma with p = 1 / rays (I. Weissman, "Estimation
+// of parameters and large quantiles based on the k largest observations", JASA 73, 1978). An
+// estimate with a ceiling (the escape-time ones near the surface, a primitive's bound) has its
+// top rays close together and gamma near 0; a heavy tail (a Kleinian group wrapped outside
+// itself, a jump) spreads them. The largest projection over k from 2 to a fifth of the rays (at
+// least 5, at most 100) is taken: small k sees one ray far above the rest (a rare overshoot among
+// rays at a ceiling), large k a tail that is heavy throughout. Never below the sampled worst;
+// twice the sampled worst where fewer than 7 rays were measured or the k+1-th largest is 0. A
+// power law fitted to a tail that ends at a ceiling overshoots the ceiling: the projection is
+// cautious there, never bold (tests/safe_step_test.cpp measures both on drawn tails).
+double projectedWorst(const ConservativenessReport& report, double rays);
+
+// The report as if the formula's deFactor were 1 (a sampler applies its formula's own).
+ConservativenessReport atUnitFactor(ConservativenessReport report, double deFactor);
 
 // The range of formula.deFactor a preset may hold.
 inline constexpr double kMinStepFactor = 1e-3;
@@ -107,6 +139,7 @@ struct SafeStepRays {
 };
 SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options = {});
 
+double projectedWorst(const ConservativenessReport& r, double raysAhead);
 // margin / worstRatio, clamped to the preset's range and rounded down to 3 decimals.
 double safeStepFactor(double worstRatio, double margin);
 // Whether margin / worstRatio is finite and at least kMinStepFactor: a stack whose estimate
@@ -116,8 +149,9 @@ bool hasSafeStepFactor(double worstRatio, double margin);
 struct EstimatorMeasurement {
     Node estimator;                 // the closing block measured
     ConservativenessReport report;  // at step factor 1
+    double projectedWorst = 0.0;    // projectedWorst(report, SafeStepOptions::raysAhead)
     double factor = 1.0;            // the safe step factor for it
-    double margin = 1.0;            // SafeStepOptions' margin the factor keeps
+    bool hasFactor = true;          // SafeStepOptions::hasFactor
     // The safe factor times the median ratio, the share of the gap a typical march step covers,
     // per orbit an estimate runs (the gradient estimate runs five). A proxy only: it cannot see
     // an estimate that vanishes away from the surface (false hits look fast), so a choice is
@@ -127,14 +161,14 @@ struct EstimatorMeasurement {
 
 // hasSafeStepFactor for a measured estimator (true when no ray reached the object: nothing was
 // measured against).
-inline bool hasSafeStepFactor(const EstimatorMeasurement& m) {
-    return m.report.samples == 0 || hasSafeStepFactor(m.report.worstRatio, m.margin);
-}
+inline bool hasSafeStepFactor(const EstimatorMeasurement& m) { return m.report.samples == 0 || m.hasFactor; }
 
 // The formula's own estimator, measured.
 EstimatorMeasurement measureSafeStep(FormulaSampler& sampler, const Camera& camera,
                                      const SafeStepOptions& options = {});
 EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, const SafeStepOptions& options = {});
+// The same on rays already sampled for f (sampleSafeStepRays with a sampler of f).
+EstimatorMeasurement measureSafeStep(const Formula& f, const SafeStepRays& rays, const SafeStepOptions& options);
 
 // The linear estimator r / w.
 Node linearEstimator();

@@ -49,7 +49,7 @@ TEST(KleinianPresets, CheckFindsHitsAndTheStepFactorNeverOvershoots) {
             EXPECT_GT(r.samples, 5000) << name << " seed " << seed;
             EXPECT_LE(r.worstRatio, 1.0) << name << " seed " << seed << ": DE * deFactor exceeds the true distance at ("
                                          << r.worstPoint.x << ", " << r.worstPoint.y << ", " << r.worstPoint.z << ")";
-            const double safe = SafeStepOptions{}.factorFor(r.worstRatio / p.formula.deFactor, p.formula);
+            const double safe = SafeStepOptions{}.factorFor(atUnitFactor(r, p.formula.deFactor), p.formula);
             EXPECT_GE(safe, p.formula.deFactor) << name << " seed " << seed;
             EXPECT_GT(r.medianRatio, 0.005) << name << ": the estimate vanishes away from the surface";
             std::printf(

@@ -188,27 +188,28 @@ int runCheck(const CheckOptions& o) {
             100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier());
         status = 1;
     }
-    // The step factor the rays allow, with SafeStepOptions' margin for the rays that were not
-    // sampled (core/safe_step.hpp), measured as the editor measures it after a structure change:
-    // rays in rounds from this seed until the worst ratio settles. Above the current factor,
-    // marching is slower than it needs to be; below it, the current one overshoots.
+    // The step factor the rays allow, for the worst their tail projects over more rays
+    // (core/safe_step.hpp), measured as the editor measures it after a structure change: rays in
+    // rounds from this seed until the worst ratio settles. Above the current factor, marching is
+    // slower than it needs to be; below it, the current one overshoots.
     SafeStepOptions safe;
     safe.rays.stepsAcrossBound = o.steps;
     safe.rays.seed = o.seed;
     const SafeStepRays safeRays = c.samples > 0 ? sampleSafeStepRays(*sampler, preset.camera, safe) : SafeStepRays{};
     const ConservativenessReport& s = safeRays.report;
-    const double worstAtUnit = s.worstRatio / f.deFactor;
-    if (s.samples > 0 && !hasSafeStepFactor(worstAtUnit, safe.marginFor(f.nodes))) {
+    const EstimatorMeasurement own = measureSafeStep(f, safeRays, safe);
+    if (s.samples > 0 && !hasSafeStepFactor(own)) {
         std::printf(
             "PROBLEM: no step factor down to %g keeps the DE under the distance (worst %.4g at factor 1 over %d "
-            "rays): the estimate is not usable for this stack\n",
-            kMinStepFactor, worstAtUnit, s.rays);
+            "rays, %.4g projected over %g): the estimate is not usable for this stack\n",
+            kMinStepFactor, own.report.worstRatio, s.rays, own.projectedWorst, safe.raysAhead);
         status = 1;
     } else if (s.samples > 0 && s.worstRatio > 0.0)
         std::printf(
             "safe step factor: formula.deFactor %.3f (now %.3f; over %d rays, worst DE / true distance %.3f, median "
-            "%.3f)\n",
-            safe.factorFor(worstAtUnit, f), f.deFactor, s.rays, s.worstRatio, s.medianRatio);
+            "%.3f; at factor 1 the worst %.3f, projected over %g rays %.3f)\n",
+            own.factor, f.deFactor, s.rays, s.worstRatio, s.medianRatio, own.report.worstRatio, safe.raysAhead,
+            own.projectedWorst);
     // Steps whose map jumps (a non-integer power's atan2 cut, a phase's pole, a wrap): the rays
     // that pass close to a jump are rare, and the overshoot there has no bound, so no number of
     // sampled rays proves a factor (at frame 164, power 9.55, the power morph's estimate reaches
@@ -228,9 +229,12 @@ int runCheck(const CheckOptions& o) {
             char offset[48] = "";
             if (m.estimator.block->id == "escape_linear")
                 std::snprintf(offset, sizeof offset, " (offset %.3g)", m.estimator.values[0].x);
-            std::printf("estimator %s%s: worst %.3f, median %.3f at factor 1; safe step factor %.3f; speed %.3f%s\n",
-                        std::string(m.estimator.block->id).c_str(), offset, m.report.worstRatio, m.report.medianRatio,
-                        m.factor, m.speed(), &m == &candidates.front() ? "  <- largest factor x median per orbit" : "");
+            std::printf(
+                "estimator %s%s: worst %.3f (projected %.3f), median %.3f at factor 1; safe step factor %.3f; speed "
+                "%.3f%s\n",
+                std::string(m.estimator.block->id).c_str(), offset, m.report.worstRatio, m.projectedWorst,
+                m.report.medianRatio, m.factor, m.speed(),
+                &m == &candidates.front() ? "  <- largest factor x median per orbit" : "");
         }
     }
     std::printf(status == 0 ? "OK\n" : "NOT SOUND\n");
