@@ -139,7 +139,6 @@ struct SafeStepRays {
 };
 SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options = {});
 
-double projectedWorst(const ConservativenessReport& r, double raysAhead);
 // margin / worstRatio, clamped to the preset's range and rounded down to 3 decimals.
 double safeStepFactor(double worstRatio, double margin);
 // Whether margin / worstRatio is finite and at least kMinStepFactor: a stack whose estimate
