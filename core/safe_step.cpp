@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace fraktal {
 
@@ -13,26 +14,34 @@ double safeStepFactor(double worstRatio, double margin) {
 SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, const SafeStepOptions& options) {
     RaySamples all;
     std::vector<double> ratios;
-    double worst = 0.0;
+    ConservativenessReport tail;  // the worst ratio and each ray's worst, for the tail's projection
+    const Formula& f = sampler.formula();
+    const double margin = options.marginFor(f.nodes);
+    // A proven bound's factor does not rest on the margin: its tail needs no more rays.
+    const int tailRounds = options.proven(*f.estimator.block, f.nodes) ? 0 : options.tailRounds;
     int quiet = 0;  // rounds in a row that did not raise the worst
-    for (int round = 0; round < std::max(1, options.maxRounds); ++round) {
+    for (int round = 0; round < std::max({1, options.maxRounds, tailRounds}); ++round) {
         ConservativenessOptions o = options.rays;
         o.seed = options.rays.seed + uint64_t(round);
         const RaySamples more = sampleRays(sampler, camera, o);
         const std::vector<double> moreRatios = ratiosAt(sampler, more);
-        double roundWorst = 0.0;
-        for (double r : moreRatios) roundWorst = std::max(roundWorst, r);
+        const ConservativenessReport moreReport = reportOf(more, moreRatios);
         all.rays += more.rays;
         all.raysHit += more.raysHit;
         for (size_t end : more.rayEnds) all.rayEnds.push_back(all.points.size() + end);
         all.points.insert(all.points.end(), more.points.begin(), more.points.end());
         all.distances.insert(all.distances.end(), more.distances.begin(), more.distances.end());
         ratios.insert(ratios.end(), moreRatios.begin(), moreRatios.end());
-        const bool raised = !(roundWorst <= worst * (1.0 + options.settled));
-        worst = std::max(worst, roundWorst);
+        const bool raised = !(moreReport.worstRatio <= tail.worstRatio * (1.0 + options.settled));
+        tail.worstRatio = std::max(tail.worstRatio, moreReport.worstRatio);
+        tail.rayWorst.insert(tail.rayWorst.end(), moreReport.rayWorst.begin(), moreReport.rayWorst.end());
+        std::sort(tail.rayWorst.begin(), tail.rayWorst.end(), std::greater<>());
         quiet = raised ? 0 : quiet + 1;
         // Nothing measured yet (no hit): more rounds of the same camera will not find the object.
-        if (all.points.empty() || quiet >= options.settledRounds || !std::isfinite(worst)) break;
+        if (all.points.empty() || !std::isfinite(tail.worstRatio)) break;
+        const bool settled = quiet >= options.settledRounds || round + 1 >= options.maxRounds;
+        const bool tailCovered = projectedWorst(tail, options.raysAhead) * margin <= tail.worstRatio;
+        if (settled && (tailCovered || round + 1 >= tailRounds)) break;
     }
     ConservativenessReport report = reportOf(all, std::move(ratios));
     return {std::move(all), report};

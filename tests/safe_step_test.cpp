@@ -202,6 +202,9 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     camera.position = vec3(0.0, 0.0, 6.0);
     SafeStepOptions check;
     check.rays = {64, 1200, 1};
+    // The quick measurement the editor applies after a structure change: the settled rounds
+    // alone, without the rounds `fraktal check` adds for a heavy tail (tested below).
+    check.tailRounds = editor::AutoStepFactor::options().tailRounds;
     const ConservativenessOptions fresh{16, 1200, 99};
 
     std::vector<double> ratios, stackMedians, factors;
@@ -329,6 +332,45 @@ TEST(SafeStep, TheSampledRaysTailProjectsTheWorstOverMoreRays) {
     EXPECT_EQ(projectedWorst(few, kAhead), 1.0) << "too few rays for a tail: twice the worst";
 }
 
+// `fraktal check` goes on sampling while the fixed margin does not cover the worst the rays'
+// tail projects (SafeStepOptions::tailRounds). The Amazing Surf's worst rays are rare: the
+// settled rounds (the editor's quick measurement) see 1.48 at factor 1 and allow a factor that
+// 2000 other rays find overshooting; the check's further rounds find the heavier tail and a
+// factor those rays do not overshoot. A proven bound (the Menger sponge's box) gets no more rays.
+TEST(SafeStep, CheckSamplesMoreRaysWhereTheTailIsHeavy) {
+    const Preset surf = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/amazing_surf.json");
+    SafeStepOptions check;
+    check.rays.stepsAcrossBound = 4000;  // `fraktal check`'s default --steps
+    SafeStepOptions quick = check;
+    quick.tailRounds = 0;
+    const EstimatorMeasurement settled = measureSafeStep(surf.formula, surf.camera, quick);
+    const EstimatorMeasurement full = measureSafeStep(surf.formula, surf.camera, check);
+    std::printf(
+        "amazing_surf: settled rounds %d rays, worst %.3f at factor 1, factor %.3f; with the tail's rounds %d "
+        "rays, worst %.3f, factor %.3f\n",
+        settled.report.rays, settled.report.worstRatio, settled.factor, full.report.rays, full.report.worstRatio,
+        full.factor);
+    EXPECT_GT(full.report.rays, 4 * settled.report.rays);
+    EXPECT_GT(full.report.worstRatio, settled.report.worstRatio);
+    EXPECT_LT(full.factor, settled.factor);
+
+    Formula f = surf.formula;
+    const ConservativenessOptions other{2000, 4000, 11};
+    f.deFactor = settled.factor;
+    const double settledFresh = checkConservativeness(f, surf.camera, other).worstRatio;
+    f.deFactor = full.factor;
+    const double fullFresh = checkConservativeness(f, surf.camera, other).worstRatio;
+    std::printf("on 2000 other rays: worst DE / true distance %.3f at the settled factor, %.3f at the check's\n",
+                settledFresh, fullFresh);
+    EXPECT_GT(settledFresh, 1.0) << "the settled rounds' factor was expected to overshoot here";
+    EXPECT_LE(fullFresh, 1.0);
+
+    const Preset menger = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/menger.json");
+    ASSERT_TRUE(check.proven(*menger.formula.estimator.block, menger.formula.nodes));
+    EXPECT_EQ(measureSafeStep(menger.formula, menger.camera, check).report.rays,
+              measureSafeStep(menger.formula, menger.camera, quick).report.rays);
+}
+
 // The check measures every estimator next to its gradient twin (escape_gradient beside the
 // escape-time ones, box_gradient beside a box), with the twin's parameters those of the
 // estimator it differentiates, and weighs the twin's speed by the five orbits it runs. A gradient
@@ -385,7 +427,7 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     EXPECT_EQ(f.deFactor, a.measured);
     Formula unit = f;
     unit.deFactor = 1.0;
-    EXPECT_EQ(a.measured, measureSafeStep(unit, p.camera).factor);
+    EXPECT_EQ(a.measured, measureSafeStep(unit, p.camera, editor::AutoStepFactor::options()).factor);
     EXPECT_LE(checkConservativeness(f, p.camera, {40, 2000, 5}).worstRatio, 1.0);
     EXPECT_FALSE(a.update(f, p.camera));  // values and camera moves do not measure again
 

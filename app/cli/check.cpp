@@ -188,10 +188,11 @@ int runCheck(const CheckOptions& o) {
             100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier());
         status = 1;
     }
-    // The step factor the rays allow, for the worst their tail projects over more rays
-    // (core/safe_step.hpp), measured as the editor measures it after a structure change: rays in
-    // rounds from this seed until the worst ratio settles. Above the current factor, marching is
-    // slower than it needs to be; below it, the current one overshoots.
+    // The step factor the rays allow, with the margin for the rays that were not sampled
+    // (core/safe_step.hpp): rays in rounds from this seed until the worst ratio settles, as the
+    // editor measures after a structure change, and on while the margin does not cover the worst
+    // the rays' tail projects (the editor stops at the settled rounds). Above the current factor,
+    // marching is slower than it needs to be; below it, the current one overshoots.
     SafeStepOptions safe;
     safe.rays.stepsAcrossBound = o.steps;
     safe.rays.seed = o.seed;

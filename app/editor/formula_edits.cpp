@@ -210,7 +210,7 @@ bool AutoStepFactor::update(Formula& f, const Camera& camera) {
     measuredKey = std::move(key);
     if (!f.cpuEvaluable() || !f.estimator.block) return false;
     const auto start = std::chrono::steady_clock::now();
-    const EstimatorMeasurement m = measureSafeStep(f, camera);
+    const EstimatorMeasurement m = measureSafeStep(f, camera, options());
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     noHits = m.report.samples == 0;
     noSafeFactor = !hasSafeStepFactor(m);

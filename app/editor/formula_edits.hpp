@@ -10,6 +10,7 @@
 #include "core/camera.hpp"
 #include "core/formula.hpp"
 #include "core/preset.hpp"
+#include "core/safe_step.hpp"
 
 namespace fraktal::editor {
 
@@ -80,6 +81,13 @@ struct AutoStepFactor {
     bool noSafeFactor = false;
     double worst = 0.0;
 
+    // What it measures with: the settled rounds alone. The measurement runs between frames, and
+    // the rounds `fraktal check` adds for a heavy tail would hold the editor for seconds.
+    static SafeStepOptions options() {
+        SafeStepOptions quick;
+        quick.tailRounds = 0;
+        return quick;
+    }
     // Takes f's factor as the one for its structure (an opened document).
     static AutoStepFactor adopting(const Formula& f) { return {f.structureKey()}; }
     // When f's structure differs from measuredKey: measures its estimator from `camera` (CPU;
