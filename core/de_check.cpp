@@ -116,12 +116,12 @@ RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const Conse
         if (!hit.hit) continue;
         ++out.raysHit;
         // Points spread along the ray before the hit, each with its distance to the hit.
+        const size_t first = out.points.size();
         for (double t = t0; t < hit.t - minGap; t += std::max(step, (hit.t - t0) / 400.0)) {
             out.points.push_back(origin + dir * t);
             out.distances.push_back(hit.t - t);
         }
-        if (out.rayEnds.empty() ? !out.points.empty() : out.rayEnds.back() < out.points.size())
-            out.rayEnds.push_back(out.points.size());
+        if (out.points.size() > first) out.rayEnds.push_back(out.points.size());
     }
     return out;
 }

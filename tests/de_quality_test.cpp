@@ -155,17 +155,6 @@ TEST(DEQuality, IterationsRunBeforeCountsTheIterationsANodeRunsOn) {
         }
 }
 
-// A power alone (no add c): |F(v)| = |v|^n, and the limit set is the unit ball; the surface that
-// N iterations with bailout B draw is the ball of radius rho = B^(1 / D), D = n^N, where the last
-// iteration reaches the bailout. The potential estimate (formulas/estimators.hpp) is half the
-// distance to that ball at every r for a map whose running derivative is its radial stretch, the
-// twist-free Bristorbrot (x^2 - y^2 - z^2, 2xy, 2xz), whose Jacobian is 2r times a rotation; it
-// needs the product of the degrees (2^k after k steps, P4::degree) and the drawn surface's log
-// radius (P4::surfaceLogR). Measured against the unit ball instead, it is off by the whole gap
-// (rho = 2 at one iteration). The log estimate there is 0.5 r log(r / rho), 0.82 of the distance
-// at 2 from the unit ball and 0.69 from rho = 2. For the spherical powers the running derivative
-// may be larger than the radial stretch (the phi stretch near the poles), so the estimate is at
-// most half the distance.
 namespace {
 
 // Points from 0.02 to 2 outside the ball of radius rho, along the directions of `directions`
@@ -187,6 +176,17 @@ double worstAgainstHalfTheDistance(const Formula& f, const std::vector<vec3>& di
 
 }  // namespace
 
+// A power alone (no add c): |F(v)| = |v|^n, and the limit set is the unit ball; the surface that
+// N iterations with bailout B draw is the ball of radius rho = B^(1 / D), D = n^N, where the last
+// iteration reaches the bailout. The potential estimate (formulas/estimators.hpp) is half the
+// distance to that ball at every r for a map whose running derivative is its radial stretch, the
+// twist-free Bristorbrot (x^2 - y^2 - z^2, 2xy, 2xz), whose Jacobian is 2r times a rotation; it
+// needs the product of the degrees (2^k after k steps, P4::degree) and the drawn surface's log
+// radius (P4::surfaceLogR). Measured against the unit ball instead, it is off by the whole gap
+// (rho = 2 at one iteration). The log estimate there is 0.5 r log(r / rho), 0.82 of the distance
+// at 2 from the unit ball and 0.69 from rho = 2. For the spherical powers the running derivative
+// may be larger than the radial stretch (the phi stretch near the poles), so the estimate is at
+// most half the distance.
 TEST(DEQuality, PotentialEstimateIsHalfTheDistanceToTheDrawnBallOfAPower) {
     const auto points = test::randomPoints(3000, 1.0, 29);
     // The largest relative error against half the distance to the ball of radius rho, from 0.02 to
