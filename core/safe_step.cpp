@@ -16,11 +16,9 @@ SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, c
     std::vector<double> ratios;
     ConservativenessReport tail;  // the worst ratio and each ray's worst, for the tail's projection
     const Formula& f = sampler.formula();
-    const double margin = options.marginFor(f.nodes);
-    // A proven bound's factor does not rest on the margin: its tail needs no more rays.
-    const int tailRounds = options.proven(*f.estimator.block, f.nodes) ? 0 : options.tailRounds;
     int quiet = 0;  // rounds in a row that did not raise the worst
-    for (int round = 0; round < std::max({1, options.maxRounds, tailRounds}); ++round) {
+    for (int round = 0; round < std::max({1, options.maxRounds, options.tailRounds}); ++round) {
+        if (round > 0 && options.stop.stop_requested()) break;
         ConservativenessOptions o = options.rays;
         o.seed = options.rays.seed + uint64_t(round);
         const RaySamples more = sampleRays(sampler, camera, o);
@@ -40,8 +38,8 @@ SafeStepRays sampleSafeStepRays(FormulaSampler& sampler, const Camera& camera, c
         // Nothing measured yet (no hit): more rounds of the same camera will not find the object.
         if (all.points.empty() || !std::isfinite(tail.worstRatio)) break;
         const bool settled = quiet >= options.settledRounds || round + 1 >= options.maxRounds;
-        const bool tailCovered = projectedWorst(tail, options.raysAhead) * margin <= tail.worstRatio;
-        if (settled && (tailCovered || round + 1 >= tailRounds)) break;
+        if (settled && (round + 1 >= options.tailRounds || options.tailCovered(tail, *f.estimator.block, f.nodes)))
+            break;
     }
     ConservativenessReport report = reportOf(all, std::move(ratios));
     return {std::move(all), report};
@@ -75,6 +73,11 @@ double SafeStepOptions::factorFor(const ConservativenessReport& atUnit, const Bl
                                      safeStepFactor(projectedWorst(atUnit, raysAhead), tailMargin));
     if (!proven(estimator, steps)) return measured;
     return std::max(measured, std::min(safeStepFactor(atUnit.worstRatio, boundMargin), 1.0));
+}
+
+bool SafeStepOptions::tailCovered(const ConservativenessReport& atUnit, const BlockDesc& estimator,
+                                  const std::vector<Node>& steps) const {
+    return proven(estimator, steps) || projectedWorst(atUnit, raysAhead) * marginFor(steps) <= atUnit.worstRatio;
 }
 
 bool SafeStepOptions::hasFactor(const ConservativenessReport& atUnit, const std::vector<Node>& steps) const {

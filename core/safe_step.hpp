@@ -41,6 +41,7 @@
 // ceiling.
 #pragma once
 
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,9 @@ struct SafeStepOptions {
     // seed 22) a box_gradient the rounds saw at 110x overshot other rays 1.32x at the factor
     // they allowed, 0.007.
     double gradientWorst = 2.0;
+    // Rounds end early once a stop is requested (the editor's further rounds, on a worker thread,
+    // when the structure changes again): the rays sampled so far are measured.
+    std::stop_token stop;
 
     bool proven(const BlockDesc& estimator, const std::vector<Node>& steps) const {
         return estimator.membership == Membership::Distance && !estimator.usesOrbitGradient() &&
@@ -111,6 +115,12 @@ struct SafeStepOptions {
     double factorFor(const ConservativenessReport& atUnit, const Formula& f) const {
         return factorFor(atUnit, *f.estimator.block, f.nodes);
     }
+    // Whether rays that showed `atUnit` need no further rounds for the tail (tailRounds): the
+    // bound is proven, whose factor does not rest on the margin, or the fixed margin covers the
+    // worst the tail projects. Where it holds when the settled rounds end, the further rounds
+    // end there as well: the settled rounds' factor is the check's.
+    bool tailCovered(const ConservativenessReport& atUnit, const BlockDesc& estimator,
+                     const std::vector<Node>& steps) const;
     // Whether either of those factors is at least kMinStepFactor.
     bool hasFactor(const ConservativenessReport& atUnit, const std::vector<Node>& steps) const;
 };

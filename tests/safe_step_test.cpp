@@ -14,6 +14,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <thread>
 
 #include "app/editor/formula_edits.hpp"
 #include "app/editor/formula_fit.hpp"
@@ -22,6 +23,15 @@
 using namespace fraktal;
 
 namespace {
+
+// Polls the editor's step factor, as its frames do, until the further rounds have ended.
+void finishRefining(editor::AutoStepFactor& a, Formula& f, const Camera& camera) {
+    for (int i = 0; i < 6000 && a.refining(); ++i) {
+        if (a.update(f, camera)) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ASSERT_FALSE(a.refining()) << "the further rounds did not end in two minutes";
+}
 
 std::vector<const BlockDesc*> stepBlocks() {
     std::vector<const BlockDesc*> out;
@@ -202,8 +212,10 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     camera.position = vec3(0.0, 0.0, 6.0);
     SafeStepOptions check;
     check.rays = {64, 1200, 1};
-    // The quick measurement the editor applies after a structure change: the settled rounds
-    // alone, without the rounds `fraktal check` adds for a heavy tail (tested below).
+    // The factor the editor applies at once after a structure change: the settled rounds alone.
+    // The further rounds `fraktal check` adds for a heavy tail (tested below), which the editor
+    // applies when they end on its worker, only lower it (a median of 0.530 with them, where
+    // the test takes four times as long).
     check.tailRounds = editor::AutoStepFactor::options().tailRounds;
     const ConservativenessOptions fresh{16, 1200, 99};
 
@@ -420,12 +432,18 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     EXPECT_EQ(f.deFactor, own);
 
     ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
+    Formula unit = f;
+    unit.deFactor = 1.0;
     ASSERT_TRUE(a.update(f, p.camera));
     std::printf("measured step factor %.3f in %.3f s\n", a.measured, a.seconds);
     EXPECT_EQ(f.deFactor, a.measured);
-    Formula unit = f;
-    unit.deFactor = 1.0;
     EXPECT_EQ(a.measured, measureSafeStep(unit, p.camera, editor::AutoStepFactor::options()).factor);
+    if (a.refining()) {
+        finishRefining(a, f, p.camera);
+        std::printf("after the further rounds: %.3f on %d rays in %.3f s\n", a.measured, a.rays, a.seconds);
+        EXPECT_EQ(f.deFactor, a.measured);
+        EXPECT_NEAR(a.measured, measureSafeStep(unit, p.camera, editor::AutoStepFactor::checkOptions()).factor, 0.0015);
+    }
     EXPECT_LE(checkConservativeness(f, p.camera, {40, 2000, 5}).worstRatio, 1.0);
     EXPECT_FALSE(a.update(f, p.camera));  // values and camera moves do not measure again
 
@@ -434,6 +452,62 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     ASSERT_TRUE(editor::removeNode(f, 0));
     EXPECT_TRUE(a.update(f, p.camera));
     EXPECT_EQ(f.deFactor, 0.3);
+}
+
+// Where the rays' tail is heavy, the editor applies the settled rounds' factor at once and the
+// check's further rounds run on its worker: when they end, their factor (the one `fraktal check`
+// reports) replaces the first. The Amazing Surf's settled factor overshoots other rays
+// (CheckSamplesMoreRaysWhereTheTailIsHeavy). A structure change while they run drops them: what
+// ends up applied is the new structure's measurement, never the old one's.
+TEST(SafeStep, EditorAppliesTheChecksFurtherRoundsWhenTheyEnd) {
+    Preset p = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/amazing_surf.json");
+    Formula& f = p.formula;
+    Formula unit = f;
+    unit.deFactor = 1.0;
+    const EstimatorMeasurement check = measureSafeStep(unit, p.camera, editor::AutoStepFactor::checkOptions());
+
+    editor::AutoStepFactor a;  // a structure not measured yet
+    ASSERT_TRUE(a.update(f, p.camera));
+    const double settled = a.measured;
+    const int settledRays = a.rays;
+    EXPECT_EQ(f.deFactor, settled);
+    ASSERT_TRUE(a.refining()) << "the settled rounds' tail was expected to call for more rays";
+    EXPECT_FALSE(a.update(f, p.camera) && a.refining());
+    finishRefining(a, f, p.camera);
+    std::printf("amazing_surf in the editor: %.3f on %d rays at once, %.3f on %d rays after %.2f s (the check: %.3f)\n",
+                settled, settledRays, a.measured, a.rays, a.seconds, check.factor);
+    EXPECT_EQ(a.rays, check.report.rays);
+    EXPECT_NEAR(a.measured, check.factor, 0.0015);
+    EXPECT_LT(a.measured, settled);
+    EXPECT_EQ(f.deFactor, a.measured);
+
+    // Set by hand: the further rounds' factor is measured, the user's is kept.
+    editor::AutoStepFactor byHand;
+    byHand.overridden = true;
+    f.deFactor = 0.3;
+    ASSERT_TRUE(byHand.update(f, p.camera));
+    finishRefining(byHand, f, p.camera);
+    EXPECT_NEAR(byHand.measured, check.factor, 0.0015);
+    EXPECT_EQ(f.deFactor, 0.3);
+
+    // A new structure while they run (a twist in front): whatever ends up applied is the new
+    // stack's measurement, the check's where it too gets further rounds.
+    editor::AutoStepFactor changed;
+    ASSERT_TRUE(changed.update(f, p.camera));
+    ASSERT_TRUE(changed.refining());
+    ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
+    ASSERT_TRUE(changed.update(f, p.camera));
+    const bool refines = changed.refining();
+    finishRefining(changed, f, p.camera);
+    Formula twisted = f;
+    twisted.deFactor = 1.0;
+    const EstimatorMeasurement newCheck = measureSafeStep(
+        twisted, p.camera, refines ? editor::AutoStepFactor::checkOptions() : editor::AutoStepFactor::options());
+    std::printf("with a twist in front: %.3f on %d rays%s\n", changed.measured, changed.rays,
+                refines ? ", after the further rounds" : "");
+    EXPECT_EQ(changed.rays, newCheck.report.rays);
+    EXPECT_NEAR(changed.measured, newCheck.factor, 0.0015);
+    EXPECT_EQ(f.deFactor, changed.measured);
 }
 
 // A structure whose object the check's rays never reach (the pseudo-Kleinian's sheets without the

@@ -1,5 +1,8 @@
 #include "app/editor/formula_edits.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <regex>
@@ -204,19 +207,60 @@ int nodeNamedInLog(const std::string& log, int nodeCount) {
     return -1;
 }
 
-bool AutoStepFactor::update(Formula& f, const Camera& camera) {
-    std::string key = f.structureKey();
-    if (key == measuredKey) return false;
-    measuredKey = std::move(key);
-    if (!f.cpuEvaluable() || !f.estimator.block) return false;
-    const auto start = std::chrono::steady_clock::now();
-    const EstimatorMeasurement m = measureSafeStep(f, camera, options());
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+namespace {
+
+// The further rounds give way to the viewport's rendering, whose threads (llvmpipe's) share the
+// cores: on Linux a thread's nice value is its own (setpriority(2), NOTES).
+void yieldToRendering() { setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 10); }
+
+}  // namespace
+
+void AutoStepFactor::apply(const EstimatorMeasurement& m, Formula& f) {
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - measuringSince).count();
+    rays = m.report.rays;
     noHits = m.report.samples == 0;
     noSafeFactor = !hasSafeStepFactor(m);
     worst = m.report.worstRatio;
     measured = noHits ? 0.0 : m.factor;
     if (!overridden && !noHits) f.deFactor = measured;
+}
+
+bool AutoStepFactor::update(Formula& f, const Camera& camera) {
+    std::string key = f.structureKey();
+    if (key == measuredKey) {
+        if (!further.valid() || further.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+        std::future<EstimatorMeasurement> ended = std::move(further);
+        furtherWorker = {};  // ended: joins at once
+        try {
+            apply(ended.get(), f);
+        } catch (const std::exception&) {
+            return false;  // the settled rounds' factor stays
+        }
+        return true;
+    }
+    furtherWorker = {};  // stops the rounds measuring the previous structure
+    further = {};
+    measuredKey = std::move(key);
+    if (!f.cpuEvaluable() || !f.estimator.block) return false;
+    measuringSince = std::chrono::steady_clock::now();
+    const EstimatorMeasurement m = measureSafeStep(f, camera, options());
+    apply(m, f);
+    const SafeStepOptions check = checkOptions();
+    if (noHits || noSafeFactor || check.tailCovered(m.report, *f.estimator.block, f.nodes)) return true;
+    // The check's rounds from the first: the sampling is seeded, so the factor is the one
+    // `fraktal check` reports for this formula and camera.
+    std::promise<EstimatorMeasurement> result;
+    further = result.get_future();
+    furtherWorker = std::jthread([f, camera, check, result = std::move(result)](std::stop_token stop) mutable {
+        yieldToRendering();
+        SafeStepOptions stoppable = check;
+        stoppable.stop = stop;
+        try {
+            result.set_value(measureSafeStep(f, camera, stoppable));
+        } catch (...) {
+            result.set_exception(std::current_exception());
+        }
+    });
     return true;
 }
 

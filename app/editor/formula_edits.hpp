@@ -3,8 +3,11 @@
 // decided by Formula::structureKey() alone (see ProgramTracker).
 #pragma once
 
+#include <chrono>
+#include <future>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "core/camera.hpp"
@@ -66,11 +69,18 @@ struct ProgramTracker {
 // The step factor `fraktal check` measures (core/safe_step.hpp), applied after every change of
 // structure so that a new stack never shows overshoot specks; a factor set by hand is kept
 // (`overridden`) until the user hands it back to the check. An opened document keeps its own.
+//
+// It is measured in two parts. The settled rounds (options()) run between frames and their factor
+// is applied at once. Where the rays' tail is heavy, the check goes on sampling up to 2048 rays
+// (SafeStepOptions::tailRounds), which takes seconds: those further rounds run on a worker thread
+// (`refining()`), and their factor, the one `fraktal check` reports, replaces the first when they
+// end. A new structure, or the editor closing, stops them within a round.
 struct AutoStepFactor {
     std::string measuredKey;  // the structure the current factor belongs to
     bool overridden = false;
     double measured = 0.0;  // the last measured factor (0: none this session)
-    double seconds = 0.0;   // how long measuring it took
+    double seconds = 0.0;   // how long measuring it took (wall time, the further rounds included)
+    int rays = 0;           // how many rays it rests on
     // The last measurement met nothing to compare with: none of the check's rays reached the
     // object from outside it (sheets with no inside, a camera looking away). The factor is kept
     // rather than set to the 1 an empty sample would allow.
@@ -80,20 +90,35 @@ struct AutoStepFactor {
     // says the structure has no safe one. `worst` is the DE / true distance it saw at factor 1.
     bool noSafeFactor = false;
     double worst = 0.0;
+    // The further rounds for measuredKey, while they run.
+    std::future<EstimatorMeasurement> further{};
+    std::chrono::steady_clock::time_point measuringSince{};
+    std::jthread furtherWorker{};  // last: destroyed (stopped and joined) before what it writes to
 
-    // What it measures with: the settled rounds alone. The measurement runs between frames, and
-    // the rounds `fraktal check` adds for a heavy tail would hold the editor for seconds.
+    // The settled rounds alone: the part measured between frames.
     static SafeStepOptions options() {
         SafeStepOptions quick;
         quick.tailRounds = 0;
         return quick;
     }
+    // `fraktal check`'s: its further rounds, on its finer baseline march.
+    static SafeStepOptions checkOptions() {
+        SafeStepOptions check;
+        check.rays.stepsAcrossBound = ConservativenessOptions{}.stepsAcrossBound;
+        return check;
+    }
     // Takes f's factor as the one for its structure (an opened document).
     static AutoStepFactor adopting(const Formula& f) { return {f.structureKey()}; }
     // When f's structure differs from measuredKey: measures its estimator from `camera` (CPU;
     // formulas with custom GLSL blocks keep their factor) and, unless overridden, sets
-    // f.deFactor (not when noHits). True when it measured.
+    // f.deFactor (not when noHits); starts the further rounds where the tail calls for them.
+    // Otherwise, when the further rounds have ended: applies their factor the same way.
+    // True when it measured or applied.
     bool update(Formula& f, const Camera& camera);
+    bool refining() const { return further.valid(); }
+
+   private:
+    void apply(const EstimatorMeasurement& m, Formula& f);
 };
 
 // The node index a compile-error log talks about (`node 3 "Box fold" (box_fold)...`, numbered

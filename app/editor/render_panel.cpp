@@ -132,8 +132,11 @@ void drawStepFactorSection(AutoStepFactor& a, Formula& f) {
                            "No safe factor: the estimate overshoots %.3g times the distance (jumps or dust); "
                            "marching at %.3f may still show specks.",
                            a.worst, f.deFactor);
+    else if (a.measured > 0.0 && a.refining())
+        ImGui::TextDisabled("Measured for this structure: %.3f on %d rays; sampling more for the rare worst ones...",
+                            a.measured, a.rays);
     else if (a.measured > 0.0)
-        ImGui::TextDisabled("Measured for this structure: %.3f (%.2f s)", a.measured, a.seconds);
+        ImGui::TextDisabled("Measured for this structure: %.3f on %d rays (%.2f s)", a.measured, a.rays, a.seconds);
     else
         ImGui::TextDisabled("The preset's own factor (measured after a structure change).");
     if (const int k = firstJumpingStep(f.nodes); k >= 0) {

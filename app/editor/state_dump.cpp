@@ -90,6 +90,8 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     // The step factor the check measured after the last structure change (AutoStepFactor).
     const AutoStepFactor& a = s.stepFactor;
     j["stepFactor"] = {{"measured", a.measured},
+                       {"rays", a.rays},
+                       {"refining", a.refining()},
                        {"overridden", a.overridden},
                        {"noHits", a.noHits},
                        {"noSafeFactor", a.noSafeFactor},
