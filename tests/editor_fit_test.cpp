@@ -2,6 +2,7 @@
 // (app/editor/formula_fit.hpp).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "app/editor/formula_edits.hpp"
@@ -27,7 +28,7 @@ TEST(EditorFormulaFit, EstimatorAndBailoutFollowTheBlocks) {
     Formula box = templateWith({"box_fold", "sphere_fold", "scale", "add_c"});
     EXPECT_TRUE(fitEstimatorToBlocks(box));
     EXPECT_EQ(box.estimator.block->id, "escape_linear");
-    EXPECT_GE(box.bailout, 100.0);
+    EXPECT_GE(box.bailout, 20.0);
     Formula ifs = templateWith({"sierpinski_fold", "scale"});
     EXPECT_TRUE(fitEstimatorToBlocks(ifs));
     EXPECT_EQ(ifs.estimator.block->membership, Membership::Distance);
@@ -37,6 +38,8 @@ TEST(EditorFormulaFit, EstimatorAndBailoutFollowTheBlocks) {
     EXPECT_FALSE(fitEstimatorToBlocks(bulb));
     Formula menger = shippedFormula("menger.json");
     EXPECT_FALSE(fitEstimatorToBlocks(menger));
+    Formula surf = shippedFormula("amazing_surf.json");  // its bailout 20 is kept
+    EXPECT_FALSE(fitEstimatorToBlocks(surf));
 }
 
 TEST(EditorFormulaFit, BoundAndFrameComeFromTheDistanceField) {
@@ -61,6 +64,41 @@ TEST(EditorFormulaFit, BoundAndFrameComeFromTheDistanceField) {
     const double boxBound = fittedBoundRadius(cpuDistance(mandelbox), 16.0, 99.0);
     EXPECT_GT(boxBound, 4.0);
     EXPECT_LT(boxBound, 14.0);
+}
+
+// A flat object: the Amazing Surf is a sheet about z = 0. Probes through the origin meet its rim
+// only in its plane; the fitted bound must still hold every point of the sheet (found here by
+// membership on a grid over the plane, not by the DE), or the marcher clips it.
+TEST(EditorFormulaFit, BoundHoldsAFlatObjectsRim) {
+    const Formula surf = shippedFormula("amazing_surf.json");
+    double reach = 0.0;
+    const int n = 200;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (double z : {-0.01, 0.0, 0.01}) {
+                const vec3 p(-12.0 + 24.0 * (i + 0.5) / n, -12.0 + 24.0 * (j + 0.5) / n, z);
+                if (length(p) > reach && evaluate(surf, p).inside) reach = length(p);
+            }
+    const double bound = fittedBoundRadius(cpuDistance(surf), 21.0, 99.0);
+    std::printf("amazing_surf: the sheet reaches %.3f, the fitted bound is %.3f\n", reach, bound);
+    EXPECT_GT(reach, 8.0);
+    EXPECT_GE(bound, reach);
+    EXPECT_LT(bound, 1.3 * reach);
+}
+
+// The fit measures the object, not the march: a structure without a safe step factor gets the
+// smallest (0.001), and the next edit's bound must not depend on it (probes stepping a
+// thousandth of the DE found no surface, and the bound stayed where it was).
+TEST(EditorFormulaFit, BoundDoesNotDependOnTheStepFactor) {
+    Preset safe = loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "mandelbox.json");
+    safe.formula.boundRadius = 30.0;
+    Preset slow = safe;
+    slow.formula.deFactor = kMinStepFactor;
+    fitFormulaAfterEdit(safe);
+    fitFormulaAfterEdit(slow);
+    EXPECT_LT(safe.formula.boundRadius, 14.0);
+    EXPECT_EQ(slow.formula.boundRadius, safe.formula.boundRadius);
+    EXPECT_EQ(slow.formula.deFactor, kMinStepFactor);  // the factor itself is the check's business
 }
 
 TEST(EditorFormulaFit, EditLeavesAGoodCameraAndFramesABadOne) {

@@ -208,12 +208,12 @@ measured=$(q .stepFactor.measured)
 [ "$(q .stepFactor.jumpingStep)" = -1 ] || fail "the power-8 Mandelbulb is said to jump at step $(q .stepFactor.jumpingStep)"
 echo "step factor: opened at $opened, measured $measured on $(q .stepFactor.rays) rays after deleting the Rotate"
 stop
-# The Amazing Surf's worst rays are rare: the factor applied at once rests on the settled rounds
+# The Amazing Surf's worst rays at bailout 100 are rare: the factor applied at once rests on the settled rounds
 # (a few hundred rays), then the check's further rounds run beside the frames and their factor
 # replaces it when they end: the one `fraktal check` reports for the document as the editor holds
 # it (the edit also fits the bound radius to the object).
 surf="$home/rotate_surf.json"
-jq '.formula.nodes = [{"block": "rotate"}] + .formula.nodes' "$presets/amazing_surf.json" >"$surf"
+jq '.formula.nodes = [{"block": "rotate"}] + .formula.nodes | .formula.bailout = 100' "$presets/amazing_surf.json" >"$surf"
 start "$surf"
 set -- $(viewport_centre)
 to "$1" "$2"
