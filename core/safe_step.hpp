@@ -118,7 +118,7 @@ struct SafeStepOptions {
     // Whether rays that showed `atUnit` need no further rounds for the tail (tailRounds): the
     // bound is proven, whose factor does not rest on the margin, or the fixed margin covers the
     // worst the tail projects. Where it holds when the settled rounds end, the further rounds
-    // end there as well: the settled rounds' factor is the check's.
+    // end there as well, and on the same rays the two measurements agree.
     bool tailCovered(const ConservativenessReport& atUnit, const BlockDesc& estimator,
                      const std::vector<Node>& steps) const;
     // Whether either of those factors is at least kMinStepFactor.
