@@ -209,7 +209,7 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
 // the check reports NOT SOUND (no safe step factor) and stacks whose object the check's rays
 // never reach from outside (nothing inside the bound, or everything) are drawn again.
 // The median ratio over all samples is printed with its distribution, and must be above 0.5: not
-// safe by being slow. It is 0.540 where the rays' tail may narrow the margins (projectedWorst;
+// safe by being slow. It is 0.545 where the rays' tail may narrow the margins (projectedWorst;
 // SafeStepOptions::tailMargin), 0.497 with the fixed margins alone (0.8 of the sampled worst, 0.7
 // after a jump).
 TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
