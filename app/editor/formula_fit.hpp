@@ -12,8 +12,9 @@ namespace fraktal::editor {
 // Picks the estimator family and bailout the loop body needs when the current ones do not fit:
 // a power block (Mandelbulb) wants the escape-time log estimator and a bailout of about 2; a
 // point-dependent step (add c) without one a Mandelbox-type escape-time linear estimator and a
-// bailout of at least 20 (the orbit grows linearly; formula_fit.cpp says why no more); neither, a pure IFS of folds and scales, a distance
-// estimator (the user's, if it is one; else a box) and a bailout that never stops the folds.
+// bailout of at least 20 (the orbit grows linearly; formula_fit.cpp says why no more); neither,
+// a pure IFS of folds and scales, a distance estimator (the user's, if it is one; else a box)
+// and a bailout that never stops the folds.
 // Custom GLSL blocks are left as they are. Returns whether anything changed.
 bool fitEstimatorToBlocks(Formula& f);
 
