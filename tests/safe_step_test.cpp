@@ -223,8 +223,8 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     check.rays = {64, 1200, 1};
     // The factor the editor applies at once after a structure change: the settled rounds alone.
     // The further rounds `fraktal check` adds for a heavy tail (tested below), which the editor
-    // applies when they end on its worker, only lower it (a median of 0.530 with them, where
-    // the test takes four times as long).
+    // applies when they end on its worker, only lower it (at 91be9b1 a median of 0.530 with
+    // them, where the test took four times as long).
     check.tailRounds = editor::AutoStepFactor::options().tailRounds;
     const ConservativenessOptions fresh{16, 1200, 99};
 
@@ -482,7 +482,6 @@ TEST(SafeStep, EditorAppliesTheChecksFurtherRoundsWhenTheyEnd) {
     const int settledRays = a.rays;
     EXPECT_EQ(f.deFactor, settled);
     ASSERT_TRUE(a.refining()) << "the settled rounds' tail was expected to call for more rays";
-    EXPECT_FALSE(a.update(f, p.camera) && a.refining());
     finishRefining(a, f, p.camera);
     std::printf("amazing_surf in the editor: %.3f on %d rays at once, %.3f on %d rays after %.2f s (the check: %.3f)\n",
                 settled, settledRays, a.measured, a.rays, a.seconds, check.factor);

@@ -189,9 +189,9 @@ int runCheck(const CheckOptions& o) {
         status = 1;
     }
     // The step factor the rays allow, with the margin for the rays that were not sampled
-    // (core/safe_step.hpp): rays in rounds from this seed until the worst ratio settles, as the
-    // editor measures after a structure change, and on while the margin does not cover the worst
-    // the rays' tail projects (the editor stops at the settled rounds). Above the current factor,
+    // (core/safe_step.hpp): rays in rounds from this seed until the worst ratio settles, and on
+    // while the margin does not cover the worst the rays' tail projects (the editor applies the
+    // settled rounds' factor at once and this one when its worker ends). Above the current factor,
     // marching is slower than it needs to be; below it, the current one overshoots.
     SafeStepOptions safe;
     safe.rays.stepsAcrossBound = o.steps;
