@@ -8,15 +8,15 @@
 // resolve's 28 ms at 640x360 on llvmpipe). Writes the scene-linear image. Needs
 // viewport_common.glsl.
 layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
-layout(rgba32f, binding = 0) uniform image2D u_rayState;
-layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
-layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
-layout(rgba32f, binding = 3) uniform image2D u_accum;
-layout(rgba32f, binding = 4) uniform image2D u_image;
-layout(rgba32f, binding = 5) uniform image2D u_centre;
+layout(rgba32f) uniform image2D u_rayState;
+layout(rgba32i) uniform iimage2D u_rayInfo;
+layout(rgba32f) uniform image2D u_sampleColor;
+layout(rgba32f) uniform image2D u_accum;
+layout(rgba32f) uniform image2D u_image;
+layout(rgba32f) uniform image2D u_centre;
 #if !AT_REST
-layout(rgba32f, binding = 7) uniform image2D u_samplePosition;
-layout(rgba32f, binding = 10) uniform image2D u_colourPoint;
+layout(rgba32f) uniform image2D u_samplePosition;
+layout(rgba32f) uniform image2D u_colourPoint;
 
 // Where a pixel's sample lies in the image (pixels from the top-left) and how far its surface is:
 // a surface colour lies at its own point; a background colour at the pixel centre, infinitely far.

@@ -5,7 +5,7 @@
 // (the "cone marching" of Marble Marcher Community Edition). Needs the formula, march.glsl and
 // viewport_common.glsl.
 layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
-layout(r32f, binding = 6) uniform writeonly image2D u_cone;
+layout(r32f) uniform writeonly image2D u_cone;
 uniform int u_coneTile;
 uniform int u_coneSteps;
 

@@ -24,11 +24,11 @@ layout(local_size_x = 64) in;  // SHADE_GROUP entries per group, as the list's h
 #else
 layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
 #endif
-layout(rgba32f, binding = 0) uniform image2D u_rayState;
-layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
-layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
-layout(rgba32f, binding = 5) uniform image2D u_centre;
-layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
+layout(rgba32f) uniform image2D u_rayState;
+layout(rgba32i) uniform iimage2D u_rayInfo;
+layout(rgba32f) uniform image2D u_sampleColor;
+layout(rgba32f) uniform image2D u_centre;
+layout(rgba32f) uniform writeonly image2D u_colourPoint;
 uniform int u_stepsPerFrame;
 uniform int u_maxCarryFrames;
 uniform int u_maxSteps;

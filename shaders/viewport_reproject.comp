@@ -34,12 +34,12 @@ layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's po
 uniform ivec2 u_newSize;
 // Carried colours, u_newSize.x by 2 u_newSize.y: row y holds the colour whose point lies in pixel row y,
 // row u_newSize.y + y the one that pixel borrows when no point lies in it (see below).
-layout(rgba32f, binding = 8) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
-layout(rgba32f, binding = 9) uniform writeonly image2D u_reprojCarried;   // xyz: its point, w: its t
+layout(rgba32f) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
+layout(rgba32f) uniform writeonly image2D u_reprojCarried;   // xyz: its point, w: its t
 // Distance keys, u_newSize.x by 3 u_newSize.y (MarchState::reprojDepth): rows [0, h) of the start
 // points; rows [h, 2h) of the carried colours whose point lies in the pixel; rows [2h, 3h) of
 // those near it.
-layout(r32ui, binding = 12) uniform uimage2D u_depth;
+layout(r32ui) uniform uimage2D u_depth;
 uniform vec3 u_newCameraPosition, u_newRight, u_newUp, u_newForward;
 uniform float u_newTanHalfFovY;
 

@@ -9,11 +9,11 @@
 // pixel, samples all on the pixel grid (restarting every ray) are left as they are: only the
 // pixel's own sample is nearer than a pixel. Needs viewport_common.glsl.
 layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
-layout(rgba32f, binding = 4) uniform image2D u_image;
+layout(rgba32f) uniform image2D u_image;
 // Where each pixel's sample lies (xy, pixels from the top-left) and its depth (z, 1e30 for the
 // background); w: 0 when the pixel has no sample for this view yet (viewport_accumulate.comp).
-layout(rgba32f, binding = 7) uniform image2D u_samplePosition;
-layout(rgba32f, binding = 11) uniform writeonly image2D u_shown;
+layout(rgba32f) uniform image2D u_samplePosition;
+layout(rgba32f) uniform writeonly image2D u_shown;
 
 uniform float u_radius;  // pixels: the tent's radius (ViewportOptions::motionFilterRadius)
 

@@ -7,11 +7,11 @@
 // costs march steps, not shading. When the camera stops, reused colours are listed and shaded
 // exactly once. Needs the formula, march.glsl, shade.glsl and viewport_common.glsl.
 layout(local_size_x = 64) in;
-layout(rgba32f, binding = 0) uniform image2D u_rayState;
-layout(rgba32i, binding = 1) uniform iimage2D u_rayInfo;
-layout(rgba32f, binding = 2) uniform image2D u_sampleColor;
-layout(rgba32f, binding = 5) uniform image2D u_centre;
-layout(rgba32f, binding = 10) uniform writeonly image2D u_colourPoint;
+layout(rgba32f) uniform image2D u_rayState;
+layout(rgba32i) uniform iimage2D u_rayInfo;
+layout(rgba32f) uniform image2D u_sampleColor;
+layout(rgba32f) uniform image2D u_centre;
+layout(rgba32f) uniform writeonly image2D u_colourPoint;
 uniform int u_atRest;
 uniform int u_maxCarryFrames;  // keepsCarriedColour
 

@@ -13,11 +13,11 @@
 // to load, and held a DE of its own for the verification. On llvmpipe every image store costs
 // about 1.5 ms of a 640x360 frame and every DE in the code about 5 (the Mandelbulb's), whether
 // or not a pixel needs it. Needs the formula, march.glsl and viewport_common.glsl.
-layout(rgba32f, binding = 4) uniform writeonly image2D u_image;
-layout(r32f, binding = 6) uniform readonly image2D u_cone;
+layout(rgba32f) uniform writeonly image2D u_image;
+layout(r32f) uniform readonly image2D u_cone;
 // The reprojection's nearest distance keys (viewport_reproject.comp); the first u_size.y rows are
 // the start points': a distance's float bits, all ones where nothing landed.
-layout(r32ui, binding = 12) uniform uimage2D u_depth;
+layout(r32ui) uniform uimage2D u_depth;
 // u_size.x by 2 u_size.y: the colour whose point lies in the pixel, then the one near it
 layout(binding = 1) uniform sampler2D u_reprojColor;    // rgb, a: carry age + 1 (0: no colour)
 layout(binding = 2) uniform sampler2D u_reprojCarried;  // xyz: the carried colour's point, w: its t

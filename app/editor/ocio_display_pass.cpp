@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/gl/portable_limits.hpp"
 #include "core/shader_library.hpp"
 
 namespace fraktal::editor {
@@ -58,6 +59,13 @@ void OcioDisplayPass::configure(const ColorPipeline& color, const DisplayKey& ke
     } catch (const OCIO::Exception& e) {
         throw std::runtime_error("OCIO config " + color.configPath().string() + ": " + e.what());
     }
+    // The image takes texture unit 0 and the LUTs 1.. (draw()): OpenGL 4.5 guarantees a fragment
+    // shader 16 (core/gl/portable_limits.hpp).
+    const unsigned lutCount = desc->getNum3DTextures() + desc->getNumTextures();
+    if (lutCount + 1 > unsigned(gl::PortableLimits::textureUnitsPerStage))
+        throw std::runtime_error("OCIO config " + color.configPath().string() + ": the display transform needs " +
+                                 std::to_string(lutCount) + " LUT textures; OpenGL 4.5 guarantees room for " +
+                                 std::to_string(gl::PortableLimits::textureUnitsPerStage - 1) + " beside the image");
     // Dynamic properties would need uniforms; this pass creates none (exposure is our own gain).
     if (desc->getNumUniforms() != 0)
         throw std::runtime_error("OCIO config " + color.configPath().string() +
@@ -119,7 +127,9 @@ void OcioDisplayPass::configure(const ColorPipeline& color, const DisplayKey& ke
     gainLocation_ = glGetUniformLocation(id, "u_gain");
     divideByCountLocation_ = glGetUniformLocation(id, "u_divideByCount");
     toWorkingLocation_ = glGetUniformLocation(id, "u_toWorking");
-    for (LutTexture& t : luts_) t.location = glGetUniformLocation(id, t.sampler.c_str());
+    // Each LUT's sampler keeps unit 1 + its index: set once, as the program's own state.
+    for (size_t i = 0; i < luts_.size(); ++i)
+        glProgramUniform1i(id, glGetUniformLocation(id, luts_[i].sampler.c_str()), GLint(i) + 1);
 }
 
 void OcioDisplayPass::draw(GLuint linearImage, double exposureStops, const SumInput& input) const {
@@ -131,11 +141,7 @@ void OcioDisplayPass::draw(GLuint linearImage, double exposureStops, const SumIn
     const glm::mat3 toWorking(input.toWorking);
     glUniformMatrix3fv(toWorkingLocation_, 1, GL_FALSE, &toWorking[0][0]);
     glBindTextureUnit(0, linearImage);
-    for (size_t i = 0; i < luts_.size(); ++i) {
-        const GLint unit = GLint(i) + 1;
-        glBindTextureUnit(GLuint(unit), luts_[i].id);
-        glUniform1i(luts_[i].location, unit);
-    }
+    for (size_t i = 0; i < luts_.size(); ++i) glBindTextureUnit(GLuint(i) + 1, luts_[i].id);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(emptyVertexArray_);

@@ -35,6 +35,8 @@ class OcioDisplayPass {
     // the previous program stays usable.
     void configure(const ColorPipeline& color, const DisplayKey& key);
     bool configured() const { return bool(program_); }
+    // The linked program (the portability checks read it).
+    const gl::Program& program() const { return program_; }
     const DisplayKey& key() const { return key_; }
 
     // Draws `linearImage` (RGBA32F, scene-linear in the working space) into the bound framebuffer
@@ -53,7 +55,6 @@ class OcioDisplayPass {
         GLuint id = 0;
         GLenum target = GL_TEXTURE_2D;
         std::string sampler;
-        GLint location = -1;  // the sampler's, looked up once when the program is built
     };
     void releaseLuts();
 

@@ -28,6 +28,8 @@ class DEProbe {
 
     // `formula` may differ from the constructor's in values only (same structureKey()).
     std::vector<GpuSample> evaluate(const Formula& formula, std::span<const vec3> points);
+    // The linked program (the portability checks read it).
+    const Program& program() const { return program_; }
 
    private:
     std::string structure_;

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/gl/portable_limits.hpp"
+
 namespace fraktal::gl {
 
 namespace {
@@ -30,7 +32,20 @@ GLuint compileStage(GLenum stage, const ShaderSource& source) {
     return shader;
 }
 
-Program link(const std::vector<GLuint>& shaders, const std::string& name) {
+// "viewport_march.comp (START 1, FROM_LIST 0)": the template and the defines that make its variant.
+std::string programNameOf(const ShaderSource& main) {
+    std::string variant;
+    size_t at = main.text.find('\n');
+    while (at != std::string::npos && main.text.compare(at + 1, 8, "#define ") == 0) {
+        const size_t end = main.text.find('\n', at + 1);
+        if (!variant.empty()) variant += ", ";
+        variant += main.text.substr(at + 9, end == std::string::npos ? std::string::npos : end - at - 9);
+        at = end;
+    }
+    return variant.empty() ? main.programName : main.programName + " (" + variant + ")";
+}
+
+Program link(const std::vector<GLuint>& shaders, const std::string& name, std::vector<StageSource> stages) {
     GLuint program = glCreateProgram();
     for (GLuint s : shaders) glAttachShader(program, s);
     glLinkProgram(program);
@@ -45,7 +60,16 @@ Program link(const std::vector<GLuint>& shaders, const std::string& name) {
         glDeleteProgram(program);
         throw std::runtime_error("GLSL link error in " + name + ":\n" + log.c_str());
     }
-    return Program(program);
+    Program linked(program, name, std::move(stages));
+    // Refused here rather than on the user's driver: llvmpipe, which the tests run on, gives more
+    // than OpenGL 4.5 guarantees, and a driver that gives only the minimum refuses the program.
+    const std::vector<std::string> over = portableLimitViolations(linked, LimitScope::LinkTime);
+    if (!over.empty()) {
+        std::string message = "GL program " + name + " needs more than every OpenGL 4.5 driver provides:";
+        for (const std::string& v : over) message += "\n  " + v;
+        throw std::runtime_error(message);
+    }
+    return linked;
 }
 
 }  // namespace
@@ -56,7 +80,7 @@ void Program::reset() {
 }
 
 Program compileCompute(const ShaderSource& source) {
-    return link({compileStage(GL_COMPUTE_SHADER, source)}, source.programName);
+    return link({compileStage(GL_COMPUTE_SHADER, source)}, programNameOf(source), {{GL_COMPUTE_SHADER, source.text}});
 }
 
 Program compileGraphics(const ShaderSource& vertex, const ShaderSource& fragment) {
@@ -68,7 +92,8 @@ Program compileGraphics(const ShaderSource& vertex, const ShaderSource& fragment
         glDeleteShader(vs);
         throw;
     }
-    return link({vs, fs}, fragment.programName);
+    return link({vs, fs}, programNameOf(fragment),
+                {{GL_VERTEX_SHADER, vertex.text}, {GL_FRAGMENT_SHADER, fragment.text}});
 }
 
 void dispatchOver(GLuint program, int width, int height) {

@@ -72,6 +72,8 @@ class PlaneRenderer {
     // std::runtime_error with the driver's log naming the node.
     void prepare(const PlaneFormula& formula, PlanePrecision precision = PlanePrecision::Auto);
     bool usesDouble() const { return double_; }
+    // The linked program (the portability checks read it).
+    const gl::Program& program() const { return program_; }
     // Why the image may be less precise than asked (no fp64, a non-whole power); each once.
     const std::vector<std::string>& warnings() const { return warnings_; }
 

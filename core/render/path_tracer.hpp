@@ -37,6 +37,8 @@ class PathTracer {
     int rowsDone() const { return rowsDone_; }  // of the pass under way (0: none)
     int samplesTaken() const { return samples_; }
     const std::string& structure() const { return structure_; }  // the formula's structureKey()
+    // The linked program (the portability checks read it).
+    const Program& program() const { return program_; }
     int width() const { return width_; }
     int height() const { return height_; }
     // The beauty pass's running sum (RGBA32F, samplesTaken() samples per pixel, texture row 0 is

@@ -37,6 +37,8 @@ class StillRenderer {
     void renderTile(const TileRect& tile, ImageStrip& strip);
 
     int tileSize() const { return tileSize_; }
+    // The linked program (the portability checks read it).
+    const Program& program() const { return program_; }
 
    private:
     std::string structure_;

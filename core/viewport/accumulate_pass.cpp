@@ -6,7 +6,7 @@ namespace fraktal::viewport {
 void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
     const Pass& pass = c.atRest ? p.accumulateAtRest : p.accumulateMoving;
     const GLuint program = pass.id();
-    glUseProgram(program);
+    pass.use(s);
     setViewUniforms(pass.uniforms, c.camera, s.width(), s.height());
     glUniform1i(pass.uniforms.maxSamples, c.options.maxSamples);
     glUniform1f(pass.uniforms.initialOmega, float(std::max(c.shading.overRelaxation, 1.0)));
@@ -23,7 +23,7 @@ void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameC
         return;
     }
     const GLuint program = p.resolve.id();
-    glUseProgram(program);
+    p.resolve.use(s);
     setViewUniforms(p.resolve.uniforms, c.camera, s.width(), s.height());
     glUniform1f(p.resolve.uniforms.radius, float(c.options.motionFilterRadius));
     gl::dispatchOver(program, s.width(), s.height());

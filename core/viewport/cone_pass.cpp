@@ -5,7 +5,7 @@ namespace fraktal::viewport {
 
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
     const GLuint program = p.cone.program.id();
-    p.cone.use(c.formula, c.shading);
+    p.cone.use(s, c.formula, c.shading);
     setViewUniforms(p.cone.uniforms, c.camera, s.width(), s.height());
     glUniform1i(p.cone.uniforms.coneTile, c.options.coneTile);
     glUniform1i(p.cone.uniforms.coneSteps, c.options.coneSteps);

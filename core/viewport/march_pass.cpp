@@ -17,7 +17,7 @@ int stepsBeforeList(const FrameContext& c, FrameAction action) {
 // The uniforms every variant of viewport_march.comp reads.
 void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const FrameContext& c, FrameAction action) {
     const PassUniforms& at = pass.uniforms;
-    pass.use(c.formula, c.shading);
+    pass.use(s, c.formula, c.shading);
     setViewUniforms(at, c.camera, s.width(), s.height());
     glUniform1i(at.stepsPerFrame, c.options.stepsPerFrame);
     glUniform1i(at.maxSteps, c.maxSteps);
@@ -38,7 +38,6 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     if (newView) {
         glUniform1i(pass.uniforms.resetAll, action == FrameAction::Reset ? 1 : 0);
         glUniform1i(pass.uniforms.coneTile, c.options.coneTile);
-        glBindImageTexture(12, s.reprojDepth, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
         glBindTextureUnit(1, s.reprojColor);
         glBindTextureUnit(2, s.reprojCarried);
         // MarchState::accum needs no reset: every pixel starts a new sample 0, whose colour

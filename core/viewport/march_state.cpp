@@ -56,17 +56,7 @@ MarchState::~MarchState() {
     glDeleteTextures(GLsizei(std::size(textures)), textures);
 }
 
-void MarchState::bindImages() const {
-    glBindImageTexture(0, rayState, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(1, rayInfo, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32I);
-    glBindImageTexture(2, sampleColor, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(3, accum, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(4, image, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(5, centre, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(6, cone, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
-    glBindImageTexture(7, samplePosition, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(10, colourPoint, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(11, shown, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+void MarchState::bindLists() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, shadeList);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, marchList);
 }

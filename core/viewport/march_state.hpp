@@ -17,9 +17,9 @@ class MarchState {
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // Binds every state image at its unit (0..7, 10 and 11, as the shaders declare them), the shade list
-    // at SSBO binding 2 and the march list at 3.
-    void bindImages() const;
+    // Binds the shade list at SSBO binding 2 and the march list at 3. The images are bound by
+    // each pass, at the units its program gave them (pass_images.hpp).
+    void bindLists() const;
     // Empties the shade list (ShadeList in shaders/viewport_common.glsl): no pixels, no groups.
     void clearShadeList() const;
     // Empties the march list (MarchList in shaders/viewport_common.glsl) the same way.
@@ -37,12 +37,12 @@ class MarchState {
     // Under motion, where each pixel's one sample lies (xy, pixels), its depth (z) and whether it
     // has one (w): written by the accumulate pass for the resolve pass's reconstruction.
     GLuint samplePosition = 0;
-    // Reprojection target (written by reproject_pass): the nearest distance keys (r32ui image 12,
+    // Reprojection target (written by reproject_pass): the nearest distance keys (r32ui,
     // width x 3 height: rows of the start points, then of the carried colours in the pixel, then
     // of those near it; a key is the distance's float bits, all ones for none; an image rather
     // than a buffer because llvmpipe loads a buffer lane by lane: the starts' 9 reads per pixel
-    // cost 7-8 ms more of the march pass at 640x360), carried colours (image 8; a: carry
-    // age + 1, 0: none) and each carried colour's point (image 9; xyz, and w: its distance from
+    // cost 7-8 ms more of the march pass at 640x360), carried colours (rgba32f; a: carry
+    // age + 1, 0: none) and each carried colour's point (rgba32f; xyz, and w: its distance from
     // the new camera). The colour images are twice as tall: row y holds the colour whose point
     // lies in pixel row y, row height + y the one near it, which a pixel takes when no point lies
     // in it (shaders/viewport_reproject.comp).

@@ -1,5 +1,6 @@
 // The viewport's GL passes, one file each (seed chapter 4). All run on the current context with
-// the march state's images bound (MarchState::bindImages) and the counters bound.
+// the march state's lists and the counters bound (MarchState::bindLists); each binds its own
+// images (pass_images.hpp).
 #pragma once
 
 #include "core/camera.hpp"

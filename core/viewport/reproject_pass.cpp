@@ -20,11 +20,8 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& from, const M
     glBindTextureUnit(0, from.centre);
     glBindTextureUnit(1, from.image);
     glBindTextureUnit(2, from.colourPoint);
-    glBindImageTexture(8, s.reprojColor, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(9, s.reprojCarried, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(12, s.reprojDepth, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     for (const Pass* pass : {&p.reprojectClaim, &p.reprojectWrite}) {
-        glUseProgram(pass->id());
+        pass->use(s);
         setViewUniforms(pass->uniforms, previous, w, h);  // the points' rays
         glUniform2i(pass->uniforms.newSize, s.width(), s.height());
         gl::setCameraUniforms(pass->uniforms.newCamera, current);

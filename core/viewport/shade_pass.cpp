@@ -6,7 +6,7 @@ namespace fraktal::viewport {
 
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c) {
     const GLuint program = p.shade.program.id();
-    p.shade.use(c.formula, c.shading);
+    p.shade.use(s, c.formula, c.shading);
     setViewUniforms(p.shade.uniforms, c.camera, s.width(), s.height());
     glUniform1i(p.shade.uniforms.atRest, c.atRest ? 1 : 0);
     glUniform1i(p.shade.uniforms.maxCarryFrames, c.options.maxCarryFrames);

@@ -69,7 +69,7 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     };
     if (timed) timer_->begin();
     counters_->clearAndBind();
-    state_->bindImages();
+    state_->bindLists();
     if (action == FrameAction::Reproject) {
         runReprojectPass(*programs_, previousGrid ? *previousGrid : *state_, *state_, previous_->camera, camera);
         mark("reproject");

@@ -24,8 +24,9 @@ gl::Program compileViewportProgram(const char* name, const char* defines = "") {
 }
 
 Pass withUniforms(gl::Program program) {
-    Pass p{std::move(program), {}};
+    Pass p{std::move(program), {}, {}};
     p.uniforms = PassUniforms(p.program.id());
+    p.images = PassImages(p.program);
     return p;
 }
 
@@ -38,6 +39,7 @@ FormulaProgram compileFormulaPass(const Formula& f, const GeneratedFormula& g, c
     FormulaProgram p;
     p.program = gl::compileCompute(assembleShader(g, name, concat(sources), defines));
     p.uniforms = PassUniforms(p.program.id());
+    p.images = PassImages(p.program);
     p.formula = gl::FormulaUniforms(p.program.id(), f);
     p.shading = gl::ShadingUniforms(p.program.id());
     return p;
@@ -68,8 +70,14 @@ PassUniforms::PassUniforms(GLuint program)
     flipY = at("u_flipY");
 }
 
-void FormulaProgram::use(const Formula& f, const ShadingParams& params) const {
+void Pass::use(const MarchState& state) const {
     glUseProgram(program.id());
+    images.bind(state);
+}
+
+void FormulaProgram::use(const MarchState& state, const Formula& f, const ShadingParams& params) const {
+    glUseProgram(program.id());
+    images.bind(state);
     formula.upload(f);
     shading.upload(params);
 }
@@ -97,6 +105,21 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
     display = withUniforms(
         gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
                             assembleShader(none, "viewport_display.frag", concat({"viewport_display.frag"}))));
+}
+
+std::vector<const gl::Program*> ViewportPrograms::all() const {
+    return {&march.program,
+            &marchFromStart.program,
+            &marchFromList.program,
+            &shade.program,
+            &cone.program,
+            &accumulateAtRest.program,
+            &accumulateMoving.program,
+            &resolve.program,
+            &display.program,
+            &listGroups,
+            &reprojectClaim.program,
+            &reprojectWrite.program};
 }
 
 void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, int height) {

@@ -11,6 +11,7 @@
 #include "core/gl/program.hpp"
 #include "core/render/shading_params.hpp"
 #include "core/render/shading_uniforms.hpp"
+#include "core/viewport/pass_images.hpp"
 
 namespace fraktal::viewport {
 
@@ -30,21 +31,26 @@ struct PassUniforms {
     explicit PassUniforms(GLuint program);
 };
 
-// A program with its uniforms' locations.
+// A program with its uniforms' locations and its images' units.
 struct Pass {
     gl::Program program;
     PassUniforms uniforms;
+    PassImages images;
     GLuint id() const { return program.id(); }
+    // Binds the program and its images of `state`.
+    void use(const MarchState& state) const;
 };
 
 // A program that evaluates the formula, with its uniform uploaders.
 struct FormulaProgram {
     gl::Program program;
     PassUniforms uniforms;
+    PassImages images;
     gl::FormulaUniforms formula;
     gl::ShadingUniforms shading;
-    // Binds the program and uploads the formula's values and the shading parameters.
-    void use(const Formula& f, const ShadingParams& p) const;
+    // Binds the program and its images of `state`, and uploads the formula's values and the
+    // shading parameters.
+    void use(const MarchState& state, const Formula& f, const ShadingParams& p) const;
 };
 
 struct ViewportPrograms {
@@ -59,6 +65,8 @@ struct ViewportPrograms {
     gl::Program listGroups;
     // The reprojection scatter's two passes (shaders/viewport_reproject.comp): claim, then write.
     Pass reprojectClaim, reprojectWrite;
+    // Every program above, for the checks that cover every program fraktal links.
+    std::vector<const gl::Program*> all() const;
 };
 
 // Sets viewport_common.glsl's camera uniforms on the bound program whose locations `at` holds.
