@@ -97,6 +97,25 @@ TEST(ExrWriter, EveryChannelReadsBackWhatTheStripsHeld) {
     fs::remove_all(dir);
 }
 
+// A wide image is written in 1-line blocks (ZIPS), whose buffers do not grow 16 lines at a time
+// with the width (exr_writer.hpp), and reads back the same; a narrow one keeps 16-line ZIP blocks.
+TEST(ExrWriter, WideImagesUseOneLineBlocksAndReadBackTheSame) {
+    const fs::path dir = fs::temp_directory_path() / ("fraktal_exr_wide_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path path = dir / "wide.exr";
+    writeProbeImage(path, kWideExrWidth, 40, 32, false, 3);
+    expectProbeImage(path, kWideExrWidth, 40, false);
+    EXPECT_EQ(Imf::InputFile(path.c_str()).header().compression(), Imf::ZIPS_COMPRESSION);
+    writeProbeImage(path, kWideExrWidth - 1, 20, 16, false, 2);
+    EXPECT_EQ(Imf::InputFile(path.c_str()).header().compression(), Imf::ZIP_COMPRESSION);
+    // The writer's block buffers: 16 lines below the threshold, 1 from it, so the wider image's
+    // buffers are the smaller.
+    EXPECT_EQ(exrWriterBufferBytes(kWideExrWidth, false, 4), 2LL * 4 * 3 * kWideExrWidth * 30);
+    EXPECT_GT(exrWriterBufferBytes(kWideExrWidth - 1, false, 4), exrWriterBufferBytes(2 * kWideExrWidth, false, 4));
+    EXPECT_EQ(exrRawBytesPerPixel(true), 13 * 4);
+    fs::remove_all(dir);
+}
+
 TEST(ExrWriter, StripsOutOfOrderAreRefused) {
     const fs::path path = fs::temp_directory_path() / ("fraktal_exr_order_" + std::to_string(::getpid()) + ".exr");
     {

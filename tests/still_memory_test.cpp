@@ -46,8 +46,43 @@ TEST(StillMemory, TooBigForTheMemoryIsRefusedWithTheEstimate) {
     }
     EXPECT_FALSE(std::filesystem::exists(job.exr));
     job.memoryLimitBytes = 4096LL << 20;
+    job.checkDisk = false;  // this machine's free disk is not what this test is about
     EXPECT_NO_THROW(validateStillJob(job, color));
     EXPECT_GT(availableMemoryBytes(), 0);
+}
+
+// The EXR may take its uncompressed size at most; a disk with less free space than that is refused
+// before anything is rendered, naming the file and both figures, and nothing is written.
+TEST(StillDisk, TooLittleFreeSpaceIsRefusedWithTheEstimate) {
+    const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
+    StillJob job = bigJob(32768, false);
+    const long long needed = estimateStillDiskBytes(job);
+    EXPECT_GE(needed, 32768LL * 32768 * 30);  // 13 channels: 11 half, 2 float
+    EXPECT_LT(needed, 32768LL * 32768 * 30 + (4LL << 20));
+    // A part needs its rows only; a PNG preview adds its raw rows.
+    job.partCount = 4;
+    EXPECT_LT(estimateStillDiskBytes(job), needed / 4 + (4LL << 20));
+    job.partCount = 1;
+    StillJob withPng = bigJob(16384, true);
+    EXPECT_GT(estimateStillDiskBytes(withPng) - estimateStillDiskBytes(bigJob(16384, false)), 16384LL * 16384 * 3);
+
+    job.diskLimitBytes = 20LL * 1000 * 1000 * 1000;
+    try {
+        validateStillJob(job, color);
+        FAIL() << "a job over the free disk space was accepted";
+    } catch (const std::runtime_error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(job.exr.string() + ": the output may take up to 32.2 GB"), std::string::npos) << message;
+        EXPECT_NE(message.find("has 20.0 GB free"), std::string::npos) << message;
+        EXPECT_NE(message.find("--no-disk-check"), std::string::npos) << message;
+    }
+    EXPECT_FALSE(std::filesystem::exists(job.exr));
+    job.diskLimitBytes = needed;
+    EXPECT_NO_THROW(validateStillJob(job, color));
+    job.diskLimitBytes = needed - 1;
+    EXPECT_THROW(validateStillJob(job, color), std::runtime_error);
+    job.checkDisk = false;
+    EXPECT_NO_THROW(validateStillJob(job, color));
 }
 
 }  // namespace

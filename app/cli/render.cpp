@@ -45,6 +45,7 @@ struct RenderOptions {
     std::string part;    // one part of a still: "i/n"
     std::string mode = "fast";
     bool denoise = false;
+    bool noDiskCheck = false;
 };
 
 bool isExrPath(const std::string& input) {
@@ -181,6 +182,7 @@ int runRender(RenderOptions o) {
         job.partCount = std::stoi(m[2]);
     }
     if (o.adaptiveTolerance) job.adaptiveTolerance = *o.adaptiveTolerance;
+    job.checkDisk = !o.noDiskCheck;
 
     if (o.denoise && o.mode != "path") throw std::runtime_error("--denoise needs --mode path");
     if (o.mode == "path" && (!o.frames.empty() || !o.part.empty()))
@@ -265,6 +267,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
                     "A pixel stops sampling when its samples agree within this (sqrt colour); 0: all spp")
         ->check(CLI::Range(0.0, 1.0));
     cmd->add_flag("-q,--quiet", o->quiet, "No progress output");
+    cmd->add_flag("--no-disk-check", o->noDiskCheck,
+                  "Render even when the output's disk has less free space than the EXR may take uncompressed");
     cmd->add_option("--part", o->part, "Same as --tile i/n");
     cmd->add_option("--frames", o->frames,
                     "Render frames FIRST-LAST[:STEP] of an animated preset; -o is then a pattern whose run of # is "

@@ -94,6 +94,23 @@ Imath::M44f worldToCamera(const Camera& camera) {
 
 }  // namespace
 
+int exrBlockRows(int width) { return width >= kWideExrWidth ? 1 : 16; }
+
+long long exrRawBytesPerPixel(bool fullFloat) {
+    long long bytes = 0;
+    for (const ExrChannelSource& c : kChannels) bytes += c.alwaysFloat || fullFloat ? 4 : 2;
+    return bytes;
+}
+
+int exrCompressionThreads(int compressionThreads) {
+    return compressionThreads > 0 ? compressionThreads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+long long exrWriterBufferBytes(int width, bool fullFloat, int compressionThreads) {
+    const long long blockBytes = (long long)exrBlockRows(width) * width * exrRawBytesPerPixel(fullFloat);
+    return 2LL * exrCompressionThreads(compressionThreads) * 3 * blockBytes;
+}
+
 ExrStripWriter::ExrStripWriter(const std::filesystem::path& path, int width, int height, bool fullFloat,
                                const ExrMetadata& meta, int compressionThreads, int firstRow, int rowCount)
     : path_(path),
@@ -106,7 +123,7 @@ ExrStripWriter::ExrStripWriter(const std::filesystem::path& path, int width, int
         throw std::logic_error("ExrStripWriter: rows outside the image");
     Imf::Header header(Imath::Box2i(Imath::V2i(0, 0), Imath::V2i(width - 1, height - 1)),
                        Imath::Box2i(Imath::V2i(0, firstRow), Imath::V2i(width - 1, endRow_ - 1)));
-    header.compression() = Imf::ZIP_COMPRESSION;
+    header.compression() = exrBlockRows(width) == 1 ? Imf::ZIPS_COMPRESSION : Imf::ZIP_COMPRESSION;
     // zlib level 1 instead of OpenEXR's default 4: lossless either way; measured with
     // bench/stills/exr_write.sh it takes 1.25x (a noisy Mandelbulb) to 1.8x (a mostly empty frame)
     // less CPU for files 3 % to 17 % larger (bench/README.md, Stills).
@@ -131,8 +148,7 @@ ExrStripWriter::ExrStripWriter(const std::filesystem::path& path, int width, int
     // ZIP compresses each block of 16 scanlines independently; OpenEXR runs those blocks on its
     // global thread pool (the pool is OpenEXR's own process-wide state; it has no threads unless
     // asked). Without it, compression is single-threaded and dominates large renders.
-    const int threads =
-        compressionThreads > 0 ? compressionThreads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = exrCompressionThreads(compressionThreads);
     if (Imf::globalThreadCount() < threads) Imf::setGlobalThreadCount(threads);
     try {
         file_ = std::make_unique<Imf::OutputFile>(path.c_str(), header, threads);

@@ -49,6 +49,23 @@ struct ExrChannelSource {
 // The channels fraktal writes, in this order: R G B A, Z, N.x N.y N.z, albedo.R/G/B, AO, steps.
 std::span<const ExrChannelSource> exrStripChannels();
 
+// Scanlines per compressed block of a still's EXR `width` pixels wide: 16 (ZIP) below
+// kWideExrWidth, 1 (ZIPS) from there. OpenEXR keeps two blocks per compression thread in flight,
+// each about three times its raw size (the lines, zlib's output and its scratch), so 16-line blocks
+// grow with the width: at 32768 wide and 16 threads they held 844 MB against 306 MB for 1-line
+// blocks (bench/stills/exr_write.cpp). A wide image's line already fills zlib's window many times
+// over, so 1-line blocks compress as well there (+0.3 % at 16384, -0.03 % at 32768; +2.8 % at
+// 1280, hence the threshold), and a strip holds 64-128 blocks to spread over the threads, where
+// 16-line blocks gave 4 at 32768 wide (measured in bench/stills/README.md).
+inline constexpr int kWideExrWidth = 8192;
+int exrBlockRows(int width);
+// Bytes per pixel of the still's channels, uncompressed (the most a compressed block can take).
+long long exrRawBytesPerPixel(bool fullFloat);
+// OpenEXR's memory for the blocks in flight while writing: two per compression thread.
+long long exrWriterBufferBytes(int width, bool fullFloat, int compressionThreads);
+// The compression threads of `compressionThreads` (0: one per core).
+int exrCompressionThreads(int compressionThreads);
+
 class ExrStripWriter {
    public:
     // Opens `path` for writing (the caller passes an AtomicFile's temporary path). Compression
@@ -58,8 +75,8 @@ class ExrStripWriter {
     ExrStripWriter(const std::filesystem::path& path, int width, int height, bool fullFloat, const ExrMetadata& meta,
                    int compressionThreads = 0, int firstRow = 0, int rowCount = -1);
     ~ExrStripWriter();
-    // Strips must arrive in order, covering every row exactly once. Strips of a multiple of 16
-    // rows let OpenEXR compress whole ZIP blocks in parallel within the call.
+    // Strips must arrive in order, covering every row exactly once. Strips of a multiple of
+    // exrBlockRows(width) rows let OpenEXR compress whole blocks in parallel within the call.
     void write(const ImageStrip& strip);
     // Flushes and closes the file; throws on failure.
     void close();

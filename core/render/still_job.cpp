@@ -27,6 +27,20 @@ bool hasExtension(const std::filesystem::path& p, const char* ext) {
 
 std::string megabytes(long long bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MB"; }
 
+std::string gigabytes(long long bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GB", double(bytes) / 1e9);
+    return text;
+}
+
+// Free space for a new file at `file` (its folder's file system); -1 when it cannot be read.
+long long freeBytesFor(const std::filesystem::path& file) {
+    std::error_code ec;
+    const std::filesystem::path folder = std::filesystem::absolute(file, ec).parent_path();
+    const std::filesystem::space_info space = std::filesystem::space(folder, ec);
+    return ec ? -1 : (long long)space.available;
+}
+
 // The GL driver (llvmpipe's own tile buffers), compiled shaders and libraries: measured peaks were
 // 125 MB (1280x720) to 170 MB (16384 wide) above the buffers counted below.
 constexpr long long kProcessBaseBytes = 176LL << 20;
@@ -45,7 +59,20 @@ long long estimateStillMemoryBytes(const StillJob& job) {
     const long long stripBytes = stripPixels * floatsPerPixel * (long long)(sizeof(float) + sizeof(uint16_t));
     const long long previewBytes = job.png ? (long long)r.width * r.height * 3 : 0;
     const long long tileBytes = tile * tile * floatsPerPixel * (long long)sizeof(float) + tile * tile * 4 * 4;
-    return kProcessBaseBytes + stripBytes + previewBytes + tileBytes;
+    return kProcessBaseBytes + stripBytes + previewBytes + tileBytes + exrWriterBufferBytes(r.width, job.fullFloat, 0);
+}
+
+long long estimateStillDiskBytes(const StillJob& job) {
+    const RenderSettings& r = job.preset.render;
+    const auto [firstRow, endRow] = partRows(r.height, job.partIndex, job.partCount);
+    const long long rows = endRow - firstRow;
+    const long long blocks = (rows + exrBlockRows(r.width) - 1) / exrBlockRows(r.width);
+    // Per block: its offset in the table and its own y and size words; the header, with the
+    // embedded preset (a few KB), within 1 MB.
+    const long long exr = rows * r.width * exrRawBytesPerPixel(job.fullFloat) + blocks * 16 + (1 << 20);
+    // An 8-bit RGB PNG: the raw rows, each with its filter byte, and zlib's worst case.
+    const long long png = job.png ? (long long)r.height * (3LL * r.width + 1) * 1001 / 1000 + (64 << 10) : 0;
+    return exr + png;
 }
 
 long long availableMemoryBytes() {
@@ -83,6 +110,17 @@ void validateStillJob(const StillJob& job, const ColorPipeline& color) {
                                  (job.png ? " with a PNG preview" : "") + " needs an estimated " + megabytes(needed) +
                                  " of memory; " + megabytes(limit) + " is available" +
                                  (job.png ? " (without --png it needs less)" : ""));
+    if (job.checkDisk) {
+        const long long needed = estimateStillDiskBytes(job);
+        const long long free = job.diskLimitBytes > 0 ? job.diskLimitBytes : freeBytesFor(job.exr);
+        if (free >= 0 && needed > free)
+            throw std::runtime_error(
+                job.exr.string() + ": the output may take up to " + gigabytes(needed) +
+                " (uncompressed; compressed, a fractal's EXR is usually about half that) and its folder's disk has " +
+                gigabytes(free) +
+                " free; free some space, write elsewhere, render parts (--part i/n) on several disks, or pass "
+                "--no-disk-check to try anyway");
+    }
     if (!hasExtension(job.exr, ".exr"))
         throw std::runtime_error(job.exr.string() + ": unknown output extension '" + job.exr.extension().string() +
                                  "' (expected .exr; use --png for a preview)");

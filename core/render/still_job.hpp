@@ -47,6 +47,10 @@ struct StillJob {
     // Spread of sqrt(colour) under which a pixel stops sampling (shaders/still.frag; 0: all spp).
     double adaptiveTolerance = kDefaultAdaptiveTolerance;
     long long memoryLimitBytes = 0;  // 0: the memory available when the job is checked
+    // The disk space the outputs may take must be free where they are written (estimateStillDiskBytes);
+    // diskLimitBytes stands in for the free space when > 0 (tests), checkDisk = false skips it.
+    bool checkDisk = true;
+    long long diskLimitBytes = 0;
 };
 
 // Rows [first, end) of part `index` of `count` of an image `height` rows tall.
@@ -58,6 +62,10 @@ std::pair<int, int> partRows(int height, int index, int count);
 long long estimateStillMemoryBytes(const StillJob& job);
 // MemAvailable of /proc/meminfo, else the physical memory.
 long long availableMemoryBytes();
+// The most disk space the job's EXR (and PNG preview) can take: every channel uncompressed plus
+// the header and the block offsets, which compression only ever reduces (a fractal's EXR came to
+// 40-55 % of it: bench/stills/README.md). Known before anything is rendered.
+long long estimateStillDiskBytes(const StillJob& job);
 
 // Checks sizes, outputs and colour settings before any rendering, so that bad input fails fast
 // and nothing is touched; throws std::runtime_error saying what is wrong.

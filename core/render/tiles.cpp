@@ -13,7 +13,9 @@ std::vector<TileRect> stripsOf(int imageWidth, int imageHeight, int stripRows) {
 
 int stillStripRows(int imageWidth, int tileSize) {
     constexpr int kStripPixels = 1 << 21;
-    constexpr int kZipBlockRows = 16;  // OpenEXR's ZIP_COMPRESSION compresses 16 scanlines at a time
+    // OpenEXR's ZIP_COMPRESSION compresses 16 scanlines at a time (ZIPS, for wide images, 1:
+    // exr_writer.hpp), so a multiple of 16 rows is whole blocks either way.
+    constexpr int kZipBlockRows = 16;
     const int rows =
         std::clamp(kStripPixels / std::max(1, imageWidth), kZipBlockRows, std::max(kZipBlockRows, tileSize));
     return rows / kZipBlockRows * kZipBlockRows;
