@@ -22,13 +22,17 @@ fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 q() { jq -r "$1" "$state"; }
 frame() { if [ -f "$state" ]; then q .frame; else echo 0; fi; }
-# Waits until the editor has drawn N more frames (events are handled at the start of a frame).
+pending_input() { if [ -f "$state" ]; then q '.inputPending // 0'; else echo 0; fi; }
+# Waits until the editor has drawn N more frames (events are handled at the start of a frame) and
+# has handed every window event it received to a frame (app/editor/imgui_input.hpp: a move, a
+# press and a release that arrive between two frames take a frame each).
+# (sh has no local variables: its counter is its own, not the callers' `tries`.)
 wait_frames() {
     target=$(($(frame) + $1))
-    tries=0
-    while [ "$(frame)" -lt "$target" ]; do
-        tries=$((tries + 1))
-        [ $tries -lt 600 ] || { echo "the editor stopped drawing frames"; exit 1; }
+    polls=0
+    while [ "$(frame)" -lt "$target" ] || [ "$(pending_input)" != 0 ]; do
+        polls=$((polls + 1))
+        [ $polls -lt 600 ] || { echo "the editor stopped drawing frames"; exit 1; }
         sleep 0.1
     done
 }

@@ -42,6 +42,7 @@ void drawCameraTab(EditorState& s) {
     keyMarker(s, kCameraOrientationTarget, cameraOrientation(cam));
     ImGui::TextDisabled("Orientation (a key never flips)");
     if (ImGui::Button("Reset view")) cam = defaultViewFor(f, cam);
+    noteWidgetRect(s.layout, "button:Reset view");
     ImGui::SameLine();
     ImGui::TextDisabled("(Home)");
 
@@ -64,10 +65,12 @@ void drawCameraTab(EditorState& s) {
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Shortcut: %d", i + 1);
         ImGui::SameLine();
         if (ImGui::Button("Store")) slot = cam;
+        noteWidgetRect(s.layout, "button:Store " + std::to_string(i + 1));
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Shortcut: Ctrl+%d", i + 1);
         ImGui::SameLine();
         ImGui::BeginDisabled(!slot);
         if (ImGui::Button("Clear")) slot.reset();
+        noteWidgetRect(s.layout, "button:Clear " + std::to_string(i + 1));
         ImGui::EndDisabled();
         ImGui::PopID();
     }

@@ -79,25 +79,50 @@ void onClose(GLFWwindow* w) {
     requestAction(s, {PendingKind::Quit, {}});
 }
 
-// Mouse and key events go to the viewport's queues with the cursor position they happened at;
-// ImGui's backend, installed after these, calls them before its own handlers.
+// Mouse and key events go to the input queue (imgui_input.hpp) with the cursor position they
+// happened at; each frame hands its share to ImGui and to the editor's own handlers. ImGui's
+// backend, installed after these, calls them before its own handlers.
 void onCursorPos(GLFWwindow* w, double x, double y) {
-    stateOf(w)->pointerEvents.push_back({PointerEvent::Kind::Move, 0, x, y});
+    stateOf(w)->input.push({InputEvent::Kind::CursorMove, x, y});
     stateOf(w)->cursorAt = vec2(x, y);
 }
 
 // GLFW's X11 glfwGetCursorPos asks the server where the pointer is now, which can be past the
 // press still waiting in the queue: a press takes the position of the last motion event before it.
 void onMouseButton(GLFWwindow* w, int button, int action, int mods) {
-    std::vector<PointerEvent>& events = stateOf(w)->pointerEvents;
-    vec2& at = stateOf(w)->cursorAt;
-    const auto kind = action == GLFW_PRESS ? PointerEvent::Kind::Press : PointerEvent::Kind::Release;
-    events.push_back({kind, button, at.x, at.y, mods});
+    const vec2& at = stateOf(w)->cursorAt;
+    stateOf(w)->input.push({InputEvent::Kind::MouseButton, at.x, at.y, button, action == GLFW_PRESS, mods});
+}
+
+// Installed over the ImGui backend's own character callback, which would hand the character to
+// ImGui at once, ahead of the keys queued before it.
+void onChar(GLFWwindow* w, unsigned codepoint) {
+    stateOf(w)->input.push({InputEvent::Kind::Char, 0.0, 0.0, int(codepoint), true});
+}
+
+// This frame's share of the queued events (imgui_input.hpp): ImGui's io, over what the backend's
+// poll set, and the editor's pointer events and key presses.
+void takeFrameInput(GLFWwindow* window, EditorState& s) {
+    InputQueue& queue = s.input;
+    ImGuiIO& io = ImGui::GetIO();
+    queue.takeFrame();
+    s.pointerEvents = queue.pointerEvents();
+    s.keyPresses = queue.keyPresses();
+    // Unfocused, the backend says the mouse is nowhere; keep that.
+    if (queue.hasCursor() && glfwGetWindowAttrib(window, GLFW_FOCUSED))
+        io.MousePos = ImVec2(float(queue.cursorX()), float(queue.cursorY()));
+    for (int b = 0; b < InputQueue::kMouseButtons; ++b) io.MouseDown[b] = queue.mouseDown(b);
+    for (int k = 0; k < InputQueue::kKeys; ++k) io.KeysDown[k] = queue.keyDown(k);
+    io.KeyCtrl = queue.keyDown(GLFW_KEY_LEFT_CONTROL) || queue.keyDown(GLFW_KEY_RIGHT_CONTROL);
+    io.KeyShift = queue.keyDown(GLFW_KEY_LEFT_SHIFT) || queue.keyDown(GLFW_KEY_RIGHT_SHIFT);
+    io.KeyAlt = queue.keyDown(GLFW_KEY_LEFT_ALT) || queue.keyDown(GLFW_KEY_RIGHT_ALT);
+    io.KeySuper = queue.keyDown(GLFW_KEY_LEFT_SUPER) || queue.keyDown(GLFW_KEY_RIGHT_SUPER);
+    for (const unsigned c : queue.chars()) io.AddInputCharacter(c);
 }
 
 void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
     if (action == GLFW_REPEAT) return;
-    if (action == GLFW_PRESS) stateOf(w)->keyPresses.push_back({key, mods});
+    stateOf(w)->input.push({InputEvent::Kind::Key, 0.0, 0.0, key, action == GLFW_PRESS, mods});
     FlyKey fly = kFlyKeys;
     switch (key) {
         case GLFW_KEY_D: fly = FlyRight; break;
@@ -318,6 +343,7 @@ int runEditor(const EditorOptions& o) {
     applyEditorStyle(xscale);
     io.FontGlobalScale = xscale;
     ImGui_ImplGlfw_InitForOpenGL(window, true);
+    glfwSetCharCallback(window, onChar);
     ImGui_ImplOpenGL3_Init("#version 450 core");
 
     int status = 0;
@@ -360,10 +386,8 @@ int runEditor(const EditorOptions& o) {
             // Idle when the image is converged and nothing happens: no busy loop on a laptop.
             const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
             const bool compiling = !s.doc.plane && viewport->stats().compiling;
-            const bool busy =
-                o.frames > 0 || !settled || compiling || exportActive(s.exportJob) || ImGui::IsAnyMouseDown();
-            s.keyPresses.clear();
-            s.pointerEvents.clear();
+            const bool busy = o.frames > 0 || !settled || compiling || exportActive(s.exportJob) ||
+                              ImGui::IsAnyMouseDown() || s.input.pending();
             if (busy)
                 glfwPollEvents();
             else
@@ -378,6 +402,7 @@ int runEditor(const EditorOptions& o) {
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
+            takeFrameInput(window, s);
             ImGui::NewFrame();
             s.paramWidgets.clear();
             handleTimelineShortcuts(s);

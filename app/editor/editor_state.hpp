@@ -2,7 +2,9 @@
 // by reference. Nothing lives in function statics, so two editors (or a test) never share state.
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "app/editor/export_job.hpp"
 #include "app/editor/file_browser.hpp"
 #include "app/editor/formula_edits.hpp"
+#include "app/editor/imgui_input.hpp"
 #include "app/editor/lights_edits.hpp"
 #include "app/editor/param_widgets.hpp"
 #include "app/editor/pointer_input.hpp"
@@ -48,9 +51,10 @@ struct Layout {
     float leftWidth = 360.0f;      // the side column
     float formulaHeight = 500.0f;  // the Formula panel's share of the column, from its top
     float viewportX = 0, viewportY = 0, viewportW = 1, viewportH = 1;  // in window coordinates
-    // The Render tab's render-mode combo as last drawn (x, y, w, h in window coordinates; 0 size:
-    // never drawn), for tests that click it (the state file).
-    float renderModeCombo[4] = {0, 0, 0, 0};
+    // Widgets as last drawn, by name ("tab:Render", "button:Store 1", "Render mode"): x, y, w, h
+    // in window coordinates, for tests that click them (the state file).
+    std::map<std::string, std::array<float, 4>> widgetRects;
+    std::string sceneTab;  // the Scene panel's tab in front
 };
 
 // The editor window's place on the screen, remembered between runs (panel_ini.cpp); 0 size: unknown.
@@ -152,6 +156,7 @@ struct EditorState {
     std::vector<ViewportClick> viewportClicks;   // clicks on the 3D viewport this frame
     FlyKeys flyKeys;                             // fly keys, from key events
     std::vector<KeyPress> keyPresses;            // key presses since the last frame (shortcuts)
+    InputQueue input;                            // window events not yet handed to a frame, in order
     TimelineState timeline;                      // the animation's current frame, playback, selection
     ParamWidgetsShown paramWidgets;              // the parameter widgets drawn this frame (state file)
     LightsPanel lights;                          // the Lights tab's selection, typed map path, focus pick

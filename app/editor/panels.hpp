@@ -46,5 +46,7 @@ void drawCustomBlockEditor(EditorState& s, const std::string& compileError);   /
 void drawShortcutHelp(EditorState& s);  // help_window.cpp
 
 void applyEditorStyle(float scale);  // style.cpp
+// Records the last item's rectangle under `name` in layout.widgetRects (sidebar.cpp).
+void noteWidgetRect(Layout& layout, const std::string& name);
 
 }  // namespace fraktal::editor

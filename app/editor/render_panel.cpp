@@ -58,11 +58,7 @@ void drawViewportSection(ViewSettings& v, Layout& layout) {
     sectionHeader("Viewport");
     int mode = v.pathTraceAtRest ? 1 : 0;
     if (ImGui::Combo("Render mode", &mode, "Fast\0Path traced at rest\0")) v.pathTraceAtRest = mode == 1;
-    const ImVec2 lo = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-    layout.renderModeCombo[0] = lo.x;
-    layout.renderModeCombo[1] = lo.y;
-    layout.renderModeCombo[2] = size.x;
-    layout.renderModeCombo[3] = size.y;
+    noteWidgetRect(layout, "Render mode");
     helpMarker(
         "Fast: the real-time renderer, always. Path traced at rest: the fast renderer while the camera or a "
         "parameter moves; once the view rests the viewport path-traces it at full resolution with the "

@@ -53,6 +53,11 @@ void beginSideColumnWindow(EditorState& s, const char* name, bool* open, bool to
     }
 }
 
+void noteWidgetRect(Layout& layout, const std::string& name) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    layout.widgetRects[name] = {lo.x, lo.y, size.x, size.y};
+}
+
 void drawSidebar(EditorState& s) {
     if (!sideColumnShows(s.panels, false)) return;
     beginSideColumnWindow(s, "Scene", &s.panels.sidebar, false);
@@ -69,7 +74,10 @@ void drawSidebar(EditorState& s) {
                          {"Presets", drawPresetsTab}};
     if (ImGui::BeginTabBar(s.doc.plane ? "plane_tabs" : "scene_tabs")) {
         for (const auto& [name, draw] : s.doc.plane ? std::span<const Tab>(plane) : std::span<const Tab>(scene)) {
-            if (!ImGui::BeginTabItem(name, nullptr, selectIf(s, name))) continue;
+            const bool shown = ImGui::BeginTabItem(name, nullptr, selectIf(s, name));
+            noteWidgetRect(s.layout, std::string("tab:") + name);
+            if (!shown) continue;
+            s.layout.sceneTab = name;
             draw(s);
             ImGui::EndTabItem();
         }

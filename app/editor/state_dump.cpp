@@ -38,6 +38,10 @@ json lightsJson(const Lighting& l, const LightsPanel& p) {
 std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
                       const ViewportStats* viewport) {
     const Camera& c = s.doc.preset.camera;
+    const auto widgetRect = [](const Layout& l, const std::string& name) {
+        const auto at = l.widgetRects.find(name);
+        return at == l.widgetRects.end() ? std::array<float, 4>{} : at->second;
+    };
     json j;
     j["frame"] = frame;
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},
@@ -82,9 +86,11 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                                {"showing", viewport->pathTracing ? "path" : "fast"},
                                {"pathSpp", viewport->pathTracing ? viewport->pathSamples : 0},
                                {"pathSppCap", s.doc.view.pathSppCap},
-                               {"modeCombo",
-                                {s.layout.renderModeCombo[0], s.layout.renderModeCombo[1], s.layout.renderModeCombo[2],
-                                 s.layout.renderModeCombo[3]}}};
+                               {"modeCombo", widgetRect(s.layout, "Render mode")}};
+    j["sceneTab"] = s.layout.sceneTab;
+    // Window events queued for later frames (imgui_input.hpp): tests wait until none are.
+    j["inputPending"] = s.input.pendingCount();
+    j["widgets"] = s.layout.widgetRects;
     j["timeline"] = timelineJson(s.timeline);
     j["selectedNode"] = s.selectedNode;
     // The step factor the check measured after the last structure change (AutoStepFactor).
