@@ -115,7 +115,7 @@ struct BlockDescOf {
     // A gradient twin names the estimator whose orbit value it differentiates (the same
     // parameters), so that the check measures the two side by side; it reads P4::orbitGradient,
     // for which the formula runs four more orbits per estimate.
-    std::string_view gradientOf;
+    std::string_view gradientOf{};
     bool usesOrbitGradient() const { return !gradientOf.empty(); }
     // Orbits evaluated per estimate (1, or 5 with the orbit gradient): the check weighs an
     // estimator's speed by it.
@@ -188,7 +188,12 @@ consteval int declaredParamIndex(std::string_view name) {
 template <class Desc, class B>
 requires StepBlockFor<B, Desc> || EstimatorBlockFor<B, Desc>
 constexpr Desc describeAs() {
-    Desc d{B::id, B::label, B::help, B::category, std::span<const ParamDecl>(B::params), B::glsl};
+    Desc d{.id = B::id,
+           .label = B::label,
+           .help = B::help,
+           .category = B::category,
+           .params = std::span<const ParamDecl>(B::params),
+           .glsl = B::glsl};
     if constexpr (EstimatorBlockFor<B, Desc>) {
         static_assert(B::category == Category::Estimator, "an estimator block must say so");
         d.estimate = &B::estimate;

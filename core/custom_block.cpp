@@ -95,7 +95,12 @@ std::string CustomBlock::validate(const Definition& d) {
 
 CustomBlock::CustomBlock(Definition d) : def_(std::move(d)) {
     for (const auto& p : def_.params) decls_.push_back(ParamDecl{p.name, p.type, p.defaultValue, p.min, p.max, p.help});
-    desc_ = BlockDesc{def_.id, def_.label.empty() ? def_.id : def_.label, def_.help, def_.category, decls_, def_.glsl};
+    desc_ = BlockDesc{.id = def_.id,
+                      .label = def_.label.empty() ? def_.id : def_.label,
+                      .help = def_.help,
+                      .category = def_.category,
+                      .params = decls_,
+                      .glsl = def_.glsl};
     desc_.membership = def_.membership;
     desc_.custom = true;
 }

@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh
+scripts/build.sh fraktal  # the program alone: scripts/test.sh builds the tests
 preset="${1:-presets/mandelbulb.json}"
 if [ -n "${DISPLAY:-}" ]; then
   exec ./build/app/fraktal edit "$preset"

@@ -209,8 +209,9 @@ TEST(Animation, TogglesStepAtTheirKeysUnderEveryInterpolation) {
             EXPECT_GT(mid, 0.0) << int(how);
             EXPECT_LT(mid, 1.0) << int(how);
         }
-        if (how == Interpolation::Linear)
+        if (how == Interpolation::Linear) {
             EXPECT_DOUBLE_EQ(presetAtFrame(p, 0.5).formula.nodes[1].values[weight].x, 0.5);
+        }
     }
     // The closing estimator's toggle, which a file lists as the last node.
     const Preset e = parsePreset(R"({"format": "fraktal-preset", "version": 3,

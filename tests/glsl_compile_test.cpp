@@ -51,8 +51,13 @@ Formula withOneBlock(const BlockDesc& b) {
 // A block with a GLSL error on its second line, to see the error routed to its node.
 constexpr std::array<ParamDecl, 1> kBrokenParams{ParamDecl{"amount", ParamType::Float, {1, 0, 0}, 0, 2, "test"}};
 void brokenApply(P4&, const vec3&, Args) {}
-const BlockDesc kBroken{"broken_block", "Broken", "test", Category::Fold, kBrokenParams,
-                        "\n    p.xyz *= amount;\n    p.xyz += no_such_variable;\n", &brokenApply};
+const BlockDesc kBroken{.id = "broken_block",
+                        .label = "Broken",
+                        .help = "test",
+                        .category = Category::Fold,
+                        .params = kBrokenParams,
+                        .glsl = "\n    p.xyz *= amount;\n    p.xyz += no_such_variable;\n",
+                        .apply = &brokenApply};
 
 }  // namespace
 

@@ -110,7 +110,9 @@ TEST(PlaneDeepZoom, StructureSurvivesAtViewWidth1e12WithFp64) {
         for (int x = 0; x < 64; x += 7) {
             const PlaneEvaluation e =
                 evaluatePlane(p.formula, planePixelPosition(deep, 64, 64, x, y, planeSampleOffset(0)));
-            if (!e.inside) EXPECT_NEAR(fp64.meanIterations(x, y), e.smoothIterations, 0.05) << x << "," << y;
+            if (!e.inside) {
+                EXPECT_NEAR(fp64.meanIterations(x, y), e.smoothIterations, 0.05) << x << "," << y;
+            }
         }
 }
 
@@ -223,7 +225,9 @@ TEST(PlaneViewGl, PassesInBandsGiveTheSameImage) {
         const int before = banded.samples();
         ASSERT_TRUE(banded.update(w, h, 5));
         EXPECT_LE(banded.lastPixelSamples(), 5.0 * w * 8) << "at most 5 rows of one pass";
-        if (++calls % 4 != 0) EXPECT_EQ(banded.samples(), before) << "17 rows take 4 bands of 5";
+        if (++calls % 4 != 0) {
+            EXPECT_EQ(banded.samples(), before) << "17 rows take 4 bands of 5";
+        }
         ASSERT_LT(calls, 100);
     }
     EXPECT_EQ(banded.samples(), 7);

@@ -81,7 +81,9 @@ TEST(PlaneKoch, AreaMatchesClosedFormAtEachDepthAndConvergesToEightFifths) {
         if (n == 0 || n == 1 || n == 3 || n == 7) {
             const double area = areaInside(p.formula, real2(-1.2, -1.2), real2(1.2, 1.2), 600, 11);
             EXPECT_NEAR(area / closedForm, 1.0, 0.005) << "depth " << n;
-            if (n == 7) EXPECT_NEAR(area / a0, 8.0 / 5.0, 0.01);
+            if (n == 7) {
+                EXPECT_NEAR(area / a0, 8.0 / 5.0, 0.01);
+            }
         }
         closedForm += a0 / 3.0 * std::pow(4.0 / 9.0, n);
     }

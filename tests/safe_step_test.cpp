@@ -595,7 +595,9 @@ TEST(SafeStep, BulbPresetsShipWithAMeasuredFactorOfAtLeast08) {
                              "mandelbulb_sine.json", "mandelbulb_cosine.json", "bristorbrot.json"}) {
         const Preset p = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/" + name);
         const Formula& f = p.formula;
-        if (std::string(name) == "mandelbulb.json") EXPECT_EQ(f.iterations, 12);
+        if (std::string(name) == "mandelbulb.json") {
+            EXPECT_EQ(f.iterations, 12);
+        }
         CpuSampler sampler(f);
         SafeStepOptions check;
         check.rays.stepsAcrossBound = 4000;  // `fraktal check`'s default --steps

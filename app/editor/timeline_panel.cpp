@@ -269,7 +269,7 @@ void scrubBar(EditorState& s) {
         const bool overTracks = ImGui::IsWindowHovered() && mouse.y >= origin.y && mouse.y < barMax.y;
         if (overTracks && ImGui::GetIO().MouseWheel != 0.0f)
             t.firstRow = std::clamp(t.firstRow - int(std::lround(ImGui::GetIO().MouseWheel)), 0, trackCount - rows);
-        char shown[64];
+        char shown[96];
         std::snprintf(shown, sizeof shown, "tracks %d-%d of %d (mouse wheel scrolls)", t.firstRow + 1,
                       t.firstRow + rows, trackCount);
         dl->AddText(ImVec2(origin.x, barMax.y), IM_COL32(150, 150, 150, 255), shown);
