@@ -55,8 +55,15 @@ echo "drop menger.exr: $(q .status.text)"
     fail "the dropped EXR's formula is not the Menger sponge's: $(q '.document.formula.nodes | map(.block) | join(" ")')"
 [ "$(q .undoDepth)" = 0 ] || fail "opening the EXR left $(q .undoDepth) undo steps"
 
-# type_into_browser TEXT: typed into the browser's path field (it has the keys), then Enter.
-type_into_browser() { xdotool type --delay 20 "$1"; wait_frames 1; xdotool key Return; wait_frames 3; }
+# type_into_browser TEXT: typed into the browser's path field once it has the keys (a new folder's
+# field takes them a frame or two after the Enter that went there), then Enter.
+type_into_browser() {
+    wait_for .fileBrowser.fieldActive true
+    xdotool type --delay 20 "$1"
+    wait_frames 1
+    xdotool key Return
+    wait_frames 3
+}
 to 800 400
 xdotool key ctrl+o
 wait_frames 3
@@ -65,7 +72,7 @@ type_into_browser "$presets/"
 [ "$(q .fileBrowser.folder)" = "$presets" ] ||
     fail "typing a folder and Enter did not go into it: $(q .fileBrowser.folder)"
 type_into_browser kifs_icosahedral.json
-[ "$(q .fileBrowser.shown)" = false ] || fail "Enter on a preset's name left the browser open"
+[ "$(q .fileBrowser.shown)" = false ] || fail "Enter on a preset's name left the browser open (field: $(q .fileBrowser.name), error: $(q .fileBrowser.error))"
 [ "$(q '.document.formula.nodes | map(.block) | join(" ")')" = "$(jq -r '.formula.nodes | map(.block) | join(" ")' "$presets/kifs_icosahedral.json")" ] ||
     fail "the browser did not open kifs_icosahedral.json: $(q .status.text)"
 echo "browser: $(q .status.text)"

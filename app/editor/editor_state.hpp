@@ -80,6 +80,7 @@ struct FileBrowser {
     std::vector<BrowserEntry> entries;
     bool listed = false;            // `entries` are those of `folder` under `filter`
     bool focusField = false;        // the path field takes the keys on the next frame
+    bool fieldActive = false;       // the path field has the keys (typing goes into it)
     std::string error;              // the folder cannot be read, or the chosen file cannot be opened
     std::filesystem::path replace;  // Save As: the existing file the user is asked about
 };

@@ -149,6 +149,7 @@ std::optional<fs::path> fileBrowser(FileBrowser& b, const char* id, const std::v
     // A field per folder: going into a folder starts an empty one (an active field keeps its text).
     ImGui::PushID(b.folder.c_str());
     ImGui::InputTextWithHint("##path", b.saving ? "file name or path" : "file name, path or folder", &b.name);
+    b.fieldActive = ImGui::IsItemActive();
     ImGui::PopID();
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
@@ -212,6 +213,7 @@ std::optional<fs::path> fileBrowser(FileBrowser& b, const char* id, const std::v
 void drawFileDialogs(EditorState& s) {
     Dialogs& d = s.dialogs;
     d.browser.shown = false;
+    d.browser.fieldActive = false;
     if (d.openPath) {
         startBrowser(s, false, fs::path(FRAKTAL_SOURCE_DIR) / "presets");
         ImGui::OpenPopup("Open");

@@ -69,6 +69,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     json folders = json::array();
     for (const auto& f : recentFolders(s.file.recent)) folders.push_back(f.string());
     j["fileBrowser"] = {{"shown", b.shown},
+                        {"fieldActive", b.fieldActive},
                         {"saving", b.saving},
                         {"folder", b.folder.string()},
                         {"name", b.name},
