@@ -265,6 +265,18 @@ std::string withoutComments(std::string_view source) {
 
 }  // namespace
 
+std::vector<ImageUniform> activeImageUniforms(GLuint program) {
+    std::vector<ImageUniform> images;
+    const GLint count = activeResources(program, GL_UNIFORM);
+    for (GLint i = 0; i < count; ++i) {
+        const GLuint index = GLuint(i);
+        if (!isImageType(GLenum(resourceProperty(program, GL_UNIFORM, index, GL_TYPE)))) continue;
+        images.push_back(
+            {resourceName(program, GL_UNIFORM, index), resourceProperty(program, GL_UNIFORM, index, GL_LOCATION)});
+    }
+    return images;
+}
+
 std::optional<int> sharedMemoryBytes(std::string_view computeSource) {
     const std::string text = withoutComments(computeSource);
     static const std::regex declaration(

@@ -67,6 +67,13 @@ std::vector<std::string> portableLimitViolations(const Program& program, LimitSc
 bool isImageType(GLenum type);
 bool isSamplerType(GLenum type);
 
+// A linked program's active image uniforms, in the order GL lists them.
+struct ImageUniform {
+    std::string name;
+    GLint location;
+};
+std::vector<ImageUniform> activeImageUniforms(GLuint program);
+
 // The bytes of `shared` variables a compute shader's source declares (std430 sizes of scalars,
 // vectors, matrices and their arrays of literal length); nullopt when a declaration is not one
 // of those, so that the caller can refuse what it cannot measure.

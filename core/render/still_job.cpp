@@ -116,7 +116,7 @@ void validateStillJob(const StillJob& job, const ColorPipeline& color) {
         if (free >= 0 && needed > free)
             throw std::runtime_error(
                 job.exr.string() + ": the output may take up to " + gigabytes(needed) +
-                " (uncompressed; compressed, a fractal's EXR is usually about half that) and its folder's disk has " +
+                " (uncompressed; compressed, fractals measured 21-55 % of that) and its folder's disk has " +
                 gigabytes(free) +
                 " free; free some space, write elsewhere, render parts (--part i/n) on several disks, or pass "
                 "--no-disk-check to try anyway");

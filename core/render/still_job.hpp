@@ -64,7 +64,8 @@ long long estimateStillMemoryBytes(const StillJob& job);
 long long availableMemoryBytes();
 // The most disk space the job's EXR (and PNG preview) can take: every channel uncompressed plus
 // the header and the block offsets, which compression only ever reduces (a fractal's EXR came to
-// 40-55 % of it: bench/stills/README.md). Known before anything is rendered.
+// 21-55 % of it: 2048x1152 Mandelbox to 256-row Menger bands, bench/stills/README.md). Known before anything is
+// rendered.
 long long estimateStillDiskBytes(const StillJob& job);
 
 // Checks sizes, outputs and colour settings before any rendering, so that bad input fails fast

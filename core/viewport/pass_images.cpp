@@ -1,7 +1,6 @@
 #include "core/viewport/pass_images.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <iterator>
 #include <stdexcept>
 
@@ -31,18 +30,9 @@ constexpr StateImage kStateImages[] = {
 }  // namespace
 
 PassImages::PassImages(const gl::Program& program) {
-    const GLuint id = program.id();
-    GLint count = 0;
-    glGetProgramInterfaceiv(id, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
-    for (GLint i = 0; i < count; ++i) {
-        const GLenum properties[] = {GL_TYPE, GL_LOCATION};
-        GLint values[2] = {};
-        glGetProgramResourceiv(id, GL_UNIFORM, GLuint(i), 2, properties, 2, nullptr, values);
-        if (!gl::isImageType(GLenum(values[0]))) continue;
-        char name[128] = {};
-        glGetProgramResourceName(id, GL_UNIFORM, GLuint(i), sizeof name, nullptr, name);
+    for (const auto& [name, location] : gl::activeImageUniforms(program.id())) {
         const auto found = std::find_if(std::begin(kStateImages), std::end(kStateImages),
-                                        [&](const StateImage& s) { return std::strcmp(s.uniform, name) == 0; });
+                                        [&](const StateImage& s) { return name == s.uniform; });
         if (found == std::end(kStateImages))
             throw std::runtime_error("viewport pass " + program.name() + ": image uniform " + name +
                                      " is no march-state image (core/viewport/pass_images.cpp)");
@@ -52,7 +42,7 @@ PassImages::PassImages(const gl::Program& program) {
                                      " would take unit " + std::to_string(unit) +
                                      ", and OpenGL 4.5 guarantees units 0-" +
                                      std::to_string(gl::PortableLimits::imageUnits - 1));
-        glProgramUniform1i(id, values[1], unit);
+        glProgramUniform1i(program.id(), location, unit);
         units_.push_back(&*found);
     }
 }
