@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     fraktal::cli::addMergeCommand(app, action);
     fraktal::cli::addEncodeCommand(app, action);
     fraktal::cli::addFarmCommand(app, action);
+    fraktal::cli::addImportCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

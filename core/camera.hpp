@@ -19,13 +19,17 @@ struct Camera {
     vec3 target{0.0};
     vec3 up{0.0, 1.0, 0.0};
     double fovY = 40.0;  // vertical field of view, degrees
+    // The image mirrored top to bottom: the frame's up is reversed (a left-handed frame). Only
+    // pictures from another program need it: Mandelbulber2's legacy_coordinate_system (the v1.x
+    // picture) is the standard one mirrored, which no camera pose reproduces.
+    bool flipVertical = false;
 
     // Camera space: x right, y up, looking down -z (OpenGL convention).
     glm::dmat4 worldFromCamera() const;
     // Direction in world space of the ray through normalised device coordinates (-1..1).
     vec3 rayDirection(double ndcX, double ndcY, double aspect) const;
     // The frame of every ray: rayDirection, the GLSL cameraRay (shaders) and the editor's controls.
-    CameraBasis basis() const { return basisLookingAlong(target - position, up); }
+    CameraBasis basis() const;
     double tanHalfFovY() const;
     // A pixel's footprint per unit distance along the ray, in an image `imageHeight` pixels tall.
     double pixelAngle(double imageHeight) const { return 2.0 * tanHalfFovY() / imageHeight; }

@@ -153,6 +153,7 @@ Camera parseCamera(const ReadContext& context, const json& j, ThinLens& lens) {
     c.target = r.requiredVector<3>("target", -1e4, 1e4);
     c.up = r.vector<3>("up", c.up, -1e4, 1e4);
     c.fovY = r.number("fovY", c.fovY, 1.0, 170.0);
+    c.flipVertical = r.boolean("flipVertical", c.flipVertical);
     if (length(c.target - c.position) < 1e-9) r.fail("position and target coincide");
     if (length(glm::cross(normalize(c.target - c.position), c.up)) < 1e-6)
         r.fail("up is zero or parallel to the viewing direction", "up");
@@ -364,6 +365,7 @@ json presetToJson(const Preset& p) {
     c["target"] = vecJson(p.camera.target);
     if (p.camera.up != camDefaults.up) c["up"] = vecJson(p.camera.up);
     if (p.camera.fovY != camDefaults.fovY) c["fovY"] = p.camera.fovY;
+    if (p.camera.flipVertical) c["flipVertical"] = true;
     j["camera"] = c;
     if (json r = renderJson(p.render); !r.empty()) j["render"] = r;
     if (json c = colorManagementJson(p.render); !c.empty()) j["colorManagement"] = c;

@@ -21,7 +21,7 @@ struct AddC {
         ParamDecl{
             "weight", ParamType::Float, {1.0, 0.0, 0.0}, -2.0, 2.0, "Multiple of c that is added (not in Julia mode)."},
         toggleParam("julia", false, "On: add the fixed constant julia_c (a Julia set); off: add c (Mandelbrot type)."),
-        ParamDecl{"julia_c", ParamType::Vec3, {-0.2, 0.6, 0.2}, -2.0, 2.0, "The constant added in Julia mode."},
+        ParamDecl{"julia_c", ParamType::Vec3, {-0.2, 0.6, 0.2}, -10.0, 10.0, "The constant added in Julia mode."},
     };
 
     static constexpr std::string_view glsl = R"(

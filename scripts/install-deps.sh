@@ -10,6 +10,7 @@ packages=(
   xdotool jq
   ffmpeg slurm-wlm munge
   clang libclang-rt-14-dev
+  mandelbulber2
 )
 missing=()
 for p in "${packages[@]}"; do

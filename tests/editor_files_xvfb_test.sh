@@ -2,7 +2,8 @@
 # Files into the editor, under Xvfb with real keys (xdotool):
 # - drops of a text file, a PNG, a folder and a broken preset each show a message naming the file
 #   and the reason and change nothing (document, undo list, title); a drop of an EXR that fraktal
-#   rendered opens the preset in its header. X test tools cannot drag files, so the drops go
+#   rendered opens the preset in its header, and a drop of a Mandelbulber2 settings file imports it
+#   (naming what it drops). X test tools cannot drag files, so the drops go
 #   through --replay-drops, which hands the listed paths to the window's GLFW drop callback, the
 #   function a real drop calls;
 # - the file browser: Ctrl+O, a folder typed into its path field, then a preset's name, Enter: it
@@ -54,6 +55,24 @@ echo "drop menger.exr: $(q .status.text)"
 [ "$(q '.document.formula.nodes | map(.block) | join(" ")')" = "$(jq -r '.formula.nodes | map(.block) | join(" ")' "$presets/menger.json")" ] ||
     fail "the dropped EXR's formula is not the Menger sponge's: $(q '.document.formula.nodes | map(.block) | join(" ")')"
 [ "$(q .undoDepth)" = 0 ] || fail "opening the EXR left $(q .undoDepth) undo steps"
+
+# A Mandelbulber2 settings file opens by import: the Menger sponge's one block. One that uses what
+# fraktal cannot express opens too, and the status line (an error) names each dropped thing.
+printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 7;\nN 10;\n' >"$home/sponge.fract"
+printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 4;\n' \
+    >"$home/hyper.fract"
+drop "$home/sponge.fract"
+echo "drop sponge.fract: $(q .status.text)"
+[ "$(q .status.error)" = false ] || fail "the Mandelbulber2 file did not open: $(q .status.text)"
+q .status.text | grep -q "Imported sponge.fract" || fail "the status does not say the file was imported: $(q .status.text)"
+[ "$(q '.document.formula.nodes | map(.block) | join(" ")')" = menger_rotate ] ||
+    fail "the imported Menger sponge is not one menger_rotate: $(q '.document.formula.nodes | map(.block) | join(" ")')"
+drop "$home/hyper.fract"
+echo "drop hyper.fract: $(q .status.text)"
+[ "$(q .status.error)" = true ] || fail "a lenient import shows no warning"
+q .status.text | grep -q "slot 2 (hypercomplex)" || fail "the status does not name the dropped slot: $(q .status.text)"
+[ "$(q '.document.formula.nodes | map(.block) | join(" ")')" = "box_fold sphere_fold scale add_c" ] ||
+    fail "the hybrid's Mandelbox part did not open: $(q '.document.formula.nodes | map(.block) | join(" ")')"
 
 # type_into_browser TEXT: typed into the browser's path field once it has the keys (a new folder's
 # field takes them a frame or two after the Enter that went there), then Enter.

@@ -6,6 +6,7 @@
 #include <optional>
 #include <random>
 
+#include "app/editor/scene_import.hpp"
 #include "cli/commands.hpp"
 #include "core/de_check.hpp"
 #include "core/gl/context.hpp"
@@ -32,7 +33,7 @@ struct CheckOptions {
 
 // The preset as checked: the file's, or its animation's frame `o.frame`.
 Preset checkedPreset(const CheckOptions& o) {
-    Preset preset = loadPreset(o.preset);
+    Preset preset = editor::loadSceneFile(o.preset);
     if (!o.frame) return preset;
     const Animation& a = preset.animation;
     if (a.empty())

@@ -18,5 +18,6 @@ void addBenchViewportCommand(CLI::App& app, Action& action);
 void addMergeCommand(CLI::App& app, Action& action);
 void addEncodeCommand(CLI::App& app, Action& action);
 void addFarmCommand(CLI::App& app, Action& action);
+void addImportCommand(CLI::App& app, Action& action);
 
 }  // namespace fraktal::cli

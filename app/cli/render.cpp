@@ -7,6 +7,7 @@
 #include <memory>
 #include <regex>
 
+#include "app/editor/scene_import.hpp"
 #include "cli/cancel.hpp"
 #include "cli/commands.hpp"
 #include "cli/plane_render.hpp"
@@ -60,7 +61,7 @@ Preset loadInput(const std::string& input) {
         if (!std::filesystem::is_regular_file(input, ec)) throw PresetError(input, "", "no such file");
         return parsePreset(readExrPreset(input), input + " (embedded preset)");
     }
-    return loadPreset(input);
+    return editor::loadSceneFile(input);
 }
 
 // A 2D preset (presets/2d) or a 2D still's EXR (its embedded 2D preset); nullopt for 3D input.
@@ -241,7 +242,7 @@ int runRender(RenderOptions o) {
 void addRenderCommand(CLI::App& app, Action& action) {
     auto o = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render a print-quality still to EXR (and a PNG preview)");
-    cmd->add_option("preset", o->input, "Preset (JSON), or an EXR written by fraktal (its embedded preset)")
+    cmd->add_option("preset", o->input, "Preset (JSON), an EXR written by fraktal (its embedded preset), or a Mandelbulber2 settings file (.fract, imported)")
         ->required();
     cmd->add_option("-o,--output", o->output, "Output EXR (scene-linear, with AOVs)")->required();
     cmd->add_option("--png", o->png, "Also write a PNG through the OCIO display/view transform");

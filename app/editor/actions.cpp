@@ -9,6 +9,7 @@
 
 #include "app/editor/plane_edits.hpp"
 #include "app/editor/preset_files.hpp"
+#include "app/editor/scene_import.hpp"
 #include "core/image/atomic_file.hpp"
 #include "core/plane/plane_still.hpp"
 #include "core/preset.hpp"
@@ -125,6 +126,8 @@ Document loadDocument(const fs::path& file) {
         if (!fs::is_regular_file(file, ec)) throw PresetError(file.string(), "", "no such file");
         d.plane = planePresetFromExr(file);
         if (!d.plane) d.preset = presetFromExr(file);
+    } else if (isImportedSceneFile(file)) {
+        d.preset = importSceneFile(file, {.lenient = true}).preset;
     } else if (isPlanePresetFile(file)) {
         d.plane = loadPlanePreset(file);
     } else {
@@ -134,8 +137,30 @@ Document loadDocument(const fs::path& file) {
     return d;
 }
 
+// A Mandelbulber2 file opens as a new, unsaved preset (Save asks where: never over the .fract),
+// and the status line lists what fraktal could not express or only approximates.
+bool openImportedScene(EditorState& s, const fs::path& file) {
+    ImportedScene scene = importSceneFile(file, {.lenient = true});
+    Document d;
+    d.preset = std::move(scene.preset);
+    adoptDocument(s, std::move(d), fs::path());
+    rememberRecent(s, file);
+    std::string status = "Imported " + file.filename().string() + " (Mandelbulber2)";
+    if (!scene.unsupported.empty()) {
+        status += ". Dropped, fraktal cannot express it:";
+        for (const std::string& item : scene.unsupported) status += "\n  " + item;
+    }
+    if (!scene.approximated.empty()) {
+        status += scene.unsupported.empty() ? ". Approximated:" : "\nApproximated:";
+        for (const std::string& item : scene.approximated) status += "\n  " + item;
+    }
+    setStatus(s, status, !scene.unsupported.empty());
+    return true;
+}
+
 bool openDocument(EditorState& s, const fs::path& file) {
     try {
+        if (isImportedSceneFile(file)) return openImportedScene(s, file);
         Document d = loadDocument(file);
         const bool exr = isExr(file);
         // An EXR is an image, not a scene file: "Save" must ask where to put the preset.
@@ -155,8 +180,9 @@ void openDropped(EditorState& s, const fs::path& file) {
         if (fs::is_directory(file, ec)) throw std::runtime_error("it is a folder");
         std::string ext = file.extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        if (ext != ".json" && ext != ".exr")
-            throw std::runtime_error("it is neither a preset (.json) nor an EXR that fraktal wrote");
+        if (ext != ".json" && ext != ".exr" && ext != ".fract")
+            throw std::runtime_error(
+                "it is neither a preset (.json), an EXR that fraktal wrote, nor a Mandelbulber2 file (.fract)");
         loadDocument(file);  // the reason it cannot be opened, before asking about unsaved changes
     } catch (const std::exception& e) {
         setStatus(s, "Not opened: the dropped file " + file.filename().string() + ": " + e.what(), true);

@@ -54,7 +54,9 @@ std::vector<BrowserEntry> listFolder(const fs::path& folder, BrowserFilter filte
         e.folder = it->is_directory(ec);
         if (!e.folder) {
             const std::string ext = lower(it->path().extension().string());
-            const bool preset = ext == ".json", exr = ext == ".exr";
+            const bool exr = ext == ".exr";
+            // A Mandelbulber2 settings file opens by import (app/editor/scene_import.hpp).
+            const bool preset = ext == ".json" || (filter == BrowserFilter::PresetsAndExrs && ext == ".fract");
             if (filter == BrowserFilter::Presets && !preset) continue;
             if (filter == BrowserFilter::PresetsAndExrs && !preset && !exr) continue;
             if (filter == BrowserFilter::EnvironmentMaps) {

@@ -1,0 +1,54 @@
+// `fraktal import FILE.fract [-o PRESET.json] [--lenient]`: a Mandelbulber2 settings file as a
+// fraktal preset (app/editor/scene_import.hpp). A file that uses what fraktal cannot express is
+// refused, each such thing named with its slot, and nothing is written; --lenient writes the
+// preset anyway and lists what was dropped in its description.
+#include <cstdio>
+#include <memory>
+
+#include "app/editor/scene_import.hpp"
+#include "cli/commands.hpp"
+
+namespace fraktal::cli {
+
+namespace {
+struct ImportArgs {
+    std::string input;
+    std::string output;
+    bool lenient = false;
+    bool quiet = false;
+};
+}  // namespace
+
+void addImportCommand(CLI::App& app, Action& action) {
+    auto a = std::make_shared<ImportArgs>();
+    CLI::App* cmd = app.add_subcommand("import", "Convert a Mandelbulber2 settings file (.fract) to a fraktal preset");
+    cmd->add_option("file", a->input, "Mandelbulber2 settings file (v2 format)")->required();
+    cmd->add_option("-o,--output", a->output, "Preset to write (default: the file's name with .json, here)");
+    cmd->add_flag("--lenient", a->lenient,
+                  "Write the preset even where fraktal cannot express part of the file (listed in its description)");
+    cmd->add_flag("-q,--quiet", a->quiet, "Print only errors");
+    cmd->callback([&action, a] {
+        action = [a] {
+            std::error_code ec;
+            if (!std::filesystem::is_regular_file(a->input, ec)) throw PresetError(a->input, "", "no such file");
+            if (!editor::isImportedSceneFile(a->input))
+                throw PresetError(a->input, "", "not a Mandelbulber2 settings file (expected the extension .fract)");
+            const editor::ImportedScene scene = editor::importSceneFile(a->input, {.lenient = a->lenient});
+            const std::filesystem::path output = a->output.empty()
+                                                     ? std::filesystem::path(a->input).stem().concat(".json")
+                                                     : std::filesystem::path(a->output);
+            savePresetFile(output, scene.preset);
+            if (!a->quiet) {
+                const Formula& f = scene.preset.formula;
+                std::printf("%s: %zu nodes, %s, %d iterations, bailout %g, bound %.3g, step factor %.3f\n",
+                            output.string().c_str(), f.nodes.size(), std::string(f.estimator.block->id).c_str(),
+                            f.iterations, f.bailout, f.boundRadius, f.deFactor);
+                for (const std::string& item : scene.unsupported) std::printf("  dropped: %s\n", item.c_str());
+                for (const std::string& item : scene.approximated) std::printf("  approximated: %s\n", item.c_str());
+            }
+            return 0;
+        };
+    });
+}
+
+}  // namespace fraktal::cli

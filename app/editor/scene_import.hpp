@@ -1,0 +1,40 @@
+// Opening another program's scene file as a fraktal preset: a Mandelbulber2 .fract file through
+// core/import (the mapping), then what follows any structure change here: the bound fitted to the
+// object and the safe step measured. The command line (`fraktal import`, `fraktal render
+// FILE.fract`) and the editor (File > Open, a dropped file) share it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/preset.hpp"
+
+namespace fraktal::editor {
+
+struct SceneImportOptions {
+    // Write the preset although the file uses what fraktal cannot express (listed in its
+    // description); otherwise such a file is refused.
+    bool lenient = false;
+    // Fit the bound and measure the safe step factor (CPU; about a second).
+    bool measure = true;
+};
+
+struct ImportedScene {
+    Preset preset;
+    std::vector<std::string> unsupported;   // "slot 2 (mandelbulb_power2): ..." (lenient only)
+    std::vector<std::string> approximated;  // what only looks different
+};
+
+// Whether the file is opened by import rather than as a preset (by its extension: .fract).
+bool isImportedSceneFile(const std::filesystem::path& path);
+
+// Throws PresetError: for a file it cannot read, and (unless lenient) for a file that uses what
+// fraktal cannot express, listing every such thing with its slot.
+ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImportOptions& options = {});
+
+// A preset or an imported scene: what `fraktal render` and `fraktal check` open. Imports are
+// strict here (no --lenient).
+Preset loadSceneFile(const std::filesystem::path& path);
+
+}  // namespace fraktal::editor

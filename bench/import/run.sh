@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Mandelbulber2's own example library through `fraktal import`, proved against Mandelbulber2:
+# every example (examples/, its five artist collections) and the toolbar's one-click presets is
+# imported (strictly: a file that uses what fraktal cannot express is refused, by reason), and
+# every imported one is rendered by both programs at the same small size; the silhouettes are
+# scored by the intersection over union of the two hit masks (fraktal's alpha, Mandelbulber2's
+# 16-bit PNG alpha; legacy-coordinate files are flipped by the imported camera).
+# Usage: bench/import/run.sh [FRAKTAL] [SIZE] [OUT]   (defaults: build/app/fraktal, 160x120,
+# bench/import/out). Writes OUT/results.tsv (one row per file), OUT/summary.md (the tables of
+# bench/import/README.md) and OUT/worst.png (a contact sheet of the worst matches: fraktal's
+# mask, Mandelbulber2's, both overlaid; yellow both, red fraktal only, green Mandelbulber2 only).
+# Needs mandelbulber2 (scripts/install-deps.sh installs it).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+fraktal=$(realpath "${1:-$root/build/app/fraktal}")
+size=${2:-160x120}
+out=$(realpath -m "${3:-$root/bench/import/out}")
+share=/usr/share/mandelbulber2
+mkdir -p "$out/img"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+g++ -O2 -std=c++20 -I/usr/include/stb "$root/bench/import/silhouette_iou.cpp" \
+  $(pkg-config --cflags --libs OpenEXR) -lstb -o "$tmp/iou"
+
+collection() {  # the collection's short name, as the reference's T8 writes it
+  case "$1" in
+    "$share/toolbar"*) echo toolbar ;;
+    *Krzysztof*) echo KM ;; *Graeme*) echo GM ;; *Robert*) echo RP ;; *Sebastian*) echo SJ ;; *Daniel*) echo DL ;;
+    *) echo root ;;
+  esac
+}
+# mandelbulber2 renders the file as it is but without depth of field: its blur (Monte Carlo DOF
+# takes minutes a file) is no part of the shape, and fraktal's fast still has none.
+peerSettings() {  # FILE OUT
+  sed '/^DOF_enabled /d; /^DOF_monte_carlo /d' "$1" | sed '/^\[main_parameters\]/a DOF_enabled false;\nDOF_monte_carlo false;' > "$2"
+}
+expressible() { grep -qxF "$1 / $2" "$root/bench/import/expressible.txt"; }
+
+printf 'collection\tfile\texpressible\tstatus\treason\tiou\tfraktal_px\tmb2_px\timport_s\n' > "$out/results.tsv"
+n=0
+while IFS= read -r -d "" -u 3 file; do
+  n=$((n + 1))
+  c=$(collection "$file")
+  name=$(basename "$file" .fract)
+  key=$(printf '%s' "$c-$name" | tr -c 'A-Za-z0-9_.-' '_')
+  exp=no
+  expressible "$c" "$name" && exp=yes
+  start=$(date +%s.%N)
+  if "$fraktal" import "$file" -o "$tmp/$key.json" -q > "$tmp/import.log" 2>&1; then
+    took=$(echo "$(date +%s.%N) - $start" | bc -l | xargs printf %.2f)
+    if timeout 300 "$fraktal" render "$tmp/$key.json" --size "$size" --spp 1 -o "$out/img/$key.exr" -q \
+        > "$tmp/render.log" 2>&1 &&
+      peerSettings "$file" "$tmp/peer.fract" &&
+      HOME="$tmp" QT_QPA_PLATFORM=offscreen timeout 300 mandelbulber2 -n -f png16alpha -r "$size" \
+        -o "$out/img/mb_$key" "$tmp/peer.fract" > "$tmp/mb.log" 2>&1 && [ -f "$out/img/mb_$key.png" ]; then
+      read -r iou fpx mpx < <("$tmp/iou" "$out/img/$key.exr" "$out/img/mb_$key.png")
+      status=imported
+      awk -v i="$iou" 'BEGIN { exit !(i >= 0.9) }' && status=matching
+      printf '%s\t%s\t%s\t%s\t\t%s\t%s\t%s\t%s\n' "$c" "$name" "$exp" "$status" "$iou" "$fpx" "$mpx" "$took" >> "$out/results.tsv"
+    else
+      printf '%s\t%s\t%s\trender-failed\t%s\t\t\t\t%s\n' "$c" "$name" "$exp" \
+        "$(tail -1 "$tmp/render.log" "$tmp/mb.log" 2>/dev/null | tr '\t\n' '  ' | cut -c1-200)" "$took" >> "$out/results.tsv"
+    fi
+  else
+    # The first thing the import named, reduced to its reason: "the formula X ...", "phase offsets ...".
+    reason=$( (grep -m1 '^  ' "$tmp/import.log" || true) | sed -E 's/^  [^:]*\): //; s/^  [a-z]+: //' |
+      sed -E 's/^the formula ([a-z0-9_]+) \(id [0-9]+\) has no fraktal blocks yet/formula \1 (no blocks yet)/;
+              s/^[A-Za-z0-9_.\/]+ [^:]*: //' | cut -c1-120)
+    status=refused
+    if [ -z "$reason" ]; then  # not refused for what it uses: an error reading it
+      status=error
+      reason=$(tail -1 "$tmp/import.log" | sed 's/^fraktal: error: //' | cut -c1-160)
+    fi
+    printf '%s\t%s\t%s\t%s\t%s\t\t\t\t\n' "$c" "$name" "$exp" "$status" "$reason" >> "$out/results.tsv"
+  fi
+  [ $((n % 25)) -eq 0 ] && echo "$n files" >&2
+done 3< <(find "$share/toolbar" "$share/examples" -name "*.fract" -print0 | sort -z)
+
+python3 "$root/bench/import/summarize.py" "$out/results.tsv" "$(( ${size%x*} * ${size#*x} ))" > "$out/summary.md"
+# The contact sheet: the 12 worst imported matches.
+mapfile -t worst < <(awk -F'\t' 'NR > 1 && $6 != "" { print $6 "\t" $1 "-" $2 }' "$out/results.tsv" | sort -g | head -12 |
+  cut -f2 | tr -c 'A-Za-z0-9_.\n-' '_')
+args=()
+for k in "${worst[@]}"; do args+=("$out/img/$k.exr" "$out/img/mb_$k.png"); done
+[ ${#args[@]} -gt 0 ] && "$tmp/iou" --sheet "$out/worst.png" "${args[@]}"
+cat "$out/summary.md"

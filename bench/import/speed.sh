@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# Speed on imported scenes: fraktal's still of each imported Mandelbulber2 example against
+# mandelbulber2's own, at equal coverage error (the method of bench/stills/equal_quality.sh: each
+# program scored by the RMSE of its coverage against its own converged coverage, and for each
+# mandelbulber2 setting the fastest fraktal setting with at most its error).
+# Usage: bench/import/speed.sh RESULTS.tsv [COUNT] [WxH] [FRAKTAL]   (defaults: 12 scenes, 1280x720,
+# build/app/fraktal). RESULTS.tsv is bench/import/run.sh's; the scenes are COUNT of its matching
+# imports, spread evenly over its list, and they always include every one whose object does not fill
+# the view. Environment: FRAKTAL_SPP (default "1 2 4"), PEER_AA (default "1 2"), TRUTH_AA (default 3:
+# both truths take 9 samples per pixel).
+set -euo pipefail
+results=$1; count=${2:-12}; size=${3:-1280x720}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+fraktal=$(realpath "${4:-$root/build/app/fraktal}")
+read -r -a fraktalSpp <<< "${FRAKTAL_SPP:-1 2 4}"
+read -r -a peerAa <<< "${PEER_AA:-1 2}"
+truthAa=${TRUTH_AA:-3}
+share=/usr/share/mandelbulber2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+g++ -O2 -std=c++20 -I"$root" -I/usr/include/stb "$root/bench/stills/coverage_error.cpp" \
+  $(pkg-config --cflags --libs OpenEXR) -lstb -o "$tmp/coverage_error"
+now() { date +%s.%N; }
+seconds() { echo "$2 - $1" | bc -l | xargs printf %.2f; }
+pixels=$(( 160 * 120 ))
+# collection / file of the matching imports: the partial views first, then the rest evenly spaced.
+mapfile -t partial < <(awk -F'\t' -v full=$pixels '$4 == "matching" && $8 != full { print $1 "\t" $2 }' "$results")
+mapfile -t rest < <(awk -F'\t' -v full=$pixels '$4 == "matching" && $8 == full { print $1 "\t" $2 }' "$results")
+scenes=("${partial[@]}")
+want=$(( count - ${#scenes[@]} ))
+if (( want > 0 && ${#rest[@]} > 0 )); then
+  for ((i = 0; i < want && i < ${#rest[@]}; i++)); do scenes+=("${rest[$(( i * ${#rest[@]} / want ))]}"); done
+fi
+fractOf() {  # the settings file of collection $1, name $2
+  case "$1" in
+    toolbar) echo "$share/toolbar/$2.fract" ;;
+    root) echo "$share/examples/$2.fract" ;;
+    *) find "$share/examples" -path "*$(case "$1" in KM) echo Krzysztof ;; GM) echo Graeme ;; RP) echo Robert ;;
+         SJ) echo Sebastian ;; DL) echo Daniel ;; esac)*" -name "$2.fract" | head -1 ;;
+  esac
+}
+# A copy of the settings with the given main parameters set (each removed first, then appended).
+withSettings() {  # FILE OUT KEY=VALUE...
+  local file=$1 out=$2; shift 2
+  local keys=() lines=""
+  for kv in "$@"; do keys+=("${kv%%=*}"); lines+="${kv%%=*} ${kv#*=};\n"; done
+  local pattern; pattern=$(printf '^%s \\|' "${keys[@]}"); pattern=${pattern%\\|}
+  sed "/$pattern/d" "$file" | sed "/^\[main_parameters\]/a $lines" > "$out"
+}
+echo "| scene | mandelbulber2 samples/px | mandelbulber2 s | its coverage RMSE | fraktal setting | fraktal s | fraktal coverage RMSE | mandelbulber2 / fraktal |"
+echo "|---|---|---|---|---|---|---|---|"
+for scene in "${scenes[@]}"; do
+  c=${scene%%$'\t'*}; name=${scene#*$'\t'}
+  fract=$(fractOf "$c" "$name")
+  "$fraktal" import "$fract" -o "$tmp/s.json" -q
+  "$fraktal" render "$tmp/s.json" -o "$tmp/truth.exr" --size "$size" --spp $(( truthAa * truthAa )) --adaptive-tolerance 0 -q
+  declare -A fTime=() fError=()
+  for spp in "${fraktalSpp[@]}"; do
+    t0=$(now)
+    "$fraktal" render "$tmp/s.json" -o "$tmp/f.exr" --size "$size" --spp "$spp" -q
+    fTime[$spp]=$(seconds "$t0" "$(now)")
+    read -r fError[$spp] _ _ < <("$tmp/coverage_error" "$tmp/truth.exr" "$tmp/f.exr")
+  done
+  withSettings "$fract" "$tmp/truth.fract" antialiasing_enabled=true antialiasing_size=$truthAa
+  HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r "$size" -o "$tmp/mb_truth" "$tmp/truth.fract" \
+    > /dev/null 2>&1 < /dev/null
+  for aa in "${peerAa[@]}"; do
+    withSettings "$fract" "$tmp/peer.fract" antialiasing_enabled=$([[ $aa -gt 1 ]] && echo true || echo false) antialiasing_size=$aa
+    t0=$(now)
+    HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r "$size" -o "$tmp/mb" "$tmp/peer.fract" \
+      > /dev/null 2>&1 < /dev/null
+    t=$(seconds "$t0" "$(now)")
+    read -r peerError _ _ < <("$tmp/coverage_error" "$tmp/mb_truth.png" "$tmp/mb.png")
+    best=""
+    for spp in "${fraktalSpp[@]}"; do
+      if (($(echo "${fError[$spp]} <= $peerError + 1e-6" | bc -l))); then
+        if [[ -z $best ]] || (($(echo "${fTime[$spp]} < ${fTime[$best]}" | bc -l))); then best=$spp; fi
+      fi
+    done
+    if [[ -n $best ]]; then
+      echo "| $c / $name | $((aa * aa)) | $t | $peerError | $best spp | ${fTime[$best]} | ${fError[$best]} | $(echo "$t / ${fTime[$best]}" | bc -l | xargs printf %.2f) |"
+    else
+      echo "| $c / $name | $((aa * aa)) | $t | $peerError | none of spp ${fraktalSpp[*]} | | | |"
+    fi
+  done
+  unset fTime fError
+done

@@ -1,0 +1,857 @@
+#include "core/import/fract_import.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/json_reader.hpp"
+
+namespace fraktal::mb2 {
+
+namespace {
+
+// Mandelbulber2's closing DE function of a formula (fractal_list.cpp; the reference's T5).
+enum class Mb2De { Linear, Log, Ifs, PseudoKleinian, JosKleinian, Difs, DeltaLinear, DeltaLog, None };
+// Whether Mandelbulber2 adds c after the formula by default (dont_add_c_constant flips it), or
+// the formula adds its own.
+enum class CAdd { Yes, No, Own };
+
+struct FormulaInfo {
+    int id;
+    std::string_view name;
+    Mb2De de;
+    double bailout;  // the formula's default bailout (use_default_bailout)
+    CAdd c;
+};
+
+// Every formula the Mandelbulber2 2.20 examples run (the reference's T5), by id.
+constexpr FormulaInfo kFormulas[] = {
+#include "core/import/mb2_formula_list.inc"
+};
+
+const FormulaInfo* findFormula(int id) {
+    for (const FormulaInfo& f : kFormulas)
+        if (f.id == id) return &f;
+    return nullptr;
+}
+
+std::string fmt(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+std::string fmt(const vec3& v) { return fmt(v.x) + " " + fmt(v.y) + " " + fmt(v.z); }
+
+// The 3x3 rotation Mandelbulber2 builds from Euler angles in degrees (algebra.cpp): SetRotation2
+// is Rz(z) Ry(y) Rx(x), SetRotation3 Rz(x) Ry(y) Rx(z); the matrix multiplies column vectors.
+glm::dmat3 rotationZYX(double z, double y, double x) {
+    const auto rz = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(z), vec3(0, 0, 1)));
+    const auto ry = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(y), vec3(0, 1, 0)));
+    const auto rx = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(x), vec3(1, 0, 0)));
+    return rz * ry * rx;
+}
+glm::dmat3 setRotation2(const vec3& degrees) { return rotationZYX(degrees.z, degrees.y, degrees.x); }
+glm::dmat3 setRotation3(const vec3& degrees) { return rotationZYX(degrees.x, degrees.y, degrees.z); }
+
+// Reads a section's values with Mandelbulber2's defaults for what the file leaves out, and
+// collects what the import cannot express.
+class Reader {
+   public:
+    Reader(const FractFile& file, std::string section, bool main, std::string where,
+           std::vector<ImportItem>& unsupported)
+        : file_(file), section_(std::move(section)), main_(main), where_(std::move(where)), unsupported_(unsupported) {}
+
+    const std::string& where() const { return where_; }
+    const FractFile& file() const { return file_; }
+    bool given(const std::string& key) const { return file_.find(section_, key) != nullptr; }
+
+    std::string raw(const std::string& key) const {
+        if (const FractEntry* e = file_.find(section_, key)) return e->value;
+        if (const char* d = defaultValue(key, main_)) return d;
+        throw std::logic_error("no Mandelbulber2 default for " + key);
+    }
+    double number(const std::string& key) const { return read(key, parseNumber(raw(key)), "a number"); }
+    int integer(const std::string& key) const { return int(std::lround(number(key))); }
+    vec3 vector(const std::string& key) const { return read(key, parseVector(raw(key)), "three numbers"); }
+    bool boolean(const std::string& key) const { return read(key, parseBoolean(raw(key)), "true or false"); }
+    vec3 colour(const std::string& key) const { return read(key, parseColour(raw(key)), "a 16-bit hex colour"); }
+
+    // A switch or value fraktal cannot express: unsupported unless at Mandelbulber2's default.
+    void mustBeDefault(const std::string& key, const std::string& why) {
+        const std::string value = raw(key);
+        const char* d = defaultValue(key, main_);
+        if (!d || sameValue(value, d)) return;
+        unsupported(key + " " + value + ": " + why);
+    }
+    void unsupported(const std::string& what) { unsupported_.push_back({where_, what}); }
+
+   private:
+    template <class T>
+    T read(const std::string& key, const std::optional<T>& v, const char* expected) const {
+        if (v) return *v;
+        const FractEntry* e = file_.find(section_, key);
+        throw PresetError(file_.source,
+                          "[" + section_ + "] " + key + (e ? " (line " + std::to_string(e->line) + ")" : ""),
+                          std::string("expected ") + expected + ", found \"" + raw(key) + "\"");
+    }
+    static bool sameValue(const std::string& a, const std::string& b) {
+        if (a == b) return true;
+        const auto ba = parseBoolean(a), bb = parseBoolean(b);
+        if (ba && bb) return *ba == *bb;
+        if (const auto na = parseNumber(a), nb = parseNumber(b); na && nb) return std::abs(*na - *nb) <= 1e-12;
+        const auto va = parseVector(a), vb = parseVector(b);
+        return va && vb && length(*va - *vb) <= 1e-12;
+    }
+
+    const FractFile& file_;
+    std::string section_;
+    bool main_;
+    std::string where_;
+    std::vector<ImportItem>& unsupported_;
+};
+
+// Builds nodes, checking each value against its block's declared range: a value outside it is
+// unsupported (fraktal's blocks would refuse it), never clamped silently.
+class NodeBuilder {
+   public:
+    NodeBuilder(Reader& reader, std::vector<Node>& out) : reader_(reader), out_(out) {}
+
+    struct Value {
+        std::string_view name;
+        vec3 v;
+    };
+    void add(std::string_view blockId, std::initializer_list<Value> values) {
+        const BlockDesc* block = findBlock(blockId);
+        if (!block) throw std::logic_error("no block " + std::string(blockId));
+        Node n = Node::make(*block);
+        for (const Value& v : values) {
+            const int i = block->paramIndex(v.name);
+            if (i < 0) throw std::logic_error("block " + std::string(blockId) + " has no " + std::string(v.name));
+            const ParamDecl& d = block->params[size_t(i)];
+            const int components = isScalar(d.type) ? 1 : 3;
+            for (int k = 0; k < components; ++k)
+                if (!(v.v[k] >= d.min - 1e-9 && v.v[k] <= d.max + 1e-9)) {
+                    reader_.unsupported(std::string(blockId) + "." + std::string(v.name) + " " +
+                                        (components == 1 ? fmt(v.v.x) : fmt(v.v)) + " is outside fraktal's range [" +
+                                        fmt(d.min) + ", " + fmt(d.max) + "]");
+                    break;
+                }
+            n.values[size_t(i)] = v.v;
+        }
+        out_.push_back(std::move(n));
+    }
+    static Value f(std::string_view name, double x) { return {name, vec3(x, 0.0, 0.0)}; }
+    static Value v(std::string_view name, const vec3& x) { return {name, x}; }
+
+    // One `rotate` node for a rotation matrix (any rotation is one turn about one axis).
+    void rotation(const glm::dmat3& m) {
+        const glm::dquat q = glm::quat_cast(m);
+        const double angle = glm::degrees(glm::angle(q));
+        if (std::abs(angle) < 1e-9) return;
+        vec3 axis = glm::axis(q);
+        double a = angle;
+        if (a > 180.0) a -= 360.0;
+        add("rotate", {v("axis", normalize(axis)), f("angle", a)});
+    }
+
+   private:
+    Reader& reader_;
+    std::vector<Node>& out_;
+};
+
+using N = NodeBuilder;
+
+// ---- The formulas fraktal's blocks express (reference T5 "maps", T6 for each kernel) ----
+
+// The sphere fold's inner radius: Mandelbulber2 files use 0 on purpose (no inner scaling), below
+// fraktal's range, which starts at 0.001: that draws the same (an inner ball of radius 0.001).
+void sphereFold(NodeBuilder& b, double minRadius, double fixedRadius) {
+    b.add("sphere_fold", {N::f("min_radius", std::max(minRadius, 0.001)), N::f("fixed_radius", fixedRadius)});
+}
+
+void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    const double limit = r.number("mandelbox_folding_limit"), value = r.number("mandelbox_folding_value");
+    if (std::abs(value - 2.0 * limit) > 1e-9)
+        r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
+                      ": fraktal's box fold reflects at the limit (value = 2 x limit)");
+    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
+    if (r.boolean("mandelbox_rotations_enabled")) {
+        // Each axis folds in tilted frames: at +limit in the frame R0 (mandelbox_rotation_neg_N),
+        // else at -limit in R1 (_pos_N). The plane x . R0^T e = limit and then x . R1^T e = -limit;
+        // the pair differs from the either-or where both fire (beyond 3 x limit, as a box fold).
+        for (int axis = 0; axis < 3; ++axis) {
+            vec3 e(0.0);
+            e[axis] = 1.0;
+            const std::string n = std::to_string(axis + 1);
+            const vec3 n0 = glm::transpose(setRotation2(r.vector("mandelbox_rotation_neg_" + n))) * e;
+            const vec3 n1 = glm::transpose(setRotation2(r.vector("mandelbox_rotation_pos_" + n))) * e;
+            b.add("plane_fold", {N::v("normal", -n0), N::f("offset", -limit)});
+            b.add("plane_fold", {N::v("normal", n1), N::f("offset", -limit)});
+        }
+        approximated.push_back({r.where(),
+                                "the tilted box fold as two plane folds per axis (the same within 3 x "
+                                "the limit)"});
+    } else {
+        b.add("box_fold", {N::f("limit", limit)});
+    }
+    sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+    if (r.boolean("mandelbox_main_rotation_enabled")) b.rotation(setRotation2(r.vector("mandelbox_rotation_main")));
+    b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
+}
+
+void mapMengerSponge(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    // abs, sort, z *= s, x and y less 2, z less 2 above 1: menger_rotate with the corner 2 / (s - 1).
+    const double s = r.number("transf_scale_3");
+    if (std::abs(s - 1.0) < 1e-9) return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+    b.add("menger_rotate", {N::f("scale", s), N::v("offset", vec3(2.0 / (s - 1.0)))});
+}
+
+void mapMengerMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const double s = r.number("transf_scale_3");
+    const vec3 m = r.vector("transf_constant_multiplier_111");
+    if (std::abs(m.z - 1.0) > 1e-9)
+        r.unsupported("transf_constant_multiplier_111.z " + fmt(m.z) + ": the z shift's threshold stays at 1");
+    r.mustBeDefault("transf_function_enabledx_false", "the sign-dependent box offset");
+    r.mustBeDefault("transf_function_enabled_false", "iteration weights");
+    if (std::abs(s - 1.0) < 1e-9) return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+    b.add("menger_rotate", {N::f("scale", s), N::v("offset", 2.0 * m / (s - 1.0))});
+    if (r.boolean("transf_rotation_enabled")) {
+        if (r.integer("transf_start_iterations") > 0 || r.integer("transf_stop_iterations") < 250)
+            r.unsupported("transf_start/stop_iterations: a rotation on some iterations only (part 2)");
+        b.rotation(setRotation2(r.vector("transf_rotation")));
+    }
+    const vec3 add = r.vector("transf_addition_constant");
+    if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+}
+
+void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const bool ax = r.boolean("IFS_abs_x"), ay = r.boolean("IFS_abs_y"), az = r.boolean("IFS_abs_z");
+    if (ax && ay && az) {
+        b.add("abs_fold", {});
+    } else {
+        if (ax) b.add("plane_fold", {N::v("normal", vec3(1, 0, 0)), N::f("offset", 0.0)});
+        if (ay) b.add("plane_fold", {N::v("normal", vec3(0, 1, 0)), N::f("offset", 0.0)});
+        if (az) b.add("plane_fold", {N::v("normal", vec3(0, 0, 1)), N::f("offset", 0.0)});
+    }
+    for (int i = 0; i < 9; ++i) {
+        const std::string n = std::to_string(i);
+        if (!r.boolean("IFS_enabled_" + n)) continue;
+        r.mustBeDefault("IFS_intensity_" + n, "a partial reflection");
+        b.rotation(setRotation3(r.vector("IFS_rotations_" + n)));
+        const vec3 dir = r.vector("IFS_direction_" + n);
+        if (length(dir) < 1e-12) {
+            r.unsupported("IFS_direction_" + n + " 0 0 0: a plane without a normal");
+            continue;
+        }
+        b.add("plane_fold", {N::v("normal", normalize(dir)), N::f("offset", r.number("IFS_distance_" + n))});
+    }
+    const vec3 offset = r.vector("IFS_offset");
+    if (r.boolean("IFS_rotation_enabled")) {
+        const glm::dmat3 m = setRotation3(r.vector("IFS_rotation"));
+        if (length(offset) > 0.0) b.add("translate", {N::v("offset", -offset)});
+        b.rotation(m);
+        if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+    }
+    const vec3 edge = r.vector("IFS_edge");
+    for (int k = 0; k < 3; ++k)
+        if (edge[k] > 0.0) {
+            vec3 normal(0.0);
+            normal[k] = -1.0;
+            b.add("plane_fold", {N::v("normal", normal), N::f("offset", -edge[k])});
+        }
+    const double s = r.number("IFS_scale");
+    if (r.boolean("IFS_menger_sponge_mode"))
+        return r.unsupported("IFS_menger_sponge_mode: the conditional z shift after the scale (part 2)");
+    b.add("scale", {N::f("scale", s), N::v("center", offset)});
+}
+
+void mapMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("alpha_angle_offset", "phase offsets on the bulb (part 2)");
+    r.mustBeDefault("beta_angle_offset", "phase offsets on the bulb (part 2)");
+    b.add("mandelbulb_sine", {N::f("power", r.number("power"))});
+}
+
+void mapXenodreambuie(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("alpha_angle_offset", "phase offsets on the bulb (part 2)");
+    r.mustBeDefault("beta_angle_offset", "phase offsets on the bulb (part 2)");
+    // theta = acos(|z| / r): the polar bulb of the point mirrored into z >= 0.
+    b.add("plane_fold", {N::v("normal", vec3(0, 0, 1)), N::f("offset", 0.0)});
+    b.add("mandelbulb_cosine", {N::f("power", r.number("power"))});
+}
+
+void mapPseudoKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_sphere_inversion_enabled_false", "a first-iteration sphere inversion (part 2)");
+    r.mustBeDefault("transf_function_enabledP_false", "the Menger prism fold");
+    r.mustBeDefault("transf_function_enabledBy_false", "the Tglad fold");
+    r.mustBeDefault("transf_function_enabledBx_false", "the box fold before the clamp");
+    b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
+                              N::f("size", r.number("transf_minimum_radius_05"))});
+    if (r.boolean("transf_function_enabledR_false")) {
+        if (r.integer("transf_start_iterations_R") > 0 || r.integer("transf_stop_iterations_R") < 250)
+            r.unsupported("transf_start/stop_iterations_R: a rotation on some iterations only (part 2)");
+        b.rotation(setRotation2(r.vector("transf_rotation")));
+    }
+    const vec3 add = r.vector("transf_addition_constant");
+    if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+}
+
+void mapQuaternion3d(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("bristorbrot", {N::f("twist", 0.0)}); }
+void mapBristorbrot(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("bristorbrot", {N::f("twist", 1.0)}); }
+
+void mapIqBulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_pwr_8a", "a second power on the azimuth");
+    b.add("mandelbulb", {N::f("power", r.number("transf_pwr_8"))});
+}
+
+// Tglad's fold of x and y (and z when `withZ`) at per-axis limits: one box fold when the limits
+// agree; else a pair of plane folds per axis, which is the same fold for |v| < 3 x limit (a box fold
+// reflects once, the pair twice beyond that).
+void tgladFold(Reader& r, NodeBuilder& b, const vec3& limit, bool withZ, std::vector<ImportItem>& approximated) {
+    if (withZ && limit.x == limit.y && limit.y == limit.z) return b.add("box_fold", {N::f("limit", limit.x)});
+    for (int k = 0; k < (withZ ? 3 : 2); ++k) {
+        vec3 normal(0.0);
+        normal[k] = -1.0;
+        b.add("plane_fold", {N::v("normal", normal), N::f("offset", -limit[k])});
+        normal[k] = 1.0;
+        b.add("plane_fold", {N::v("normal", normal), N::f("offset", -limit[k])});
+    }
+    approximated.push_back({r.where(),
+                            "a fold with per-axis limits as two plane folds per axis (the same within "
+                            "3 x the limit)"});
+}
+
+void mapAmazingSurfMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    for (const char* fold : {"transf_function_enabledAy_false", "transf_function_enabledAz_false",
+                             "transf_function_enabledx_false", "transf_function_enabledy_false"})
+        r.mustBeDefault(fold, "a fold type other than Tglad's");
+    r.mustBeDefault("transf_function_enabled_false", "the cylinder fold");
+    r.mustBeDefault("transf_scale_1", "a scale blended with 1");
+    r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
+    const vec3 limit = r.vector("transf_addition_constant_111"), add = r.vector("transf_addition_constant");
+    // Mandelbulber2 compares r^2 with sqrt(minR): fraktal's inner radius is minR^(1/4).
+    const double minRadius = std::pow(std::max(r.number("transf_minimum_radius_05"), 0.0), 0.25);
+    const double scale = r.number("mandelbox_scale");
+    if (r.boolean("transf_function_enabledAx") && length(add) == 0.0) {
+        b.add("amazing_surf",
+              {N::v("fold", vec3(limit.x, limit.y, 0.0)), N::f("min_radius", minRadius), N::f("scale", scale)});
+    } else {
+        if (r.boolean("transf_function_enabledAx")) tgladFold(r, b, limit, false, approximated);
+        if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+        sphereFold(b, minRadius, 1.0);
+        b.add("scale", {N::f("scale", scale)});
+    }
+    b.rotation(setRotation2(r.vector("transf_rotation")));
+}
+
+void mapAboxVsIcen1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
+    const vec3 m = r.vector("transf_constant_multiplier_111"), juliaC = r.vector("transf_constant_julia_c");
+    if (m.x != m.y || m.y != m.z)
+        r.unsupported("transf_constant_multiplier_111 " + fmt(m) + ": a per-axis multiple of c");
+    const bool julia = r.boolean("transf_constant_julia_mode");
+    tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated);
+    if (julia) {
+        b.add("add_c", {N::f("weight", m.x)});
+    } else if (length(juliaC) > 0.0) {
+        b.add("translate", {N::v("offset", juliaC)});
+    }
+    sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+    b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
+    if (r.boolean("transf_rotation_enabled")) {
+        if (r.integer("transf_start_iterations") > 0 || r.integer("transf_stop_iterations") < 250)
+            r.unsupported("transf_start/stop_iterations: a rotation on some iterations only (part 2)");
+        b.rotation(setRotation2(r.vector("transf_rotation")));
+    }
+    // Julia mode: z += julia_c - m c; otherwise z += m c + julia_c.
+    b.add("add_c", {N::f("weight", julia ? -m.x : m.x)});
+    if (length(juliaC) > 0.0) b.add("translate", {N::v("offset", juliaC)});
+}
+
+void mapKalisets1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_minimum_radius_0", "a clamped inversion radius");
+    const double scale = r.number("transf_scale");
+    if (!(scale > 0.0)) return r.unsupported("transf_scale " + fmt(scale) + ": an inversion needs a positive scale");
+    b.add("abs_fold", {});
+    b.add("sphere_invert", {N::f("radius", std::sqrt(scale))});
+    if (r.boolean("transf_addCpixel_enabled_false")) {
+        const vec3 m = r.vector("transf_constant_multiplier_111");
+        if (m.x != m.y || m.y != m.z)
+            r.unsupported("transf_constant_multiplier_111 " + fmt(m) + ": a per-axis multiple of c");
+        b.add("add_c", {N::f("weight", m.x)});
+    }
+    if (r.boolean("transf_constant_julia_mode"))
+        b.add("translate", {N::v("offset", r.vector("transf_constant_julia_c"))});
+    if (r.boolean("transf_rotation_enabled")) b.rotation(setRotation2(r.vector("transf_rotation")));
+}
+
+void mapAboxModKali(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledP_false", "a rotation that varies with the iteration");
+    if (r.boolean("mandelbox_main_rotation_enabled")) {
+        // Rotations about x, then y, then z (RotateAroundVectorByAngle, in degrees).
+        const vec3 a = r.vector("mandelbox_rotation_main");
+        b.rotation(rotationZYX(a.z, 0, 0) * rotationZYX(0, a.y, 0) * rotationZYX(0, 0, a.x));
+    }
+    // z = a - |z|, then the sphere fold's m = s / clamp(r^2, minR, 1).
+    b.add("abs_fold", {});
+    b.add("scale", {N::f("scale", -1.0)});
+    b.add("translate", {N::v("offset", r.vector("transf_addition_constant_0555"))});
+    sphereFold(b, std::sqrt(std::max(r.number("transf_minimum_radius_06"), 0.0)), 1.0);
+    b.add("scale", {N::f("scale", r.number("transf_scale_015"))});
+}
+
+void mapTransfAddConstant(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("translate",
+          {N::v("offset", r.vector("transf_addition_constant") + r.vector("transf_addition_constantA_000"))});
+}
+void mapTransfScale(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("scale", {N::f("scale", r.number("transf_scale"))});
+}
+void mapTransfRotation(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.rotation(setRotation2(r.vector("transf_rotation")));
+}
+
+using MapFn = void (*)(Reader&, NodeBuilder&, std::vector<ImportItem>& approximated);
+struct Mapping {
+    int id;
+    MapFn map;
+};
+constexpr Mapping kMappings[] = {
+    {2, mapMandelbulb},        {5, mapQuaternion3d},     {7, mapMengerSponge},     {8, mapMandelbox},
+    {10, mapKaleidoscopicIfs}, {11, mapXenodreambuie},   {21, mapBristorbrot},     {61, mapMengerMod1},
+    {62, mapQuaternion3d},     {83, mapIqBulb},          {103, mapPseudoKleinian}, {1001, mapTransfAddConstant},
+    {1002, mapTransfRotation}, {1003, mapTransfScale},   {60, mapAboxModKali},     {74, mapKalisets1},
+    {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},
+};
+
+MapFn findMapping(int id) {
+    for (const Mapping& m : kMappings)
+        if (m.id == id) return m.map;
+    return nullptr;
+}
+
+// Mandelbulber2's closing DE function as fraktal's estimator.
+struct EstimatorChoice {
+    Mb2De de = Mb2De::Linear;
+    bool delta = false;
+};
+
+void addEstimator(Formula& f, const EstimatorChoice& choice, Reader& main, double pkThickness,
+                  std::vector<ImportItem>& approximated) {
+    auto set = [&](std::string_view id, std::initializer_list<std::pair<std::string_view, double>> values) {
+        f.estimator = Node::make(*findBlock(id));
+        for (const auto& [name, v] : values) f.estimator.values[size_t(f.estimator.block->paramIndex(name))].x = v;
+    };
+    const double offset = main.number("linear_DE_offset");
+    switch (choice.de) {
+        case Mb2De::Linear:
+        case Mb2De::DeltaLinear:
+            set("escape_linear", {{"offset", std::clamp(offset, 0.0, 10.0)}});
+            if (choice.delta || choice.de == Mb2De::DeltaLinear)
+                approximated.push_back(
+                    {"DE", "Mandelbulber2's delta (numerical) linear DE is fraktal's analytic r / dr"});
+            return;
+        case Mb2De::Ifs: set("escape_linear", {{"offset", 2.0}}); return;
+        case Mb2De::Log:
+        case Mb2De::DeltaLog:
+            set(choice.delta || choice.de == Mb2De::DeltaLog ? "escape_gradient" : "escape_log", {});
+            return;
+        case Mb2De::PseudoKleinian:
+            set("pseudo_kleinian_de", {{"thickness", std::clamp(pkThickness, 0.0, 1.0)}, {"offset", 0.0}});
+            return;
+        case Mb2De::JosKleinian:
+            main.unsupported("the Jos-Kleinian DE function (MB2's jos_kleinian form, part 2)");
+            break;
+        case Mb2De::Difs: main.unsupported("the dIFS DE function (an orbit-minimum estimate, part 2)"); break;
+        case Mb2De::None: break;  // no mapped formula: each is named already
+    }
+    set("escape_linear", {});
+}
+
+Mb2De functionFromSetting(int function, Mb2De preferred) {
+    switch (function) {
+        case 1: return Mb2De::Linear;
+        case 2: return Mb2De::Log;
+        case 3: return Mb2De::PseudoKleinian;
+        case 4: return Mb2De::JosKleinian;
+        default: return preferred;
+    }
+}
+
+bool isDelta(Mb2De de) { return de == Mb2De::DeltaLinear || de == Mb2De::DeltaLog; }
+Mb2De analyticOf(Mb2De de) {
+    return de == Mb2De::DeltaLinear ? Mb2De::Linear : de == Mb2De::DeltaLog ? Mb2De::Log : de;
+}
+
+// A colour as Mandelbulber2 shows it (display sRGB, 16 bits) in fraktal's scene-linear Rec.709.
+vec3 linearFromDisplay(const vec3& c) {
+    auto lin = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    return {lin(c.x), lin(c.y), lin(c.z)};
+}
+
+void importCamera(Reader& main, FractImport& out) {
+    Camera& c = out.preset.camera;
+    c.position = main.vector("camera");
+    c.target = main.vector("target");
+    c.up = main.vector("camera_top");
+    if (length(c.target - c.position) < 1e-9 * std::max(1.0, length(c.position))) {
+        // A free-flying camera whose target sits on it (camera_distance_to_target near 0): the
+        // view direction is camera_rotation's, yaw about z then pitch about x of the camera's
+        // forward y axis (camera_target.cpp); the target goes one unit ahead.
+        const vec3 angles = glm::radians(main.vector("camera_rotation"));
+        const vec3 forward(-std::sin(angles.x) * std::cos(angles.y), std::cos(angles.x) * std::cos(angles.y),
+                           std::sin(angles.y));
+        c.target = c.position + forward;
+    }
+    if (length(glm::cross(normalize(c.target - c.position), c.up)) < 1e-9)
+        c.up = std::abs(normalize(c.target - c.position).z) < 0.9 ? vec3(0, 0, 1) : vec3(0, 1, 0);
+    const double fov = main.number("fov");
+    const FractFile& file = main.file();
+    // Three-point perspective: ray = normalize(u fov, 1, v fov) with v in [-1/2, 1/2] over the
+    // image height, so tan(fovY / 2) = fov / 2; files from 2.21 store the angle in degrees.
+    c.fovY = file.versionNumber >= 2.21 - 1e-9 ? fov : glm::degrees(2.0 * std::atan(fov / 2.0));
+    if (!(c.fovY >= 1.0 && c.fovY <= 170.0)) {
+        main.unsupported("fov " + fmt(fov) + ": a field of view of " + fmt(c.fovY) + " degrees (fraktal: 1 to 170)");
+        c.fovY = std::clamp(c.fovY, 1.0, 170.0);
+    }
+    const std::string perspective = main.raw("perspective_type");
+    if (perspective != "0" && perspective != "three_point")
+        main.unsupported("perspective_type " + perspective + ": fraktal's camera is a three-point perspective");
+    main.mustBeDefault("sweet_spot_horizontal_angle", "a view turned after the frame");
+    main.mustBeDefault("sweet_spot_vertical_angle", "a view turned after the frame");
+    main.mustBeDefault("stereo_enabled", "stereo pairs");
+    // The v1.x picture: the top image row at v = -1/2 (render_job.cpp), a mirror of the standard
+    // one.
+    c.flipVertical = main.boolean("legacy_coordinate_system");
+}
+
+void importLook(const FractFile& file, Reader& main, FractImport& out) {
+    ShadingSettings& s = out.preset.shading;
+    const CameraBasis basis = out.preset.camera.basis();
+    // The main light: (cos(a - 90) cos b, sin(a - 90) cos b, sin b) toward the light, in the
+    // camera's frame (x right, y forward, z up) when its position is relative (render_worker.cpp).
+    const double a = glm::radians(main.number("main_light_alpha") - 90.0),
+                 b = glm::radians(main.number("main_light_beta"));
+    const vec3 d(std::cos(a) * std::cos(b), std::sin(a) * std::cos(b), std::sin(b));
+    s.lightDirection = main.boolean("main_light_position_relative")
+                           ? normalize(basis.right * d.x + basis.forward * d.y + basis.up * d.z)
+                           : normalize(d);
+    const double intensity =
+        main.boolean("main_light_enable") ? std::max(main.number("main_light_intensity"), 0.0) : 0.0;
+    s.lightColor = linearFromDisplay(main.colour("main_light_colour")) * (1.6 * intensity);
+    s.shadowSteps = main.boolean("shadows_enabled") ? s.shadowSteps : 0;
+    // Background: three stops top to bottom (two without background_3_colors_enable).
+    s.backgroundTop = linearFromDisplay(main.colour("background_color_1"));
+    s.backgroundBottom = linearFromDisplay(
+        main.colour(main.boolean("background_3_colors_enable") ? "background_color_3" : "background_color_2"));
+    if (main.boolean("background_3_colors_enable"))
+        out.approximated.push_back({"background", "the middle stop of the three-colour gradient is left out"});
+    if (main.boolean("basic_fog_enabled")) {
+        s.fogColor = linearFromDisplay(main.colour("basic_fog_color"));
+        // Mandelbulber2's visibility is a distance; fraktal's density is per bound radius.
+        s.fogDensity =
+            std::clamp(out.preset.formula.boundRadius / std::max(main.number("basic_fog_visibility"), 1e-3), 0.0, 10.0);
+        out.approximated.push_back({"fog", "the basic fog's visibility distance as a density per bound radius"});
+    }
+    if (main.boolean("ambient_occlusion_enabled")) {
+        s.aoStrength = std::clamp(main.number("ambient_occlusion"), 0.0, 1.0);
+    } else {
+        s.aoSteps = 0;
+    }
+    s.reflection = main.boolean("raytraced_reflections") ? 0.1 : 0.0;
+    if (main.boolean("DOF_enabled")) {
+        ThinLens& lens = out.preset.lighting.lens;
+        lens.focusDistance = std::max(main.number("DOF_focus"), 1e-3);
+        // Mandelbulber2's blur radius is in its own units: 0.0015 x radius x focus in the world.
+        lens.apertureRadius = 0.0015 * main.number("DOF_radius") * lens.focusDistance;
+        out.approximated.push_back({"depth of field", "DOF_radius as a thin lens (path-traced mode)"});
+    }
+    // Colour: Mandelbulber2 runs its own colour index through the material's gradient; fraktal's
+    // orbit-trap cosine palette gets the gradient's mean colour and spread.
+    const std::string gradientKey =
+        file.find("main_parameters", "mat1_surface_color_gradient") || file.versionNumber >= 2.19
+            ? "mat1_surface_color_gradient"
+            : "";
+    if (!gradientKey.empty()) {
+        std::istringstream in(main.raw(gradientKey));
+        std::string position, colour;
+        vec3 sum(0.0), lo(1e9), hi(-1e9);
+        int count = 0;
+        while (in >> position >> colour) {
+            if (colour.size() != 6) break;
+            const unsigned rgb = unsigned(std::stoul(colour, nullptr, 16));
+            const vec3 c = linearFromDisplay(vec3((rgb >> 16) & 255, (rgb >> 8) & 255, rgb & 255) / 255.0);
+            sum += c, lo = glm::min(lo, c), hi = glm::max(hi, c), ++count;
+        }
+        if (count > 0) {
+            s.paletteA = sum / double(count);
+            s.paletteB = (hi - lo) * 0.5;
+        }
+    }
+    out.approximated.push_back({"colour",
+                                "Mandelbulber2's colour index through its gradient becomes fraktal's "
+                                "orbit-trap palette with the gradient's mean colour and spread"});
+    for (int i = 1; i <= 4; ++i)
+        if (main.boolean("aux_light_enabled_" + std::to_string(i)))
+            out.approximated.push_back(
+                {"lights", "aux_light_" + std::to_string(i) + " (a point light) is not imported"});
+    for (const char* key : {"volumetric_fog_enabled", "iteration_fog_enable", "glow_enabled", "fake_lights_enabled",
+                            "textured_background", "env_mapping_enable"})
+        if (main.boolean(key) && (std::string(key) != "glow_enabled" || main.given(key)))
+            out.approximated.push_back({"look", std::string(key) + ": not imported"});
+    for (const auto& [section, rows] : file.animationRows)
+        out.approximated.push_back({"animation", "[" + section + "] (" + std::to_string(std::max(rows, 0)) +
+                                                     " rows): the animation is not imported, the still is"});
+}
+
+// The primitives a file switches on ("box", 1), in file order.
+std::vector<std::pair<std::string, std::string>> enabledPrimitives(const FractFile& file) {
+    std::vector<std::pair<std::string, std::string>> out;
+    const auto it = file.sections.find("main_parameters");
+    if (it == file.sections.end()) return out;
+    for (const auto& [key, entry] : it->second) {
+        if (!key.starts_with("primitive_") || !key.ends_with("_enabled") || parseBoolean(entry.value) != true) continue;
+        const std::string rest = key.substr(10, key.size() - 10 - 8);  // "box_1"
+        const size_t underscore = rest.rfind('_');
+        if (underscore != std::string::npos) out.emplace_back(rest.substr(0, underscore), rest.substr(underscore + 1));
+    }
+    return out;
+}
+
+// A cut by a box (limits_enabled) and objects beside the fractal (primitives): fraktal's combine
+// estimators join one box, sphere or plane with the fractal's linear estimate |v| - offset over
+// |dr|, which is what Mandelbulber2's linear and IFS DE functions are.
+void importObjects(const FractFile& file, Reader& main, FractImport& out) {
+    Formula& f = out.preset.formula;
+    const auto primitives = enabledPrimitives(file);
+    const bool limits = main.boolean("limits_enabled");
+    if (!limits && primitives.empty()) return;
+    const bool linear = f.estimator.block && f.estimator.block->id == "escape_linear";
+    const double offset = linear ? f.estimator.values[0].x : 0.0;
+    auto combine = [&](std::string_view id, std::initializer_list<NodeBuilder::Value> values) {
+        std::vector<Node> nodes;
+        NodeBuilder b(main, nodes);
+        b.add(id, values);
+        f.estimator = std::move(nodes.front());
+        f.estimator.values[size_t(f.estimator.block->paramIndex("offset"))].x = offset;
+    };
+    if (limits && primitives.empty() && linear) {
+        const vec3 lo = main.vector("limit_min"), hi = main.vector("limit_max");
+        combine("box_combine",
+                {N::f("intersect", 1.0), N::v("center", (lo + hi) * 0.5), N::v("size", glm::abs(hi - lo) * 0.5)});
+        return;
+    }
+    if (limits)
+        main.unsupported("limits_enabled: a box that cuts the fractal" +
+                         std::string(linear ? " together with primitives" : " with a non-linear DE function"));
+    const bool one = primitives.size() == 1 && !limits && linear;
+    for (const auto& [type, index] : primitives) {
+        const std::string key = "primitive_" + type + "_" + index + "_";
+        const std::string where = "primitive " + type + " " + index;
+        auto value = [&](const std::string& name, const char* fallback) {
+            const FractEntry* e = file.find("main_parameters", key + name);
+            return std::string(e ? e->value : fallback);
+        };
+        auto vectorOf = [&](const std::string& name, const char* fallback) {
+            const std::optional<vec3> v = parseVector(value(name, fallback));
+            if (!v) throw PresetError(file.source, "[main_parameters] " + key + name, "expected three numbers");
+            return *v;
+        };
+        auto numberOf = [&](const std::string& name, const char* fallback) {
+            const std::optional<double> v = parseNumber(value(name, fallback));
+            if (!v) throw PresetError(file.source, "[main_parameters] " + key + name, "expected a number");
+            return *v;
+        };
+        const bool plain = length(vectorOf("rotation", "0 0 0")) == 0.0 &&
+                           parseBoolean(value("empty", "false")) != true &&
+                           length(vectorOf("repeat", "0 0 0")) == 0.0 && !file.find("main_parameters", key + "normal");
+        if (!one || !plain || (type != "box" && type != "sphere" && type != "plane")) {
+            main.unsupported(where +
+                             ": an object beside the fractal (fraktal's combine estimators join one box, "
+                             "sphere or plane, unrotated, with a linear DE)");
+            continue;
+        }
+        const vec3 position = vectorOf("position", "0 0 0");
+        if (type == "sphere") {
+            combine("sphere_combine", {N::v("center", position), N::f("radius", numberOf("radius", "1"))});
+        } else if (type == "plane") {
+            // Solid below the plane through `position` with the normal (0, 0, 1) (unrotated).
+            combine("plane_combine", {N::v("normal", vec3(0, 0, 1)), N::f("height", position.z)});
+        } else {
+            // Mandelbulber2's box size is its full extent.
+            combine("box_combine", {N::v("center", position), N::v("size", vectorOf("size", "1 1 1") * 0.5)});
+            if (numberOf("rounding", "0") > 0.0) out.approximated.push_back({where, "rounded edges are drawn sharp"});
+        }
+    }
+}
+
+}  // namespace
+
+FractImport importFract(const FractFile& file) {
+    FractImport out;
+    Preset& p = out.preset;
+    p.name = "";
+    Reader main(file, "main_parameters", true, "main", out.unsupported);
+
+    // ---- Which slots run, in which order (nine_fractals.cpp; reference Notes 2) ----
+    const bool hybrid = main.boolean("hybrid_fractal_enable");
+    if (main.boolean("boolean_operators"))
+        main.unsupported("boolean_operators: each slot a separate object, combined (part 2)");
+    const int N = main.integer("N");
+    struct Slot {
+        int index, formula, count;
+    };
+    std::vector<Slot> slots;
+    for (int k = 1; k <= (hybrid ? 9 : 1); ++k) {
+        const std::string n = std::to_string(k);
+        const int formula = main.integer("formula_" + n);
+        if (formula == 0 || !main.boolean("fractal_enable_" + n)) continue;
+        const int count = hybrid ? std::max(main.integer("formula_iterations_" + n), 1) : 1;
+        Reader slotMain(file, "main_parameters", true, "slot " + n + " (" + formulaName(formula) + ")",
+                        out.unsupported);
+        if (hybrid &&
+            (main.integer("formula_start_iteration_" + n) > 0 || main.integer("formula_stop_iteration_" + n) < N))
+            slotMain.unsupported("formula_start/stop_iteration " + main.raw("formula_start_iteration_" + n) + "-" +
+                                 main.raw("formula_stop_iteration_" + n) + ": an iteration window (part 2)");
+        if (hybrid) slotMain.mustBeDefault("formula_weight_" + n, "a blend of the point before and after the slot");
+        slotMain.mustBeDefault("check_for_bailout_" + n, "fraktal tests the bailout after every node");
+        slots.push_back({k, formula, count});
+    }
+    if (slots.empty()) main.unsupported("no formula slot runs");
+    int period = 0;
+    for (const Slot& s : slots) period += s.count;
+    if (hybrid && period > 16)
+        main.unsupported("a hybrid sequence of " + std::to_string(period) +
+                         " iterations (fraktal's period is at most 16; part 2)");
+    if (hybrid) main.mustBeDefault("repeat_from", "a sequence that repeats from a later slot");
+    main.mustBeDefault("initial_waxis", "a fourth coordinate (part 2)");
+
+    // ---- The node list: each slot's nodes on its phases of the cycle ----
+    // Files up to 2.04 store the factor as one number (MB2's Compatibility() makes it a vector).
+    const std::optional<double> uniformFactor = parseNumber(main.raw("fractal_constant_factor"));
+    const vec3 factor = uniformFactor ? vec3(*uniformFactor) : main.vector("fractal_constant_factor");
+    const bool julia = main.boolean("julia_mode");
+    const vec3 juliaC = main.vector("julia_c");
+    if (std::abs(factor.x - factor.y) > 1e-12 || std::abs(factor.x - factor.z) > 1e-12)
+        main.unsupported("fractal_constant_factor " + fmt(factor) + ": a per-axis multiple of c");
+    const bool boxFolding = main.boolean("box_folding"), sphericalFolding = main.boolean("spherical_folding");
+    std::map<Mb2De, int> deVotes;
+    double bailout = 0.0, pkThickness = 1.0;
+    bool delta = false;
+    int phase = 0;
+    for (const Slot& slot : slots) {
+        const std::string n = std::to_string(slot.index);
+        const FormulaInfo* info = findFormula(slot.formula);
+        Reader r(file, "fractal_" + n, false, "slot " + n + " (" + formulaName(slot.formula) + ")", out.unsupported);
+        std::vector<Node> group;
+        NodeBuilder b(r, group);
+        if (boxFolding) {
+            if (std::abs(main.number("box_folding_value") - 2.0 * main.number("box_folding_limit")) > 1e-9)
+                main.unsupported("box_folding_value: a global box fold that does not reflect at its limit");
+            b.add("box_fold", {N::f("limit", main.number("box_folding_limit"))});
+        }
+        if (sphericalFolding)
+            sphereFold(b, main.number("spherical_folding_inner"), main.number("spherical_folding_outer"));
+        const MapFn map = findMapping(slot.formula);
+        if (!map || !info) {
+            r.unsupported("the formula " + formulaName(slot.formula) + " (id " + std::to_string(slot.formula) +
+                          ") has no fraktal blocks yet");
+            continue;
+        }
+        out.formulas.push_back(std::string(info->name));
+        map(r, b, out.approximated);
+        const bool dontAddC = main.boolean("dont_add_c_constant_" + n);
+        const bool addC = info->c == CAdd::Yes ? !dontAddC : info->c == CAdd::No ? dontAddC : false;
+        if (addC) {
+            b.add("add_c",
+                  {N::f("weight", factor.x), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor.x)});
+        }
+        if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += slot.count;
+        delta = delta || isDelta(info->de);
+        bailout = std::max(bailout, info->bailout);
+        if (info->de == Mb2De::PseudoKleinian) pkThickness = r.number("analyticDE_scale_1");
+        for (int copy = 0; copy < slot.count; ++copy) {
+            for (Node node : group) {
+                node.period = hybrid ? std::clamp(period, 1, 16) : 1;
+                node.phase = hybrid ? std::min(phase, 15) : 0;
+                if (node.phase >= node.period) node.phase = node.period - 1;
+                p.formula.nodes.push_back(std::move(node));
+            }
+            ++phase;
+        }
+    }
+    if (p.formula.nodes.size() > size_t(kMaxNodes))
+        main.unsupported(std::to_string(p.formula.nodes.size()) + " nodes (fraktal holds at most " +
+                         std::to_string(kMaxNodes) + ")");
+
+    // ---- Closing estimator: the DE function (delta_DE_method, delta_DE_function) ----
+    int method = main.integer("delta_DE_method"), function = main.integer("delta_DE_function");
+    if (file.versionNumber < 2.09 - 1e-9 && (function == 0 || function == 2)) function = 2 - function;
+    if (file.versionNumber < 2.20 - 1e-9 && method == 0) function = 0;
+    Mb2De preferred = Mb2De::None;
+    if (deVotes.empty() && !out.formulas.empty())
+        main.unsupported("no formula with a DE function runs (transforms alone)");
+    if (deVotes.count(Mb2De::Difs)) {
+        preferred = Mb2De::Difs;
+    } else {
+        int best = 0;
+        for (const auto& [de, votes] : deVotes)
+            if (votes > best) best = votes, preferred = de;
+    }
+    EstimatorChoice choice{functionFromSetting(function, preferred), delta || method == 1};
+    if (choice.delta && choice.de == Mb2De::Linear) choice.de = Mb2De::DeltaLinear;
+    if (choice.delta && choice.de == Mb2De::Log) choice.de = Mb2De::DeltaLog;
+    if (!p.formula.nodes.empty() || !out.unsupported.empty())
+        addEstimator(p.formula, choice, main, pkThickness, out.approximated);
+
+    // ---- Iterations, bailout, step ----
+    p.formula.iterations = std::clamp(N, 1, kMaxIterations);
+    if (N > kMaxIterations) main.unsupported("N " + std::to_string(N) + " (fraktal runs at most 1000 iterations)");
+    p.formula.bailout =
+        main.boolean("use_default_bailout") ? (bailout > 0.0 ? bailout : 100.0) : main.number("bailout");
+    p.formula.bailout = std::clamp(p.formula.bailout, 1e-3, 1e10);
+    p.formula.deFactor = std::clamp(main.number("DE_factor"), 1e-3, 2.0);
+    p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
+    if (main.boolean("interior_mode")) main.unsupported("interior_mode: the inside of the set drawn as a solid");
+    importObjects(file, main, out);
+    if (main.boolean("constant_DE_threshold"))
+        out.approximated.push_back({"detail",
+                                    "constant_DE_threshold: a hit threshold in world units; fraktal's is "
+                                    "per pixel footprint"});
+
+    // ---- Image, camera, look ----
+    p.render.width = std::clamp(main.integer("image_width"), 16, 16384);
+    p.render.height = std::clamp(main.integer("image_height"), 16, 16384);
+    p.render.detail = std::clamp(0.5 / std::max(main.number("detail_level"), 1e-3), 1e-3, 100.0);
+    importCamera(main, out);
+    importLook(file, main, out);
+    return out;
+}
+
+std::string importDescription(const FractFile& file, const FractImport& result) {
+    std::ostringstream s;
+    s << "Imported from the Mandelbulber2 settings file " << std::filesystem::path(file.source).filename().string();
+    if (!file.version.empty()) s << " (version " << file.version << ")";
+    s << ": ";
+    for (size_t i = 0; i < result.formulas.size(); ++i) s << (i ? " + " : "") << result.formulas[i];
+    s << ".";
+    if (!result.unsupported.empty()) {
+        s << " Dropped (fraktal cannot express):";
+        for (const ImportItem& item : result.unsupported) s << " " << item.text() << ";";
+    }
+    if (!result.approximated.empty()) {
+        s << " Approximated:";
+        for (const ImportItem& item : result.approximated) s << " " << item.text() << ";";
+    }
+    return s.str();
+}
+
+std::string formulaName(int id) {
+    if (const FormulaInfo* f = findFormula(id)) return std::string(f->name);
+    return "formula " + std::to_string(id);
+}
+
+}  // namespace fraktal::mb2

@@ -1,0 +1,312 @@
+// Mandelbulber2 settings files: the parser, the mapping onto blocks, `fraktal import` as a person
+// runs it, and a fixed set of Mandelbulber2's own example files rendered by both programs, whose
+// silhouettes must agree (or whose refusal must name its reason). Mandelbulber2 comes from
+// scripts/install-deps.sh; its masks are computed here, never stored.
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/import/fract_import.hpp"
+#include "test_support.hpp"
+
+namespace fraktal {
+namespace {
+
+namespace fs = std::filesystem;
+using mb2::FractFile;
+using mb2::parseFractFile;
+
+const std::string kHeader = "# Mandelbulber settings file\n# version 2.20\n# only modified parameters\n";
+
+mb2::FractImport importText(const std::string& body) {
+    return mb2::importFract(parseFractFile(kHeader + body, "t.fract"));
+}
+
+std::vector<std::string> blockIds(const Formula& f) {
+    std::vector<std::string> ids;
+    for (const Node& n : f.nodes) ids.emplace_back(n.block->id);
+    return ids;
+}
+
+double param(const Node& n, std::string_view name, int component = 0) {
+    return n.values[size_t(n.block->paramIndex(name))][component];
+}
+
+bool mentions(const std::vector<mb2::ImportItem>& items, const std::string& where, const std::string& what) {
+    for (const auto& item : items)
+        if (item.where == where && item.what.find(what) != std::string::npos) return true;
+    return false;
+}
+
+TEST(FractFile, ReadsLocaleDecimalsVectorsColoursAndBooleans) {
+    const FractFile f = parseFractFile(kHeader +
+                                           "[main_parameters]\ncamera 1,5 -2,25 0,125;\nfov 1,2;\nbackground_color_1 "
+                                           "ffff 8000 0000;\nlegacy_coordinate_system true;\n[fractal_1]\npower 7;\n",
+                                       "t.fract");
+    EXPECT_EQ(f.version, "2.20");
+    EXPECT_EQ(*mb2::parseVector(f.find("main_parameters", "camera")->value), vec3(1.5, -2.25, 0.125));
+    EXPECT_DOUBLE_EQ(*mb2::parseNumber(f.find("main_parameters", "fov")->value), 1.2);
+    const vec3 c = *mb2::parseColour(f.find("main_parameters", "background_color_1")->value);
+    EXPECT_DOUBLE_EQ(c.x, 1.0);
+    EXPECT_NEAR(c.y, 0.5, 1e-4);
+    EXPECT_EQ(mb2::parseBoolean(f.find("main_parameters", "legacy_coordinate_system")->value), true);
+    EXPECT_EQ(f.find("fractal_1", "power")->line, 10);
+    EXPECT_FALSE(mb2::parseVector("1 2"));
+    EXPECT_FALSE(mb2::parseNumber("1,2,3"));
+}
+
+TEST(FractFile, RefusesOtherFormatsAndBadLinesByName) {
+    try {
+        parseFractFile("Mandelbulber 1.2110000000000001;\nimage_width 800;\n", "old.fract");
+        FAIL() << "a v1.21 file was read";
+    } catch (const PresetError& e) {
+        EXPECT_EQ(e.file(), "old.fract");
+        EXPECT_NE(e.reason().find("v1.21 format"), std::string::npos) << e.what();
+    }
+    try {
+        parseFractFile(kHeader + "[main_parameters]\nN 250;\ncamera 1 2 3\n", "bad.fract");
+        FAIL() << "a line without ';' was read";
+    } catch (const PresetError& e) {
+        EXPECT_NE(e.field().find("line 6"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(parseFractFile("{\"format\": \"fraktal-preset\"}", "x.fract"), PresetError);
+    EXPECT_THROW(parseFractFile(kHeader + "[main_parameters]\nN 250;\nN 100;\n", "twice.fract"), PresetError);
+    // A value that is not a number names its parameter.
+    try {
+        importText("[main_parameters]\nN many;\n");
+        FAIL();
+    } catch (const PresetError& e) {
+        EXPECT_NE(e.field().find("N"), std::string::npos);
+        EXPECT_NE(e.reason().find("many"), std::string::npos);
+    }
+}
+
+TEST(FractImport, DefaultsAreMandelbulber2sOwn) {
+    // A file with no formula line is Mandelbulber2's default: a power-9 Mandelbulb (not fraktal's
+    // 8), c added, the log DE, bailout 10, 250 iterations, its default camera and fov 1.
+    const mb2::FractImport r = importText("[main_parameters]\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(blockIds(r.preset.formula), (std::vector<std::string>{"mandelbulb_sine", "add_c"}));
+    EXPECT_EQ(param(r.preset.formula.nodes[0], "power"), 9.0);
+    EXPECT_EQ(r.preset.formula.estimator.block->id, "escape_log");
+    EXPECT_EQ(r.preset.formula.bailout, 10.0);
+    EXPECT_EQ(r.preset.formula.iterations, 250);
+    EXPECT_EQ(r.preset.camera.position, vec3(3, -6, 2));
+    EXPECT_NEAR(r.preset.camera.fovY, 2.0 * glm::degrees(std::atan(0.5)), 1e-9);
+    EXPECT_FALSE(r.preset.camera.flipVertical);
+}
+
+TEST(FractImport, MengerSpongeIsMengerRotateAboutItsCorner) {
+    // abs, sort, z *= s, x and y less 2, z less 2 above 1: the corner 2 / (s - 1); DE (r - 2) / dr.
+    const mb2::FractImport r = importText("[main_parameters]\nformula_1 7;\n[fractal_1]\ntransf_scale_3 2,5;\n");
+    ASSERT_TRUE(r.faithful());
+    ASSERT_EQ(blockIds(r.preset.formula), std::vector<std::string>{"menger_rotate"});
+    const Node& n = r.preset.formula.nodes[0];
+    EXPECT_DOUBLE_EQ(param(n, "scale"), 2.5);
+    EXPECT_NEAR(param(n, "offset", 2), 2.0 / 1.5, 1e-12);
+    EXPECT_EQ(r.preset.formula.estimator.block->id, "escape_linear");
+    EXPECT_EQ(param(r.preset.formula.estimator, "offset"), 2.0);
+    EXPECT_EQ(r.preset.formula.bailout, 10.0);
+}
+
+TEST(FractImport, HybridSlotsRunOnTheirPhasesOfTheCycle) {
+    // Slot 1 (Mandelbox) twice, slot 2 (Mandelbulb) once: a cycle of 3, the box's nodes twice.
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 2;\nformula_iterations_1 2;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const auto ids = blockIds(r.preset.formula);
+    // box_fold, sphere_fold, scale, add_c twice; mandelbulb_sine, add_c.
+    ASSERT_EQ(ids.size(), 4u + 4u + 2u);
+    for (size_t i = 0; i < ids.size(); ++i) {
+        const Node& n = r.preset.formula.nodes[i];
+        EXPECT_EQ(n.period, 3);
+        EXPECT_EQ(n.phase, i < 4 ? 0 : i < 8 ? 1 : 2) << ids[i];
+    }
+    EXPECT_EQ(ids[4], "box_fold");
+    EXPECT_EQ(ids[8], "mandelbulb_sine");
+    // Linear for 2 of 3 iterations: the DE function most of the cycle uses; the larger bailout.
+    EXPECT_EQ(r.preset.formula.estimator.block->id, "escape_linear");
+    EXPECT_EQ(r.preset.formula.bailout, 100.0);
+}
+
+TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 3;\nformula_stop_iteration_1 5;\n"
+        "primitive_water_1_enabled true;\n[fractal_2]\n");
+    EXPECT_FALSE(r.faithful());
+    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (mandelbulb_power2)", "no fraktal blocks")) << r.unsupported.size();
+    EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "iteration window"));
+    EXPECT_TRUE(mentions(r.unsupported, "main", "primitive water 1"));
+    // An option of a mapped formula, and a value outside a block's range.
+    const mb2::FractImport bulb = importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 10;\npower 40;\n");
+    EXPECT_TRUE(mentions(bulb.unsupported, "slot 1 (mandelbulb)", "alpha_angle_offset 10"));
+    EXPECT_TRUE(mentions(bulb.unsupported, "slot 1 (mandelbulb)", "mandelbulb_sine.power 40 is outside"));
+}
+
+TEST(FractImport, CameraFollowsTheFileVersionAndLegacyCoordinates) {
+    const mb2::FractImport legacy = importText("[main_parameters]\nlegacy_coordinate_system true;\nfov 1,2;\n");
+    EXPECT_TRUE(legacy.preset.camera.flipVertical);
+    EXPECT_NEAR(legacy.preset.camera.fovY, glm::degrees(2.0 * std::atan(0.6)), 1e-9);
+    // From 2.21 the file stores degrees.
+    const mb2::FractImport degrees = mb2::importFract(
+        parseFractFile("# Mandelbulber settings file\n# version 2.25\n[main_parameters]\nfov 61,9;\n", "new.fract"));
+    EXPECT_DOUBLE_EQ(degrees.preset.camera.fovY, 61.9);
+    // The flipped camera mirrors every ray top to bottom.
+    Camera c = legacy.preset.camera;
+    const vec3 up = c.rayDirection(0.0, 0.8, 1.0);
+    c.flipVertical = false;
+    const vec3 down = c.rayDirection(0.0, -0.8, 1.0);
+    EXPECT_NEAR(length(up - down), 0.0, 1e-12);
+}
+
+// ---- `fraktal import` as a person runs it ----
+
+struct Sandbox {
+    fs::path dir = fs::temp_directory_path() / ("fraktal_import_" + std::to_string(::getpid()));
+    Sandbox() {
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    ~Sandbox() { fs::remove_all(dir); }
+    std::string path(const std::string& name) const { return (dir / name).string(); }
+    std::string write(const std::string& name, const std::string& text) const {
+        std::ofstream(dir / name) << text;
+        return path(name);
+    }
+};
+
+TEST(CliImport, RefusesWhatItCannotExpressAndWritesNothingUnlessLenient) {
+    const Sandbox box;
+    const std::string file = box.write(
+        "hybrid.fract", kHeader + "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 4;\n");
+    const auto strict = test::runCli("import '" + file + "' -o '" + box.path("out.json") + "'");
+    EXPECT_NE(strict.exitCode, 0);
+    EXPECT_NE(strict.output.find("slot 2 (hypercomplex)"), std::string::npos) << strict.output;
+    EXPECT_NE(strict.output.find("hybrid.fract"), std::string::npos) << strict.output;
+    EXPECT_FALSE(fs::exists(box.path("out.json")));
+    EXPECT_FALSE(fs::exists(box.path("out.json.tmp")));
+
+    const auto lenient = test::runCli("import --lenient '" + file + "' -o '" + box.path("out.json") + "'");
+    ASSERT_EQ(lenient.exitCode, 0) << lenient.output;
+    const Preset p = loadPreset(box.path("out.json"));
+    EXPECT_NE(p.description.find("Dropped"), std::string::npos);
+    EXPECT_NE(p.description.find("slot 2 (hypercomplex)"), std::string::npos) << p.description;
+    EXPECT_EQ(p.name, "hybrid");
+}
+
+TEST(CliImport, RendersAFractFileDirectlyAndChecksIt) {
+    const Sandbox box;
+    const std::string file = box.write("menger.fract", kHeader + "[main_parameters]\nformula_1 7;\nN 8;\n");
+    const auto r = test::runCli("render '" + file + "' -o '" + box.path("m.exr") + "' --size 32x24 --spp 1 -q");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(box.path("m.exr")));
+    const auto bad =
+        test::runCli("render '" + box.write("bad.fract", "hello\n") + "' -o '" + box.path("b.exr") + "' -q");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.output.find("not a Mandelbulber2 settings file"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(box.path("b.exr")));
+}
+
+// ---- Against Mandelbulber2 itself ----
+
+struct Mask {
+    int width = 0, height = 0;
+    std::vector<bool> hit;
+};
+
+Mask exrMask(const std::string& path) {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i dw = file.header().dataWindow();
+    Mask m{dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1, {}};
+    std::vector<float> alpha(size_t(m.width) * size_t(m.height));
+    Imf::FrameBuffer fb;
+    char* base = reinterpret_cast<char*>(alpha.data()) -
+                 (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * m.width) * ptrdiff_t(sizeof(float));
+    fb.insert("A", Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * size_t(m.width)));
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+    for (float a : alpha) m.hit.push_back(a >= 0.5f);
+    return m;
+}
+
+Mask pngAlphaMask(const std::string& path) {
+    int w = 0, h = 0, n = 0;
+    stbi_us* pixels = stbi_load_16(path.c_str(), &w, &h, &n, 4);
+    if (!pixels) return {};
+    Mask m{w, h, {}};
+    for (size_t i = 0; i < size_t(w) * size_t(h); ++i) m.hit.push_back(pixels[4 * i + 3] >= 32768);
+    stbi_image_free(pixels);
+    return m;
+}
+
+double intersectionOverUnion(const Mask& a, const Mask& b) {
+    long both = 0, either = 0;
+    for (size_t i = 0; i < a.hit.size(); ++i) both += a.hit[i] && b.hit[i], either += a.hit[i] || b.hit[i];
+    return either ? double(both) / double(either) : 1.0;
+}
+
+struct Expected {
+    std::string file;    // under /usr/share/mandelbulber2
+    std::string refuse;  // empty: imports and matches; else what the refusal names
+};
+
+TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
+    const fs::path share = "/usr/share/mandelbulber2";
+    ASSERT_TRUE(fs::exists("/usr/bin/mandelbulber2"))
+        << "mandelbulber2 is missing: scripts/install-deps.sh installs it";
+    const std::string km = "examples/Krzysztof Marczak collection - license Creative Commons (CC-BY 4.0)/";
+    const std::vector<Expected> cases = {
+        {"toolbar/mandelbox scale 2.fract", ""},
+        {"toolbar/mandelbox scale -2.fract", ""},
+        {"toolbar/menger sponge.fract", ""},
+        {"toolbar/dodecahedron.fract", ""},
+        {"toolbar/octahedron.fract", ""},
+        {"toolbar/quaternion.fract", ""},
+        {"toolbar/mandelbulb_power_2.fract", "slot 1 (mandelbulb): alpha_angle_offset"},
+        {"examples/mandelbox001.fract", ""},
+        {"examples/menger_sponge_001.fract", ""},
+        {"examples/IFS_001.fract", "IFS_menger_sponge_mode"},
+        {"examples/hypercomplex001.fract", "slot 1 (hypercomplex): the formula hypercomplex"},
+        {"examples/boolean001.fract", "boolean_operators"},
+    };
+    const Sandbox box;
+    const std::string size = "96x72";
+    for (const Expected& c : cases) {
+        SCOPED_TRACE(c.file);
+        const fs::path file = share / c.file;
+        ASSERT_TRUE(fs::exists(file));
+        const auto imported = test::runCli("import '" + file.string() + "' -q -o '" + box.path("s.json") + "'");
+        if (!c.refuse.empty()) {
+            EXPECT_NE(imported.exitCode, 0);
+            EXPECT_NE(imported.output.find(c.refuse), std::string::npos) << imported.output;
+            continue;
+        }
+        ASSERT_EQ(imported.exitCode, 0) << imported.output;
+        const auto rendered = test::runCli("render '" + box.path("s.json") + "' --size " + size + " --spp 1 -q -o '" +
+                                           box.path("f.exr") + "'");
+        ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+        const std::string peer = "HOME='" + box.dir.string() +
+                                 "' QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r " + size + " -o '" +
+                                 box.path("mb") + "' '" + file.string() + "' > /dev/null 2>&1 < /dev/null";
+        fs::remove(box.path("mb.png"));
+        ASSERT_EQ(std::system(peer.c_str()), 0);
+        const Mask ours = exrMask(box.path("f.exr")), theirs = pngAlphaMask(box.path("mb.png"));
+        ASSERT_EQ(theirs.width, 96);
+        ASSERT_EQ(ours.hit.size(), theirs.hit.size());
+        long covered = 0;
+        for (bool h : theirs.hit) covered += h;
+        EXPECT_GT(covered, 96 * 72 / 20) << "Mandelbulber2 shows almost nothing: no silhouette to compare";
+        EXPECT_GE(intersectionOverUnion(ours, theirs), 0.9);
+    }
+}
+
+}  // namespace
+}  // namespace fraktal
