@@ -56,23 +56,6 @@ echo "drop menger.exr: $(q .status.text)"
     fail "the dropped EXR's formula is not the Menger sponge's: $(q '.document.formula.nodes | map(.block) | join(" ")')"
 [ "$(q .undoDepth)" = 0 ] || fail "opening the EXR left $(q .undoDepth) undo steps"
 
-# A Mandelbulber2 settings file opens by import: the Menger sponge's one block. One that uses what
-# fraktal cannot express opens too, and the status line (an error) names each dropped thing.
-printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 7;\nN 10;\n' >"$home/sponge.fract"
-printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 4;\n' \
-    >"$home/hyper.fract"
-drop "$home/sponge.fract"
-echo "drop sponge.fract: $(q .status.text)"
-[ "$(q .status.error)" = false ] || fail "the Mandelbulber2 file did not open: $(q .status.text)"
-q .status.text | grep -q "Imported sponge.fract" || fail "the status does not say the file was imported: $(q .status.text)"
-[ "$(q '.document.formula.nodes | map(.block) | join(" ")')" = menger_rotate ] ||
-    fail "the imported Menger sponge is not one menger_rotate: $(q '.document.formula.nodes | map(.block) | join(" ")')"
-drop "$home/hyper.fract"
-echo "drop hyper.fract: $(q .status.text)"
-[ "$(q .status.error)" = true ] || fail "a lenient import shows no warning"
-q .status.text | grep -q "slot 2 (hypercomplex)" || fail "the status does not name the dropped slot: $(q .status.text)"
-[ "$(q '.document.formula.nodes | map(.block) | join(" ")')" = "box_fold sphere_fold scale add_c" ] ||
-    fail "the hybrid's Mandelbox part did not open: $(q '.document.formula.nodes | map(.block) | join(" ")')"
 
 # type_into_browser TEXT: typed into the browser's path field once it has the keys (a new folder's
 # field takes them a frame or two after the Enter that went there), then Enter.
@@ -122,6 +105,29 @@ q '.fileBrowser.recentFolders[]' | grep -q "presets$" ||
     fail "after a restart the browser's recent folders do not list the presets folder: $(jq -c .fileBrowser.recentFolders "$state")"
 echo "recent after restart: $(jq -c .fileBrowser.recentFiles "$state")"
 xdotool key Escape
+stop
+
+# A Mandelbulber2 settings file opens by import: the Menger sponge's one block. One that uses what
+# fraktal cannot express opens too, and the status line (an error) names each dropped thing. An
+# import is a new document that is not saved yet (its step factor is measured once it is open), so
+# each drop goes to an editor of its own.
+printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 7;\nN 10;\n' >"$home/sponge.fract"
+printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 4;\n' \
+    >"$home/hyper.fract"
+nodes() { q '.document.formula.nodes | map(.block) | join(" ")'; }
+start "$presets/mandelbulb.json" --replay-drops "$drops"
+drop "$home/sponge.fract"
+echo "drop sponge.fract: $(q .status.text)"
+[ "$(q .status.error)" = false ] || fail "the Mandelbulber2 file did not open: $(q .status.text)"
+q .status.text | grep -q "Imported sponge.fract" || fail "the status does not say the file was imported: $(q .status.text)"
+[ "$(nodes)" = "menger_rotate escape_linear" ] || fail "the imported Menger sponge is not one menger_rotate: $(nodes)"
+stop
+start "$presets/mandelbulb.json" --replay-drops "$drops"
+drop "$home/hyper.fract"
+echo "drop hyper.fract: $(q .status.text)"
+[ "$(q .status.error)" = true ] || fail "a lenient import shows no warning"
+q .status.text | grep -q "slot 2 (hypercomplex)" || fail "the status does not name the dropped slot: $(q .status.text)"
+[ "$(nodes)" = "box_fold sphere_fold scale add_c escape_linear" ] || fail "the hybrid's Mandelbox part did not open: $(nodes)"
 stop
 
 [ $failures -eq 0 ] && echo "editor_files_xvfb_test: all OK" || { echo "editor_files_xvfb_test: $failures failure(s)"; exit 1; }

@@ -127,7 +127,7 @@ Document loadDocument(const fs::path& file) {
         d.plane = planePresetFromExr(file);
         if (!d.plane) d.preset = presetFromExr(file);
     } else if (isImportedSceneFile(file)) {
-        d.preset = importSceneFile(file, {.lenient = true}).preset;
+        d.preset = importSceneFile(file, {.lenient = true, .measure = false}).preset;
     } else if (isPlanePresetFile(file)) {
         d.plane = loadPlanePreset(file);
     } else {
@@ -140,10 +140,13 @@ Document loadDocument(const fs::path& file) {
 // A Mandelbulber2 file opens as a new, unsaved preset (Save asks where: never over the .fract),
 // and the status line lists what fraktal could not express or only approximates.
 bool openImportedScene(EditorState& s, const fs::path& file) {
-    ImportedScene scene = importSceneFile(file, {.lenient = true});
+    // The step factor is measured as after any structure change: between frames, then in the
+    // background (AutoStepFactor), not here before the window shows the scene.
+    ImportedScene scene = importSceneFile(file, {.lenient = true, .measure = false});
     Document d;
     d.preset = std::move(scene.preset);
     adoptDocument(s, std::move(d), fs::path());
+    s.stepFactor = AutoStepFactor{};
     rememberRecent(s, file);
     std::string status = "Imported " + file.filename().string() + " (Mandelbulber2)";
     if (!scene.unsupported.empty()) {

@@ -1,6 +1,7 @@
 #include "app/editor/scene_import.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/editor/fly_speed.hpp"
 #include "app/editor/formula_fit.hpp"
@@ -41,12 +42,23 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
     }
     result.preset.name = path.stem().string();
     result.preset.description = mb2::importDescription(file, result);
+    if (result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) fitBound(result.preset);
     if (options.measure && result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) {
-        fitBound(result.preset);
         const EstimatorMeasurement m = measureSafeStep(result.preset.formula, result.preset.camera);
         if (m.report.samples > 0 && m.hasFactor)
-            result.preset.formula.deFactor = std::min(result.preset.formula.deFactor, m.factor);
+            // The measured factor replaces the file's DE_factor: Mandelbulber2's artists lower that
+            // for its own estimate (0.05 in its fog examples), and at a twentieth of the safe step
+            // a ray runs out of steps before it meets the surface.
+            // The hit threshold applies to the scaled estimate (fract_import.cpp): it follows.
+            result.preset.render.detail =
+                std::clamp(result.preset.render.detail * m.factor / result.preset.formula.deFactor, 1e-3, 100.0);
+        result.preset.formula.deFactor = m.factor;
     }
+    // A ray keeps the reach of 256 full steps at the factor: a file's low DE_factor that no
+    // measurement replaced (an object drawn by its estimate alone, nothing inside it to measure
+    // against: a Menger sponge at 250 iterations) would otherwise end rays before the surface.
+    Formula& f = result.preset.formula;
+    result.preset.render.maxSteps = std::clamp(int(std::ceil(256.0 / f.deFactor)), result.preset.render.maxSteps, 4096);
     // What the import built must be a preset fraktal reads back: a value the mapping let through
     // outside a range is an error here, naming the file, not a preset that fails to load later.
     try {

@@ -16,7 +16,9 @@ struct SceneImportOptions {
     // Write the preset although the file uses what fraktal cannot express (listed in its
     // description); otherwise such a file is refused.
     bool lenient = false;
-    // Fit the bound and measure the safe step factor (CPU; about a second).
+    // Measure the safe step factor (CPU: a fraction of a second to half a minute for 250
+    // iterations), as `fraktal check` does; the bound is fitted either way. The editor measures it
+    // itself, as after any structure change.
     bool measure = true;
 };
 

@@ -29,10 +29,16 @@ collection() {  # the collection's short name, as the reference's T8 writes it
     *) echo root ;;
   esac
 }
-# mandelbulber2 renders the file as it is but without depth of field: its blur (Monte Carlo DOF
-# takes minutes a file) is no part of the shape, and fraktal's fast still has none.
+# mandelbulber2 renders the file as it is, less what adds alpha where there is no surface or blurs
+# it: depth of field (its Monte Carlo DOF takes minutes a file; fraktal's fast still has none), fog,
+# iteration fog, glow, orbit-trap ("fake") lights, visible light sources and transparent surfaces.
+# The silhouette is the shape's alone. The same list is in tests/import_fract_test.cpp.
+peerKeys="DOF_enabled false|DOF_monte_carlo false|volumetric_fog_enabled false|iteration_fog_enable false|basic_fog_enabled false|glow_enabled false|fake_lights_enabled false|main_light_visibility 0|aux_light_visibility 0|main_light_volumetric_enabled false|mat1_transparency_of_surface 0"
 peerSettings() {  # FILE OUT
-  sed '/^DOF_enabled /d; /^DOF_monte_carlo /d' "$1" | sed '/^\[main_parameters\]/a DOF_enabled false;\nDOF_monte_carlo false;' > "$2"
+  local deletes="" appends=""
+  IFS='|' read -r -a pairs <<< "$peerKeys"
+  for kv in "${pairs[@]}"; do deletes+="/^${kv%% *} /d;"; appends+="${kv};\\n"; done
+  sed "$deletes" "$1" | sed "/^\[main_parameters\]/a ${appends%\\n}" > "$2"
 }
 expressible() { grep -qxF "$1 / $2" "$root/bench/import/expressible.txt"; }
 
