@@ -255,7 +255,7 @@ double intersectionOverUnion(const Mask& a, const Mask& b) {
 
 // A copy of a settings file for mandelbulber2 without what adds alpha where there is no surface
 // or blurs it (depth of field, fog, glow, orbit-trap lights, visible light sources, transparent
-// surfaces): the silhouette is the shape's alone. The list of bench/import/run.sh.
+// surfaces, reflections): the silhouette is the shape's alone. The list of bench/import/run.sh.
 std::string peerSettings(const fs::path& file, const std::string& out) {
     const std::vector<std::pair<std::string, std::string>> keys = {{"DOF_enabled", "false"},
                                                                    {"DOF_monte_carlo", "false"},

@@ -9,6 +9,7 @@
 # bench/import/out). Writes OUT/results.tsv (one row per file), OUT/summary.md (the tables of
 # bench/import/README.md) and OUT/worst.png (a contact sheet of the worst matches: fraktal's
 # mask, Mandelbulber2's, both overlaid; yellow both, red fraktal only, green Mandelbulber2 only).
+# FRACT_LIST: a file of settings files' paths (one a line) to run instead of the whole library.
 # Needs mandelbulber2 (scripts/install-deps.sh installs it).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -31,9 +32,10 @@ collection() {  # the collection's short name, as the reference's T8 writes it
 }
 # mandelbulber2 renders the file as it is, less what adds alpha where there is no surface or blurs
 # it: depth of field (its Monte Carlo DOF takes minutes a file; fraktal's fast still has none), fog,
-# iteration fog, glow, orbit-trap ("fake") lights, visible light sources and transparent surfaces.
+# iteration fog, glow, orbit-trap ("fake") lights, visible light sources, transparent surfaces and
+# ray-traced reflections (a mirror takes the alpha of what it reflects: the sky's 0).
 # The silhouette is the shape's alone. The same list is in tests/import_fract_test.cpp.
-peerKeys="DOF_enabled false|DOF_monte_carlo false|volumetric_fog_enabled false|iteration_fog_enable false|basic_fog_enabled false|glow_enabled false|fake_lights_enabled false|main_light_visibility 0|aux_light_visibility 0|main_light_volumetric_enabled false|mat1_transparency_of_surface 0"
+peerKeys="DOF_enabled false|DOF_monte_carlo false|volumetric_fog_enabled false|iteration_fog_enable false|basic_fog_enabled false|glow_enabled false|fake_lights_enabled false|main_light_visibility 0|aux_light_visibility 0|main_light_volumetric_enabled false|mat1_transparency_of_surface 0|raytraced_reflections false"
 peerSettings() {  # FILE OUT
   local deletes="" appends=""
   IFS='|' read -r -a pairs <<< "$peerKeys"
@@ -80,7 +82,8 @@ while IFS= read -r -d "" -u 3 file; do
     printf '%s\t%s\t%s\t%s\t%s\t\t\t\t\n' "$c" "$name" "$exp" "$status" "$reason" >> "$out/results.tsv"
   fi
   [ $((n % 25)) -eq 0 ] && echo "$n files" >&2
-done 3< <(find "$share/toolbar" "$share/examples" -name "*.fract" -print0 | sort -z)
+done 3< <(if [ -n "${FRACT_LIST:-}" ]; then tr '\n' '\0' < "$FRACT_LIST"; else
+  find "$share/toolbar" "$share/examples" -name "*.fract" -print0 | sort -z; fi)
 
 python3 "$root/bench/import/summarize.py" "$out/results.tsv" "$(( ${size%x*} * ${size#*x} ))" > "$out/summary.md"
 # The contact sheet: the 12 worst imported matches.

@@ -5,8 +5,8 @@
 # mandelbulber2 setting the fastest fraktal setting with at most its error).
 # Usage: bench/import/speed.sh RESULTS.tsv [COUNT] [WxH] [FRAKTAL]   (defaults: 12 scenes, 1280x720,
 # build/app/fraktal). RESULTS.tsv is bench/import/run.sh's; the scenes are COUNT of its matching
-# imports, spread evenly over its list, and they always include every one whose object does not fill
-# the view. Environment: FRAKTAL_SPP (default "1 2 4"), PEER_AA (default "1 2"), TRUTH_AA (default 3:
+# imports, spread evenly over its list: those whose object does not fill the view first (an edge to
+# measure), then views from inside. Environment: FRAKTAL_SPP (default "1 2 4"), PEER_AA (default "1 2"), TRUTH_AA (default 3:
 # both truths take 9 samples per pixel).
 set -euo pipefail
 results=$1; count=${2:-12}; size=${3:-1280x720}
@@ -26,7 +26,10 @@ pixels=$(( 160 * 120 ))
 # collection / file of the matching imports: the partial views first, then the rest evenly spaced.
 mapfile -t partial < <(awk -F'\t' -v full=$pixels '$4 == "matching" && $8 != full { print $1 "\t" $2 }' "$results")
 mapfile -t rest < <(awk -F'\t' -v full=$pixels '$4 == "matching" && $8 == full { print $1 "\t" $2 }' "$results")
-scenes=("${partial[@]}")
+scenes=()
+# SCENES: "collection<TAB>name" lines to time instead of the choice below.
+if [[ -n ${SCENES:-} ]]; then mapfile -t scenes <<< "$SCENES"; count=0; partial=(); rest=(); fi
+for ((i = 0; i < count && i < ${#partial[@]}; i++)); do scenes+=("${partial[$(( i * ${#partial[@]} / count ))]}"); done
 want=$(( count - ${#scenes[@]} ))
 if (( want > 0 && ${#rest[@]} > 0 )); then
   for ((i = 0; i < want && i < ${#rest[@]}; i++)); do scenes+=("${rest[$(( i * ${#rest[@]} / want ))]}"); done
@@ -73,12 +76,13 @@ for scene in "${scenes[@]}"; do
     read -r peerError _ _ < <("$tmp/coverage_error" "$tmp/mb_truth.png" "$tmp/mb.png")
     best=""
     for spp in "${fraktalSpp[@]}"; do
-      if (($(echo "${fError[$spp]} <= $peerError + 1e-6" | bc -l))); then
-        if [[ -z $best ]] || (($(echo "${fTime[$spp]} < ${fTime[$best]}" | bc -l))); then best=$spp; fi
+      # awk, not bc: the errors may be printed as 1e-05.
+      if awk -v a="${fError[$spp]}" -v b="$peerError" 'BEGIN { exit !(a <= b + 1e-6) }'; then
+        if [[ -z $best ]] || awk -v a="${fTime[$spp]}" -v b="${fTime[$best]}" 'BEGIN { exit !(a < b) }'; then best=$spp; fi
       fi
     done
     if [[ -n $best ]]; then
-      echo "| $c / $name | $((aa * aa)) | $t | $peerError | $best spp | ${fTime[$best]} | ${fError[$best]} | $(echo "$t / ${fTime[$best]}" | bc -l | xargs printf %.2f) |"
+      echo "| $c / $name | $((aa * aa)) | $t | $peerError | $best spp | ${fTime[$best]} | ${fError[$best]} | $(awk -v a="$t" -v b="${fTime[$best]}" 'BEGIN { printf "%.2f", a / b }') |"
     else
       echo "| $c / $name | $((aa * aa)) | $t | $peerError | none of spp ${fraktalSpp[*]} | | | |"
     fi
