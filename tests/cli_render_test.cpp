@@ -21,15 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::runCli;
 
-struct Sandbox {
-    fs::path dir = fs::temp_directory_path() / ("fraktal_cli_" + std::to_string(::getpid()));
-    Sandbox() {
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Sandbox() { fs::remove_all(dir); }
-    std::string path(const std::string& name) const { return (dir / name).string(); }
-    int fileCount() const { return int(std::distance(fs::directory_iterator(dir), fs::directory_iterator{})); }
+// A sandbox named for this file's tests.
+struct Sandbox : test::Sandbox {
+    Sandbox() : test::Sandbox("fraktal_cli_") {}
 };
 
 std::string preset(const std::string& name) { return (test::sourceDir() / "presets" / (name + ".json")).string(); }

@@ -169,18 +169,9 @@ TEST(FractImport, CameraFollowsTheFileVersionAndLegacyCoordinates) {
 
 // ---- `fraktal import` as a person runs it ----
 
-struct Sandbox {
-    fs::path dir = fs::temp_directory_path() / ("fraktal_import_" + std::to_string(::getpid()));
-    Sandbox() {
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    ~Sandbox() { fs::remove_all(dir); }
-    std::string path(const std::string& name) const { return (dir / name).string(); }
-    std::string write(const std::string& name, const std::string& text) const {
-        std::ofstream(dir / name) << text;
-        return path(name);
-    }
+// A sandbox named for this file's tests.
+struct Sandbox : test::Sandbox {
+    Sandbox() : test::Sandbox("fraktal_import_") {}
 };
 
 TEST(CliImport, RefusesWhatItCannotExpressAndWritesNothingUnlessLenient) {

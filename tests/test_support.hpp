@@ -2,9 +2,12 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <random>
 #include <string>
@@ -59,6 +62,27 @@ inline gl::HeadlessContext& glContext() {
 struct CliRun {
     int exitCode;  // -1 when the process did not exit normally (a crash)
     std::string output;
+};
+
+// A folder of the test's own under the system's temporary folder (named by `prefix` and the
+// process), empty at the start and removed at the end.
+struct Sandbox {
+    std::filesystem::path dir;
+    explicit Sandbox(const std::string& prefix)
+        : dir(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid()))) {
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir);
+    }
+    ~Sandbox() { std::filesystem::remove_all(dir); }
+    std::string path(const std::string& name) const { return (dir / name).string(); }
+    // Writes `text` to the file `name` in it; its path.
+    std::string write(const std::string& name, const std::string& text) const {
+        std::ofstream(dir / name) << text;
+        return path(name);
+    }
+    int fileCount() const {
+        return int(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator{}));
+    }
 };
 
 // Runs the fraktal command line with `args` (shell syntax; environment assignments may come

@@ -116,7 +116,8 @@ class Reader {
 };
 
 // Builds nodes, checking each value against its block's declared range: a value outside it is
-// unsupported (fraktal's blocks would refuse it), never clamped silently.
+// unsupported (fraktal's blocks would refuse it), and clamped only so that a lenient import, which
+// lists it as dropped, still writes a preset fraktal reads.
 class NodeBuilder {
    public:
     NodeBuilder(Reader& reader, std::vector<Node>& out) : reader_(reader), out_(out) {}
@@ -141,9 +142,8 @@ class NodeBuilder {
                                         fmt(d.min) + ", " + fmt(d.max) + "]");
                     break;
                 }
-            // Clamped, so that a lenient import still writes a preset fraktal reads.
             vec3 value = v.v;
-            for (int k = 0; k < 3; ++k)
+            for (int k = 0; k < components; ++k)
                 value[k] = std::isfinite(value[k]) ? std::clamp(value[k], d.min, d.max) : d.defaultValue[k];
             if (d.direction && length(value) < 1e-9) value = d.defaultValue;
             n.values[size_t(i)] = value;
@@ -170,6 +170,28 @@ class NodeBuilder {
 };
 
 using N = NodeBuilder;
+
+// transf_rotation when `enabled` is on, over the iteration window start/stop (`suffix` names it:
+// "" or "_R"); a window short of every iteration is refused (part 2 brings windows).
+void windowedRotation(Reader& r, NodeBuilder& b, const std::string& enabled, const std::string& suffix) {
+    if (!r.boolean(enabled)) return;
+    if (r.integer("transf_start_iterations" + suffix) > 0 || r.integer("transf_stop_iterations" + suffix) < 250)
+        r.unsupported("transf_start/stop_iterations" + suffix + ": a rotation on some iterations only (part 2)");
+    b.rotation(setRotation2(r.vector("transf_rotation")));
+}
+
+// transf_addition_constant, added after the formula's step (nothing when it is zero).
+void additionConstant(Reader& r, NodeBuilder& b) {
+    const vec3 add = r.vector("transf_addition_constant");
+    if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+}
+
+// A multiple of c given per axis: fraktal's add_c has one weight; its x when the three agree.
+double uniformMultiplier(Reader& r, const std::string& key) {
+    const vec3 m = r.vector(key);
+    if (m.x != m.y || m.y != m.z) r.unsupported(key + " " + fmt(m) + ": a per-axis multiple of c");
+    return m.x;
+}
 
 // ---- The formulas fraktal's blocks express (reference T5 "maps", T6 for each kernel) ----
 
@@ -225,13 +247,8 @@ void mapMengerMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_function_enabled_false", "iteration weights");
     if (std::abs(s - 1.0) < 1e-9) return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
     b.add("menger_rotate", {N::f("scale", s), N::v("offset", 2.0 * m / (s - 1.0))});
-    if (r.boolean("transf_rotation_enabled")) {
-        if (r.integer("transf_start_iterations") > 0 || r.integer("transf_stop_iterations") < 250)
-            r.unsupported("transf_start/stop_iterations: a rotation on some iterations only (part 2)");
-        b.rotation(setRotation2(r.vector("transf_rotation")));
-    }
-    const vec3 add = r.vector("transf_addition_constant");
-    if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+    windowedRotation(r, b, "transf_rotation_enabled", "");
+    additionConstant(r, b);
 }
 
 void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -296,13 +313,8 @@ void mapPseudoKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_function_enabledBx_false", "the box fold before the clamp");
     b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
                               N::f("size", r.number("transf_minimum_radius_05"))});
-    if (r.boolean("transf_function_enabledR_false")) {
-        if (r.integer("transf_start_iterations_R") > 0 || r.integer("transf_stop_iterations_R") < 250)
-            r.unsupported("transf_start/stop_iterations_R: a rotation on some iterations only (part 2)");
-        b.rotation(setRotation2(r.vector("transf_rotation")));
-    }
-    const vec3 add = r.vector("transf_addition_constant");
-    if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    additionConstant(r, b);
 }
 
 void mapQuaternion3d(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("bristorbrot", {N::f("twist", 0.0)}); }
@@ -355,25 +367,20 @@ void mapAmazingSurfMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& appr
 
 void mapAboxVsIcen1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
-    const vec3 m = r.vector("transf_constant_multiplier_111"), juliaC = r.vector("transf_constant_julia_c");
-    if (m.x != m.y || m.y != m.z)
-        r.unsupported("transf_constant_multiplier_111 " + fmt(m) + ": a per-axis multiple of c");
+    const double m = uniformMultiplier(r, "transf_constant_multiplier_111");
+    const vec3 juliaC = r.vector("transf_constant_julia_c");
     const bool julia = r.boolean("transf_constant_julia_mode");
     tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated);
     if (julia) {
-        b.add("add_c", {N::f("weight", m.x)});
+        b.add("add_c", {N::f("weight", m)});
     } else if (length(juliaC) > 0.0) {
         b.add("translate", {N::v("offset", juliaC)});
     }
     sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
     b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
-    if (r.boolean("transf_rotation_enabled")) {
-        if (r.integer("transf_start_iterations") > 0 || r.integer("transf_stop_iterations") < 250)
-            r.unsupported("transf_start/stop_iterations: a rotation on some iterations only (part 2)");
-        b.rotation(setRotation2(r.vector("transf_rotation")));
-    }
+    windowedRotation(r, b, "transf_rotation_enabled", "");
     // Julia mode: z += julia_c - m c; otherwise z += m c + julia_c.
-    b.add("add_c", {N::f("weight", julia ? -m.x : m.x)});
+    b.add("add_c", {N::f("weight", julia ? -m : m)});
     if (length(juliaC) > 0.0) b.add("translate", {N::v("offset", juliaC)});
 }
 
@@ -384,10 +391,7 @@ void mapKalisets1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("abs_fold", {});
     b.add("sphere_invert", {N::f("radius", std::sqrt(scale))});
     if (r.boolean("transf_addCpixel_enabled_false")) {
-        const vec3 m = r.vector("transf_constant_multiplier_111");
-        if (m.x != m.y || m.y != m.z)
-            r.unsupported("transf_constant_multiplier_111 " + fmt(m) + ": a per-axis multiple of c");
-        b.add("add_c", {N::f("weight", m.x)});
+        b.add("add_c", {N::f("weight", uniformMultiplier(r, "transf_constant_multiplier_111"))});
     }
     if (r.boolean("transf_constant_julia_mode"))
         b.add("translate", {N::v("offset", r.vector("transf_constant_julia_c"))});
