@@ -3,8 +3,9 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "app/editor/actions.hpp"
 #include "app/editor/formula_fit.hpp"
-#include "app/editor/panels.hpp"
+#include "app/editor/lights_edits.hpp"
 #include "app/editor/plane_edits.hpp"
 
 namespace fraktal::editor {
@@ -95,6 +96,37 @@ void frameObject(EditorState& s) {
     // Custom GLSL has no CPU body, and a GL probe per march step would stall the frame: the
     // bound sphere frames it.
     cam = f.cpuEvaluable() ? framedCamera(f, cpuDistance(f), cam) : defaultViewFor(f, cam);
+}
+
+void pickFocusAt(EditorState& s, const vec2& at) {
+    const Layout& l = s.layout;
+    LightsPanel& p = s.lights;
+    p.pickFocus = false;
+    ThinLens& lens = s.doc.preset.lighting.lens;
+    if (!lens.enabled()) {
+        setStatus(s, "Focus not set: depth of field is off (Lights tab: set an aperture radius first).", true);
+        return;
+    }
+    const Preset& preset = s.doc.preset;
+    const double ndcX = 2.0 * (at.x - l.viewportX) / std::max(double(l.viewportW), 1.0) - 1.0;
+    const double ndcY = 1.0 - 2.0 * (at.y - l.viewportY) / std::max(double(l.viewportH), 1.0);
+    const double aspect = double(l.viewportW) / std::max(double(l.viewportH), 1.0);
+    const double imageHeight = l.viewportH * s.doc.view.renderScale;
+    const std::optional<vec3> hit =
+        surfaceUnderCursor(preset.formula, preset.camera, preset.render, preset.shading,
+                           s.eyeDistance.of(preset.formula), ndcX, ndcY, aspect, imageHeight);
+    if (!hit) {
+        p.message = "Focus not changed: no surface under the cursor (sky).";
+        p.messageIsError = false;
+        setStatus(s, p.message, false);
+        return;
+    }
+    lens.focusDistance = viewAxisDistance(preset.camera, *hit);
+    char text[96];
+    std::snprintf(text, sizeof text, "Focus distance %.4g (the surface under the cursor).", lens.focusDistance);
+    p.message = text;
+    p.messageIsError = false;
+    setStatus(s, text, false);
 }
 
 }  // namespace fraktal::editor

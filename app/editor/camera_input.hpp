@@ -22,6 +22,11 @@ void updateCamera(EditorState& s);
 // the DE (formula_fit.hpp).
 void frameObject(EditorState& s);
 
+// Ctrl+click (or a click while the Lights tab's "Pick focus" waits): sets the lens focus
+// distance to the surface under window point `at` in the 3D viewport (one undo step), or says on
+// the status line that the sky is there.
+void pickFocusAt(EditorState& s, const vec2& at);
+
 // The 2D document's navigation: a drag (any button) pans, the wheel zooms about the cursor.
 // The image is imageWidth x imageHeight pixels shown over the viewport.
 void updatePlaneView(EditorState& s, int imageWidth, int imageHeight);

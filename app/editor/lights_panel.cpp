@@ -272,35 +272,6 @@ void chooseEnvironmentMap(EditorState& s, const std::filesystem::path& file) {
     say(p, "", false);
 }
 
-void pickFocusAt(EditorState& s, const vec2& at) {
-    const Layout& l = s.layout;
-    LightsPanel& p = s.lights;
-    p.pickFocus = false;
-    ThinLens& lens = s.doc.preset.lighting.lens;
-    if (!lens.enabled()) {
-        setStatus(s, "Focus not set: depth of field is off (Lights tab: set an aperture radius first).", true);
-        return;
-    }
-    const Preset& preset = s.doc.preset;
-    const double ndcX = 2.0 * (at.x - l.viewportX) / std::max(double(l.viewportW), 1.0) - 1.0;
-    const double ndcY = 1.0 - 2.0 * (at.y - l.viewportY) / std::max(double(l.viewportH), 1.0);
-    const double aspect = double(l.viewportW) / std::max(double(l.viewportH), 1.0);
-    const double imageHeight = l.viewportH * s.doc.view.renderScale;
-    const std::optional<vec3> hit =
-        surfaceUnderCursor(preset.formula, preset.camera, preset.render, preset.shading,
-                           s.eyeDistance.of(preset.formula), ndcX, ndcY, aspect, imageHeight);
-    if (!hit) {
-        say(p, "Focus not changed: no surface under the cursor (sky).", false);
-        setStatus(s, p.message, false);
-        return;
-    }
-    lens.focusDistance = viewAxisDistance(preset.camera, *hit);
-    char text[96];
-    std::snprintf(text, sizeof text, "Focus distance %.4g (the surface under the cursor).", lens.focusDistance);
-    say(p, text, false);
-    setStatus(s, text, false);
-}
-
 void drawLightsTab(EditorState& s) {
     LightsPanel& p = s.lights;
     p.widgets.clear();

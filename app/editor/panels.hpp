@@ -29,9 +29,6 @@ void drawCameraTab(EditorState& s);                                           //
 void drawRenderTab(EditorState& s);                                           // render_panel.cpp
 void drawShadingTab(EditorState& s);                                          // shading_panel.cpp
 void drawLightsTab(EditorState& s);                                           // lights_panel.cpp
-// Sets the lens focus distance to the surface under window point `at` in the 3D viewport (one
-// undo step), or says on the status line that the sky is there.
-void pickFocusAt(EditorState& s, const vec2& at);  // lights_panel.cpp
 // Takes `file` as the environment map when it is a readable EXR; otherwise the Lights tab says
 // why and the document keeps its map.
 void chooseEnvironmentMap(EditorState& s, const std::filesystem::path& file);  // lights_panel.cpp
