@@ -4,8 +4,8 @@
 
 #include <fstream>
 
-#include "app/editor/fly_speed.hpp"
-#include "app/editor/formula_edits.hpp"
+#include "app/editor/document/formula_edits.hpp"
+#include "app/editor/input/fly_speed.hpp"
 #include "core/gl/de_probe.hpp"
 #include "test_support.hpp"
 

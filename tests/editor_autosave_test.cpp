@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "app/editor/autosave.hpp"
+#include "app/editor/document/autosave.hpp"
 
 namespace fraktal::editor {
 namespace {

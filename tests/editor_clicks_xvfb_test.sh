@@ -1,5 +1,5 @@
 #!/bin/sh
-# No click is lost, whatever the frame time (app/editor/imgui_input.hpp). The real editor under
+# No click is lost, whatever the frame time (app/editor/input/imgui_input.hpp). The real editor under
 # Xvfb with frames made at least 250 ms long (--slow-frames, as a heavy preset on llvmpipe gives
 # 190-340 ms), driven with real X input: every Scene tab is clicked in turn, first as a quick tap
 # (the pointer moved onto the tab and clicked at once, all between two frames: Dear ImGui 1.86

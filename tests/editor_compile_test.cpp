@@ -1,4 +1,4 @@
-// Structure edits compile in the background (app/editor/background_compiler.hpp): on a second
+// Structure edits compile in the background (app/editor/viewport/background_compiler.hpp): on a second
 // context that shares objects with the viewport's, on another thread. While a structure compiles
 // the view keeps its last image and says so; once it is ready the frames are the same as those
 // of a view that compiles in place; a structure that does not compile leaves the last good image
@@ -8,8 +8,8 @@
 #include <chrono>
 #include <thread>
 
-#include "app/editor/background_compiler.hpp"
-#include "app/editor/viewport_adapter.hpp"
+#include "app/editor/viewport/background_compiler.hpp"
+#include "app/editor/viewport/viewport_adapter.hpp"
 #include "test_support.hpp"
 
 namespace fraktal::editor {

@@ -1,9 +1,9 @@
-// The export frame guide (app/editor/export_frame.hpp): every point of the guide in the viewport
+// The export frame guide (app/editor/viewport/export_frame.hpp): every point of the guide in the viewport
 // sees along the same ray as the matching point of the export, for exports narrower and wider
 // than the viewport. No GL.
 #include <gtest/gtest.h>
 
-#include "app/editor/export_frame.hpp"
+#include "app/editor/viewport/export_frame.hpp"
 #include "core/camera.hpp"
 
 namespace fraktal::editor {

@@ -7,8 +7,8 @@
 #include <chrono>
 #include <thread>
 
-#include "app/editor/actions.hpp"
-#include "app/editor/export_job.hpp"
+#include "app/editor/document/export_job.hpp"
+#include "app/editor/state/actions.hpp"
 
 namespace fraktal::editor {
 namespace {

@@ -1,4 +1,4 @@
-// The file browser's listing (app/editor/file_browser.hpp): folders first, by name; the filter;
+// The file browser's listing (app/editor/document/file_browser.hpp): folders first, by name; the filter;
 // EXRs with and without a fraktal preset in their header; recent folders.
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -9,7 +9,7 @@
 
 #include <fstream>
 
-#include "app/editor/file_browser.hpp"
+#include "app/editor/document/file_browser.hpp"
 #include "core/preset.hpp"
 #include "test_support.hpp"
 

@@ -1,12 +1,12 @@
 // Fitting a formula's settings to its blocks and framing its object from the DE
-// (app/editor/formula_fit.hpp).
+// (app/editor/document/formula_fit.hpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 
-#include "app/editor/formula_edits.hpp"
-#include "app/editor/formula_fit.hpp"
+#include "app/editor/document/formula_edits.hpp"
+#include "app/editor/document/formula_fit.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::editor {

@@ -1,11 +1,11 @@
-// The queue that hands window events to Dear ImGui a frame at a time (app/editor/imgui_input.hpp):
+// The queue that hands window events to Dear ImGui a frame at a time (app/editor/input/imgui_input.hpp):
 // what one frame's poll can see is taken, the rest waits, nothing is dropped and the order stays.
 #include <gtest/gtest.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "app/editor/imgui_input.hpp"
+#include "app/editor/input/imgui_input.hpp"
 
 namespace fraktal::editor {
 namespace {

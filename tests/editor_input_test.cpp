@@ -1,9 +1,9 @@
-// The viewport's input rules from window events (app/editor/pointer_input.hpp): clicks never
+// The viewport's input rules from window events (app/editor/input/pointer_input.hpp): clicks never
 // move the camera, a drag counts only past its threshold and then in full, how events are split
 // into frames changes nothing, and key taps shorter than a frame are kept.
 #include <gtest/gtest.h>
 
-#include "app/editor/pointer_input.hpp"
+#include "app/editor/input/pointer_input.hpp"
 
 namespace fraktal::editor {
 namespace {

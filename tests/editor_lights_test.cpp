@@ -1,4 +1,4 @@
-// The Lights tab's logic (app/editor/lights_edits.hpp): the light list's edits within kMaxLights,
+// The Lights tab's logic (app/editor/document/lights_edits.hpp): the light list's edits within kMaxLights,
 // the environment map check, the focus distance of the surface under the cursor, the undo
 // label of a light list edit and the viewport click that picks the focus.
 #include <GLFW/glfw3.h>
@@ -7,9 +7,9 @@
 #include <cmath>
 #include <fstream>
 
-#include "app/editor/lights_edits.hpp"
-#include "app/editor/pointer_input.hpp"
-#include "app/editor/undo_history.hpp"
+#include "app/editor/document/lights_edits.hpp"
+#include "app/editor/document/undo_history.hpp"
+#include "app/editor/input/pointer_input.hpp"
 #include "core/preset.hpp"
 #include "core/render/environment.hpp"
 #include "test_support.hpp"

@@ -9,13 +9,13 @@
 #include <functional>
 #include <sstream>
 
-#include "app/editor/actions.hpp"
-#include "app/editor/camera_controller.hpp"
-#include "app/editor/document.hpp"
-#include "app/editor/fly_speed.hpp"
-#include "app/editor/formula_edits.hpp"
-#include "app/editor/preset_files.hpp"
-#include "app/editor/undo_history.hpp"
+#include "app/editor/document/document.hpp"
+#include "app/editor/document/formula_edits.hpp"
+#include "app/editor/document/preset_files.hpp"
+#include "app/editor/document/undo_history.hpp"
+#include "app/editor/input/camera_controller.hpp"
+#include "app/editor/input/fly_speed.hpp"
+#include "app/editor/state/actions.hpp"
 #include "core/anim/animation.hpp"
 
 namespace fraktal::editor {
@@ -320,7 +320,6 @@ TEST(EditorFiles, UnsavedMarkFollowsEditsAndSaves) {
     EXPECT_NE(s.status.text.find("missing.json"), std::string::npos);
     fs::remove_all(dir);
 }
-
 
 // Node-list edits keep the animation's parameter tracks on the nodes they key: inserting,
 // duplicating and moving renumber them, removing a node or replacing the estimator drops its

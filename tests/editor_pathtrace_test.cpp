@@ -11,7 +11,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "app/editor/viewport_adapter.hpp"
+#include "app/editor/viewport/viewport_adapter.hpp"
 #include "core/render/path_job.hpp"
 #include "test_support.hpp"
 

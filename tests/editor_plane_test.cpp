@@ -9,11 +9,11 @@
 #include <fstream>
 #include <functional>
 
-#include "app/editor/actions.hpp"
-#include "app/editor/autosave.hpp"
-#include "app/editor/node_list_edits.hpp"
-#include "app/editor/plane_edits.hpp"
-#include "app/editor/undo_history.hpp"
+#include "app/editor/document/autosave.hpp"
+#include "app/editor/document/node_list_edits.hpp"
+#include "app/editor/document/undo_history.hpp"
+#include "app/editor/state/actions.hpp"
+#include "app/editor/state/plane_edits.hpp"
 #include "core/plane/plane_glsl.hpp"
 #include "core/plane/plane_still.hpp"
 #include "test_support.hpp"

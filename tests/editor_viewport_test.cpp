@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "app/editor/ocio_display_pass.hpp"
-#include "app/editor/viewport_adapter.hpp"
+#include "app/editor/viewport/ocio_display_pass.hpp"
+#include "app/editor/viewport/viewport_adapter.hpp"
 #include "test_support.hpp"
 
 namespace fraktal::editor {

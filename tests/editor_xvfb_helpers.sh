@@ -24,7 +24,7 @@ q() { jq -r "$1" "$state"; }
 frame() { if [ -f "$state" ]; then q .frame; else echo 0; fi; }
 pending_input() { if [ -f "$state" ]; then q '.inputPending // 0'; else echo 0; fi; }
 # Waits until the editor has drawn N more frames (events are handled at the start of a frame) and
-# has handed every window event it received to a frame (app/editor/imgui_input.hpp: a move, a
+# has handed every window event it received to a frame (app/editor/input/imgui_input.hpp: a move, a
 # press and a release that arrive between two frames take a frame each).
 # (sh has no local variables: its counter is its own, not the callers' `tries`.)
 wait_frames() {

@@ -1,11 +1,11 @@
 // The export frame guide on llvmpipe: a still export (the renderer `fraktal render` and the
 // editor's export run) of a size whose aspect differs from the viewport's shows exactly what the
-// viewport shows inside the guide (app/editor/export_frame.hpp), for an export wider and one
+// viewport shows inside the guide (app/editor/viewport/export_frame.hpp), for an export wider and one
 // narrower than the viewport. The guide's pixels are chosen to fall on whole viewport pixels, so
 // the two images compare pixel for pixel.
 #include <gtest/gtest.h>
 
-#include "app/editor/export_frame.hpp"
+#include "app/editor/viewport/export_frame.hpp"
 #include "core/render/still_renderer.hpp"
 #include "core/viewport/converge.hpp"
 #include "core/viewport/image_error.hpp"

@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "app/editor/formula_edits.hpp"
+#include "app/editor/document/formula_edits.hpp"
 #include "core/de_check.hpp"
 #include "core/safe_step.hpp"
 #include "test_support.hpp"

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <set>
 
-#include "app/editor/ocio_display_pass.hpp"
+#include "app/editor/viewport/ocio_display_pass.hpp"
 #include "core/gl/de_probe.hpp"
 #include "core/plane/plane_preset.hpp"
 #include "core/plane/plane_renderer.hpp"

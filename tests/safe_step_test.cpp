@@ -16,8 +16,8 @@
 #include <string>
 #include <thread>
 
-#include "app/editor/formula_edits.hpp"
-#include "app/editor/formula_fit.hpp"
+#include "app/editor/document/formula_edits.hpp"
+#include "app/editor/document/formula_fit.hpp"
 #include "core/preset.hpp"
 
 using namespace fraktal;

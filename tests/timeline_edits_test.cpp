@@ -1,13 +1,13 @@
 // The editor's timeline without the UI: key edits on the document's animation and their undo
 // steps, playback from the wall clock (slow frames skip animation frames), and frames evaluated
 // into the document without touching the formula's blocks or the undo history.
-#include "app/editor/timeline_edits.hpp"
+#include "app/editor/document/timeline_edits.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "app/editor/undo_history.hpp"
+#include "app/editor/document/undo_history.hpp"
 
 namespace fraktal::editor {
 namespace {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <random>
 
-#include "app/editor/scene_import.hpp"
+#include "app/editor/document/scene_import.hpp"
 #include "cli/commands.hpp"
 #include "core/de_check.hpp"
 #include "core/gl/context.hpp"

@@ -1,11 +1,11 @@
 // `fraktal import FILE.fract [-o PRESET.json] [--lenient]`: a Mandelbulber2 settings file as a
-// fraktal preset (app/editor/scene_import.hpp). A file that uses what fraktal cannot express is
+// fraktal preset (app/editor/document/scene_import.hpp). A file that uses what fraktal cannot express is
 // refused, each such thing named with its slot, and nothing is written; --lenient writes the
 // preset anyway and lists what was dropped in its description.
 #include <cstdio>
 #include <memory>
 
-#include "app/editor/scene_import.hpp"
+#include "app/editor/document/scene_import.hpp"
 #include "cli/commands.hpp"
 
 namespace fraktal::cli {

@@ -7,7 +7,7 @@
 #include <memory>
 #include <regex>
 
-#include "app/editor/scene_import.hpp"
+#include "app/editor/document/scene_import.hpp"
 #include "cli/cancel.hpp"
 #include "cli/commands.hpp"
 #include "cli/plane_render.hpp"

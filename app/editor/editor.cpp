@@ -17,18 +17,18 @@
 #include <fstream>
 #include <thread>
 
-#include "app/editor/actions.hpp"
-#include "app/editor/background_compiler.hpp"
-#include "app/editor/camera_input.hpp"
-#include "app/editor/export_frame.hpp"
-#include "app/editor/frame_log.hpp"
-#include "app/editor/panel_ini.hpp"
-#include "app/editor/panels.hpp"
-#include "app/editor/preset_files.hpp"
-#include "app/editor/screenshot.hpp"
+#include "app/editor/document/preset_files.hpp"
+#include "app/editor/panels/panels.hpp"
+#include "app/editor/state/actions.hpp"
+#include "app/editor/state/panel_ini.hpp"
 #include "app/editor/state_dump.hpp"
-#include "app/editor/thumbnails.hpp"
-#include "app/editor/timeline_panel.hpp"
+#include "app/editor/timeline/timeline_panel.hpp"
+#include "app/editor/viewport/background_compiler.hpp"
+#include "app/editor/viewport/camera_input.hpp"
+#include "app/editor/viewport/export_frame.hpp"
+#include "app/editor/viewport/frame_log.hpp"
+#include "app/editor/viewport/screenshot.hpp"
+#include "app/editor/viewport/thumbnails.hpp"
 
 namespace fraktal::editor {
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "app/editor/editor_state.hpp"
-#include "app/editor/viewport_view.hpp"
+#include "app/editor/state/editor_state.hpp"
+#include "app/editor/viewport/viewport_view.hpp"
 
 namespace fraktal::editor {
 

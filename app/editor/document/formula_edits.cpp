@@ -1,0 +1,267 @@
+#include "app/editor/document/formula_edits.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <regex>
+
+#include "core/anim/animation.hpp"
+#include "core/safe_step.hpp"
+
+namespace fraktal::editor {
+
+std::vector<const BlockDesc*> blocksIn(Category category) {
+    std::vector<const BlockDesc*> out;
+    for (const BlockDesc& b : allBlocks())
+        if (b.category == category) out.push_back(&b);
+    return out;
+}
+
+std::vector<const BlockDesc*> customBlocksIn(const Formula& f, Category category) {
+    std::vector<const BlockDesc*> out;
+    for (const auto& b : f.customBlocks)
+        if (b->desc().category == category) out.push_back(&b->desc());
+    return out;
+}
+
+const CustomBlock* findCustomBlock(const Formula& f, std::string_view id) {
+    for (const auto& b : f.customBlocks)
+        if (b->definition().id == id) return b.get();
+    return nullptr;
+}
+
+namespace {
+
+// The node for `block` with the values of `old` where a parameter of the same name and type
+// survives, clamped to the new range.
+Node rebind(const Node& old, const BlockDesc& block) {
+    Node n = Node::make(block);
+    n.enabled = old.enabled;
+    n.period = old.period;
+    n.phase = old.phase;
+    for (size_t i = 0; i < block.params.size(); ++i) {
+        const int j = old.block->paramIndex(block.params[i].name);
+        if (j < 0 || old.block->params[size_t(j)].type != block.params[i].type) continue;
+        n.values[i] = glm::clamp(old.values[size_t(j)], vec3(block.params[i].min), vec3(block.params[i].max));
+    }
+    return n;
+}
+
+}  // namespace
+
+std::string upsertCustomBlock(Formula& f, CustomBlock::Definition definition) {
+    if (std::string why = CustomBlock::validate(definition); !why.empty()) return why;
+    const CustomBlock* existing = findCustomBlock(f, definition.id);
+    if (!existing && int(f.customBlocks.size()) >= kMaxCustomBlocks)
+        return "more than " + std::to_string(kMaxCustomBlocks) + " custom blocks";
+    const BlockDesc* oldDesc = existing ? &existing->desc() : nullptr;
+    auto usedBy = [&](const Node& n) { return oldDesc && n.block == oldDesc; };
+    const bool wasEstimator = oldDesc && oldDesc->isEstimator();
+    const bool isEstimator = definition.category == Category::Estimator;
+    if (oldDesc && wasEstimator != isEstimator &&
+        (usedBy(f.estimator) || std::any_of(f.nodes.begin(), f.nodes.end(), usedBy)))
+        return "category: the block is in use as " + std::string(wasEstimator ? "the estimator" : "a node") +
+               "; remove it there first";
+    std::shared_ptr<const CustomBlock> block = CustomBlock::make(std::move(definition));
+    for (Node& n : f.nodes)
+        if (usedBy(n)) n = rebind(n, block->desc());
+    if (usedBy(f.estimator)) f.estimator = rebind(f.estimator, block->desc());
+    if (existing) {
+        for (auto& b : f.customBlocks)
+            if (b.get() == existing) b = block;  // the old definition dies here, after the rebind
+    } else {
+        f.customBlocks.push_back(std::move(block));
+    }
+    return {};
+}
+
+namespace {
+bool validIndex(const Formula& f, int i) { return i >= 0 && i < int(f.nodes.size()); }
+
+Node* nodeAt(Formula& f, int index) {
+    if (index == int(f.nodes.size())) return &f.estimator;
+    return validIndex(f, index) ? &f.nodes[size_t(index)] : nullptr;
+}
+}  // namespace
+
+bool addNode(Formula& f, const BlockDesc& block, int insertAt) {
+    if (block.isEstimator()) return setEstimator(f, block);
+    if (int(f.nodes.size()) >= kMaxNodes) return false;
+    if (insertAt < 0 || insertAt > int(f.nodes.size())) insertAt = int(f.nodes.size());
+    f.nodes.insert(f.nodes.begin() + insertAt, Node::make(block));
+    return true;
+}
+
+bool removeNode(Formula& f, int index) {
+    if (!validIndex(f, index)) return false;
+    f.nodes.erase(f.nodes.begin() + index);
+    return true;
+}
+
+bool duplicateNode(Formula& f, int index) {
+    if (!validIndex(f, index) || int(f.nodes.size()) >= kMaxNodes) return false;
+    const Node copy = f.nodes[size_t(index)];
+    f.nodes.insert(f.nodes.begin() + index + 1, copy);
+    return true;
+}
+
+bool moveNode(Formula& f, int from, int to) {
+    if (!validIndex(f, from) || !validIndex(f, to) || from == to) return false;
+    Node n = std::move(f.nodes[size_t(from)]);
+    f.nodes.erase(f.nodes.begin() + from);
+    f.nodes.insert(f.nodes.begin() + to, std::move(n));
+    return true;
+}
+
+bool setNodeEnabled(Formula& f, int index, bool enabled) {
+    if (!validIndex(f, index) || f.nodes[size_t(index)].enabled == enabled) return false;
+    f.nodes[size_t(index)].enabled = enabled;
+    return true;
+}
+
+bool setEstimator(Formula& f, const BlockDesc& estimator) {
+    if (!estimator.isEstimator()) return false;
+    f.estimator = Node::make(estimator);
+    return true;
+}
+
+namespace {
+
+// Old node i is at newIndexOf(i) after the edit (-1: removed).
+template <typename Where>
+void followNodes(Preset& p, size_t oldCount, Where newIndexOf) {
+    std::vector<int> to(oldCount);
+    for (size_t i = 0; i < oldCount; ++i) to[i] = newIndexOf(int(i));
+    remapNodeTracks(p.animation, to, p.formula.nodes.size());
+}
+
+}  // namespace
+
+bool addNode(Preset& p, const BlockDesc& block, int insertAt) {
+    if (block.isEstimator()) return setEstimator(p, block);
+    const size_t count = p.formula.nodes.size();
+    if (insertAt < 0 || insertAt > int(count)) insertAt = int(count);
+    if (!addNode(p.formula, block, insertAt)) return false;
+    followNodes(p, count, [&](int i) { return i < insertAt ? i : i + 1; });
+    return true;
+}
+
+bool removeNode(Preset& p, int index) {
+    const size_t count = p.formula.nodes.size();
+    if (!removeNode(p.formula, index)) return false;
+    followNodes(p, count, [&](int i) { return i == index ? -1 : i < index ? i : i - 1; });
+    return true;
+}
+
+bool duplicateNode(Preset& p, int index) {
+    const size_t count = p.formula.nodes.size();
+    if (!duplicateNode(p.formula, index)) return false;
+    followNodes(p, count, [&](int i) { return i <= index ? i : i + 1; });
+    return true;
+}
+
+bool moveNode(Preset& p, int from, int to) {
+    const size_t count = p.formula.nodes.size();
+    if (!moveNode(p.formula, from, to)) return false;
+    followNodes(p, count, [&](int i) {
+        if (i == from) return to;
+        if (from < to && i > from && i <= to) return i - 1;
+        if (to < from && i >= to && i < from) return i + 1;
+        return i;
+    });
+    return true;
+}
+
+bool setEstimator(Preset& p, const BlockDesc& estimator) {
+    if (!setEstimator(p.formula, estimator)) return false;
+    dropEstimatorTracks(p.animation, p.formula.nodes.size());
+    return true;
+}
+
+bool setParam(Formula& f, int index, int param, const ParamValue& value) {
+    Node* n = nodeAt(f, index);
+    if (!n || !n->block || param < 0 || param >= int(n->block->params.size())) return false;
+    const ParamDecl& d = n->block->params[size_t(param)];
+    ParamValue v = glm::clamp(value, vec3(d.min), vec3(d.max));
+    if (isScalar(d.type)) v.y = v.z = 0.0;
+    if (d.type == ParamType::Toggle) v.x = v.x > 0.5 ? 1.0 : 0.0;
+    // A direction must not collapse to zero (the preset reader refuses that too).
+    if (d.direction && glm::length(v) == 0.0) return false;
+    n->values[size_t(param)] = v;
+    return true;
+}
+
+void resetParam(Formula& f, int index, int param) {
+    Node* n = nodeAt(f, index);
+    if (!n || !n->block || param < 0 || param >= int(n->block->params.size())) return;
+    n->values[size_t(param)] = n->block->params[size_t(param)].defaultValue;
+}
+
+int nodeNamedInLog(const std::string& log, int nodeCount) {
+    const std::regex node(R"(node (\d+) ")");
+    std::smatch m;
+    if (std::regex_search(log, m, node)) return std::stoi(m[1]) - 1;  // numbered from 1, as listed
+    if (log.find("estimator \"") != std::string::npos) return nodeCount;
+    return -1;
+}
+
+namespace {
+
+// The further rounds give way to the viewport's rendering, whose threads (llvmpipe's) share the
+// cores: on Linux a thread's nice value is its own (setpriority(2), NOTES).
+void yieldToRendering() { setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 10); }
+
+}  // namespace
+
+void AutoStepFactor::apply(const EstimatorMeasurement& m, Formula& f) {
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - measuringSince).count();
+    rays = m.report.rays;
+    noHits = m.report.samples == 0;
+    noSafeFactor = !hasSafeStepFactor(m);
+    worst = m.report.worstRatio;
+    measured = noHits ? 0.0 : m.factor;
+    if (!overridden && !noHits) f.deFactor = measured;
+}
+
+bool AutoStepFactor::update(Formula& f, const Camera& camera) {
+    std::string key = f.structureKey();
+    if (key == measuredKey) {
+        if (!further.valid() || further.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+        std::future<EstimatorMeasurement> ended = std::move(further);
+        furtherWorker = {};  // ended: joins at once
+        try {
+            apply(ended.get(), f);
+        } catch (const std::exception&) {
+            return false;  // the settled rounds' factor stays
+        }
+        return true;
+    }
+    furtherWorker = {};  // stops the rounds measuring the previous structure
+    further = {};
+    measuredKey = std::move(key);
+    if (!f.cpuEvaluable() || !f.estimator.block) return false;
+    measuringSince = std::chrono::steady_clock::now();
+    const EstimatorMeasurement m = measureSafeStep(f, camera, options());
+    apply(m, f);
+    const SafeStepOptions check = checkOptions();
+    if (noHits || noSafeFactor || check.tailCovered(m.report, *f.estimator.block, f.nodes)) return true;
+    // The check's rounds from the first: the sampling is seeded, so the factor is the one
+    // `fraktal check` reports for this formula and camera.
+    std::promise<EstimatorMeasurement> result;
+    further = result.get_future();
+    furtherWorker = std::jthread([f, camera, check, result = std::move(result)](std::stop_token stop) mutable {
+        yieldToRendering();
+        SafeStepOptions stoppable = check;
+        stoppable.stop = stop;
+        try {
+            result.set_value(measureSafeStep(f, camera, stoppable));
+        } catch (...) {
+            result.set_exception(std::current_exception());
+        }
+    });
+    return true;
+}
+
+}  // namespace fraktal::editor

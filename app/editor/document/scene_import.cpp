@@ -1,0 +1,77 @@
+#include "app/editor/document/scene_import.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/editor/document/formula_fit.hpp"
+#include "app/editor/input/fly_speed.hpp"
+#include "core/import/fract_import.hpp"
+#include "core/safe_step.hpp"
+
+namespace fraktal::editor {
+
+bool isImportedSceneFile(const std::filesystem::path& path) { return mb2::isFractPath(path); }
+
+namespace {
+
+// The bound sphere about the origin: fitted to the object found inside the view range; an object
+// that reaches out to it (a tiling such as the pseudo-Kleinian) keeps a bound that holds the
+// camera and everything Mandelbulber2 would march to (view_distance_max from the camera).
+void fitBound(Preset& p) {
+    const double viewRange = p.formula.boundRadius;  // view_distance_max, as imported
+    const double reach = std::min(length(p.camera.position) + viewRange, 1e4);
+    const double search = std::clamp(std::max(viewRange, 2.0 * length(p.camera.target)), 4.0, 1e4);
+    p.formula.boundRadius = fittedBoundRadius(cpuDistance(p.formula), search, reach);
+}
+
+}  // namespace
+
+ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImportOptions& options) {
+    const mb2::FractFile file = mb2::loadFractFile(path);
+    mb2::FractImport result = mb2::importFract(file);
+    ImportedScene scene;
+    for (const mb2::ImportItem& item : result.unsupported) scene.unsupported.push_back(item.text());
+    for (const mb2::ImportItem& item : result.approximated) scene.approximated.push_back(item.text());
+    if (!result.faithful() && !options.lenient) {
+        std::string list;
+        for (const std::string& item : scene.unsupported) list += "\n  " + item;
+        throw PresetError(path.string(), "",
+                          "uses what fraktal cannot express, so nothing was written (--lenient writes the preset "
+                          "without it and lists it in the description):" +
+                              list);
+    }
+    result.preset.name = path.stem().string();
+    result.preset.description = mb2::importDescription(file, result);
+    if (result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) fitBound(result.preset);
+    if (options.measure && result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) {
+        const EstimatorMeasurement m = measureSafeStep(result.preset.formula, result.preset.camera);
+        if (m.report.samples > 0 && m.hasFactor)
+            // The measured factor replaces the file's DE_factor: Mandelbulber2's artists lower that
+            // for its own estimate (0.05 in its fog examples), and at a twentieth of the safe step
+            // a ray runs out of steps before it meets the surface.
+            // The hit threshold applies to the scaled estimate (fract_import.cpp): it follows.
+            result.preset.render.detail =
+                std::clamp(result.preset.render.detail * m.factor / result.preset.formula.deFactor, 1e-3, 100.0);
+        result.preset.formula.deFactor = m.factor;
+    }
+    // A ray keeps the reach of 256 full steps at the factor: a file's low DE_factor that no
+    // measurement replaced (an object drawn by its estimate alone, nothing inside it to measure
+    // against: a Menger sponge at 250 iterations) would otherwise end rays before the surface.
+    Formula& f = result.preset.formula;
+    result.preset.render.maxSteps = std::clamp(int(std::ceil(256.0 / f.deFactor)), result.preset.render.maxSteps, 4096);
+    // What the import built must be a preset fraktal reads back: a value the mapping let through
+    // outside a range is an error here, naming the file, not a preset that fails to load later.
+    try {
+        scene.preset = parsePreset(serializePreset(result.preset), path.string());
+    } catch (const PresetError& e) {
+        throw PresetError(path.string(), e.field(), "the imported scene is not a valid preset: " + e.reason());
+    }
+    return scene;
+}
+
+Preset loadSceneFile(const std::filesystem::path& path) {
+    if (isImportedSceneFile(path)) return importSceneFile(path).preset;
+    return loadPreset(path);
+}
+
+}  // namespace fraktal::editor

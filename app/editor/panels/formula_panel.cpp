@@ -1,0 +1,164 @@
+// The formula panel (left): iterations and bailout, the node list (select, enable, reorder by
+// drag and drop, duplicate, remove, add from a categorised menu), the estimator, and the
+// selected node's parameters. Compile errors are shown under the node they name.
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <string>
+
+#include "app/editor/document/formula_edits.hpp"
+#include "app/editor/document/formula_fit.hpp"
+#include "app/editor/panels/panels.hpp"
+#include "app/editor/timeline/timeline_panel.hpp"
+#include "app/editor/widgets/node_list_widgets.hpp"
+#include "core/safe_step.hpp"
+
+namespace fraktal::editor {
+
+namespace {
+
+constexpr const char* kNodePayload = "FRAKTAL_NODE";
+
+void addBlockMenu(EditorState& s) {
+    Formula& f = s.doc.preset.formula;
+    const Category steps[] = {Category::Fold, Category::Transform, Category::Power};
+    for (Category c : steps) {
+        if (!ImGui::BeginMenu(std::string(categoryName(c)).c_str())) continue;
+        std::vector<const BlockDesc*> blocks = blocksIn(c);
+        for (const BlockDesc* b : customBlocksIn(f, c)) blocks.push_back(b);  // the formula's GLSL blocks
+        if (const BlockDesc* b = blockMenuItems(blocks)) {
+            const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
+            if (addNode(s.doc.preset, *b, at)) {
+                s.selectedNode = at;
+                fitFormulaAfterEdit(s.doc.preset);
+            }
+        }
+        ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::BeginMenu("Estimator (replaces)")) {
+        std::vector<const BlockDesc*> estimators = blocksIn(Category::Estimator);
+        for (const BlockDesc* b : customBlocksIn(f, Category::Estimator)) estimators.push_back(b);
+        if (const BlockDesc* b = blockMenuItems(estimators, f.estimator.block)) {
+            setEstimator(s.doc.preset, *b);
+            s.selectedNode = int(f.nodes.size());
+        }
+        ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("New GLSL block...")) {
+        s.customBlockEditor.definition = newBlockTemplate();
+        s.customBlockEditor.error.clear();
+        s.customBlockEditor.open = true;
+    }
+}
+
+void globalSettings(Formula& f, AutoStepFactor& stepFactor) {
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    ImGui::DragInt("Iterations", &f.iterations, 0.1f, 1, kMaxIterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+    helpMarker("How many times the node list runs per point. Parameters update live, without a recompile.");
+    const double bailLo = 0.1, bailHi = 1e6, boundLo = 0.01, boundHi = 100.0, facLo = kMinStepFactor,
+                 facHi = kMaxStepFactor;
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    ImGui::DragScalar("Bailout", ImGuiDataType_Double, &f.bailout, 0.05f, &bailLo, &bailHi, "%.4g",
+                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    helpMarker("The orbit escapes when |p| passes this radius.");
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    ImGui::DragScalar("Bound radius", ImGuiDataType_Double, &f.boundRadius, 0.01f, &boundLo, &boundHi, "%.3g",
+                      ImGuiSliderFlags_AlwaysClamp);
+    helpMarker("The fractal lies inside this sphere; rays are clipped to it.");
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    if (ImGui::DragScalar("DE factor", ImGuiDataType_Double, &f.deFactor, 0.005f, &facLo, &facHi, "%.3f",
+                          ImGuiSliderFlags_AlwaysClamp))
+        stepFactor.overridden = true;
+    helpMarker(
+        "Multiplies the distance estimate. Set from `fraktal check`'s measurement after every structure "
+        "change unless set by hand (Render tab).");
+}
+
+}  // namespace
+
+void beginFormulaWindow(EditorState& s) { beginSideColumnWindow(s, "Formula", &s.panels.formula, true); }
+
+void drawFormulaPanel(EditorState& s, const ViewportView& v) {
+    if (!sideColumnShows(s.panels, true)) return;
+    beginFormulaWindow(s);
+    Formula& f = s.doc.preset.formula;
+    s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
+
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputTextWithHint("##name", "Preset name", &s.doc.preset.name);
+    globalSettings(f, s.stepFactor);
+    ImGui::Spacing();
+    sectionHeader("Node list");
+
+    const std::string& error = v.compileError();
+    const int errorNode = error.empty() ? -2 : nodeNamedInLog(error, int(f.nodes.size()));
+    NodeListRequest req;
+    for (int i = 0; i < int(f.nodes.size()); ++i)
+        if (nodeRow(f.nodes[size_t(i)], i, s.selectedNode == i, i == errorNode ? &error : nullptr, kNodePayload, req))
+            s.selectedNode = i;
+
+    // The estimator closes the list; it is always last and cannot be removed, only replaced.
+    ImGui::PushID("estimator");
+    const int est = int(f.nodes.size());
+    if (errorNode == est) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+    if (ImGui::Selectable(
+            (std::to_string(est + 1) + ". => " + std::string(f.estimator.block ? f.estimator.block->label : "(none)"))
+                .c_str(),
+            s.selectedNode == est))
+        s.selectedNode = est;
+    if (errorNode == est) ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The closing estimator: turns the final orbit into a distance.");
+    if (errorNode == est) errorUnder(error);
+    ImGui::PopID();
+    if (!error.empty() && errorNode == -1) errorUnder(error);
+
+    if (ImGui::Button("Add block...")) ImGui::OpenPopup("add_block");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Insert a block after the selected node");
+    if (ImGui::BeginPopup("add_block")) {
+        addBlockMenu(s);
+        ImGui::EndPopup();
+    }
+    const bool nodeSelected = s.selectedNode < int(f.nodes.size());
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!nodeSelected || s.selectedNode == 0);
+    if (ImGui::ArrowButton("##up", ImGuiDir_Up)) req.moveFrom = s.selectedNode, req.moveTo = s.selectedNode - 1;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!nodeSelected || s.selectedNode + 1 >= int(f.nodes.size()));
+    if (ImGui::ArrowButton("##down", ImGuiDir_Down)) req.moveFrom = s.selectedNode, req.moveTo = s.selectedNode + 1;
+    ImGui::EndDisabled();
+
+    // Apply list edits after drawing the list, so no row is drawn from a moved vector.
+    if (req.moveFrom >= 0 && moveNode(s.doc.preset, req.moveFrom, req.moveTo)) s.selectedNode = req.moveTo;
+    if (req.duplicate >= 0 && duplicateNode(s.doc.preset, req.duplicate)) s.selectedNode = req.duplicate + 1;
+    if (req.remove >= 0 && removeNode(s.doc.preset, req.remove)) {
+        s.selectedNode = std::max(0, std::min(req.remove, int(f.nodes.size()) - 1));
+        fitFormulaAfterEdit(s.doc.preset);
+    }
+    s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
+
+    ImGui::Spacing();
+    sectionHeader("Parameters");
+    const bool estimatorSelected = s.selectedNode == int(f.nodes.size());
+    const Node& selected = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
+    Node& shown = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
+    nodeParameters(shown, estimatorSelected, s.paramWidgets, [&](size_t k) {
+        const std::string name(shown.block->params[k].name);
+        const ParamValue& v = shown.values[k];
+        keyMarker(
+            s, estimatorSelected ? estimatorParamTarget(name) : paramTarget(s.selectedNode, name),
+            isScalar(shown.block->params[k].type) ? std::vector<double>{v.x} : std::vector<double>{v.x, v.y, v.z});
+    });
+    if (selected.block->custom) {
+        if (const CustomBlock* b = findCustomBlock(f, selected.block->id); b && ImGui::Button("Edit GLSL...")) {
+            s.customBlockEditor.definition = b->definition();
+            s.customBlockEditor.error.clear();
+            s.customBlockEditor.open = true;
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace fraktal::editor

@@ -1,0 +1,81 @@
+// The main menu, with every shortcut shown next to its command (shortcuts.cpp handles them).
+#include <imgui.h>
+
+#include "app/editor/panels/panels.hpp"
+#include "app/editor/state/actions.hpp"
+#include "app/editor/viewport/camera_input.hpp"
+
+namespace fraktal::editor {
+
+void drawMenuBar(EditorState& s) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("New 3D", "Ctrl+N")) requestAction(s, {PendingKind::New, {}});
+        if (ImGui::MenuItem("New 2D", "Ctrl+Shift+N")) requestAction(s, {PendingKind::NewPlane, {}});
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) s.dialogs.openPath = true;
+        if (ImGui::BeginMenu("Open recent", !s.file.recent.empty())) {
+            for (const std::string& r : s.file.recent)
+                if (ImGui::MenuItem(r.c_str())) requestAction(s, {PendingKind::Open, r});
+            ImGui::EndMenu();
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Save", "Ctrl+S")) saveDocument(s);
+        if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) {
+            s.dialogs.pathInput = s.file.path.string();
+            s.dialogs.saveAs = true;
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Export still...", "F12")) s.dialogs.exportStill = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestAction(s, {PendingKind::Quit, {}});
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        // Says what it will do: "Undo change of scale", "Redo add Box fold".
+        s.history.commit(s.doc);
+        const std::string undoText = "Undo " + s.history.undoLabel(), redoText = "Redo " + s.history.redoLabel();
+        if (ImGui::MenuItem(undoText.c_str(), "Ctrl+Z", false, s.history.canUndo())) undo(s);
+        if (ImGui::MenuItem(redoText.c_str(), "Ctrl+Shift+Z", false, s.history.canRedo())) redo(s);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Formula panel", "F2", &s.panels.formula) && s.panels.formula) s.panels.collapsed = false;
+        if (ImGui::MenuItem("Scene panel", "F3", &s.panels.sidebar) && s.panels.sidebar) s.panels.collapsed = false;
+        bool column = !s.panels.collapsed;
+        if (ImGui::MenuItem("Side panels", "Ctrl+\\", &column)) s.panels.collapsed = !column;
+        ImGui::MenuItem("Stats overlay", "F4", &s.panels.stats);
+        ImGui::Separator();
+        bool fly = s.cameraControls.mode == CameraMode::Fly;
+        if (ImGui::MenuItem("Fly camera", "V", &fly, !s.doc.plane))
+            s.cameraControls.mode = fly ? CameraMode::Fly : CameraMode::Orbit;
+        if (ImGui::MenuItem("Frame object", "F", false, !s.doc.plane)) frameObject(s);
+        ImGui::MenuItem("Camera path", nullptr, &s.timeline.showCameraPath, !s.doc.plane);
+        if (ImGui::MenuItem("Reset view", "Home")) {
+            if (s.doc.plane)
+                resetPlaneView(s);
+            else
+                s.doc.preset.camera = defaultViewFor(s.doc.preset.formula, s.doc.preset.camera);
+        }
+        ImGui::Separator();
+        ImGui::MenuItem("ImGui metrics", nullptr, &s.panels.demo);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help")) {
+        ImGui::MenuItem("Shortcuts", "F1", &s.panels.help);
+        ImGui::EndMenu();
+    }
+    // Folds the side column away and back (Ctrl+Backslash): the arrow points where it goes.
+    if (ImGui::ArrowButton("##side_column", s.panels.collapsed ? ImGuiDir_Right : ImGuiDir_Left))
+        s.panels.collapsed = !s.panels.collapsed;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(s.panels.collapsed ? "Show the side panels (Ctrl+\\)" : "Hide the side panels (Ctrl+\\)");
+    // The document's name and unsaved mark, right-aligned.
+    const std::string title =
+        (isDirty(s) ? "* " : "") + (s.file.path.empty() ? std::string("untitled") : s.file.path.filename().string());
+    ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(title.c_str()).x - 16);
+    ImGui::TextDisabled("%s", title.c_str());
+    s.layout.menuHeight = ImGui::GetWindowHeight();
+    ImGui::EndMainMenuBar();
+}
+
+}  // namespace fraktal::editor

@@ -1,0 +1,90 @@
+// The side column and its lower panel, Scene: camera, render, shading and lighting settings and
+// the preset browser as tabs (ImGui 1.86 has no docking, so the panels are fixed windows in one column on the
+// left whose width and split the ini file remembers). A 2D document shows its view, render
+// (colour) and colouring settings and the browser.
+#include <imgui.h>
+#include <imgui_internal.h>  // MarkIniSettingsDirty
+
+#include <algorithm>
+#include <span>
+#include <utility>
+
+#include "app/editor/panels/panels.hpp"
+
+namespace fraktal::editor {
+
+namespace {
+// Selects the tab named by `--tab` (or a command) once.
+ImGuiTabItemFlags selectIf(const EditorState& s, const char* tab) {
+    return s.panels.selectTab == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+}
+
+constexpr float kMinPanelWidth = 260.0f, kMinPanelHeight = 120.0f;
+
+}  // namespace
+
+bool sideColumnShows(const PanelVisibility& p, bool top) { return !p.collapsed && (top ? p.formula : p.sidebar); }
+
+void beginSideColumnWindow(EditorState& s, const char* name, bool* open, bool top) {
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    Layout& l = s.layout;
+    const float column = vp->WorkSize.y;
+    const float maxWidth = std::max(vp->WorkSize.x * 0.45f, kMinPanelWidth);
+    l.leftWidth = std::clamp(l.leftWidth, kMinPanelWidth, maxWidth);
+    // Both shown: the Formula panel's height is the split (its lower edge resizes both).
+    const bool shared = sideColumnShows(s.panels, true) && sideColumnShows(s.panels, false);
+    const float maxSplit = std::max(column - kMinPanelHeight, kMinPanelHeight);
+    if (shared) l.formulaHeight = std::clamp(l.formulaHeight, kMinPanelHeight, maxSplit);
+    float y = vp->WorkPos.y, height = column;
+    if (shared && top) height = l.formulaHeight;
+    if (shared && !top) y += l.formulaHeight, height -= l.formulaHeight;
+    const bool splitResizes = shared && top;
+    ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x, y), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kMinPanelWidth, splitResizes ? kMinPanelHeight : height),
+                                        ImVec2(maxWidth, splitResizes ? maxSplit : height));
+    ImGui::SetNextWindowSize(ImVec2(l.leftWidth, height), ImGuiCond_Always);
+    ImGui::Begin(name, open, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    // A drag of the window's edge this frame: the column and the split follow it from now on.
+    if (ImGui::GetWindowWidth() != l.leftWidth) ImGui::MarkIniSettingsDirty();
+    l.leftWidth = ImGui::GetWindowWidth();
+    if (splitResizes) {
+        if (ImGui::GetWindowHeight() != l.formulaHeight) ImGui::MarkIniSettingsDirty();
+        l.formulaHeight = ImGui::GetWindowHeight();
+    }
+}
+
+void noteWidgetRect(Layout& layout, const std::string& name) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    layout.widgetRects[name] = {lo.x, lo.y, size.x, size.y};
+}
+
+void drawSidebar(EditorState& s) {
+    if (!sideColumnShows(s.panels, false)) return;
+    beginSideColumnWindow(s, "Scene", &s.panels.sidebar, false);
+    // A 2D document shows its view rectangle instead of a camera, its colouring instead of shading.
+    using Tab = std::pair<const char*, void (*)(EditorState&)>;
+    const Tab scene[] = {{"Camera", drawCameraTab},
+                         {"Render", drawRenderTab},
+                         {"Shading", drawShadingTab},
+                         {"Lights", drawLightsTab},
+                         {"Presets", drawPresetsTab}};
+    const Tab plane[] = {{"View", drawPlaneViewTab},
+                         {"Render", drawRenderTab},
+                         {"Colouring", drawPlaneColouringTab},
+                         {"Presets", drawPresetsTab}};
+    if (ImGui::BeginTabBar(s.doc.plane ? "plane_tabs" : "scene_tabs")) {
+        for (const auto& [name, draw] : s.doc.plane ? std::span<const Tab>(plane) : std::span<const Tab>(scene)) {
+            const bool shown = ImGui::BeginTabItem(name, nullptr, selectIf(s, name));
+            noteWidgetRect(s.layout, std::string("tab:") + name);
+            if (!shown) continue;
+            s.layout.sceneTab = name;
+            draw(s);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    s.panels.selectTab.clear();
+    ImGui::End();
+}
+
+}  // namespace fraktal::editor

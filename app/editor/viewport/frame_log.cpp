@@ -1,0 +1,44 @@
+#include "app/editor/viewport/frame_log.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace fraktal::editor {
+
+void openFrameLog(FrameLog& log, const std::filesystem::path& path) {
+    closeFrameLog(log);
+    log.file = std::fopen(path.c_str(), "w");
+    if (!log.file) throw std::runtime_error(path.string() + ": cannot write the frame log: " + std::strerror(errno));
+}
+
+void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4]) {
+    if (!log.file) return;
+    const double frameMs = log.lastFrameAt < 0.0 ? 0.0 : (now - log.lastFrameAt) * 1000.0;
+    log.lastFrameAt = now;
+    auto vec = [](const vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+    const nlohmann::json line = {{"t", now},
+                                 {"frame_ms", frameMs},
+                                 {"render_ms", stats.renderMs},
+                                 {"scale", stats.internalScale},
+                                 {"width", stats.width},
+                                 {"height", stats.height},
+                                 {"settled", stats.settled},
+                                 {"action", stats.action},
+                                 {"viewport", {viewport[0], viewport[1], viewport[2], viewport[3]}},
+                                 {"camera",
+                                  {{"position", vec(camera.position)},
+                                   {"target", vec(camera.target)},
+                                   {"up", vec(camera.up)},
+                                   {"fovY", camera.fovY}}}};
+    std::fprintf(log.file, "%s\n", line.dump().c_str());
+    std::fflush(log.file);
+}
+
+void closeFrameLog(FrameLog& log) {
+    if (log.file) std::fclose(log.file);
+    log.file = nullptr;
+}
+
+}  // namespace fraktal::editor

@@ -1,0 +1,28 @@
+// `fraktal edit --frame-log FILE`: one JSON object per drawn frame (time, frame time, the
+// viewport's work, its dynamic-resolution scale and render size, and the camera), for the
+// viewport benchmark's editor run (bench/viewport/editor_run.sh) to read frame-time percentiles
+// and the view the camera ended at.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+
+#include "app/editor/viewport/viewport_view.hpp"
+#include "core/camera.hpp"
+
+namespace fraktal::editor {
+
+struct FrameLog {
+    std::FILE* file = nullptr;
+    double lastFrameAt = -1.0;
+};
+
+// Opens (truncates) the log; throws std::runtime_error naming the file when it cannot.
+void openFrameLog(FrameLog& log, const std::filesystem::path& path);
+// Appends the frame that just ended at `now` (seconds) and flushes, so a killed editor leaves a
+// complete log up to its last frame.
+// `viewport`: the viewport's rectangle in the window (x, y, width, height).
+void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4]);
+void closeFrameLog(FrameLog& log);
+
+}  // namespace fraktal::editor

@@ -1,0 +1,312 @@
+#include "app/editor/viewport/viewport_adapter.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace fraktal::editor {
+
+std::unique_ptr<ViewportView> makeViewportView(const ColorPipeline& color, BackgroundCompiler* compiler) {
+    return std::make_unique<CoreViewportView>(color, compiler);
+}
+
+viewport::ViewportOptions viewportOptions(const ViewSettings& v) {
+    viewport::ViewportOptions o;
+    o.stepsPerFrame = v.stepsPerFrame;
+    o.maxSamples = v.aaCap;
+    o.reproject = v.reprojection;
+    o.coneTile = v.coneTile;
+    o.maxCarryFrames = v.maxCarryFrames;
+    o.motionFilter = v.motionFilter;
+    o.motionFilterRadius = v.motionFilterRadius;
+    o.coarseHits = v.coarseHits;
+    return o;
+}
+
+ShadingSettings shadingInWorkingSpace(const ShadingSettings& shading, const ColorPipeline& color,
+                                      const std::string& workingSpace) {
+    // The colours core/render/shading_params.cpp converts (the palette's c and d are frequencies
+    // and phases, and its a and b multiply the light, so they stay as written, as in the still).
+    ShadingSettings s = shading;
+    for (vec3* c : {&s.lightColor, &s.fillColor, &s.fogColor, &s.backgroundTop, &s.backgroundBottom})
+        *c = color.fromLinearRec709(*c, workingSpace);
+    return s;
+}
+
+namespace {
+
+bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOptions& b) {
+    return a.stepsPerFrame == b.stepsPerFrame && a.maxSamples == b.maxSamples && a.reproject == b.reproject &&
+           a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile && a.coneSteps == b.coneSteps &&
+           a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter &&
+           a.motionFilterRadius == b.motionFilterRadius && a.coarseHits == b.coarseHits;
+}
+
+}  // namespace
+
+CoreViewportView::CoreViewportView(const ColorPipeline& color, BackgroundCompiler* compiler)
+    : color_(color), compiler_(compiler) {}
+
+bool CoreViewportView::programsReady(const Formula& formula) {
+    stats_.compiling = false;
+    if (!compiler_ || !viewport_.needsPrograms(formula)) return true;
+    const std::string structure = formula.structureKey();
+    std::optional<BackgroundCompiler::Result> result = compiler_->take(structure);
+    if (!result) {
+        compiler_->request(formula);
+        stats_.compiling = true;
+        return false;
+    }
+    if (!result->programs) {
+        // The viewport keeps its previous programs and image; the node's error is shown.
+        compileError_ = result->error;
+        failedStructure_ = structure;
+        return false;
+    }
+    viewport_.adoptPrograms(std::move(result->programs));
+    return true;
+}
+
+CoreViewportView::~CoreViewportView() { glDeleteFramebuffers(1, &pathReadFramebuffer_); }
+
+const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {
+    if (!shadingKey_ || shadingKey_->first != preset.shading || shadingKey_->second != preset.render.workingSpace) {
+        workingShading_ = shadingInWorkingSpace(preset.shading, color_, preset.render.workingSpace);
+        shadingKey_.emplace(preset.shading, preset.render.workingSpace);
+    }
+    return workingShading_;
+}
+
+bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& settings, int width, int height) {
+    const Formula& formula = preset.formula;
+    lastAction_ = viewport::FrameAction::Reset;
+    if (!failedStructure_.empty() && formula.structureKey() == failedStructure_) return false;
+    const viewport::ViewportOptions options = viewportOptions(settings);
+    if (!sameOptions(options, viewport_.options())) viewport_.setOptions(options);
+    workingShading(preset);
+    if (!programsReady(formula)) return false;
+    const bool newStructure = tracker_.needsRecompile(formula);
+    const auto start = std::chrono::steady_clock::now();
+    viewport::FrameStats frame;
+    try {
+        frame = viewport_.render(formula, preset.camera, preset.render, workingShading_, width, height);
+    } catch (const std::exception& e) {
+        // The viewport keeps its previous programs and image (viewport.hpp).
+        compileError_ = e.what();
+        if (newStructure) failedStructure_ = formula.structureKey();
+        return false;
+    }
+    if (newStructure) {
+        tracker_.compiled(formula);
+        ++stats_.compiles;
+    }
+    compileError_.clear();
+    failedStructure_.clear();
+    lastAction_ = frame.action;
+
+    const bool idle = frame.settled && frame.action == viewport::FrameAction::Continue && frame.deEvalsPerPixel == 0.0;
+    stats_.renderMs =
+        idle ? 0.0 : std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats_.deEvaluationsPerPixel = frame.deEvalsPerPixel;
+    stats_.reprojectedShare = frame.shareReprojected;
+    stats_.convergedShare = frame.shareConverged;
+    stats_.action = viewport::toString(frame.action);
+    stats_.aaCap = settings.aaCap;
+    // Settled only at full size: a view at rest refines there.
+    stats_.settled = frame.settled && resolution_.scale() == 1.0;
+    stats_.aaLevel = frame.settled ? settings.aaCap : frame.samplesAtRest + 1;
+    stats_.width = width;
+    stats_.height = height;
+    return !idle;
+}
+
+void CoreViewportView::ensureDisplayTarget(int width, int height) {
+    if (displayTarget_.resize(width, height)) shownDisplay_.reset();
+}
+
+void CoreViewportView::redisplay(const Preset& preset, GLuint linearImage, double gainStops) {
+    const DisplayKey key{preset.render.workingSpace, preset.render.display, preset.render.view};
+    try {
+        display_.configure(color_, key);
+        displayError_.clear();
+    } catch (const std::exception& e) {
+        // A bad view keeps the last good transform on screen; the Render tab shows why.
+        displayError_ = e.what();
+        if (!display_.configured()) return;
+    }
+    const auto shown = std::make_pair(display_.key(), preset.render.exposure + gainStops);
+    if (!imageChanged_ && shownDisplay_ == shown) return;
+    {
+        const DisplayTarget::Binding bound = displayTarget_.bind();
+        display_.draw(linearImage, preset.render.exposure + gainStops);
+    }
+    shownDisplay_ = shown;
+    imageChanged_ = false;
+}
+
+double CoreViewportView::chooseScale(const Preset& preset, const ViewSettings& settings) {
+    // The view a frame shows, as far as motion goes: the camera, the formula and the shading.
+    viewport::FrameKey view;
+    view.structure = preset.formula.structureKey();
+    view.values = viewport::formulaValuesKey(preset.formula);
+    view.camera = preset.camera;
+    const bool changed = lastView_ && (lastView_->structure != view.structure || lastView_->values != view.values ||
+                                       !viewport::sameCamera(lastView_->camera, view.camera) ||
+                                       !(shadingKey_ && shadingKey_->first == preset.shading));
+    lastView_ = std::move(view);
+    // The editor's frame time: from the start of the previous frame's render to this one's.
+    const auto now = std::chrono::steady_clock::now();
+    const double frameMs =
+        lastFrameStart_ ? std::chrono::duration<double, std::milli>(now - *lastFrameStart_).count() : 0.0;
+    lastFrameStart_ = now;
+    viewport::ResolutionControl control = resolution_.control();
+    control.targetMs = settings.frameTimeTargetMs;
+    resolution_.setControl(control);
+    return resolution_.next(changed, frameMs);
+}
+
+void CoreViewportView::render(const Preset& preset, const ViewSettings& settings, int fullWidth, int fullHeight) {
+    if (path_ && !pathStillValid(preset, settings, fullWidth, fullHeight)) dropPath();
+    if (path_) {
+        pathFrame(preset, settings);
+        return;
+    }
+    stats_.pathTracing = false;
+    stats_.pathSamples = 0;
+    stats_.pathSppCap = settings.pathSppCap;
+    const double scale = chooseScale(preset, settings);
+    const int width = std::max(int(std::lround(fullWidth * scale)), 2);
+    const int height = std::max(int(std::lround(fullHeight * scale)), 2);
+    stats_.internalScale = scale;
+    try {
+        if (renderFrame(preset, settings, width, height)) imageChanged_ = true;
+    } catch (const std::exception& e) {
+        lastAction_ = viewport::FrameAction::Reset;
+        displayError_ = e.what();  // e.g. an unknown working space
+    }
+    if (!viewport_.imageTexture()) return;
+    ensureDisplayTarget(viewport_.width(), viewport_.height());
+    redisplay(preset, viewport_.imageTexture());
+    if (!pathError_.empty()) displayError_ = pathError_;
+    // The view rests when the fast mode's own decision (decideFrame) continues a full-size frame:
+    // nothing changed since the last one. The next frames path-trace it.
+    const bool atRest = lastAction_ == viewport::FrameAction::Continue && scale == 1.0 &&
+                        viewport_.width() == fullWidth && viewport_.height() == fullHeight;
+    if (settings.pathTraceAtRest && atRest && compileError_.empty() && !stats_.compiling) {
+        startPath(preset, fullWidth, fullHeight);
+        if (path_) stats_.settled = false;  // samples to come: the editor keeps drawing frames
+    }
+}
+
+bool CoreViewportView::pathStillValid(const Preset& preset, const ViewSettings& settings, int width, int height) {
+    if (!settings.pathTraceAtRest || !failedStructure_.empty()) return false;
+    // The fast mode's question (decideFrame) about the view at rest, plus what only the path
+    // tracer sees: the lights, lens and environment, the background's transparency and the file
+    // that environment paths are relative to.
+    const viewport::FrameKey view =
+        viewport_.frameKey(preset.formula, preset.camera, preset.render, workingShading(preset), width, height);
+    const PathAtRest& p = *path_;
+    return viewport::decideFrame(&p.view, view, false) == viewport::FrameAction::Continue &&
+           p.lighting == preset.lighting && p.workingSpace == preset.render.workingSpace &&
+           p.transparentBackground == preset.render.transparentBackground && p.presetFile == presetFile_;
+}
+
+void CoreViewportView::startPath(const Preset& preset, int width, int height) {
+    const std::string failureKey = presetFile_ + "\n" + preset.formula.structureKey();
+    if (pathFailed_ && pathFailed_->first == preset.lighting && pathFailed_->second == failureKey) return;
+    PathAtRest p;
+    p.view = viewport_.frameKey(preset.formula, preset.camera, preset.render, workingShading(preset), width, height);
+    p.lighting = preset.lighting;
+    p.workingSpace = preset.render.workingSpace;
+    p.presetFile = presetFile_;
+    p.transparentBackground = preset.render.transparentBackground;
+    p.render = preset.render;
+    p.render.width = width;
+    p.render.height = height;
+    try {
+        pathData_ = resolvePathScene(preset, presetFile_, color_, pathData_ ? &*pathData_ : nullptr);
+        if (!pathTracer_ || pathTracer_->width() != width || pathTracer_->height() != height ||
+            pathTracer_->structure() != preset.formula.structureKey())
+            pathTracer_ = std::make_unique<gl::PathTracer>(preset.formula, width, height);
+        pathTracer_->setScene(pathData_->scene(preset, p.render));
+    } catch (const std::exception& e) {
+        // The fast mode stays on screen and the Render tab says why.
+        pathError_ = std::string("path tracing at rest: ") + e.what();
+        displayError_ = pathError_;
+        pathFailed_.emplace(preset.lighting, failureKey);
+        pathTracer_.reset();
+        return;
+    }
+    pathError_.clear();
+    pathFailed_.reset();
+    path_ = std::move(p);
+}
+
+void CoreViewportView::copyPathImage() {
+    // The tracer's sums, rows flipped to the viewport's order (top row first); the division by
+    // the sample count is a gain of -log2(spp) stops in the display pass (both linear).
+    const gl::PathTracer& tracer = *pathTracer_;
+    const int w = tracer.width(), h = tracer.height();
+    pathImage_.resize(w, h);
+    if (!pathReadFramebuffer_) glCreateFramebuffers(1, &pathReadFramebuffer_);
+    glNamedFramebufferTexture(pathReadFramebuffer_, GL_COLOR_ATTACHMENT0, tracer.beautySumTexture(), 0);
+    glBlitNamedFramebuffer(pathReadFramebuffer_, pathImage_.framebuffer(), 0, 0, w, h, 0, h, w, 0, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
+    imageChanged_ = true;
+}
+
+void CoreViewportView::pathFrame(const Preset& preset, const ViewSettings& settings) {
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::time_point a, Clock::time_point b) {
+        return std::chrono::duration<double, std::milli>(b - a).count();
+    };
+    gl::PathTracer& tracer = *pathTracer_;
+    const int cap = settings.pathSppCap, h = tracer.height();
+    // A frame path-traces for up to three frame-time targets (100 ms by default) in bands of rows,
+    // so the window answers within about that even when one sample pass of the whole view takes
+    // seconds (llvmpipe). Three, not one: the editor's own work (panels, display, swap) takes
+    // 10-20 ms a frame on an idle 2-core llvmpipe machine and about 48 ms under load
+    // (bench/README.md, dynamic resolution), so a budget of one 33 ms target could leave the
+    // samples half of the time or less. Target 0: a whole pass per frame.
+    const double budgetMs = 3.0 * settings.frameTimeTargetMs;
+    const auto start = Clock::now();
+    int draws = 0;
+    while (tracer.samplesTaken() < cap) {
+        int rows = h;
+        if (budgetMs > 0.0) {
+            const double left = budgetMs - ms(start, Clock::now());
+            if (draws > 0 && (pathMsPerRow_ <= 0.0 || left < pathMsPerRow_)) break;
+            // The first band ever is a probe of 8 rows; then as many rows as the time left holds.
+            rows = pathMsPerRow_ > 0.0 ? std::max(int(left / pathMsPerRow_), 1) : 8;
+        }
+        rows = std::min(rows, h - tracer.rowsDone());
+        const auto t0 = Clock::now();
+        const bool completed = tracer.addSampleRows(rows);
+        ++draws;
+        // Rows cost unevenly (background against fractal): a running mean of the recent bands.
+        const double perRow = ms(t0, Clock::now()) / rows;
+        pathMsPerRow_ = pathMsPerRow_ > 0.0 ? 0.5 * (pathMsPerRow_ + perRow) : perRow;
+        if (completed) copyPathImage();  // the sums hold whole passes only now
+        if (budgetMs <= 0.0) break;
+    }
+    stats_.pathTracing = true;
+    stats_.pathSamples = tracer.samplesTaken();
+    stats_.pathSppCap = cap;
+    stats_.settled = tracer.samplesTaken() >= cap;
+    stats_.renderMs = draws ? ms(start, Clock::now()) : 0.0;
+    stats_.action = "path";
+    stats_.internalScale = 1.0;
+    stats_.width = tracer.width();
+    stats_.height = h;
+    if (tracer.samplesTaken() == 0) return;  // the fast image stays until the first whole pass
+    ensureDisplayTarget(tracer.width(), h);
+    redisplay(preset, pathImage_.texture(), -std::log2(double(tracer.samplesTaken())));
+}
+
+void CoreViewportView::dropPath() {
+    path_.reset();
+    imageChanged_ = true;     // the fast image replaces the path-traced one
+    lastFrameStart_.reset();  // the last path-traced frame's time says nothing about a fast frame
+}
+
+}  // namespace fraktal::editor

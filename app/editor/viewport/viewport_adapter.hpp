@@ -1,0 +1,119 @@
+// The editor's viewport: core/viewport's progressive, reprojecting renderer (seed chapter 4)
+// behind the ViewportView interface, shown through the OCIO display pass. The renderer keeps the
+// image scene-linear in the preset's working space; only the display pass leaves it.
+#pragma once
+
+#include <chrono>
+#include <optional>
+
+#include "app/editor/document/formula_edits.hpp"
+#include "app/editor/viewport/background_compiler.hpp"
+#include "app/editor/viewport/display_target.hpp"
+#include "app/editor/viewport/ocio_display_pass.hpp"
+#include "app/editor/viewport/viewport_view.hpp"
+#include "core/gl/color_target.hpp"
+#include "core/render/path_job.hpp"
+#include "core/render/path_tracer.hpp"
+#include "core/viewport/resolution_control.hpp"
+#include "core/viewport/viewport.hpp"
+
+namespace fraktal::editor {
+
+// The viewport's options for these view settings.
+viewport::ViewportOptions viewportOptions(const ViewSettings& v);
+
+// The shading with its colours converted from linear Rec.709 (the preset's convention) into the
+// working space, as the still renderer does through resolveShading's toWorking, so that the
+// viewport's image is in the same space as the still's and goes through the same display
+// transform.
+ShadingSettings shadingInWorkingSpace(const ShadingSettings& shading, const ColorPipeline& color,
+                                      const std::string& workingSpace);
+
+// "Path traced at rest": the accumulation the viewport shows while the view rests, and what it
+// was started for. Any difference from the current view drops it (back to the fast mode).
+struct PathAtRest {
+    viewport::FrameKey view;  // the fast viewport's key of the view at rest (decideFrame's question)
+    Lighting lighting;        // the document's lighting, which the fast mode does not see
+    std::string workingSpace, presetFile;
+    bool transparentBackground = false;
+    RenderSettings render;  // the preset's, at the viewport's full size
+};
+
+class CoreViewportView final : public ViewportView {
+   public:
+    // `color` is owned by the caller and outlives the view.
+    explicit CoreViewportView(const ColorPipeline& color, BackgroundCompiler* compiler = nullptr);
+    ~CoreViewportView() override;
+    CoreViewportView(const CoreViewportView&) = delete;
+    CoreViewportView& operator=(const CoreViewportView&) = delete;
+
+    void render(const Preset& preset, const ViewSettings& settings, int width, int height) override;
+    GLuint displayTexture() const override { return displayTarget_.texture(); }
+    int width() const override { return displayTarget_.width(); }
+    int height() const override { return displayTarget_.height(); }
+    const ViewportStats& stats() const override { return stats_; }
+    const std::string& compileError() const override { return compileError_; }
+    const std::string& displayError() const override { return displayError_; }
+    void setPresetFile(const std::string& file) override { presetFile_ = file; }
+    // The path tracer of "Path traced at rest" (null before the first rest in that mode); it holds
+    // the last accumulation, shown only while stats().pathTracing.
+    const gl::PathTracer* pathTracer() const { return pathTracer_.get(); }
+
+   private:
+    // Runs one viewport frame; false when nothing was rendered (compile error, skipped).
+    bool renderFrame(const Preset& preset, const ViewSettings& settings, int width, int height);
+    void ensureDisplayTarget(int width, int height);
+    // Draws `linearImage` (scene-linear, the size of the display target, top row first) through
+    // the display transform when it or the transform changed. `gain` in stops adds to the exposure.
+    void redisplay(const Preset& preset, GLuint linearImage, double gainStops = 0.0);
+    const ShadingSettings& workingShading(const Preset& preset);
+
+    // Path traced at rest: whether the accumulation still shows this view; starting one for the
+    // view the fast mode rests at; one frame's samples, shown.
+    bool pathStillValid(const Preset& preset, const ViewSettings& settings, int width, int height);
+    void startPath(const Preset& preset, int width, int height);
+    void pathFrame(const Preset& preset, const ViewSettings& settings);
+    void copyPathImage();  // the tracer's whole passes into pathImage_
+    void dropPath();
+
+    // Asks the compiler for the formula's programs; true once the viewport has them (or when
+    // there is no compiler: render() compiles). False while compiling or when it failed.
+    bool programsReady(const Formula& formula);
+    // Dynamic resolution: the share of (width, height) to render this frame at.
+    double chooseScale(const Preset& preset, const ViewSettings& settings);
+
+    const ColorPipeline& color_;
+    BackgroundCompiler* compiler_ = nullptr;
+    viewport::Viewport viewport_;
+    OcioDisplayPass display_;
+    ProgramTracker tracker_;
+    std::string failedStructure_;  // a structure whose compile failed: not retried every frame
+    std::string compileError_, displayError_;
+    // Cache of shadingInWorkingSpace (an OCIO processor per colour is not free every frame).
+    std::optional<std::pair<ShadingSettings, std::string>> shadingKey_;
+    ShadingSettings workingShading_;
+    // What the display texture shows: redrawn only when the image or the transform changed.
+    DisplayTarget displayTarget_;
+    bool imageChanged_ = false;
+    std::optional<std::pair<DisplayKey, double>> shownDisplay_;
+    ViewportStats stats_;
+    // Dynamic resolution: what the last frame showed (a change means motion) and when it began.
+    viewport::ResolutionController resolution_;
+    std::optional<viewport::FrameKey> lastView_;
+    std::optional<std::chrono::steady_clock::time_point> lastFrameStart_;
+    viewport::FrameAction lastAction_ = viewport::FrameAction::Reset;  // the last fast frame's
+    // Path traced at rest. The tracer is kept while the structure and size stay (its program
+    // takes a while to compile); `path_` is the running accumulation.
+    std::string presetFile_;
+    std::unique_ptr<gl::PathTracer> pathTracer_;
+    std::optional<PathAtRest> path_;
+    std::optional<PathSceneData> pathData_;  // the last scene resolved (its environment map is reused)
+    std::string pathError_;                  // why the path tracer could not start (e.g. a missing environment map)
+    // The lighting and the preset file + structure of a failed start: not retried for the same.
+    std::optional<std::pair<Lighting, std::string>> pathFailed_;
+    GLuint pathReadFramebuffer_ = 0;
+    gl::ColorTarget pathImage_{GL_RGBA32F};
+    double pathMsPerRow_ = 0.0;  // measured time of one row of one sample (0: none yet)
+};
+
+}  // namespace fraktal::editor

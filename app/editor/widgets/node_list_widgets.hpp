@@ -1,0 +1,118 @@
+// The Formula panel's widgets for one node list, shared by the 3D formula (core/formula.hpp
+// Node) and the 2D formula (core/plane/plane_formula.hpp PlaneNode): a row per node (enable,
+// select, drag to reorder, duplicate, remove, a compile error under the node it names) and the
+// selected node's period, phase and parameters (param_widgets.hpp, from the block's ParamDecl).
+// Templates over the node type: both node types have block, values, enabled, period and phase.
+#pragma once
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/editor/widgets/param_widgets.hpp"
+
+namespace fraktal::editor {
+
+inline const ImVec4 kErrorColor(1.0f, 0.42f, 0.36f, 1.0f);
+
+// The list edits a frame's rows asked for; applied after the list is drawn, so that no row is
+// drawn from a changed vector.
+struct NodeListRequest {
+    int remove = -1, duplicate = -1, moveFrom = -1, moveTo = -1;
+};
+
+// A compile error, wrapped, in the error colour.
+void errorUnder(const std::string& error);
+
+template <class NodeT>
+std::string nodeLabel(const NodeT& n, int index) {
+    std::string label = std::to_string(index + 1) + ". " + std::string(n.block->label);
+    if (n.period > 1) label += "  (iter % " + std::to_string(n.period) + " = " + std::to_string(n.phase) + ")";
+    return label;
+}
+
+// One row of a node list. `payload` names the drag-and-drop type: rows reorder only within
+// lists of the same payload. Returns whether the row was clicked (select it).
+template <class NodeT>
+bool nodeRow(NodeT& n, int i, bool selected, const std::string* error, const char* payload, NodeListRequest& req) {
+    ImGui::PushID(i);
+    ImGui::Checkbox("##on", &n.enabled);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip(n.enabled ? "Disable this node" : "Enable this node");
+    ImGui::SameLine();
+    const float buttons =
+        ImGui::CalcTextSize("DupDel").x + ImGui::GetStyle().FramePadding.x * 4 + ImGui::GetStyle().ItemSpacing.x * 2;
+    if (!n.enabled) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    if (error) ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+    const bool clicked =
+        ImGui::Selectable(nodeLabel(n, i).c_str(), selected, 0, ImVec2(ImGui::GetContentRegionAvail().x - buttons, 0));
+    if (error) ImGui::PopStyleColor();
+    if (!n.enabled) ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\nDrag to reorder.", std::string(n.block->help).c_str());
+    if (ImGui::BeginDragDropSource()) {
+        ImGui::SetDragDropPayload(payload, &i, sizeof i);
+        ImGui::TextUnformatted(nodeLabel(n, i).c_str());
+        ImGui::EndDragDropSource();
+    }
+    if (ImGui::BeginDragDropTarget()) {
+        if (const ImGuiPayload* p = ImGui::AcceptDragDropPayload(payload)) {
+            req.moveFrom = *static_cast<const int*>(p->Data);
+            req.moveTo = i;
+        }
+        ImGui::EndDragDropTarget();
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Dup")) req.duplicate = i;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Duplicate this node (Ctrl+D)");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Del")) req.remove = i;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove this node (Delete)");
+    if (error) errorUnder(*error);
+    ImGui::PopID();
+    return clicked;
+}
+
+// The selected node's block, help, period and phase (not for estimators) and parameters;
+// `beforeParam(k)` draws what goes before parameter k's widget on its line (a key marker);
+// `shown` records the widgets (ParamWidgetsShown).
+template <class NodeT>
+void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
+                    const std::function<void(size_t)>& beforeParam = {}) {
+    if (!n.block) return;
+    ImGui::Text("%s", std::string(n.block->label).c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", std::string(categoryName(n.block->category)).c_str());
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", std::string(n.block->help).c_str());
+    ImGui::PopTextWrapPos();
+    if (!estimator) {
+        // Period and phase decide on which iterations the node runs (hybrids): structure edits.
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
+        if (ImGui::InputInt("Period", &n.period, 1, 1)) n.period = std::clamp(n.period, 1, 16);
+        helpMarker("The node runs on iterations i with i % period == phase (hybrids alternate blocks).");
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
+        if (ImGui::InputInt("Phase", &n.phase, 1, 1)) n.phase = std::clamp(n.phase, 0, n.period - 1);
+        n.phase = std::clamp(n.phase, 0, n.period - 1);
+    }
+    if (n.block->params.empty()) ImGui::TextDisabled("This block has no parameters.");
+    for (size_t k = 0; k < n.block->params.size(); ++k) {
+        if (beforeParam) beforeParam(k);
+        paramWidget(n.block->params[k], n.values[k], &shown);
+    }
+}
+
+// The "Add block" menu's items for one category's blocks; returns the one picked, or nullptr.
+// `current` is ticked (the estimator in use).
+template <class BlockT>
+const BlockT* blockMenuItems(const std::vector<const BlockT*>& blocks, const BlockT* current = nullptr) {
+    const BlockT* picked = nullptr;
+    for (const BlockT* b : blocks) {
+        if (ImGui::MenuItem(std::string(b->label).c_str(), nullptr, current == b)) picked = b;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(b->help).c_str());
+    }
+    return picked;
+}
+
+}  // namespace fraktal::editor
