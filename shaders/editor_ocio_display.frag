@@ -1,5 +1,5 @@
 #version 450 core
-// The editor viewport's display pass (app/editor/ocio_display_pass.cpp): the only place its image
+// The editor viewport's display pass (app/editor/viewport/ocio_display_pass.cpp): the only place its image
 // leaves scene-linear data. Exposure (a gain of 2^stops in the working space), then the OCIO
 // display/view transform whose GLSL OpenColorIO generates (GpuShaderDesc, GLSL 4.0; it defines
 // `vec4 OCIODisplay(vec4)` and its LUT samplers and replaces the marker line below), then the
