@@ -1,6 +1,6 @@
 // shaders/pathtrace.frag — the progressive path tracer: u_samples samples of every pixel per draw,
 // added (blending GL_ONE, GL_ONE) to the sums of the draws before. Needs the formula,
-// shaders/march.glsl and shaders/shade.glsl before it. The estimator and its random numbers are
+// shaders/march.glsl, shaders/shade.glsl and shaders/lens.glsl before it. The estimator and its random numbers are
 // those of core/cpu_render/cpu_path_tracer.cpp (its header says what they are), mirrored line for
 // line in single precision: change both together.
 //
@@ -22,8 +22,6 @@ uniform ivec2 u_imageSize;
 uniform int u_firstSample, u_samples, u_maxSteps, u_transparentBackground, u_writeDepth;
 uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
 uniform float u_tanHalfFovY;
-uniform float u_apertureRadius, u_focusDistance;
-uniform int u_blades;
 uniform int u_bounces;
 uniform float u_alpha, u_f0, u_emission;
 uniform int u_lightCount;
@@ -73,29 +71,6 @@ vec3 sampleCone(vec3 axis, float cosMax, float u1, float u2) {
     float sinTheta = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
     float phi = 2.0 * PI * u2;
     return fromFrame(axis, sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
-}
-
-vec2 sampleAperture(float u1, float u2, int blades) {
-    if (blades < 3) {
-        float a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0;
-        if (a == 0.0 && b == 0.0) return vec2(0.0);
-        float r, phi;
-        if (abs(a) > abs(b)) {
-            r = a;
-            phi = (PI / 4.0) * (b / a);
-        } else {
-            r = b;
-            phi = PI / 2.0 - (PI / 4.0) * (a / b);
-        }
-        return vec2(r * cos(phi), r * sin(phi));
-    }
-    float scaled = u1 * float(blades);
-    int k = min(int(scaled), blades - 1);
-    float v1 = scaled - float(k);
-    float a0 = PI / 2.0 + 2.0 * PI * float(k) / float(blades), a1 = a0 + 2.0 * PI / float(blades);
-    float su = sqrt(v1);
-    float wa = su * (1.0 - u2), wb = su * u2;
-    return vec2(wa * cos(a0) + wb * cos(a1), wa * sin(a0) + wb * sin(a1));
 }
 
 float ggxD(float cosH) {
@@ -273,12 +248,7 @@ void main() {
                             u_cameraUp * (ndcY * u_tanHalfFovY));
         vec3 ro = u_cameraPosition;
         float a1 = rng(), a2 = rng();
-        if (u_apertureRadius > 0.0) {
-            vec3 focusPoint = ro + rd * (u_focusDistance / dot(rd, u_cameraForward));
-            vec2 lens = sampleAperture(a1, a2, u_blades) * u_apertureRadius;
-            ro = ro + u_cameraRight * lens.x + u_cameraUp * lens.y;
-            rd = normalize(focusPoint - ro);
-        }
+        thinLensRay(ro, rd, u_cameraForward, u_cameraRight, u_cameraUp, a1, a2);
         float tStart, tEnd;
         bool hit = false;
         MarchState s = marchStart(0.0);

@@ -1,5 +1,10 @@
 // shaders/still.frag — the offline still renderer: one tile of the image per draw. Needs the
-// formula, shaders/march.glsl and shaders/shade.glsl before it.
+// formula, shaders/march.glsl, shaders/shade.glsl and shaders/lens.glsl before it.
+//
+// Depth of field: with a thin lens (u_apertureRadius > 0, shaders/lens.glsl) each sample's ray
+// leaves its own point of the aperture, so the pixel's samples average over the lens as the path
+// tracer's do; the pixel-centre sample is then no pinhole ray, and the CPU reference (a pinhole)
+// is compared only without a lens.
 //
 // Each pixel takes u_spp camera rays. Sample positions are importance-sampled from the
 // reconstruction filter (a separable Blackman-Harris window of radius u_filterRadius pixels,
@@ -74,6 +79,8 @@ void main() {
     float pixelAngle = 2.0 * u_tanHalfFovY / float(u_imageSize.y);
     uint h = hashPixel(uvec2(pixel));
     vec2 rotation = vec2(float(h & 0xffffu), float(h >> 16u)) / 65536.0;
+    uint hLens = hashPixel(uvec2(h, 0x9e3779b9u));
+    vec2 lensRotation = vec2(float(hLens & 0xffffu), float(hLens >> 16u)) / 65536.0;
 
     vec3 color = vec3(0.0), normal = vec3(0.0), albedo = vec3(0.0);
     float coverage = 0.0, ao = 0.0, depth = 1e30, deEvals = 0.0, shadeEvals = 0.0, steps = 0.0;
@@ -93,6 +100,10 @@ void main() {
         vec3 rd = normalize(u_cameraForward + u_cameraRight * (ndcX * u_tanHalfFovY * aspect) +
                             u_cameraUp * (ndcY * u_tanHalfFovY));
         vec3 ro = u_cameraPosition;
+        // Depth of field: the k-th point of a Halton (2, 3) sequence on the aperture, shifted per
+        // pixel (Cranley-Patterson) by a second hash so that it does not follow the filter offset.
+        vec2 lensPoint = fract(lensRotation + vec2(radicalInverse(k, 2), radicalInverse(k, 3)));
+        thinLensRay(ro, rd, u_cameraForward, u_cameraRight, u_cameraUp, lensPoint.x, lensPoint.y);
 
         float tStart, tEnd;
         bool hit = false;

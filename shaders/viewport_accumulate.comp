@@ -42,8 +42,10 @@ void main() {
     bool changed = false;
     if ((info.w & FLAG_SHADED_NOW) != 0) {
         vec3 color = imageLoad(u_sampleColor, px).rgb;
-        // Sample 0 replaces: it is the first sample, or the exact shade of a reused colour.
-        accum = info.z == 0 ? vec4(color, 1.0) : accum + vec4(color, 1.0);
+        // Sample 0 replaces: it is the first sample, or the exact shade of a reused colour. With a
+        // thin lens sample 1, the first through the lens, replaces the pinhole sample 0 in turn.
+        bool replaces = info.z == 0 || (info.z == 1 && u_apertureRadius > 0.0);
+        accum = replaces ? vec4(color, 1.0) : accum + vec4(color, 1.0);
         info.w &= ~FLAG_SHADED_NOW;
         imageStore(u_accum, px, accum);
         imageStore(u_image, px, vec4(accum.rgb / accum.a, 1.0));
@@ -52,7 +54,8 @@ void main() {
     bool idle = info.x != STATUS_MARCHING && (info.w & (FLAG_NEEDS_SHADE | FLAG_REUSED)) == 0;
 #if AT_REST
     if (idle && info.z + 1 < u_maxSamples) {  // AASchedule::next
-        float start = imageLoad(u_rayState, px).w;
+        // The centre ray's empty cone says nothing about a ray from another point of the lens.
+        float start = u_apertureRadius > 0.0 ? 0.0 : imageLoad(u_rayState, px).w;
         imageStore(u_rayState, px, vec4(start, 0.0, u_initialOmega, start));
         info = ivec4(STATUS_MARCHING, 0, info.z + 1, info.w);
         changed = true;

@@ -179,3 +179,14 @@ bool isCoarseHit(float d, float t, ivec4 info, float carryAge, float tCarried, i
 
 // Half the diagonal of a pixel, as an angle: every AA sample of a pixel lies in this cone.
 const float HALF_DIAGONAL = 0.70710678;
+
+// Depth of field (shaders/lens.glsl): anti-aliasing sample `sampleIndex` > 0 of pixel `px` leaves
+// its own point of the aperture, the Halton (2, 3) point of its index shifted per pixel
+// (Cranley-Patterson) so that neighbouring pixels' noise does not line up. Sample 0, the pixel-centre
+// ray that reprojection carries, stays a pinhole ray.
+void lensSampleRay(ivec2 px, int sampleIndex, inout vec3 ro, inout vec3 rd) {
+    if (sampleIndex <= 0 || u_apertureRadius <= 0.0) return;
+    vec2 shift = vec2(hash01(uvec3(px, 0x6c656e73u)), hash01(uvec3(px, 0x6170u)));
+    vec2 u = fract(shift + vec2(radicalInverse(sampleIndex, 2), radicalInverse(sampleIndex, 3)));
+    thinLensRay(ro, rd, u_cameraForward, u_cameraRight, u_cameraUp, u.x, u.y);
+}

@@ -80,6 +80,7 @@ void main() {
 #endif
     int sampleIndex = info.z;
     vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(sampleIndex));
+    lensSampleRay(px, sampleIndex, ro, rd);
     MarchState s = MarchState(state.x, state.y, state.z, MARCH_MARCHING, info.y, 1e30);
     float covered = state.w;
     float deEvals = 0.0;

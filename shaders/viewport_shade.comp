@@ -30,6 +30,7 @@ void main() {
     float tCarried = imageLoad(u_sampleColor, px).a;
     vec3 ro = u_cameraPosition;
     vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(info.z));
+    lensSampleRay(px, info.z, ro, rd);
     float deEvals = 0.0;
     vec4 centre = imageLoad(u_centre, px);
     bool refines = makeExact || (info.w & FLAG_NEEDS_REFINE) != 0;

@@ -118,6 +118,33 @@ TEST(FrameSequence, AKeyedToggleIsOffOrOnInEveryFrame) {
     std::filesystem::remove_all(dir);
 }
 
+// --mode path renders every frame path-traced: each file has the path tracer's passes and is
+// complete for a rerun, which skips it.
+TEST(FrameSequence, PathTracedFramesCarryThePassesAndAreSkippedWhenComplete) {
+    const auto dir = freshFolder("fraktal_sequence_path_test");
+    const auto preset = dir / "tiny.json";
+    std::ofstream(preset) << kTinyAnimation;
+    const std::string args =
+        "render " + preset.string() + " --mode path --frames 0-5:5 -o " + (dir / "p_#.exr").string();
+    const test::CliRun run = test::runCli(args);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const Preset animated = loadPreset(preset);
+    for (int f : {0, 5}) {
+        const auto path = dir / ("p_" + std::to_string(f) + ".exr");
+        EXPECT_EQ(checkFrameFile(path, sequenceFramePreset(animated, f)), FrameFileState::Complete) << path;
+        EXPECT_NE(fileBytes(path).find("diffuse_direct.R"), std::string::npos) << path;
+    }
+    const test::CliRun again = test::runCli(args);
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_EQ(count(again.output, "complete, skipped"), 2u) << again.output;
+    // Parts are for fast stills only.
+    const test::CliRun part = test::runCli("render " + preset.string() + " --mode path --tile 1/2 -o " +
+                                           (dir / "part.exr").string());
+    EXPECT_NE(part.exitCode, 0);
+    EXPECT_NE(part.output.find("--tile/--part"), std::string::npos) << part.output;
+    std::filesystem::remove_all(dir);
+}
+
 TEST(FrameSequence, BadRangesAndFoldersAreClearErrors) {
     const auto dir = freshFolder("fraktal_sequence_bad_test");
     const auto preset = dir / "tiny.json";

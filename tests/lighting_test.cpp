@@ -8,11 +8,15 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 
 #include "core/color/color_pipeline.hpp"
 #include "core/cpu_render/cpu_path_tracer.hpp"
 #include "core/render/environment.hpp"
 #include "core/render/path_tracer.hpp"
+#include "core/render/still_renderer.hpp"
+#include "core/viewport/converge.hpp"
+#include "core/viewport/viewport.hpp"
 #include "test_support.hpp"
 #include "uniform_lookups.hpp"
 
@@ -112,10 +116,10 @@ TEST(LightingPreset, FastModeSaysWhatItLeavesOut) {
     lighting.lights[1].enabled = true;
     lighting.environment.map = "env/sky.exr";
     lighting.lens.apertureRadius = 0.01;
-    EXPECT_NE(
-        lightingIgnoredByFastMode(lighting).find(
-            "the preset's 2 lights, the environment map and the lens's depth of field apply only with --mode path"),
-        std::string::npos)
+    // The fast renderer has the lens (shaders/lens.glsl): its depth of field is not listed.
+    EXPECT_NE(lightingIgnoredByFastMode(lighting).find(
+                  "the preset's 2 lights and the environment map apply only with --mode path"),
+              std::string::npos)
         << lightingIgnoredByFastMode(lighting);
 }
 
@@ -337,36 +341,36 @@ double edgeWidth(const std::vector<double>& row) {
     return crossing(0.9) - crossing(0.1);
 }
 
-// A thin slab facing the camera: its right edge (at the image centre; its left one is out of view)
-// is a straight step in coverage, blurred by the lens.
-TEST(PathTracer, DepthOfFieldBlursByTheCircleOfConfusion) {
-    test::glContext();
-    const int w = 64, h = 24;
-    const std::string box = R"({
-      "format": "fraktal-preset", "version": 2,
-      "formula": {"iterations": 0, "boundRadius": 3, "nodes": [{"block": "box", "params": {"size": [1, 1, 0.02]}}]},
-      "camera": {"position": [1.0, 0, 4.02], "target": [1.0, 0, 0], "fovY": 10, "aperture": 0.5, "focusDistance": FOCUS},
-      "render": {"transparentBackground": true}, "pathTrace": {"bounces": 0}
-    })";
-    auto width = [&](double focus) {
-        TracedScene s = litScene(replaced(box, "FOCUS", std::to_string(focus)), w, h);
-        gl::PathTracer tracer(s.preset.formula, w, h);
-        tracer.setScene(s.scene());
-        tracer.addSamples(256, 64);
-        const PathImage image = tracer.image();
-        std::vector<double> row(w, 0.0);
-        for (int y = h / 2 - 4; y < h / 2 + 4; ++y)  // the rows about the centre, averaged
-            for (int x = 0; x < w; ++x) row[x] += (1.0 - image.at(kBeauty, x, y)[3]) / 8.0;
-        return edgeWidth(row);
-    };
+// A thin slab facing the camera at depth 4 through a thin lens of radius 0.5 (fovY 10, 64x24
+// pixels): its right edge (at the image centre; its left one is out of view) is a straight step in
+// coverage, blurred by the lens. `edgeWidthAt(focus)` renders it focused at `focus` and returns the
+// 10-90 % width in pixels of that step across the middle rows.
+constexpr int kLensW = 64, kLensH = 24;
+const char* const kLensBox = R"({
+  "format": "fraktal-preset", "version": 2,
+  "formula": {"iterations": 0, "boundRadius": 3, "nodes": [{"block": "box", "params": {"size": [1, 1, 0.02]}}]},
+  "camera": {"position": [1.0, 0, 4.02], "target": [1.0, 0, 0], "fovY": 10, "aperture": 0.5, "focusDistance": FOCUS},
+  "render": {"transparentBackground": true, "filterRadius": 0.5}, "pathTrace": {"bounces": 0}
+})";
+
+// The step's width from the coverage (alpha) of the rows about the centre, averaged.
+template <typename AlphaAt>
+double coverageEdgeWidth(AlphaAt alphaAt) {
+    std::vector<double> row(kLensW, 0.0);
+    for (int y = kLensH / 2 - 4; y < kLensH / 2 + 4; ++y)
+        for (int x = 0; x < kLensW; ++x) row[x] += (1.0 - alphaAt(x, y)) / 8.0;
+    return edgeWidth(row);
+}
+
+void expectTheCircleOfConfusion(const std::function<double(double)>& edgeWidthAt, const char* renderer) {
     // The face lies at depth z = 4. Focused there, the edge is as sharp as the pixel filter.
-    const double sharp = width(4.0);
+    const double sharp = edgeWidthAt(4.0);
     // (A one-pixel box filter's step, read between pixel centres, rises over 1.6 px.)
-    EXPECT_LT(sharp, 2.0);
+    EXPECT_LT(sharp, 2.0) << renderer;
     // Focused at s = 8, a point at z blurs into a disc of radius A |1 - z / s| on the plane at z;
     // a pixel there spans z * pixelAngle. A disc-blurred step rises from 10 % to 90 % over
     // 2 x0 R, with x0 solving (x sqrt(1 - x^2) + asin x) / pi = 0.4.
-    const double pixelAngle = 2.0 * std::tan(5.0 * M_PI / 180.0) / h;
+    const double pixelAngle = 2.0 * std::tan(5.0 * M_PI / 180.0) / kLensH;
     const double radius = 0.5 * std::abs(1.0 - 4.0 / 8.0) / (4.0 * pixelAngle);
     double x0 = 0.5;
     for (int i = 0; i < 60; ++i) {
@@ -374,9 +378,77 @@ TEST(PathTracer, DepthOfFieldBlursByTheCircleOfConfusion) {
         x0 -= f / (2.0 * std::sqrt(1.0 - x0 * x0) / M_PI);
     }
     const double expected = 2.0 * x0 * radius;
-    const double blurred = width(8.0);
-    std::printf("edge width: %.2f px in focus, %.2f px out of focus (thin lens: %.2f px)\n", sharp, blurred, expected);
-    EXPECT_NEAR(blurred, expected, 0.1 * expected);
+    const double blurred = edgeWidthAt(8.0);
+    std::printf("%s: edge width %.2f px in focus, %.2f px out of focus (thin lens: %.2f px)\n", renderer, sharp,
+                blurred, expected);
+    EXPECT_NEAR(blurred, expected, 0.1 * expected) << renderer;
+}
+
+TEST(PathTracer, DepthOfFieldBlursByTheCircleOfConfusion) {
+    test::glContext();
+    expectTheCircleOfConfusion(
+        [](double focus) {
+            TracedScene s = litScene(replaced(kLensBox, "FOCUS", std::to_string(focus)), kLensW, kLensH);
+            gl::PathTracer tracer(s.preset.formula, kLensW, kLensH);
+            tracer.setScene(s.scene());
+            tracer.addSamples(256, 64);
+            const PathImage image = tracer.image();
+            return coverageEdgeWidth([&](int x, int y) { return image.at(kBeauty, x, y)[3]; });
+        },
+        "path tracer");
+}
+
+// The fast still renderer's samples average over the same lens (shaders/lens.glsl).
+TEST(StillRenderer, DepthOfFieldBlursByTheCircleOfConfusion) {
+    test::glContext();
+    expectTheCircleOfConfusion(
+        [](double focus) {
+            const Preset preset = parsePreset(replaced(kLensBox, "FOCUS", std::to_string(focus)), "lens.json");
+            RenderSettings r = preset.render;
+            r.width = kLensW;
+            r.height = kLensH;
+            r.spp = 256;
+            gl::StillRenderer renderer(preset.formula, 64);
+            renderer.setScene(preset.formula, preset.camera, r, resolveShading(preset.shading, r, preset.formula), 0.0,
+                              preset.lighting.lens);
+            ImageStrip image;
+            image.resize(r.width, 0, r.height);
+            for (const TileRect& tile : tilesOf({0, 0, r.width, r.height}, 64)) renderer.renderTile(tile, image);
+            return coverageEdgeWidth(
+                [&](int x, int y) { return double(image.rgba[4 * (size_t(y) * size_t(r.width) + size_t(x)) + 3]); });
+        },
+        "fast still renderer");
+}
+
+// The viewport at rest: its anti-aliasing samples after the first leave their own points of the
+// same lens. The slab is flat-lit on a black sky (one palette colour, no AO, shadows or specular),
+// so the step in brightness is the step in coverage.
+TEST(ViewportGL, DepthOfFieldAtRestBlursByTheCircleOfConfusion) {
+    test::glContext();
+    expectTheCircleOfConfusion(
+        [](double focus) {
+            std::string text = replaced(kLensBox, "FOCUS", std::to_string(focus));
+            text = replaced(text, R"("pathTrace")",
+                            R"("shading": {"backgroundTop": [0, 0, 0], "backgroundBottom": [0, 0, 0], "aoSteps": 0,
+                              "shadowSteps": 0, "specular": 0, "paletteB": [0, 0, 0]}, "pathTrace")");
+            const Preset preset = parsePreset(text, "lens.json");
+            viewport::ViewportOptions options;
+            options.maxSamples = 256;
+            viewport::Viewport v(options);
+            const viewport::Converged c =
+                viewport::renderUntilSettled(v, preset.formula, preset.camera, preset.render, preset.shading, kLensW,
+                                             kLensH, 4000, preset.lighting.lens);
+            EXPECT_TRUE(c.settled);
+            // Brightness from the sky (0) to the face (the mean of the image's brightest column).
+            auto brightness = [&](int x, int y) {
+                const float* p = &c.image[4 * (size_t(y) * kLensW + size_t(x))];
+                return double(p[0] + p[1] + p[2]);
+            };
+            const double face = brightness(2, kLensH / 2);
+            EXPECT_GT(face, 0.05);
+            return coverageEdgeWidth([&](int x, int y) { return brightness(x, y) / face; });
+        },
+        "viewport at rest");
 }
 
 TEST(PathTracer, CommandLineWritesTheCompositingPasses) {

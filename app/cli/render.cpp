@@ -186,13 +186,15 @@ int runRender(RenderOptions o) {
     job.checkDisk = !o.noDiskCheck;
 
     if (o.denoise && o.mode != "path") throw std::runtime_error("--denoise needs --mode path");
-    if (o.mode == "path" && (!o.frames.empty() || !o.part.empty()))
-        throw std::runtime_error("--mode path renders a whole still: not with --frames or --tile/--part");
+    if (o.mode == "path" && !o.part.empty())
+        throw std::runtime_error("--mode path renders a whole image: not with --tile/--part");
     const ColorPipeline color = ColorPipeline::fromEnvironment();
     std::optional<SequenceJob> sequence;
     if (!o.frames.empty()) {
         if (job.png) throw std::runtime_error("--png is for stills, not with --frames");
         sequence = SequenceJob{job.preset, o.input, o.output, parseFrameRange(o.frames), o.fullFloat, o.tile, o.quiet};
+        sequence->pathTraced = o.mode == "path";
+        sequence->denoise = o.denoise;
         validateSequenceJob(*sequence, color);
     } else {
         validateStillJob(job, color);  // before the (slow) GL start-up: bad input fails fast

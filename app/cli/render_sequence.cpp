@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli/cancel.hpp"
+#include "core/render/path_job.hpp"
 #include "core/render/still_job.hpp"
 
 namespace fraktal::cli {
@@ -50,7 +51,10 @@ int renderSequence(const SequenceJob& job, const ColorPipeline& color) {
                          frames[size_t(i)], still.exr.c_str(), why.c_str());
         const auto start = std::chrono::steady_clock::now();
         try {
-            renderStillJob(still, color);
+            if (job.pathTraced)
+                renderPathJob(PathJob{still, job.source, job.denoise}, color);
+            else
+                renderStillJob(still, color);
         } catch (const RenderCancelled&) {
             std::fprintf(stderr,
                          "\nfraktal: render cancelled at frame %d; %d frames written, the frame under way "

@@ -18,6 +18,8 @@ struct SequenceJob {
     int tileSize = 256;
     bool quiet = false;
     const std::atomic<bool>* cancel = nullptr;
+    bool pathTraced = false;  // --mode path: each frame path-traced with the preset's lights and lens
+    bool denoise = false;     // with pathTraced: --denoise on each frame
 };
 
 // Fails fast on a bad range, pattern or folder, before any GL work.

@@ -179,8 +179,7 @@ struct Tracer {
         const double a1 = rng.next(), a2 = rng.next();
         if (lighting.lens.enabled()) {
             const CameraBasis basis = camera.basis();
-            const double focus = lighting.lens.focusDistance > 0.0 ? lighting.lens.focusDistance
-                                                                   : length(camera.target - camera.position);
+            const double focus = focusDistanceOf(lighting.lens, camera);
             const vec3 focusPoint = ro + rd * (focus / dot(rd, basis.forward));
             const vec2 lens = sampleAperture(a1, a2, lighting.lens.blades) * lighting.lens.apertureRadius;
             ro = ro + basis.right * lens.x + basis.up * lens.y;

@@ -19,4 +19,15 @@ void setCameraUniforms(const CameraLocations& at, const Camera& camera) {
     glUniform1f(at.tanHalfFovY, float(camera.tanHalfFovY()));
 }
 
+LensLocations::LensLocations(GLuint program)
+    : apertureRadius(glGetUniformLocation(program, "u_apertureRadius")),
+      focusDistance(glGetUniformLocation(program, "u_focusDistance")),
+      blades(glGetUniformLocation(program, "u_blades")) {}
+
+void setLensUniforms(const LensLocations& at, const ThinLens& lens, const Camera& camera) {
+    glUniform1f(at.apertureRadius, lens.enabled() ? float(lens.apertureRadius) : 0.0f);
+    glUniform1f(at.focusDistance, float(focusDistanceOf(lens, camera)));
+    glUniform1i(at.blades, lens.blades);
+}
+
 }  // namespace fraktal::gl

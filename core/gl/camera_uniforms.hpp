@@ -1,4 +1,5 @@
-// The camera uniforms of the ray-marching shaders (shaders/still.frag, shaders/viewport_common.glsl):
+// The camera uniforms of the ray-marching shaders (shaders/still.frag, shaders/viewport_common.glsl,
+// shaders/pathtrace.frag, and the lens of shaders/lens.glsl):
 // the position, the frame of Camera::basis and tan(fovY / 2), from which each shader builds its
 // rays exactly as Camera::rayDirection does.
 #pragma once
@@ -6,6 +7,7 @@
 #include <epoxy/gl.h>
 
 #include "core/camera.hpp"
+#include "core/render/lighting.hpp"
 
 namespace fraktal::gl {
 
@@ -24,5 +26,13 @@ struct CameraLocations {
 
 // Sets them on the program they were found in, which must be in use.
 void setCameraUniforms(const CameraLocations& at, const Camera& camera);
+
+// The thin lens's uniforms (shaders/lens.glsl), found the same way; a pinhole sets aperture 0.
+struct LensLocations {
+    GLint apertureRadius = -1, focusDistance = -1, blades = -1;
+    LensLocations() = default;
+    explicit LensLocations(GLuint program);
+};
+void setLensUniforms(const LensLocations& at, const ThinLens& lens, const Camera& camera);
 
 }  // namespace fraktal::gl

@@ -8,6 +8,10 @@
 
 namespace fraktal {
 
+double focusDistanceOf(const ThinLens& lens, const Camera& camera) {
+    return lens.focusDistance > 0.0 ? lens.focusDistance : length(camera.target - camera.position);
+}
+
 using nlohmann::json;
 
 namespace {
@@ -188,13 +192,11 @@ std::string lightingIgnoredByFastMode(const Lighting& lighting) {
         size_t(std::count_if(lighting.lights.begin(), lighting.lights.end(), [](const Light& l) { return l.enabled; }));
     if (on > 0) parts.push_back(std::to_string(on) + (on == 1 ? " light" : " lights"));
     if (lighting.environment.active()) parts.push_back("the environment map");
-    if (lighting.lens.enabled()) parts.push_back("the lens's depth of field");
     if (parts.empty()) return "";
     std::string list = parts[0];
     for (size_t i = 1; i < parts.size(); ++i) list += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
     return "the preset's " + list + (parts.size() == 1 && on <= 1 ? " applies" : " apply") +
-           " only with --mode path; the fast renderer lights with the shading's key and fill lights through a "
-           "pinhole camera";
+           " only with --mode path; the fast renderer lights with the shading's key and fill lights";
 }
 
 }  // namespace fraktal

@@ -76,6 +76,9 @@ struct ThinLens {
     bool operator==(const ThinLens&) const = default;
 };
 
+// The distance along the view axis that the lens focuses at: its own, else the camera's target's.
+double focusDistanceOf(const ThinLens& lens, const Camera& camera);
+
 // The path tracer's own settings ("pathTrace").
 struct PathTraceSettings {
     int bounces = 3;          // surface interactions after the first hit

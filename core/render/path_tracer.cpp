@@ -15,7 +15,7 @@ static_assert(kMaxLightsInShader == kMaxLights);
 
 std::string pathTraceProgramSource() {
     return std::string(shaderTemplate("march.glsl")) + "\n" + std::string(shaderTemplate("shade.glsl")) + "\n" +
-           std::string(shaderTemplate("pathtrace.frag"));
+           std::string(shaderTemplate("lens.glsl")) + "\n" + std::string(shaderTemplate("pathtrace.frag"));
 }
 
 template <class T>
@@ -74,11 +74,7 @@ void PathTracer::setScene(const PathScene& scene, int firstSampleIndex) {
     glUniform1i(loc("u_maxSteps"), scene.render.maxSteps);
     glUniform1i(loc("u_transparentBackground"), scene.render.transparentBackground ? 1 : 0);
     const Lighting& l = scene.lighting;
-    const double focus =
-        l.lens.focusDistance > 0.0 ? l.lens.focusDistance : length(scene.camera.target - scene.camera.position);
-    glUniform1f(loc("u_apertureRadius"), float(l.lens.apertureRadius));
-    glUniform1f(loc("u_focusDistance"), float(focus));
-    glUniform1i(loc("u_blades"), l.lens.blades);
+    setLensUniforms(LensLocations(p), l.lens, scene.camera);
     glUniform1i(loc("u_bounces"), l.pathTrace.bounces);
     glUniform1f(loc("u_alpha"), float(l.pathTrace.roughness * l.pathTrace.roughness));
     glUniform1f(loc("u_f0"), float(l.pathTrace.specular));

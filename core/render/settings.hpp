@@ -16,11 +16,11 @@ inline constexpr int kMaxMarchSteps = 10000;
 struct RenderSettings {
     int width = 1280;
     int height = 720;
-    int spp = 4;                   // samples per pixel
-    int maxSteps = 256;            // march steps per camera ray
-    double detail = 0.5;           // hit threshold, in pixel footprints (smaller = finer)
-    double overRelaxation = 1.3;   // initial omega of the over-relaxed marcher (1 = plain)
-    double filterRadius = 2.0;     // Blackman-Harris reconstruction filter radius, pixels
+    int spp = 4;                  // samples per pixel
+    int maxSteps = 256;           // march steps per camera ray
+    double detail = 0.5;          // hit threshold, in pixel footprints (smaller = finer)
+    double overRelaxation = 1.3;  // initial omega of the over-relaxed marcher (1 = plain)
+    double filterRadius = 2.0;    // Blackman-Harris reconstruction filter radius, pixels
     bool transparentBackground = false;
     // Colour: the working (scene-linear) space is an OCIO colour space name or the role
     // "scene_linear"; the PNG preview goes through display/view with exposure (stops).
@@ -43,7 +43,7 @@ struct ShadingSettings {
     double shininess = 40.0;
     int shadowSteps = 96;  // 0: no shadows
     double shadowSoftness = 12.0;
-    int aoSteps = 5;  // 0: no ambient occlusion
+    int aoSteps = 5;          // 0: no ambient occlusion
     double aoDistance = 0.1;  // x bound
     double aoStrength = 1.0;
     // Orbit-trap palette: index = offset + scale * dot(weights, trap), trap = (min|x|, min|y|,

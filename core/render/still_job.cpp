@@ -151,7 +151,7 @@ void renderStillJob(const StillJob& job, const ColorPipeline& color) {
 
     const int tileSize = std::min(job.tileSize, std::max(r.width, r.height));
     gl::StillRenderer renderer(preset.formula, tileSize);
-    renderer.setScene(preset.formula, preset.camera, r, shading, job.adaptiveTolerance);
+    renderer.setScene(preset.formula, preset.camera, r, shading, job.adaptiveTolerance, preset.lighting.lens);
 
     AtomicFile exrFile(job.exr);
     ExrMetadata meta;

@@ -15,7 +15,7 @@ constexpr int kFilterTableSize = 65;  // FILTER_TABLE_SIZE in shaders/still.frag
 
 std::string stillProgramSource() {
     return std::string(shaderTemplate("march.glsl")) + "\n" + std::string(shaderTemplate("shade.glsl")) + "\n" +
-           std::string(shaderTemplate("still.frag"));
+           std::string(shaderTemplate("lens.glsl")) + "\n" + std::string(shaderTemplate("still.frag"));
 }
 }  // namespace
 
@@ -28,6 +28,7 @@ StillRenderer::StillRenderer(const Formula& formula, int tileSize)
     shadingUniforms_ = ShadingUniforms(program_.id());
     const auto at = [p = program_.id()](const char* name) { return glGetUniformLocation(p, name); };
     at_.camera = CameraLocations(program_.id());
+    at_.lens = LensLocations(program_.id());
     at_.tileOrigin = at("u_tileOrigin");
     at_.imageSize = at("u_imageSize");
     at_.spp = at("u_spp");
@@ -58,7 +59,7 @@ StillRenderer::~StillRenderer() {
 }
 
 void StillRenderer::setScene(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                             const ShadingParams& shading, double adaptiveTolerance) {
+                             const ShadingParams& shading, double adaptiveTolerance, const ThinLens& lens) {
     if (formula.structureKey() != structure_)
         throw std::logic_error("StillRenderer::setScene: the formula's structure changed; make a new renderer");
     imageWidth_ = render.width;
@@ -68,6 +69,7 @@ void StillRenderer::setScene(const Formula& formula, const Camera& camera, const
     formulaUniforms_.upload(formula);
     shadingUniforms_.upload(shading);
     gl::setCameraUniforms(at_.camera, camera);
+    gl::setLensUniforms(at_.lens, lens, camera);
     glUniform2i(at_.imageSize, render.width, render.height);
     glUniform1i(at_.spp, render.spp);
     glUniform1i(at_.maxSteps, render.maxSteps);

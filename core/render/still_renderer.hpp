@@ -31,8 +31,9 @@ class StillRenderer {
     // Sets everything that stays the same across the tiles of one image. `formula` must have the
     // constructor's structure.
     // adaptiveTolerance: see shaders/still.frag (0: every pixel takes render.spp samples).
+    // lens: depth of field (shaders/lens.glsl); the default is a pinhole.
     void setScene(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                  const ShadingParams& shading, double adaptiveTolerance = 0.0);
+                  const ShadingParams& shading, double adaptiveTolerance = 0.0, const ThinLens& lens = {});
     // Renders `tile` (which must lie in `strip`'s rows and be at most tileSize square).
     void renderTile(const TileRect& tile, ImageStrip& strip);
 
@@ -50,6 +51,7 @@ class StillRenderer {
     // sequence, renderTile per tile.
     struct Locations {
         CameraLocations camera;
+        LensLocations lens;
         GLint tileOrigin = -1, imageSize = -1, spp = -1, maxSteps = -1, filterRadius = -1, transparentBackground = -1,
               adaptiveTolerance = -1, filterInverseCdf = -1;
     } at_;

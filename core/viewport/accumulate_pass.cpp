@@ -7,7 +7,7 @@ void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const Fra
     const Pass& pass = c.atRest ? p.accumulateAtRest : p.accumulateMoving;
     const GLuint program = pass.id();
     pass.use(s);
-    setViewUniforms(pass.uniforms, c.camera, s.width(), s.height());
+    setViewUniforms(pass.uniforms, c.camera, s.width(), s.height(), c.lens);
     glUniform1i(pass.uniforms.maxSamples, c.options.maxSamples);
     glUniform1f(pass.uniforms.initialOmega, float(std::max(c.shading.overRelaxation, 1.0)));
     gl::dispatchOver(program, s.width(), s.height());

@@ -17,6 +17,6 @@ struct Converged {
 // Renders frames of an unchanged view until the viewport settles or maxFrames pass.
 Converged renderUntilSettled(Viewport& viewport, const Formula& formula, const Camera& camera,
                              const RenderSettings& render, const ShadingSettings& shading, int width, int height,
-                             int maxFrames);
+                             int maxFrames, const ThinLens& lens = {});
 
 }  // namespace fraktal::viewport

@@ -11,6 +11,7 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
+#include "core/render/lighting.hpp"
 #include "core/render/shading_params.hpp"
 
 namespace fraktal::viewport {
@@ -34,6 +35,7 @@ struct FrameKey {
     ShadingParams shading;  // shading, detail and over-relaxation: any change re-marches
     int maxSteps = 0;
     Camera camera;
+    ThinLens lens;  // depth of field of the AA samples at rest: a change restarts them
 };
 
 // `values` of a formula: every uniform the generated GLSL reads (parameters, iterations, bailout,

@@ -18,7 +18,7 @@ int stepsBeforeList(const FrameContext& c, FrameAction action) {
 void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const FrameContext& c, FrameAction action) {
     const PassUniforms& at = pass.uniforms;
     pass.use(s, c.formula, c.shading);
-    setViewUniforms(at, c.camera, s.width(), s.height());
+    setViewUniforms(at, c.camera, s.width(), s.height(), c.lens);
     glUniform1i(at.stepsPerFrame, c.options.stepsPerFrame);
     glUniform1i(at.maxSteps, c.maxSteps);
     glUniform1i(at.atRest, c.atRest ? 1 : 0);

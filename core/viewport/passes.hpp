@@ -20,7 +20,8 @@ struct FrameContext {
     const ShadingParams& shading;
     const ViewportOptions& options;
     int maxSteps;
-    bool atRest;  // FrameAction::Continue: the AA level may rise
+    bool atRest;    // FrameAction::Continue: the AA level may rise
+    ThinLens lens;  // the AA samples' lens (sample 0, the one reprojection carries, is a pinhole ray)
 };
 
 // Reprojection (reproject_pass.cpp): scatters the previous frame's points (`from`'s images, seen

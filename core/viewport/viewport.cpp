@@ -23,17 +23,18 @@ void Viewport::setOptions(const ViewportOptions& options) {
 }
 
 FrameKey Viewport::frameKey(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                            const ShadingSettings& shading, int width, int height) const {
+                            const ShadingSettings& shading, int width, int height, const ThinLens& lens) const {
     RenderSettings effective = render;
     if (!options_.overRelaxation) effective.overRelaxation = 1.0;
     const ShadingParams params = resolveShading(shading, effective, formula);
-    return FrameKey{width, height, formula.structureKey(), formulaValuesKey(formula), params, render.maxSteps, camera};
+    return FrameKey{width,  height, formula.structureKey(), formulaValuesKey(formula), params, render.maxSteps,
+                    camera, lens};
 }
 
 FrameStats Viewport::render(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                            const ShadingSettings& shading, int width, int height) {
+                            const ShadingSettings& shading, int width, int height, const ThinLens& lens) {
     if (width < 2 || height < 2) throw std::runtime_error("viewport: size must be at least 2x2");
-    FrameKey key = frameKey(formula, camera, render, shading, width, height);
+    FrameKey key = frameKey(formula, camera, render, shading, width, height, lens);
     const ShadingParams& params = key.shading;
     // Compile first: if it fails, the old programs and image stay.
     if (!programs_ || programs_->structure != key.structure) programs_ = std::make_unique<ViewportPrograms>(formula);
@@ -62,7 +63,8 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
         return idle;
     }
 
-    const FrameContext context{formula, camera, params, options_, render.maxSteps, action == FrameAction::Continue};
+    const FrameContext context{formula, camera, params, options_, render.maxSteps, action == FrameAction::Continue,
+                               lens};
     const bool timed = options_.timePasses;
     auto mark = [&](const char* pass) {
         if (timed) timer_->mark(pass);

@@ -40,15 +40,17 @@ class Viewport {
     // Renders one frame. Uses render.maxSteps, detail, overRelaxation (and exposure only in the
     // display pass); width/height are the viewport's, not render.width/height. Throws
     // std::runtime_error naming the node if a new structure does not compile (the previous
-    // programs and image stay).
+    // programs and image stay). With a thin lens the anti-aliasing samples at rest (from the second
+    // on, which replaces the pinhole first one) leave their own points of the aperture, so the
+    // settled image has the lens's depth of field; under motion the image is the pinhole's.
     FrameStats render(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                      const ShadingSettings& shading, int width, int height);
+                      const ShadingSettings& shading, int width, int height, const ThinLens& lens = {});
 
     // What render() with these arguments decides its frame on (decideFrame's key), so that a caller
     // that stops rendering for a while (the editor's path tracing at rest) asks the same question
     // about whether the view changed.
     FrameKey frameKey(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                      const ShadingSettings& shading, int width, int height) const;
+                      const ShadingSettings& shading, int width, int height, const ThinLens& lens = {}) const;
 
     // Whether render() with this formula would compile first: the current programs were built for
     // another structure (or none yet).

@@ -21,6 +21,7 @@ namespace fraktal::viewport {
 struct PassUniforms {
     gl::CameraLocations camera;
     gl::CameraLocations newCamera;  // the reprojection's current camera (the points' is `camera`)
+    gl::LensLocations lens;         // shaders/lens.glsl
     GLint size = -1, pixelAngle = -1, newSize = -1;
     GLint stepsPerFrame = -1, maxSteps = -1, atRest = -1, maxCarryFrames = -1, coarseHits = -1, deferAfter = -1,
           resetAll = -1;
@@ -70,6 +71,6 @@ struct ViewportPrograms {
 };
 
 // Sets viewport_common.glsl's camera uniforms on the bound program whose locations `at` holds.
-void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, int height);
+void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, int height, const ThinLens& lens = {});
 
 }  // namespace fraktal::viewport

@@ -1,7 +1,8 @@
 // The Lights tab: the preset's print-quality lighting (core/render/lighting.hpp) that the
 // path-traced mode renders: the list of lights, the environment map, the thin lens and the path
-// tracer's settings. The fast viewport lights with the Shading tab and has a pinhole camera, so
-// these edits show in `fraktal render --mode path`. Every edit is an edit of the document: the
+// tracer's settings. The fast viewport lights with the Shading tab, so the lights and the map show
+// in `fraktal render --mode path` (and the viewport's path-traced mode); the lens's depth of field
+// shows everywhere, in the fast viewport once it rests. Every edit is an edit of the document: the
 // editor commits one undo step per finished gesture (editor.cpp).
 #include <GLFW/glfw3.h>
 #include <imgui.h>

@@ -89,7 +89,8 @@ bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& set
     const auto start = std::chrono::steady_clock::now();
     viewport::FrameStats frame;
     try {
-        frame = viewport_.render(formula, preset.camera, preset.render, workingShading_, width, height);
+        frame = viewport_.render(formula, preset.camera, preset.render, workingShading_, width, height,
+                                 preset.lighting.lens);
     } catch (const std::exception& e) {
         // The viewport keeps its previous programs and image (viewport.hpp).
         compileError_ = e.what();
@@ -203,8 +204,8 @@ bool CoreViewportView::pathStillValid(const Preset& preset, const ViewSettings& 
     // The fast mode's question (decideFrame) about the view at rest, plus what only the path
     // tracer sees: the lights, lens and environment, the background's transparency and the file
     // that environment paths are relative to.
-    const viewport::FrameKey view =
-        viewport_.frameKey(preset.formula, preset.camera, preset.render, workingShading(preset), width, height);
+    const viewport::FrameKey view = viewport_.frameKey(preset.formula, preset.camera, preset.render,
+                                                       workingShading(preset), width, height, preset.lighting.lens);
     const PathAtRest& p = *path_;
     return viewport::decideFrame(&p.view, view, false) == viewport::FrameAction::Continue &&
            p.lighting == preset.lighting && p.workingSpace == preset.render.workingSpace &&
@@ -215,7 +216,8 @@ void CoreViewportView::startPath(const Preset& preset, int width, int height) {
     const std::string failureKey = presetFile_ + "\n" + preset.formula.structureKey();
     if (pathFailed_ && pathFailed_->first == preset.lighting && pathFailed_->second == failureKey) return;
     PathAtRest p;
-    p.view = viewport_.frameKey(preset.formula, preset.camera, preset.render, workingShading(preset), width, height);
+    p.view = viewport_.frameKey(preset.formula, preset.camera, preset.render, workingShading(preset), width, height,
+                                preset.lighting.lens);
     p.lighting = preset.lighting;
     p.workingSpace = preset.render.workingSpace;
     p.presetFile = presetFile_;
