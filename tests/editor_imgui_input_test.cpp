@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/editor/input/imgui_input.hpp"
+#include "app/editor/viewport/ui_redraw.hpp"
 
 namespace fraktal::editor {
 namespace {
@@ -91,6 +92,24 @@ TEST(InputQueue, ACombinationIsOneFrame) {
     EXPECT_TRUE(q.keyDown(GLFW_KEY_LEFT_CONTROL));
     EXPECT_TRUE(q.keyDown(GLFW_KEY_S));
     EXPECT_FALSE(q.pending());
+}
+
+// During a camera gesture the window is drawn whole on its first frame (and kept), then from the
+// copy for kUiRefreshFrames - 1 frames, then whole again; a resize or the gesture's end draws it
+// whole at once, and a frame after the gesture never reuses the copy.
+TEST(UiRedraw, AGestureReusesTheWindowBetweenWholeFrames) {
+    UiRedrawState state;
+    EXPECT_EQ(planUiDraw(state, false, 800, 600), UiDraw::Full);
+    std::string plan;
+    for (int frame = 0; frame < 2 * kUiRefreshFrames + 1; ++frame)
+        plan += planUiDraw(state, true, 800, 600) == UiDraw::Cached ? 'c' : 'F';
+    EXPECT_EQ(plan, "F" + std::string(kUiRefreshFrames - 1, 'c') + "F" + std::string(kUiRefreshFrames - 1, 'c') + "F");
+    EXPECT_EQ(planUiDraw(state, true, 801, 600), UiDraw::FullAndCapture);  // resized
+    EXPECT_EQ(planUiDraw(state, true, 801, 600), UiDraw::Cached);
+    EXPECT_EQ(planUiDraw(state, false, 801, 600), UiDraw::Full);  // released
+    EXPECT_EQ(planUiDraw(state, true, 801, 600), UiDraw::FullAndCapture);
+    EXPECT_EQ(planUiDraw(state, true, 801, 600, false), UiDraw::Full);  // turned off
+    EXPECT_EQ(planUiDraw(state, true, 801, 600), UiDraw::FullAndCapture);
 }
 
 }  // namespace

@@ -260,4 +260,36 @@ import -window root "$out/story_no_safe_factor.png"
 echo "no safe factor: worst DE / true distance $(q .stepFactor.worst), factor $(q .document.formula.deFactor)"
 stop
 
+# A held camera drag draws the side column from the copy kept at its start (viewport/ui_redraw.hpp):
+# mid-drag, on a frame drawn from the copy, the column and the menu bar are the same picture as
+# before the drag, the viewport shows the turned fractal, and letting go draws everything again.
+start "$presets/mandelbulb.json" --tab Shading --slow-frames 60
+wait_settled
+set -- $(viewport_centre)
+cx=$1 cy=$2
+to "$cx" "$cy"
+wait_frames 2
+import -window root "$out/story_ui_before.png"
+xdotool mousedown 1
+for step in 1 2 3 4 5 6; do to $((cx + 20 * step)) "$cy"; wait_frames 1; done
+wait_for .uiDraw cached
+import -window root "$out/story_ui_cached.png"
+# The column without its right edge, the border ImGui lights while the mouse is held elsewhere.
+column_w=$(q '.viewport[0] - 2 | floor')
+viewport_box="$(q '"\(.viewport[2] | floor)x\(.viewport[3] | floor)+\(.viewport[0] | floor)+\(.viewport[1] | floor)"')"
+for shot in before cached; do
+    convert "$out/story_ui_$shot.png" -crop "${column_w}x10000+0+0" +repage "$out/story_ui_${shot}_column.png"
+    convert "$out/story_ui_$shot.png" -crop "$viewport_box" +repage "$out/story_ui_${shot}_viewport.png"
+done
+column_diff=$(compare -metric AE "$out/story_ui_before_column.png" "$out/story_ui_cached_column.png" null: 2>&1 || true)
+[ "$column_diff" = 0 ] || fail "mid-drag the side column drawn from the kept copy differs in $column_diff pixels"
+viewport_diff=$(compare -metric AE -fuzz 5% "$out/story_ui_before_viewport.png" "$out/story_ui_cached_viewport.png" null: 2>&1 || true)
+check "${viewport_diff%% *} > 1000" || fail "mid-drag the viewport did not change ($viewport_diff pixels)"
+mean=$(convert "$out/story_ui_cached_viewport.png" -colorspace Gray -format '%[fx:mean]' info:)
+check "$mean > 0.05" || fail "mid-drag the viewport is dark (mean $mean): the live layers were not drawn"
+xdotool mouseup 1
+wait_for .uiDraw full
+echo "ui cache: column unchanged mid-drag, viewport changed in $viewport_diff pixels"
+stop
+
 [ $failures -eq 0 ] && echo "editor_user_stories: all OK" || { echo "editor_user_stories: $failures failure(s)"; exit 1; }

@@ -63,6 +63,17 @@ TEST(ResolutionControl, NoisyFramesDoNotMakeItOscillate) {
     EXPECT_LE(exact.frameMs(scales.back()), 33.0 * 1.15);
 }
 
+// A loaded machine: 14 ms fixed, 600 ms for a full frame's pixels; a quarter-size frame takes
+// 51.5 ms, so the scale goes below a quarter to hold the target, and never below the floor.
+TEST(ResolutionControl, UnderLoadItGoesBelowAQuarter) {
+    ResolutionController c;
+    SimulatedRenderer r{14.0, 600.0};
+    const double settled = drive(c, r, 60).back();
+    EXPECT_LT(settled, 0.25);
+    EXPECT_GE(settled, c.control().minScale);
+    EXPECT_LE(r.frameMs(settled), 33.0);
+}
+
 TEST(ResolutionControl, ReactsToASlowFrameAtOnceAndRecovers) {
     ResolutionController c;
     SimulatedRenderer r{4.0, 80.0};

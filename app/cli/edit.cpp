@@ -24,6 +24,7 @@ struct EditOptions {
     std::string frameLog;
     std::string exportSize;
     std::string dropReplay;
+    bool fullUiRedraw = false;
 };
 
 int runEdit(const EditOptions& o) {
@@ -39,6 +40,7 @@ int runEdit(const EditOptions& o) {
     e.slowFrameMs = o.slowFrameMs;
     e.frameLog = o.frameLog;
     e.dropReplay = o.dropReplay;
+    e.uiCache = !o.fullUiRedraw;
     if (!o.exportSize.empty() && std::sscanf(o.exportSize.c_str(), "%dx%d", &e.exportWidth, &e.exportHeight) != 2) {
         std::fprintf(stderr, "fraktal: --export-size: '%s' is not WIDTHxHEIGHT\n", o.exportSize.c_str());
         return 2;
@@ -76,6 +78,8 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--replay-drops", o->dropReplay,
                     "When this file appears, drop the files it lists (one a line) on the window, through the "
                     "window's drop callback, and remove it (for tests)");
+    cmd->add_flag("--full-ui-redraw", o->fullUiRedraw,
+                  "Draw every window on every frame, also during a camera drag (for comparisons)");
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });
 }
 

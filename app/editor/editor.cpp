@@ -29,6 +29,8 @@
 #include "app/editor/viewport/frame_log.hpp"
 #include "app/editor/viewport/screenshot.hpp"
 #include "app/editor/viewport/thumbnails.hpp"
+#include "app/editor/viewport/ui_layer_cache.hpp"
+#include "app/editor/viewport/ui_redraw.hpp"
 
 namespace fraktal::editor {
 
@@ -360,6 +362,8 @@ int runEditor(const EditorOptions& o) {
         std::unique_ptr<ViewportView> viewport = makeViewportView(*s.color, compiler.get());
         PlaneViewport planeViewport(*s.color);
         ThumbnailRenderer thumbnails;
+        UiRedrawState uiRedraw;
+        UiLayerCache uiLayers;
         newDocument(s);
         if (!o.preset.empty() && !openDocument(s, o.preset)) {
             std::fprintf(stderr, "fraktal: %s\n", s.status.text.c_str());
@@ -435,9 +439,23 @@ int runEditor(const EditorOptions& o) {
             // The window's background. No full-window rectangle in ImGui's draw lists on top of
             // this: on a software rasteriser a blended layer of the whole window costs about a
             // third of the UI's drawing time (bench/README.md, "The editor under a person's hands").
-            glClearColor(12 / 255.0f, 13 / 255.0f, 15 / 255.0f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            // During a camera gesture most frames copy the last whole window back and draw only
+            // the live layers over it (viewport/ui_redraw.hpp).
+            const UiDraw uiDraw = planUiDraw(uiRedraw, s.cameraGesture, fbW, fbH, o.uiCache && o.frames == 0);
+            // The viewport's rectangle in framebuffer pixels: every frame draws it whole.
+            const float toPixels = io.DisplaySize.x > 0.0f ? float(fbW) / io.DisplaySize.x : 1.0f;
+            const UiLayerCache::Rect viewportPixels{
+                int(s.layout.viewportX * toPixels), int(s.layout.viewportY * toPixels),
+                int(s.layout.viewportW * toPixels), int(s.layout.viewportH * toPixels)};
+            if (uiDraw == UiDraw::Cached) {
+                uiLayers.restore(fbW, fbH, viewportPixels);
+                ImGui_ImplOpenGL3_RenderDrawData(const_cast<ImDrawData*>(&uiLayers.liveLayers(*ImGui::GetDrawData())));
+            } else {
+                glClearColor(12 / 255.0f, 13 / 255.0f, 15 / 255.0f, 1.0f);
+                glClear(GL_COLOR_BUFFER_BIT);
+                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+                if (uiDraw == UiDraw::FullAndCapture) uiLayers.capture(fbW, fbH, viewportPixels);
+            }
 
             // A scripted run counts frames the viewport drew, not frames spent waiting for a compile.
             if (o.frames > 0 && !(!s.doc.plane && viewport->stats().compiling) && ++frame >= o.frames) {
@@ -463,7 +481,7 @@ int runEditor(const EditorOptions& o) {
                     const bool viewportSettled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
                     writeStateFile(o.stateFile,
                                    stateJson(s, framesDrawn, compileError, viewportSettled,
-                                             s.doc.plane ? nullptr : &viewport->stats()),
+                                             s.doc.plane ? nullptr : &viewport->stats(), uiDraw),
                                    lastState);
                 } catch (const std::exception& e) {
                     std::fprintf(stderr, "fraktal: %s\n", e.what());
@@ -472,7 +490,8 @@ int runEditor(const EditorOptions& o) {
             if (o.slowFrameMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.slowFrameMs));
             const float viewportRect[4] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW,
                                            s.layout.viewportH};
-            if (!s.doc.plane) logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect);
+            if (!s.doc.plane)
+                logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect, uiDraw);
 
             // One undo step per finished gesture: commit only when nothing is being dragged.
             if (!ImGui::IsAnyItemActive() && !s.cameraGesture) s.history.commit(s.doc);

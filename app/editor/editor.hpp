@@ -19,6 +19,7 @@ struct EditorOptions {
     std::filesystem::path frameLog;         // non-empty: one JSON line per frame (frame_log.hpp)
     int exportWidth = 0, exportHeight = 0;  // > 0: the export dialog's size at start (Custom)
     std::filesystem::path dropReplay;       // tests: files listed here are dropped on the window
+    bool uiCache = true;                    // false: every frame draws every window (viewport/ui_redraw.hpp)
 };
 
 // Returns the process exit status. With no display it prints why and points to

@@ -36,7 +36,7 @@ json lightsJson(const Lighting& l, const LightsPanel& p) {
 }  // namespace
 
 std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
-                      const ViewportStats* viewport) {
+                      const ViewportStats* viewport, UiDraw ui) {
     const Camera& c = s.doc.preset.camera;
     const auto widgetRect = [](const Layout& l, const std::string& name) {
         const auto at = l.widgetRects.find(name);
@@ -50,6 +50,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     const Formula& f = s.doc.preset.formula;
     j["eyeDistance"] = f.cpuEvaluable() ? json(distanceEstimate(f, c.position)) : json();
     j["cameraGesture"] = s.cameraGesture;
+    j["uiDraw"] = uiDrawName(ui);  // how this frame drew the window (viewport/ui_redraw.hpp)
     j["shortcutHelp"] = s.panels.help;
     j["blockEditorOpen"] = s.customBlockEditor.open;
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/editor/state/editor_state.hpp"
+#include "app/editor/viewport/ui_redraw.hpp"
 #include "app/editor/viewport/viewport_view.hpp"
 
 namespace fraktal::editor {
@@ -14,7 +15,7 @@ namespace fraktal::editor {
 // `viewportSettled`: the viewport's image is converged at full resolution (nothing left to refine).
 // `viewport`: the 3D viewport's statistics (null for a 2D document), for its render mode.
 std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
-                      const ViewportStats* viewport = nullptr);
+                      const ViewportStats* viewport = nullptr, UiDraw ui = UiDraw::Full);
 
 // Writes `text` to `file` atomically when it differs from `last` (then updates `last`).
 void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last);

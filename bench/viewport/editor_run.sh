@@ -7,6 +7,7 @@
 # dynamic resolution chose, and the PSNR of the viewport 2 s after the drag against the fresh
 # settled render (the stats overlay's corner and the status line left out).
 # Usage: bench/viewport/editor_run.sh BUILD_DIR [PRESET] [WxH]   (default mandelbulb, 1280x720)
+# FRAKTAL_EDIT_ARGS adds options to the measured editor (e.g. --full-ui-redraw).
 set -euo pipefail
 if [ "${1:-}" = "--inner" ]; then
   shift
@@ -19,8 +20,9 @@ if [ "${1:-}" = "--inner" ]; then
     done
     echo "editor_run: the view did not settle in $2 s ($1)" >&2; return 1
   }
+  # shellcheck disable=SC2086  # FRAKTAL_EDIT_ARGS: extra options, word-split (e.g. --full-ui-redraw)
   "$fraktal" edit "$preset" --width "$w" --height "$h" --frame-log "$work/moving.jsonl" \
-    --state-file "$work/state.json" > "$work/editor.out" 2>&1 &
+    --state-file "$work/state.json" ${FRAKTAL_EDIT_ARGS:-} > "$work/editor.out" 2>&1 &
   pid=$!
   trap 'kill $pid 2>/dev/null || true' EXIT
   wait_settled "$work/moving.jsonl" 180 0
@@ -93,6 +95,10 @@ result = {
     "frame_ms_p50": pct(ms, 0.5), "frame_ms_p95": pct(ms, 0.95), "frame_ms_max": ms[-1] if ms else None,
     # The viewport's own part of a frame (the rest: panels, display, swap under Xvfb).
     "viewport_ms_p50": pct(sorted(f["render_ms"] for f in drag), 0.5),
+    # Frames drawn from the kept copy of the window (app/editor/viewport/ui_redraw.hpp) and their p50.
+    "ui_cached_frames": sum(f.get("ui") == "cached" for f in drag),
+    "cached_frame_ms_p50": pct(sorted(f["frame_ms"] for f in drag if f.get("ui") == "cached"), 0.5),
+    "whole_frame_ms_p50": pct(sorted(f["frame_ms"] for f in drag if f.get("ui") != "cached"), 0.5),
     "scale_min": scales[0] if scales else None, "scale_p50": pct(scales, 0.5),
     "internal_size_p50": [f"{f['width']}x{f['height']}" for f in drag if f["scale"] == pct(scales, 0.5)][:1],
     "psnr_2s_after_stop_db": float(psnr) if psnr.replace('.', '', 1).isdigit() else psnr,

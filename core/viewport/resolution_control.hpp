@@ -16,7 +16,10 @@ namespace fraktal::viewport {
 
 struct ResolutionControl {
     double targetMs = 33.0;  // frame time to hold under motion; <= 0: always full resolution
-    double minScale = 0.25;  // never below this share of each side
+    // Never below this share of each side. An eighth: on a loaded 2-core machine (a 2-job build
+    // beside the editor) a quarter-size Mandelbulb orbit still missed the target by half
+    // (bench/viewport/README.md, "The editor under a person's hands").
+    double minScale = 0.125;
     double step = 1.0 / 16;  // scales are multiples of this (fewer distinct grids)
     int restFrames = 3;      // unchanged frames in a row before the view counts as at rest
 };

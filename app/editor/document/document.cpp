@@ -49,6 +49,7 @@ json viewSettingsToJson(const ViewSettings& s) {
             {"motionFilterRadius", s.motionFilterRadius},
             {"coarseHits", s.coarseHits},
             {"frameTimeTargetMs", s.frameTimeTargetMs},
+            {"motionMinScale", s.motionMinScale},
             {"renderMode", s.pathTraceAtRest ? "path" : "fast"},
             {"pathSppCap", s.pathSppCap}};
 }
@@ -64,6 +65,7 @@ ViewSettings viewSettingsFromJson(const json& j) {
     s.stepsPerFrame = int(number("stepsPerFrame", s.stepsPerFrame, 1, 1000));
     s.renderScale = number("renderScale", s.renderScale, 0.1, 1.0);
     s.frameTimeTargetMs = number("frameTimeTargetMs", s.frameTimeTargetMs, 0.0, 1000.0);
+    s.motionMinScale = number("motionMinScale", s.motionMinScale, 1.0 / 16.0, 1.0);
     if (reprojection.is_boolean()) s.reprojection = reprojection.get<bool>();
     s.aaCap = int(number("aaCap", s.aaCap, 1, 256));
     s.coneTile = int(number("coneTile", s.coneTile, 0, 64));

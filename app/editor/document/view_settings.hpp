@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/viewport/resolution_control.hpp"
 #include "core/viewport/viewport_options.hpp"
 
 namespace fraktal::editor {
@@ -24,6 +25,8 @@ struct ViewSettings {
     // of renderScale's size that holds this frame time (viewport::ResolutionController), and
     // refines at full size once the view rests. 0: always full size.
     double frameTimeTargetMs = 33.0;
+    // The smallest share of each side it may go down to (viewport::ResolutionControl::minScale).
+    double motionMinScale = viewport::ResolutionControl{}.minScale;
     // Carry march distances over when the camera moves (seed 4.2); off: every move restarts.
     bool reprojection = true;
     // Progressive anti-aliasing cap: jittered samples per pixel while the camera rests.

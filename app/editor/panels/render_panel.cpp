@@ -75,6 +75,9 @@ void drawViewportSection(ViewSettings& v, Layout& layout) {
     dragDouble("Frame-time target", v.frameTimeTargetMs, 0.0, 1000.0, 0.5f, "%.0f ms",
                "While the camera or a parameter moves, the viewport renders fewer pixels to hold this frame time, "
                "then refines at full resolution when the view rests. 0: always full resolution.");
+    dragDouble("Lowest motion scale", v.motionMinScale, 1.0 / 16.0, 1.0, 0.002f, "%.3f x",
+               "The smallest share of each side the viewport goes down to under motion to hold the frame-time "
+               "target (on a loaded machine it may need an eighth).");
     ImGui::Checkbox("Reprojection", &v.reprojection);
     helpMarker("Carry march distances over when the camera moves (seed 4.2). Off: every move restarts the rays.");
     dragInt("AA cap (spp)", v.aaCap, 1, 256, 0.1f,

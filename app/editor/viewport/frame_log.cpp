@@ -13,7 +13,8 @@ void openFrameLog(FrameLog& log, const std::filesystem::path& path) {
     if (!log.file) throw std::runtime_error(path.string() + ": cannot write the frame log: " + std::strerror(errno));
 }
 
-void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4]) {
+void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4],
+              UiDraw ui) {
     if (!log.file) return;
     const double frameMs = log.lastFrameAt < 0.0 ? 0.0 : (now - log.lastFrameAt) * 1000.0;
     log.lastFrameAt = now;
@@ -26,6 +27,7 @@ void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camer
                                  {"height", stats.height},
                                  {"settled", stats.settled},
                                  {"action", stats.action},
+                                 {"ui", uiDrawName(ui)},
                                  {"viewport", {viewport[0], viewport[1], viewport[2], viewport[3]}},
                                  {"camera",
                                   {{"position", vec(camera.position)},

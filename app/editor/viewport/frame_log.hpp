@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/editor/viewport/ui_redraw.hpp"
 #include "app/editor/viewport/viewport_view.hpp"
 #include "core/camera.hpp"
 
@@ -22,7 +23,8 @@ void openFrameLog(FrameLog& log, const std::filesystem::path& path);
 // Appends the frame that just ended at `now` (seconds) and flushes, so a killed editor leaves a
 // complete log up to its last frame.
 // `viewport`: the viewport's rectangle in the window (x, y, width, height).
-void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4]);
+void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4],
+              UiDraw ui = UiDraw::Full);
 void closeFrameLog(FrameLog& log);
 
 }  // namespace fraktal::editor

@@ -162,6 +162,7 @@ double CoreViewportView::chooseScale(const Preset& preset, const ViewSettings& s
     lastFrameStart_ = now;
     viewport::ResolutionControl control = resolution_.control();
     control.targetMs = settings.frameTimeTargetMs;
+    control.minScale = settings.motionMinScale;
     resolution_.setControl(control);
     return resolution_.next(changed, frameMs);
 }
