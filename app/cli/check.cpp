@@ -1,7 +1,10 @@
 // `fraktal check PRESET`: load a preset, print its formula, compile its GLSL, evaluate the DE on
 // a grid and against the seed's baseline marcher, and say whether marching it is safe.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <random>
@@ -11,9 +14,11 @@
 #include "core/de_check.hpp"
 #include "core/gl/context.hpp"
 #include "core/gl/de_probe.hpp"
+#include "core/image/atomic_file.hpp"
 #include "core/plane/plane_preset.hpp"
 #include "core/plane/plane_renderer.hpp"
 #include "core/preset.hpp"
+#include "core/preset_text_edit.hpp"
 #include "core/safe_step.hpp"
 
 namespace fraktal::cli {
@@ -29,6 +34,9 @@ struct CheckOptions {
     // Check the preset as its animation has it at this frame (keyed parameters, camera, step
     // factor): a parameter animation may take a stack out of the step factor that suits frame 0.
     std::optional<int> frame;
+    // Write the measured safe step factor into the preset (formula.deFactor, the rest of the
+    // file as it is, atomically).
+    bool apply = false;
 };
 
 // The preset as checked: the file's, or its animation's frame `o.frame`.
@@ -106,7 +114,15 @@ int runPlaneCheck(const CheckOptions& o) {
 }
 
 int runCheck(const CheckOptions& o) {
-    if (isPlanePresetFile(o.preset)) return runPlaneCheck(o);
+    if (o.apply && std::filesystem::path(o.preset).extension() == ".fract")
+        throw std::runtime_error(o.preset +
+                                 ": --apply writes into a preset (JSON); import the Mandelbulber2 file first: "
+                                 "fraktal import " +
+                                 o.preset + " -o PRESET.json (it measures the factor)");
+    if (isPlanePresetFile(o.preset)) {
+        if (o.apply) throw std::runtime_error(o.preset + ": --apply: a 2D preset has no step factor");
+        return runPlaneCheck(o);
+    }
     const Preset preset = checkedPreset(o);
     const Formula& f = preset.formula;
     std::printf("%s: %s", o.preset.c_str(), preset.name.empty() ? "(unnamed)" : preset.name.c_str());
@@ -180,14 +196,14 @@ int runCheck(const CheckOptions& o) {
         std::printf("PROBLEM: every ray started inside the fractal: nothing was measured\n");
         status = 1;
     }
-    if (c.conservative()) {
+    const bool overshoots = !c.conservative();
+    if (!overshoots) {
         std::printf("conservative: the DE never overshoots by more than 1%%; step multiplier 1 is safe\n");
     } else {
         std::printf(
             "PROBLEM: the DE overshoots by up to %.1f%%: multiply formula.deFactor by %.3f (or less) "
-            "to make marching safe\n",
-            100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier());
-        status = 1;
+            "to make marching safe%s\n",
+            100.0 * (c.worstRatio - 1.0), 0.99 * c.safeStepMultiplier(), o.apply ? " (--apply: see below)" : "");
     }
     // The step factor the rays allow, with the margin for the rays that were not sampled
     // (core/safe_step.hpp): rays in rounds from this seed until the worst ratio settles, and on
@@ -239,6 +255,25 @@ int runCheck(const CheckOptions& o) {
                 &m == &candidates.front() ? "  <- largest factor x median per orbit" : "");
         }
     }
+    bool applied = false;
+    if (o.apply) {
+        if (status != 0 || s.samples == 0 || !hasSafeStepFactor(own)) {
+            std::printf("not applied: %s is unchanged (the problems above come first)\n", o.preset.c_str());
+        } else {
+            // Rounded down to the printed precision, so that the file never holds more than was measured.
+            const double factor = std::max(std::floor(own.factor * 1000.0) / 1000.0, kMinStepFactor);
+            std::ifstream in(o.preset, std::ios::binary);
+            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            if (!in.good() && !in.eof())
+                throw std::runtime_error(o.preset + ": cannot read it back to apply the factor");
+            writeFileAtomically(o.preset, withNumberInPlace(text, "formula", "deFactor", factor, o.preset));
+            std::printf("applied: formula.deFactor %.3f written to %s (was %.3f)\n", factor, o.preset.c_str(),
+                        f.deFactor);
+            applied = true;
+        }
+    }
+    // An overshooting factor is a problem unless the measured one replaced it.
+    if (overshoots && !applied) status = 1;
     std::printf(status == 0 ? "OK\n" : "NOT SOUND\n");
     return status;
 }
@@ -256,6 +291,10 @@ void addCheckCommand(CLI::App& app, Action& action) {
         ->check(CLI::Range(100, 1000000));
     cmd->add_option("--seed", o->seed, "Random seed");
     cmd->add_option("--frame", o->frame, "Check the preset as its animation has it at this frame");
+    cmd->add_flag("--apply", o->apply,
+                  "Write the measured safe step factor into the preset (formula.deFactor; the rest of the file as it "
+                  "is, atomically); exit 0 when the preset is then sound")
+        ->excludes("--frame");
     cmd->callback([&action, o] { action = [o] { return runCheck(*o); }; });
 }
 
