@@ -102,8 +102,10 @@ void main() {
         vec3 ro = u_cameraPosition;
         // Depth of field: the k-th point of a Halton (2, 3) sequence on the aperture, shifted per
         // pixel (Cranley-Patterson) by a second hash so that it does not follow the filter offset.
-        vec2 lensPoint = fract(lensRotation + vec2(radicalInverse(k, 2), radicalInverse(k, 3)));
-        thinLensRay(ro, rd, u_cameraForward, u_cameraRight, u_cameraUp, lensPoint.x, lensPoint.y);
+        if (u_apertureRadius > 0.0) {
+            vec2 lensPoint = fract(lensRotation + vec2(radicalInverse(k, 2), radicalInverse(k, 3)));
+            thinLensRay(ro, rd, u_cameraForward, u_cameraRight, u_cameraUp, lensPoint.x, lensPoint.y);
+        }
 
         float tStart, tEnd;
         bool hit = false;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <random>
@@ -15,6 +14,7 @@
 #include "core/gl/context.hpp"
 #include "core/gl/de_probe.hpp"
 #include "core/image/atomic_file.hpp"
+#include "core/json_reader.hpp"
 #include "core/plane/plane_preset.hpp"
 #include "core/plane/plane_renderer.hpp"
 #include "core/preset.hpp"
@@ -262,10 +262,7 @@ int runCheck(const CheckOptions& o) {
         } else {
             // Rounded down to the printed precision, so that the file never holds more than was measured.
             const double factor = std::max(std::floor(own.factor * 1000.0) / 1000.0, kMinStepFactor);
-            std::ifstream in(o.preset, std::ios::binary);
-            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            if (!in.good() && !in.eof())
-                throw std::runtime_error(o.preset + ": cannot read it back to apply the factor");
+            const std::string text = readGuardedFile(o.preset);
             writeFileAtomically(o.preset, withNumberInPlace(text, "formula", "deFactor", factor, o.preset));
             std::printf("applied: formula.deFactor %.3f written to %s (was %.3f)\n", factor, o.preset.c_str(),
                         f.deFactor);

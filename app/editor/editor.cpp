@@ -449,7 +449,7 @@ int runEditor(const EditorOptions& o) {
                 int(s.layout.viewportW * toPixels), int(s.layout.viewportH * toPixels)};
             if (uiDraw == UiDraw::Cached) {
                 uiLayers.restore(fbW, fbH, viewportPixels);
-                ImGui_ImplOpenGL3_RenderDrawData(const_cast<ImDrawData*>(&uiLayers.liveLayers(*ImGui::GetDrawData())));
+                ImGui_ImplOpenGL3_RenderDrawData(uiLayers.liveLayers(*ImGui::GetDrawData()));
             } else {
                 glClearColor(12 / 255.0f, 13 / 255.0f, 15 / 255.0f, 1.0f);
                 glClear(GL_COLOR_BUFFER_BIT);

@@ -47,7 +47,7 @@ void UiLayerCache::restore(int width, int height, const Rect& hole) const {
     copyAround(copy_.framebuffer(), 0, width, height, hole);
 }
 
-const ImDrawData& UiLayerCache::liveLayers(const ImDrawData& all) {
+ImDrawData* UiLayerCache::liveLayers(const ImDrawData& all) {
     live_.clear();
     liveData_ = all;
     liveData_.TotalIdxCount = liveData_.TotalVtxCount = 0;
@@ -60,7 +60,7 @@ const ImDrawData& UiLayerCache::liveLayers(const ImDrawData& all) {
     }
     liveData_.CmdLists = live_.data();
     liveData_.CmdListsCount = int(live_.size());
-    return liveData_;
+    return &liveData_;
 }
 
 }  // namespace fraktal::editor

@@ -23,8 +23,9 @@ class UiLayerCache {
     void capture(int width, int height, const Rect& hole);
     // Copies the cache back into the default framebuffer, all but `hole`.
     void restore(int width, int height, const Rect& hole) const;
-    // `all` without the draw lists of the static windows, in the same order.
-    const ImDrawData& liveLayers(const ImDrawData& all);
+    // `all` without the draw lists of the static windows, in the same order (valid until the next
+    // call; non-const for ImGui's renderer).
+    ImDrawData* liveLayers(const ImDrawData& all);
 
    private:
     void copyAround(GLuint from, GLuint to, int width, int height, const Rect& hole) const;
