@@ -146,9 +146,10 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_REMAINING_DEGREE", remaining);
     replaceMarker(rest, "//@FRAKTAL_ESTIMATE", "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";");
+    const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
+    replaceMarker(rest, "//@FRAKTAL_MEMBERSHIP", escapeTime ? "    return !escaped;" : "    return d <= 0.0;");
     // The orbit gradient (estimators that read it): the estimate without it sets the difference
     // step; the orbit value is log r for escape-time estimates, else the estimate at w = 1.
-    const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
     replaceMarker(
         rest, "//@FRAKTAL_RUNNING_ESTIMATE",
         "    float running = abs(" + nodeCall(est, f.estimator, true, "p, c, degree, surfaceLogR, 0.0") + ");");

@@ -91,6 +91,22 @@ float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped)
 //@FRAKTAL_ESTIMATE
 }
 
+// Membership by the estimator's rule (isInside in core/formula.hpp): escape-time estimators are
+// inside where the orbit stayed bounded, distance ones where the estimate is <= 0.
+bool formulaInside(float d, bool escaped) {
+//@FRAKTAL_MEMBERSHIP
+}
+
+// The estimate at pos and whether pos is inside the object (the marcher's overshoot test).
+float DEInside(vec3 pos, out bool inside) {
+    vec4 trap;
+    int iterations;
+    bool escaped;
+    float d = formulaEval(pos, trap, iterations, escaped);
+    inside = formulaInside(d, escaped);
+    return d;
+}
+
 float formulaDE(vec3 pos, out vec4 trap, out int iterations) {
     bool escaped;
     return formulaEval(pos, trap, iterations, escaped);

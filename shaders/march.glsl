@@ -54,12 +54,46 @@ MarchState marchStart(float tStart) {
     return MarchState(tStart, 0.0, max(u_overRelaxation, 1.0), MARCH_MARCHING, 0, 1e30);
 }
 
+// Overshoot recovery. A step factor measured on sampled rays can still carry a ray across the
+// surface where no sampled ray looked (a thin shell, a jump): the point it lands on is inside the
+// object by the estimator's membership (formulaInside: the orbit stayed bounded, or the estimate
+// is negative; a 1-Lipschitz estimate can drop by no more than the step, so a negative one after
+// a plain step is the same test). The step is then bisected on membership between the point it
+// left, which was outside, and the one it reached, as the seed's baseline marcher refines its
+// crossing (3.1), until the crossing is known to within the hit threshold; the outside end is the
+// hit. A ray whose steps stay outside pays nothing: membership comes with each estimate.
+const int RECOVER_BISECTIONS = 12;
+
+// [tOut, tIn] with tOut outside (its DE dOut) and tIn inside, bisected to within the hit
+// threshold at tOut (at most RECOVER_BISECTIONS halvings): the hit at the outside end, with the
+// smaller of its DE and the gap to the inside end as the distance the refinement starts from.
+void recoverOvershoot(vec3 ro, vec3 rd, float tOut, float dOut, float tIn, float pixelAngle, inout MarchState s,
+                      inout float deEvals) {
+    for (int i = 0; i < RECOVER_BISECTIONS && tIn - tOut > pixelAngle * tOut * u_detail; ++i) {
+        float tMid = 0.5 * (tOut + tIn);
+        bool inside;
+        float d = DEInside(ro + rd * tMid, inside);
+        deEvals += 1.0;
+        s.steps += 1;
+        if (inside) {
+            tIn = tMid;
+        } else {
+            tOut = tMid;
+            dOut = d;
+        }
+    }
+    s.t = tOut;
+    s.lastD = min(dOut, tIn - tOut);
+    s.status = MARCH_HIT;
+}
+
 // The marcher without the hit refinement; a hit leaves the DE at the hit point in lastD, so that
 // the refinement can follow later (the viewport skips it for a pixel that keeps a carried colour:
 // that hit point is not shaded).
 void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
     for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
-        float d = DE(ro + rd * s.t);
+        bool inside;
+        float d = DEInside(ro + rd * s.t, inside);
         deEvals += 1.0;
         s.steps += 1;
         // While omega > 1 every step so far was omega * lastD, so the previous step length is known.
@@ -70,6 +104,10 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
             s.t -= previousStep - s.lastD;
             s.omega = 1.0;
             continue;
+        }
+        if (inside && s.lastD > 0.0) {  // the step from the previous point crossed the surface
+            recoverOvershoot(ro, rd, s.t - previousStep, s.lastD, s.t, pixelAngle, s, deEvals);
+            break;
         }
         if (d < pixelAngle * s.t * u_detail) {
             s.lastD = d;

@@ -6,10 +6,11 @@
 # the object and the shipped factor does not, where the shipped factor lands more than 10 % behind
 # the reference's hit (a step through a surface), and where it meets something the reference does
 # not. Both march with up to 6000 steps, so a miss is a step past the surface, not a ray giving up.
-# Frame 0 of animated presets, as the file holds it.
-# Usage: bench/stills/overshoot_pixels.sh BUILD_DIR [WxH]   (default 640x360)
+# Frame 0 of animated presets, as the file holds it. FACTOR "shipped" takes each preset's own step
+# factor; a number replaces it (1.0: what the estimates give before any measured factor).
+# Usage: bench/stills/overshoot_pixels.sh BUILD_DIR [WxH] [FACTOR]   (default 640x360, shipped)
 set -euo pipefail
-build="${1:-build}"; size="${2:-640x360}"
+build="${1:-build}"; size="${2:-640x360}"; override="${3:-shipped}"
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 fraktal="$root/$build/app/fraktal"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
@@ -19,6 +20,11 @@ echo "|---|---|---|---|---|---|---|"
 for preset in "$root"/presets/*.json; do
   name=$(basename "$preset" .json)
   factor=$(jq '.formula.deFactor // 1' "$preset")
+  if [ "$override" != shipped ]; then
+    factor="$override"
+    jq --argjson f "$factor" '.formula.deFactor = $f' "$preset" > "$tmp/shipped.json"
+    preset="$tmp/shipped.json"
+  fi
   detail=$(jq '.render.detail // 0.5' "$preset")
   quarter=$(awk -v f="$factor" 'BEGIN { printf "%.6g", f / 4 }')
   jq --argjson f "$quarter" '.formula.deFactor = $f' "$preset" > "$tmp/reference.json"

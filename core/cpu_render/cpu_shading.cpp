@@ -10,6 +10,13 @@ double Scene::de(const vec3& p, double& deEvals) const {
     return distanceEstimate(formula, p);
 }
 
+double Scene::deInside(const vec3& p, bool& inside, double& deEvals) const {
+    deEvals += 1.0;
+    const Evaluation e = evaluate(formula, p);
+    inside = e.inside;
+    return e.distance;
+}
+
 // Mirror of march.glsl's refineHit (why: there).
 constexpr int kRefineSteps = 3;
 constexpr double kRefineLevel = 0.5;
@@ -32,16 +39,43 @@ MarchState marchStart(const Scene& scene, double tStart) {
     return s;
 }
 
+// Mirror of march.glsl's recoverOvershoot (why: there).
+constexpr int kRecoverBisections = 12;
+
+void recoverOvershoot(const Scene& scene, const vec3& ro, const vec3& rd, double tOut, double dOut, double tIn,
+                      double pixelAngle, MarchState& s, double& deEvals) {
+    for (int i = 0; i < kRecoverBisections && tIn - tOut > pixelAngle * tOut * scene.params.detail; ++i) {
+        const double tMid = 0.5 * (tOut + tIn);
+        bool inside = false;
+        const double d = scene.deInside(ro + rd * tMid, inside, deEvals);
+        s.steps += 1;
+        if (inside) {
+            tIn = tMid;
+        } else {
+            tOut = tMid;
+            dOut = d;
+        }
+    }
+    s.t = tOut;
+    s.lastD = std::min(dOut, tIn - tOut);
+    s.status = MarchStatus::Hit;
+}
+
 void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
                 MarchState& s, double& deEvals) {
     for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
-        const double d = scene.de(ro + rd * s.t, deEvals);
+        bool inside = false;
+        const double d = scene.deInside(ro + rd * s.t, inside, deEvals);
         s.steps += 1;
         const double previousStep = s.omega * s.lastD;
         if (s.omega > 1.0 && std::abs(d) + s.lastD < previousStep) {
             s.t -= previousStep - s.lastD;
             s.omega = 1.0;
             continue;
+        }
+        if (inside && s.lastD > 0.0) {
+            recoverOvershoot(scene, ro, rd, s.t - previousStep, s.lastD, s.t, pixelAngle, s, deEvals);
+            break;
         }
         if (d < pixelAngle * s.t * scene.params.detail) {
             s.lastD = d;

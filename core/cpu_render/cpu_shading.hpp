@@ -26,6 +26,8 @@ struct Scene {
     const Formula& formula;
     const ShadingParams& params;
     double de(const vec3& p, double& deEvals) const;
+    // The estimate and the estimator's membership at p (formulaInside in shaders/formula.glsl).
+    double deInside(const vec3& p, bool& inside, double& deEvals) const;
 };
 
 MarchState marchStart(const Scene& scene, double tStart);
