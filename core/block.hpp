@@ -77,6 +77,8 @@ enum class DerivativeBound {
 constexpr DerivativeBound sphericalPowerBound(double n) {
     return n == double(static_cast<long long>(n)) ? DerivativeBound::Local : DerivativeBound::None;
 }
+inline constexpr std::string_view kNonIntegerPowerSeam =
+    "its map jumps across the atan2 seam when the power is not a whole number (n phi wraps by 2 pi n)";
 
 // The degree a power step raises its input to (|F(v)| grows as |v|^n far from the origin), by
 // the name of the parameter that holds it or as a number: the potential estimate
@@ -126,6 +128,13 @@ struct BlockDescOf {
     // power is an integer): the bound for these values, in place of `derivative`.
     DerivativeBound (*derivativeFor)(Args a) = nullptr;
     DerivativeBound derivativeAt(Args a) const { return derivativeFor ? derivativeFor(a) : derivative; }
+    // Where and why the map jumps, in words, for a step that can (DerivativeBound::None, always or
+    // for some values): `fraktal check` and the editor name it when it is what keeps a factor small.
+    std::string_view jump{};
+    // The step's stretch bound grows with |p| (twist and bend: the factor is about |rate| r): an
+    // orbit let far out before it is stopped multiplies the running derivative by it at every
+    // iteration, and the estimate shrinks towards nothing. The fit keeps such a stack's bailout low.
+    bool stretchGrowsWithRadius = false;
     // The step's Degree: the index of the parameter that holds it (-1: the fixed value).
     int degreeParam = -1;
     double fixedDegree = 1.0;
@@ -184,6 +193,15 @@ consteval int declaredParamIndex(std::string_view name) {
     throw "a block's Degree names a parameter it does not declare";
 }
 
+// Whether step B's map can jump: it declares so (DerivativeBound::None), or its bound depends on
+// its values (a power that need not be a whole number).
+template <class B>
+consteval bool mayJump() {
+    if constexpr (requires(Args a) { B::derivativeFor(a); }) return true;
+    if constexpr (requires { B::derivative; }) return B::derivative == DerivativeBound::None;
+    return false;
+}
+
 // The description of block B in family Desc.
 template <class Desc, class B>
 requires StepBlockFor<B, Desc> || EstimatorBlockFor<B, Desc>
@@ -204,6 +222,12 @@ constexpr Desc describeAs() {
         d.apply = &B::apply;
         if constexpr (requires { B::derivative; }) d.derivative = B::derivative;
         if constexpr (requires(Args a) { B::derivativeFor(a); }) d.derivativeFor = &B::derivativeFor;
+        if constexpr (requires { B::stretchGrowsWithRadius; }) d.stretchGrowsWithRadius = B::stretchGrowsWithRadius;
+        if constexpr (mayJump<B>()) {
+            static_assert(
+                requires { B::jump; }, "a step whose map can jump says where (static constexpr jump)");
+            d.jump = B::jump;
+        }
         if constexpr (requires { B::degree; }) {
             if constexpr (!B::degree.param.empty())
                 d.degreeParam = declaredParamIndex<B>(B::degree.param);

@@ -79,17 +79,81 @@ std::string numberText(double value) {
     return buffer;
 }
 
+// value on one line, with a space after each ':' and ',' (as the shipped presets write nodes).
+std::string oneLine(const nlohmann::json& value) {
+    const std::string compact = value.dump();
+    std::string out;
+    bool inString = false;
+    for (size_t i = 0; i < compact.size(); ++i) {
+        const char c = compact[i];
+        out += c;
+        if (inString) {
+            if (c == '\\')
+                out += compact[++i];
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == ':' || c == ',') {
+            out += ' ';
+        }
+    }
+    return out;
+}
+
+nlohmann::json parsedForEdit(const std::string& text, const std::string& field, const std::string& file) {
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(file + ": not valid JSON, so " + field + " was not written: " + e.what());
+    }
+}
+
 }  // namespace
+
+std::string withLastElementInPlace(const std::string& text, const std::string& section, const std::string& key,
+                                   const nlohmann::json& value, const std::string& file) {
+    const std::string field = section + "." + key;
+    const nlohmann::json original = parsedForEdit(text, field, file);
+    if (!original.is_object() || !original.contains(section) || !original[section].is_object() ||
+        !original[section].contains(key) || !original[section][key].is_array() || original[section][key].empty())
+        throw std::runtime_error(file + ": the last element of " + field +
+                                 " was not written: the file has no such array with an element");
+    Scanner s{text};
+    s.skipSpace();
+    std::optional<std::string> edited;
+    s.members([&](const std::string& name) {
+        if (name != section) return false;
+        return s.members([&](const std::string& member) {
+            if (member != key) return false;
+            size_t lastStart = 0, lastEnd = 0;
+            ++s.at;  // '['
+            for (;;) {
+                s.skipSpace();
+                if (s.at >= text.size() || text[s.at] == ']') break;
+                if (text[s.at] == ',') {
+                    ++s.at;
+                    continue;
+                }
+                lastStart = s.at;
+                s.skipValue();
+                lastEnd = s.at;
+            }
+            edited = text.substr(0, lastStart) + oneLine(value) + text.substr(lastEnd);
+            return true;
+        });
+    });
+    nlohmann::json expected = original;
+    expected[section][key].back() = value;
+    if (!edited || nlohmann::json::parse(*edited) != expected)
+        throw std::runtime_error(file + ": the last element of " + field + " could not be edited in place");
+    return *edited;
+}
 
 std::string withNumberInPlace(const std::string& text, const std::string& section, const std::string& key, double value,
                               const std::string& file) {
     const std::string field = section + "." + key;
-    nlohmann::json original;
-    try {
-        original = nlohmann::json::parse(text);
-    } catch (const std::exception& e) {
-        throw std::runtime_error(file + ": not valid JSON, so " + field + " was not written: " + e.what());
-    }
+    const nlohmann::json original = parsedForEdit(text, field, file);
     if (!original.is_object() || !original.contains(section) || !original[section].is_object())
         throw std::runtime_error(file + ": " + field + " was not written: the file has no " + section + " object");
     if (original[section].contains(key) && !original[section][key].is_number())

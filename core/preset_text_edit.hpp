@@ -3,6 +3,7 @@
 // artist wrote it: key order, spacing, line breaks and number spellings.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace fraktal {
@@ -14,5 +15,12 @@ namespace fraktal {
 // not a JSON object) it throws std::runtime_error naming `file`, the field and the reason.
 std::string withNumberInPlace(const std::string& text, const std::string& section, const std::string& key, double value,
                               const std::string& file);
+
+// `text` with the last element of the top-level object's `section`.`key` array replaced by
+// `value`, written on one line (`fraktal check --fit --apply` writing the fitted estimator, which
+// closes formula.nodes). Checked and refused as withNumberInPlace is: the array must exist and
+// hold at least one element.
+std::string withLastElementInPlace(const std::string& text, const std::string& section, const std::string& key,
+                                   const nlohmann::json& value, const std::string& file);
 
 }  // namespace fraktal

@@ -191,9 +191,9 @@ EstimatorMeasurement measureSafeStep(const Formula& f, const SafeStepRays& rays,
 Node linearEstimator();
 
 // The formula's own estimator and, for escape-time formulas, linear r / w, log and potential, then
-// the gradient twins of those measured (a primitive's too), each measured on the same rays (they
-// share the membership, so the object is the same); best first (the largest speed()). A custom
-// estimator has no twin: it is measured alone.
+// the gradient twins of those measured (a primitive's too; none after a step that jumps), each
+// measured on the same rays (they share the membership, so the object is the same); best first
+// (the largest speed()). A custom estimator has no twin: it is measured alone.
 // Needs a CPU-evaluable formula.
 std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Camera& camera,
                                                     const SafeStepOptions& options = {});

@@ -15,6 +15,7 @@ struct ModTile {
     static constexpr std::string_view help = "Repeat space: every coordinate wrapped into [-period/2, period/2).";
     static constexpr Category category = Category::Transform;
     static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = "its map jumps where it wraps space into the next cell";
     static constexpr std::array params{
         ParamDecl{"period", ParamType::Vec3, {4.0, 4.0, 4.0}, 0.1, 40.0, "Cell size per axis."},
     };
@@ -38,6 +39,7 @@ struct Twist {
     static constexpr std::string_view help = "Twist about the y axis by `rate` radians per unit of y.";
     static constexpr Category category = Category::Transform;
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
+    static constexpr bool stretchGrowsWithRadius = true;  // |u| = |k| rxz
     static constexpr std::array params{
         ParamDecl{"rate", ParamType::Float, {0.5, 0.0, 0.0}, -4.0, 4.0, "Twist in radians per unit of height."},
     };
@@ -68,6 +70,7 @@ struct Bend {
     static constexpr std::string_view help = "Bend in the x-y plane by `rate` radians per unit of x.";
     static constexpr Category category = Category::Transform;
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
+    static constexpr bool stretchGrowsWithRadius = true;  // |k| rxy
     static constexpr std::array params{
         ParamDecl{"rate", ParamType::Float, {0.3, 0.0, 0.0}, -4.0, 4.0, "Bend in radians per unit of x."},
     };

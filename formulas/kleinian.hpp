@@ -15,6 +15,8 @@ struct Kleinian {
         "Jos Leys' Kleinian limit set step: wrap, half turn above the separation line, Mobius inversion.";
     static constexpr Category category = Category::Fold;
     static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump =
+        "its map jumps where it wraps x and z into its box and where it turns half above the separation line";
     static constexpr std::array params{
         ParamDecl{"klein_r", ParamType::Float, {1.94, 0.0, 0.0}, 1.5, 2.1, "Real part a of the generator's trace."},
         ParamDecl{

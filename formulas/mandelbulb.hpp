@@ -27,6 +27,7 @@ struct Mandelbulb {
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr Degree degree{"power"};
     static DerivativeBound derivativeFor(Args a) { return sphericalPowerBound(a.f(0)); }
+    static constexpr std::string_view jump = kNonIntegerPowerSeam;
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n; 8 is the classic bulb."},
     };

@@ -20,7 +20,9 @@ struct MandelbulbPhase {
     static constexpr std::string_view help =
         "Mandelbulb power with theta and phi phase offsets (degrees) added after the multiplication.";
     static constexpr Category category = Category::Power;
-    static constexpr DerivativeBound derivative = DerivativeBound::None;  // a phase sends a pole to a circle
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump =
+        "its map jumps where a phase sends a pole to a circle, and across the atan2 seam";
     static constexpr Degree degree{"power"};
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
@@ -64,7 +66,8 @@ struct MandelbulbSine {
     static constexpr std::string_view label = "Mandelbulb (sine)";
     static constexpr std::string_view help = "Mandelbulb with latitude theta = asin(z/r): z = r^n sin(n theta).";
     static constexpr Category category = Category::Power;
-    static constexpr DerivativeBound derivative = DerivativeBound::None;  // the poles go to circles unless n is odd
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = "its map jumps where the poles go to circles (unless the power is odd)";
     static constexpr Degree degree{"power"};
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
@@ -110,6 +113,7 @@ struct MandelbulbCosine {
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr Degree degree{"power"};
     static DerivativeBound derivativeFor(Args a) { return sphericalPowerBound(a.f(0)); }
+    static constexpr std::string_view jump = kNonIntegerPowerSeam;
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
     };

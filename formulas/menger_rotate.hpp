@@ -14,6 +14,7 @@ struct MengerRotate {
         "Menger sponge iteration (abs, sort, rotate, scale about the corner); scale 3 and angle 0 is the sponge.";
     static constexpr Category category = Category::Fold;
     static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = "its map jumps where it shifts z back below the middle layer";
     static constexpr std::array params{
         ParamDecl{"scale", ParamType::Float, {3.0, 0.0, 0.0}, 1.0, 4.0, "Scale s per iteration."},
         ParamDecl{"offset", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.0, 4.0, "Corner the scaling keeps fixed."},

@@ -8,7 +8,9 @@
 #include <optional>
 #include <random>
 
+#include "app/editor/document/formula_fit.hpp"
 #include "app/editor/document/scene_import.hpp"
+#include "app/editor/document/slow_stack.hpp"
 #include "cli/commands.hpp"
 #include "core/de_check.hpp"
 #include "core/gl/context.hpp"
@@ -37,7 +39,42 @@ struct CheckOptions {
     // Write the measured safe step factor into the preset (formula.deFactor, the rest of the
     // file as it is, atomically).
     bool apply = false;
+    // Fit the estimator, the bailout and the bound to the blocks first, as the editor does after
+    // a structure change, then take the estimator the check measures fastest for them; with
+    // --apply those are written too.
+    bool fit = false;
 };
+
+// The stack as the editor closes it after a structure change: the estimator and bailout fitted to
+// the blocks, the bound to the object (fitFormulaAfterEdit; the camera stays the file's), then the
+// estimator the check measures fastest among those that share its membership, at its factor.
+// Prints what changed.
+void fitToBlocks(Preset& preset, const SafeStepOptions& options) {
+    Formula& f = preset.formula;
+    if (!f.cpuEvaluable()) {
+        std::printf("fit: not fitted (custom GLSL blocks: the fit measures on the CPU)\n");
+        return;
+    }
+    const Formula before = f;
+    Camera framed = preset.camera;
+    editor::fitFormulaAfterEdit(f, framed);
+    // Three significant digits, rounded up: the file gets a number a person reads.
+    const double digits = std::pow(10.0, std::floor(std::log10(f.boundRadius)) - 2.0);
+    f.boundRadius = std::ceil(f.boundRadius / digits) * digits;
+    if (std::optional<Formula> measured = editor::fittedAndMeasured(f, preset.camera, options)) f = *measured;
+    std::printf("fit: estimator %s -> %s, bailout %g -> %g, bound radius %g -> %g\n",
+                std::string(before.estimator.block->id).c_str(), std::string(f.estimator.block->id).c_str(),
+                before.bailout, f.bailout, before.boundRadius, f.boundRadius);
+}
+
+// The fitted formula's estimator, bailout, bound and factor written into the preset file, every
+// other byte as it was.
+std::string withFittedFormula(std::string text, const Formula& f, double factor, const std::string& file) {
+    text = withLastElementInPlace(text, "formula", "nodes", nodeToJson(f.estimator), file);
+    text = withNumberInPlace(text, "formula", "bailout", f.bailout, file);
+    text = withNumberInPlace(text, "formula", "boundRadius", f.boundRadius, file);
+    return withNumberInPlace(text, "formula", "deFactor", factor, file);
+}
 
 // The preset as checked: the file's, or its animation's frame `o.frame`.
 Preset checkedPreset(const CheckOptions& o) {
@@ -123,12 +160,17 @@ int runCheck(const CheckOptions& o) {
         if (o.apply) throw std::runtime_error(o.preset + ": --apply: a 2D preset has no step factor");
         return runPlaneCheck(o);
     }
-    const Preset preset = checkedPreset(o);
-    const Formula& f = preset.formula;
+    Preset preset = checkedPreset(o);
+    SafeStepOptions safe;
+    safe.rays.stepsAcrossBound = o.steps;
+    safe.rays.seed = o.seed;
+    const Formula fileFormula = preset.formula;
     std::printf("%s: %s", o.preset.c_str(), preset.name.empty() ? "(unnamed)" : preset.name.c_str());
     if (o.frame) std::printf(" at frame %d", *o.frame);
     std::printf("\n");
     printLoadNotes(preset.migrationNotes, preset.unknownFields, preset.formatVersion);
+    if (o.fit) fitToBlocks(preset, safe);
+    const Formula& f = preset.formula;
     std::printf("formula: %s", describeFormula(f).c_str());
 
     int status = 0;
@@ -210,9 +252,6 @@ int runCheck(const CheckOptions& o) {
     // while the margin does not cover the worst the rays' tail projects (the editor applies the
     // settled rounds' factor at once and this one when its worker ends). Above the current factor,
     // marching is slower than it needs to be; below it, the current one overshoots.
-    SafeStepOptions safe;
-    safe.rays.stepsAcrossBound = o.steps;
-    safe.rays.seed = o.seed;
     const SafeStepRays safeRays = c.samples > 0 ? sampleSafeStepRays(*sampler, preset.camera, safe) : SafeStepRays{};
     const ConservativenessReport& s = safeRays.report;
     const EstimatorMeasurement own = measureSafeStep(f, safeRays, safe);
@@ -225,9 +264,34 @@ int runCheck(const CheckOptions& o) {
     } else if (s.samples > 0 && s.worstRatio > 0.0)
         std::printf(
             "safe step factor: formula.deFactor %.3f (now %.3f; over %d rays, worst DE / true distance %.3f, median "
-            "%.3f; at factor 1 the worst %.3f, projected over %g rays %.3f)\n",
+            "%.3f; at factor 1 the worst %.3f, projected over %g rays %.3f); speed %.4f (factor x median per "
+            "orbit)\n",
             own.factor, f.deFactor, s.rays, s.worstRatio, s.medianRatio, own.report.worstRatio, safe.raysAhead,
-            own.projectedWorst);
+            own.projectedWorst, own.speed());
+    // A useless estimate (far under the distance everywhere: every ray stops at once or crawls)
+    // fails; a small factor is explained. Both name what keeps the estimate loose and the
+    // estimator the fit would choose; so does a stack with no safe factor or nothing to measure.
+    const bool useless = editor::uselessSpeed(own);
+    if (useless)
+        std::printf("PROBLEM: the estimate is useless: a step covers %.2g%% of the gap (speed %.4f, under %g)\n",
+                    100.0 * own.speed(), own.speed(), editor::kUselessSpeed);
+    const bool unmeasured = c.raysHit > 0 && (s.samples == 0 || c.samples == 0);
+    if (f.cpuEvaluable() &&
+        (useless || unmeasured || !hasSafeStepFactor(own) || (s.samples > 0 && own.factor < editor::kExplainFactor))) {
+        const editor::SlowStack why =
+            editor::explainSlowStack(f, preset.camera, safe, s.samples > 0 ? std::optional(own) : std::nullopt);
+        std::printf("%s: %s\n", useless || unmeasured || !hasSafeStepFactor(own) ? "why" : "note: slow",
+                    why.text(f).c_str());
+        if (why.faster)
+            std::printf(
+                "fix: `fraktal check --fit --apply %s` writes estimator %s, bailout %g, bound radius %g "
+                "and factor %.3f\n",
+                o.preset.c_str(), std::string(why.faster->estimator.block->id).c_str(), why.faster->bailout,
+                why.faster->boundRadius, why.faster->deFactor);
+        else if (useless)
+            std::printf("fix: no estimator the fit offers is faster; change the block named above or its values\n");
+    }
+    if (useless) status = 1;
     // Steps whose map jumps (a non-integer power's atan2 cut, a phase's pole, a wrap): the rays
     // that pass close to a jump are rare, and the overshoot there has no bound, so no number of
     // sampled rays proves a factor (at frame 164, power 9.55, the power morph's estimate reaches
@@ -235,9 +299,9 @@ int runCheck(const CheckOptions& o) {
     for (size_t k = 0; k < f.nodes.size(); ++k)
         if (jumps(f.nodes[k]))
             std::printf(
-                "note: step %zu (%s) jumps: the factor is measured, not proven; rays that pass close to the jump "
+                "note: step %zu (%s): %s; the factor is measured, not proven; rays that pass close to the jump "
                 "may overshoot more than any sampled one (more --rays sample more of them)\n",
-                k + 1, std::string(f.nodes[k].block->id).c_str());
+                k + 1, std::string(f.nodes[k].block->id).c_str(), std::string(f.nodes[k].block->jump).c_str());
     // The estimators that share the membership (escape-time ones; a primitive and its gradient
     // twin), on the same rays.
     const auto candidates =
@@ -263,9 +327,28 @@ int runCheck(const CheckOptions& o) {
             // Rounded down to the printed precision, so that the file never holds more than was measured.
             const double factor = std::max(std::floor(own.factor * 1000.0) / 1000.0, kMinStepFactor);
             const std::string text = readGuardedFile(o.preset);
-            writeFileAtomically(o.preset, withNumberInPlace(text, "formula", "deFactor", factor, o.preset));
-            std::printf("applied: formula.deFactor %.3f written to %s (was %.3f)\n", factor, o.preset.c_str(),
-                        f.deFactor);
+            if (o.fit && f.estimator.block != fileFormula.estimator.block)
+                for (const Track& t : preset.animation.tracks)
+                    if (const auto target = parseParamTarget(t.target);
+                        target && (target->estimator || target->node == f.nodes.size()))
+                        throw std::runtime_error(o.preset + ": --fit --apply: the fitted estimator " +
+                                                 std::string(f.estimator.block->id) + " replaces " +
+                                                 std::string(fileFormula.estimator.block->id) +
+                                                 ", whose parameters the animation keys (" + t.target +
+                                                 "); fit it in the editor, which drops those tracks");
+            if (o.fit) {
+                writeFileAtomically(o.preset, withFittedFormula(text, f, factor, o.preset));
+                std::printf(
+                    "applied: estimator %s, bailout %g, bound radius %g and formula.deFactor %.3f written to %s "
+                    "(was %s, %g, %g, %.3f)\n",
+                    std::string(f.estimator.block->id).c_str(), f.bailout, f.boundRadius, factor, o.preset.c_str(),
+                    std::string(fileFormula.estimator.block->id).c_str(), fileFormula.bailout, fileFormula.boundRadius,
+                    fileFormula.deFactor);
+            } else {
+                writeFileAtomically(o.preset, withNumberInPlace(text, "formula", "deFactor", factor, o.preset));
+                std::printf("applied: formula.deFactor %.3f written to %s (was %.3f)\n", factor, o.preset.c_str(),
+                            f.deFactor);
+            }
             applied = true;
         }
     }
@@ -291,6 +374,10 @@ void addCheckCommand(CLI::App& app, Action& action) {
     cmd->add_flag("--apply", o->apply,
                   "Write the measured safe step factor into the preset (formula.deFactor; the rest of the file as it "
                   "is, atomically); exit 0 when the preset is then sound")
+        ->excludes("--frame");
+    cmd->add_flag("--fit", o->fit,
+                  "First fit the estimator, the bailout and the bound to the blocks as the editor does after a "
+                  "structure change, and take the estimator measured fastest for them (with --apply, all written)")
         ->excludes("--frame");
     cmd->callback([&action, o] { action = [o] { return runCheck(*o); }; });
 }

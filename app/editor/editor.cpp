@@ -417,7 +417,10 @@ int runEditor(const EditorOptions& o) {
             else
                 drawFormulaPanel(s, *viewport);
             drawSidebar(s);
-            if (!s.doc.plane) s.stepFactor.update(s.doc.preset.formula, s.doc.preset.camera);
+            if (!s.doc.plane) {
+                s.stepFactor.update(s.doc.preset.formula, s.doc.preset.camera);
+                s.slowStack.update(s.doc.preset.formula, s.doc.preset.camera, s.stepFactor);
+            }
             layoutViewport(s, io.DisplaySize.x, io.DisplaySize.y);
             drawTimelinePanel(s);
             const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);

@@ -104,8 +104,19 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                        {"noHits", a.noHits},
                        {"noSafeFactor", a.noSafeFactor},
                        {"worst", a.worst},
+                       {"speed", a.speed},
                        // The step the DE step factor section names as jumping (-1: none).
                        {"jumpingStep", firstJumpingStep(s.doc.preset.formula.nodes)}};
+    // Why the stack is slow (SlowStackAdvice): the text the Formula panel shows and its offer.
+    const SlowStackAdvice& slow = s.slowStack;
+    j["slowStack"] = {{"measuring", slow.measuring()},
+                      {"text", slow.text},
+                      {"block", slow.shown ? slow.shown->block : -1},
+                      {"faster", slow.shown && slow.shown->faster
+                                     ? json{{"estimator", std::string(slow.shown->faster->estimator.block->id)},
+                                            {"bailout", slow.shown->faster->bailout},
+                                            {"deFactor", slow.shown->faster->deFactor}}
+                                     : json(nullptr)}};
     // The parameter widgets of the selected node as drawn (window coordinates) and the help text
     // of the parameter tooltip shown, as the widget wrote them this frame.
     json widgets = json::array();

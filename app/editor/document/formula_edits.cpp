@@ -207,13 +207,8 @@ int nodeNamedInLog(const std::string& log, int nodeCount) {
     return -1;
 }
 
-namespace {
-
-// The further rounds give way to the viewport's rendering, whose threads (llvmpipe's) share the
-// cores: on Linux a thread's nice value is its own (setpriority(2), NOTES).
+// On Linux a thread's nice value is its own (setpriority(2), NOTES).
 void yieldToRendering() { setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 10); }
-
-}  // namespace
 
 void AutoStepFactor::apply(const EstimatorMeasurement& m, Formula& f) {
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - measuringSince).count();
@@ -221,6 +216,7 @@ void AutoStepFactor::apply(const EstimatorMeasurement& m, Formula& f) {
     noHits = m.report.samples == 0;
     noSafeFactor = !hasSafeStepFactor(m);
     worst = m.report.worstRatio;
+    speed = noHits || noSafeFactor ? 0.0 : m.speed();
     measured = noHits ? 0.0 : m.factor;
     if (!overridden && !noHits) f.deFactor = measured;
 }

@@ -75,6 +75,10 @@ struct ProgramTracker {
 // (SafeStepOptions::tailRounds), which takes seconds: those further rounds run on a worker thread
 // (`refining()`), and their factor, the one `fraktal check` reports, replaces the first when they
 // end. A new structure, or the editor closing, stops them within a round.
+// A worker thread's measurement gives way to the viewport's rendering, whose threads (llvmpipe's)
+// share the cores: the calling thread's nice value is raised (Linux: it is per thread).
+void yieldToRendering();
+
 struct AutoStepFactor {
     std::string measuredKey;  // the structure the current factor belongs to
     bool overridden = false;
@@ -90,6 +94,9 @@ struct AutoStepFactor {
     // says the structure has no safe one. `worst` is the DE / true distance it saw at factor 1.
     bool noSafeFactor = false;
     double worst = 0.0;
+    // The measured factor times the median DE / true distance per orbit (EstimatorMeasurement::
+    // speed): the share of the gap a typical step covers (0: not measured).
+    double speed = 0.0;
     // The further rounds for measuredKey, while they run.
     std::future<EstimatorMeasurement> further{};
     std::chrono::steady_clock::time_point measuringSince{};

@@ -14,7 +14,8 @@ namespace fraktal::editor {
 // point-dependent step (add c) without one a Mandelbox-type escape-time linear estimator and a
 // bailout of at least 20 (the orbit grows linearly; formula_fit.cpp says why no more); neither,
 // a pure IFS of folds and scales, a distance estimator (the user's, if it is one; else a box)
-// and a bailout that never stops the folds.
+// and a bailout that never stops the folds, unless a step's stretch grows with |p| (twist, bend:
+// BlockDesc::stretchGrowsWithRadius): then the smallest bailout that keeps the object.
 // Custom GLSL blocks are left as they are. Returns whether anything changed.
 bool fitEstimatorToBlocks(Formula& f);
 

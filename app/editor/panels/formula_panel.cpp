@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <cstdio>
 #include <string>
 
 #include "app/editor/document/formula_edits.hpp"
@@ -76,6 +77,31 @@ void globalSettings(Formula& f, AutoStepFactor& stepFactor) {
         "change unless set by hand (Render tab).");
 }
 
+// A slow stack explains itself (SlowStackAdvice): what keeps the estimate loose, and the faster
+// estimator and bailout as one click (one undo step).
+void slowStackNotice(EditorState& s) {
+    const SlowStackAdvice& advice = s.slowStack;
+    if (advice.measuring()) {
+        ImGui::TextDisabled("Step factor %.3f: finding out what keeps the estimate loose...", s.stepFactor.measured);
+        return;
+    }
+    if (advice.text.empty()) return;
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1), "%s", advice.text.c_str());
+    ImGui::PopTextWrapPos();
+    noteWidgetRect(s.layout, "text:Slow stack");
+    if (!advice.shown || !advice.shown->faster) return;
+    const Formula& faster = *advice.shown->faster;
+    char label[160];
+    std::snprintf(label, sizeof label, "Use %s at bailout %g", std::string(faster.estimator.block->label).c_str(),
+                  faster.bailout);
+    if (ImGui::Button(label)) applyFasterEstimator(s.doc.preset, s.stepFactor, *advice.shown);
+    noteWidgetRect(s.layout, "button:Use faster estimator");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Replace the estimator and bailout, with step factor %.3f (measured). Ctrl+Z undoes it.",
+                          faster.deFactor);
+}
+
 }  // namespace
 
 void beginFormulaWindow(EditorState& s) { beginSideColumnWindow(s, "Formula", &s.panels.formula, true); }
@@ -89,6 +115,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     ImGui::SetNextItemWidth(-1);
     ImGui::InputTextWithHint("##name", "Preset name", &s.doc.preset.name);
     globalSettings(f, s.stepFactor);
+    slowStackNotice(s);
     ImGui::Spacing();
     sectionHeader("Node list");
 

@@ -32,6 +32,7 @@ void adoptDocument(EditorState& s, Document d, const fs::path& path) {
     s.file.savedFingerprint = fingerprint(s.doc);
     s.selectedNode = 0;
     s.stepFactor = AutoStepFactor::adopting(s.doc.preset.formula);
+    s.slowStack = SlowStackAdvice{};
     s.planeSelection = {};
     if (s.doc.plane) s.planeHome = s.doc.plane->view;
     clampSelection(s);

@@ -15,6 +15,7 @@
 #include "app/editor/document/file_browser.hpp"
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/lights_edits.hpp"
+#include "app/editor/document/slow_stack.hpp"
 #include "app/editor/document/timeline_edits.hpp"
 #include "app/editor/document/undo_history.hpp"
 #include "app/editor/input/camera_controller.hpp"
@@ -140,6 +141,7 @@ struct EditorState {
     CustomBlockEditor customBlockEditor;
     EyeDistance eyeDistance;    // the DE at the eye for the fly speed (GL probe for custom GLSL)
     AutoStepFactor stepFactor;  // the check's step factor, set after structure changes
+    SlowStackAdvice slowStack;  // why that factor is small, and the faster estimator
     Dialogs dialogs;
     PresetBrowser browser;
     ExportJob exportJob;
