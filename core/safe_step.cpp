@@ -145,7 +145,8 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Safe
     }
     // The gradient twins of the estimators measured so far, with their parameters; none after a
     // step that declares a jump: differences across the jump are no derivative, and the rays that
-    // straddle it, where the twin overshoots without bound, are too rare for the rounds to see.
+    // straddle it are too rare for the rounds to see. Of 18 twins chosen after a jump on 1500
+    // random stacks, 4 overshot 2000 fresh rays, by 1.86x to 104x (bench/stills/README.md).
     const bool jumpsBefore = derivativeBound(f.nodes) == DerivativeBound::None;
     for (size_t i = 0, measuredSoFar = jumpsBefore ? 0 : out.size(); i < measuredSoFar; ++i)
         for (const BlockDesc& twin : allBlocks())
