@@ -284,10 +284,9 @@ int runCheck(const CheckOptions& o) {
                     why.text(f).c_str());
         if (why.faster)
             std::printf(
-                "fix: `fraktal check --fit --apply %s` writes estimator %s, bailout %g, bound radius %g "
-                "and factor %.3f\n",
-                o.preset.c_str(), std::string(why.faster->estimator.block->id).c_str(), why.faster->bailout,
-                why.faster->boundRadius, why.faster->deFactor);
+                "fix: `fraktal check --fit --apply %s` fits and writes the estimator (%s at bailout %g here), the "
+                "bound and the factor it measures for them\n",
+                o.preset.c_str(), std::string(why.faster->estimator.block->id).c_str(), why.faster->bailout);
         else if (useless)
             std::printf("fix: no estimator the fit offers is faster; change the block named above or its values\n");
     }

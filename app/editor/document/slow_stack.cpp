@@ -119,12 +119,10 @@ bool applyFasterEstimator(Preset& p, AutoStepFactor& stepFactor, const SlowStack
     p.formula.estimator.values = faster.estimator.values;
     p.formula.bailout = faster.bailout;
     p.formula.deFactor = faster.deFactor;
-    stepFactor.furtherWorker = {};
-    stepFactor.further = {};
-    stepFactor.measuredKey = p.formula.structureKey();
-    stepFactor.measured = faster.deFactor;
-    stepFactor.speed = advice.fasterSpeed;
-    stepFactor.noSafeFactor = stepFactor.noHits = stepFactor.overridden = false;
+    // Measured again in this frame (the same settled rounds that gave the advice its factor),
+    // then by the check's further rounds on the worker, as after any structure change.
+    stepFactor.overridden = false;
+    stepFactor.measuredKey.clear();
     return true;
 }
 

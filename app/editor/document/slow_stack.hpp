@@ -86,9 +86,9 @@ struct SlowStackAdvice {
     bool measuring() const { return pending.valid(); }
 };
 
-// The explanation's faster estimator, bailout and factor applied to the document, and taken as
-// the step factor measured for it (no further rounds of the old measurement overwrite it). One
-// edit: the editor's commit after the click makes it one undo step. False when there is none.
+// The explanation's faster estimator, bailout and factor applied to the document; the step factor
+// is measured for it again (AutoStepFactor, with its further rounds). One edit: the editor's
+// commit after the click makes it one undo step. False when there is none.
 bool applyFasterEstimator(Preset& p, AutoStepFactor& stepFactor, const SlowStack& advice);
 
 }  // namespace fraktal::editor

@@ -115,7 +115,6 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     ImGui::SetNextItemWidth(-1);
     ImGui::InputTextWithHint("##name", "Preset name", &s.doc.preset.name);
     globalSettings(f, s.stepFactor);
-    slowStackNotice(s);
     ImGui::Spacing();
     sectionHeader("Node list");
 
@@ -165,6 +164,8 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
         fitFormulaAfterEdit(s.doc.preset);
     }
     s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
+    // Under the list the artist just edited, above the parameters.
+    slowStackNotice(s);
 
     ImGui::Spacing();
     sectionHeader("Parameters");
