@@ -61,23 +61,40 @@ struct MandelbulbPhase {
 
 // "Sine" bulb: theta is the latitude asin(z / r) (computed as atan2(z, rxy)), phi = atan2(y, x);
 // x = r^n cos(n theta) cos(n phi), y = r^n cos(n theta) sin(n phi), z = r^n sin(n theta).
+// Mandelbulber2's "mandelbulb" formula, whose offsets (beta_angle_offset on theta,
+// alpha_angle_offset on phi, degrees) are added to the angles before the power multiplies them.
+// The largest stretch is n r^(n-1) times that of the phi direction, |cos(n (theta + beta))| /
+// cos(theta) (the image's circle of latitude over the input's), where that is above 1.
 struct MandelbulbSine {
     static constexpr std::string_view id = "mandelbulb_sine";
     static constexpr std::string_view label = "Mandelbulb (sine)";
     static constexpr std::string_view help = "Mandelbulb with latitude theta = asin(z/r): z = r^n sin(n theta).";
     static constexpr Category category = Category::Power;
     static constexpr DerivativeBound derivative = DerivativeBound::None;
-    static constexpr std::string_view jump = "its map jumps where the poles go to circles (unless the power is odd)";
+    static constexpr std::string_view jump =
+        "its map jumps where the poles go to circles (unless the power is odd and there is no offset)";
     static constexpr Degree degree{"power"};
     static constexpr std::array params{
         ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
+        ParamDecl{"theta_offset",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  -180.0,
+                  180.0,
+                  "Added to the latitude theta before the power multiplies it, degrees."},
+        ParamDecl{"phi_offset",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  -180.0,
+                  180.0,
+                  "Added to the azimuth phi before the power multiplies it, degrees."},
     };
 
     static constexpr std::string_view glsl = R"(
     float r = length(p.xyz);
     if (r > 0.0) {
-        float theta = atan(p.z, length(p.xy)) * power;
-        float phi = atan(p.y, p.x) * power;
+        float theta = (atan(p.z, length(p.xy)) + radians(theta_offset)) * power;
+        float phi = (atan(p.y, p.x) + radians(phi_offset)) * power;
         float cosTheta = length(p.xy) / r, cosImage = abs(cos(theta));
         float phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
         p.w *= power * pow(r, power - 1.0) * phiStretch;
@@ -90,8 +107,8 @@ struct MandelbulbSine {
         const double power = a.f(0);
         double r = length(p.xyz);
         if (r > 0.0) {
-            double theta = std::atan2(p.xyz.z, std::hypot(p.xyz.x, p.xyz.y)) * power;
-            double phi = std::atan2(p.xyz.y, p.xyz.x) * power;
+            double theta = (std::atan2(p.xyz.z, std::hypot(p.xyz.x, p.xyz.y)) + glm::radians(a.f(1))) * power;
+            double phi = (std::atan2(p.xyz.y, p.xyz.x) + glm::radians(a.f(2))) * power;
             double cosTheta = std::hypot(p.xyz.x, p.xyz.y) / r, cosImage = abs(cos(theta));
             double phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
             p.w *= power * std::pow(r, power - 1.0) * phiStretch;

@@ -293,9 +293,10 @@ void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 }
 
 void mapMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    r.mustBeDefault("alpha_angle_offset", "phase offsets on the bulb (part 2)");
-    r.mustBeDefault("beta_angle_offset", "phase offsets on the bulb (part 2)");
-    b.add("mandelbulb_sine", {N::f("power", r.number("power"))});
+    // Mandelbulber2's offsets are degrees, added to the angles before the power (beta on the
+    // latitude, alpha on the azimuth): the sine bulb's theta_offset and phi_offset.
+    b.add("mandelbulb_sine", {N::f("power", r.number("power")), N::f("theta_offset", r.number("beta_angle_offset")),
+                              N::f("phi_offset", r.number("alpha_angle_offset"))});
 }
 
 void mapXenodreambuie(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
