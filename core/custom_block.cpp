@@ -103,6 +103,8 @@ CustomBlock::CustomBlock(Definition d) : def_(std::move(d)) {
                       .glsl = def_.glsl};
     desc_.membership = def_.membership;
     desc_.custom = true;
+    // Unknown GLSL bounds nothing (DerivativeBound::None): the check's note says so in these words.
+    desc_.jump = "a GLSL block declares no bound, so its map may jump anywhere";
 }
 
 std::shared_ptr<const CustomBlock> CustomBlock::make(Definition d) {
