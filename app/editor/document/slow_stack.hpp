@@ -49,9 +49,6 @@ struct SlowStack {
     double blockBaseSpeed = 0.0;  // the speed it is compared with: the faster estimator's, or the current one
 
     double speed() const { return current.report.samples > 0 && current.hasFactor ? current.speed() : 0.0; }
-    bool slow() const {
-        return current.report.samples > 0 && (current.factor < kExplainFactor || uselessSpeed(current));
-    }
     // One paragraph for the check and the editor: the speed now, the block and why (its jump, in
     // its declaration's words), and the faster estimator.
     std::string text(const Formula& f) const;
