@@ -31,8 +31,7 @@ Node Node::make(const BlockDesc& block) {
 std::string Formula::structureKey() const {
     std::string key;
     for (const Node& n : nodes) {
-        key += std::string(n.block->id) + (n.enabled ? "" : "!") + "/" + std::to_string(n.period) + "/" +
-               std::to_string(n.phase) + ";";
+        key += std::string(n.block->id) + (n.enabled ? "" : "!") + "/" + n.key() + ";";
     }
     key += "=>" + std::string(estimator.block ? estimator.block->id : "");
     // A user's block is compiled from its text: editing its GLSL or its parameter list (same id)

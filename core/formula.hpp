@@ -7,27 +7,26 @@
 
 #include "core/block.hpp"
 #include "core/custom_block.hpp"
+#include "core/iteration_schedule.hpp"
 
 namespace fraktal {
 
-struct Node {
+// The schedule says on which iterations the node runs: i % period == phase within [start, stop).
+// This is how hybrids alternate formulas (Mandelbox on even and Mandelbulb on odd iterations) and
+// how a block runs on the first iterations only.
+struct Node : IterationSchedule {
     const BlockDesc* block = nullptr;
     std::vector<ParamValue> values;  // one per block->params, in declaration order
     bool enabled = true;
-    // The node runs on iterations i with i % period == phase (period 1: every iteration). This
-    // is how hybrids alternate formulas, e.g. Mandelbox on even and Mandelbulb on odd iterations.
-    int period = 1;
-    int phase = 0;
 
     static Node make(const BlockDesc& block);  // with default parameter values
     Args args() const { return Args{values.data()}; }
-    bool runsOn(int iteration) const { return iteration % period == phase; }
-    // How many of the iterations 0 .. count - 1 the node runs on (GLSL: iterationsRunBefore).
-    int iterationsRunBefore(int count) const { return count > phase ? (count - phase - 1) / period + 1 : 0; }
+    IterationSchedule& schedule() { return *this; }
+    const IterationSchedule& schedule() const { return *this; }
 };
 
-// Limits that keep any formula bounded (no preset can hang the machine).
-inline constexpr int kMaxIterations = 1000;
+// Limits that keep any formula bounded (no preset can hang the machine); kMaxIterations is in
+// core/iteration_schedule.hpp.
 inline constexpr int kMaxNodes = 64;
 
 struct Formula {
@@ -47,8 +46,8 @@ struct Formula {
     // False when a node is a custom GLSL block: evaluate it with gl::DEProbe instead.
     bool cpuEvaluable() const;
 
-    // Structure: what needs a recompile when it changes (block ids, order, enable, period,
-    // phase). Parameter values, iterations, bailout, bound and factor are uniforms.
+    // Structure: what needs a recompile when it changes (block ids, order, enable, schedule). Parameter values,
+    // iterations, bailout, bound and factor are uniforms.
     std::string structureKey() const;
 };
 

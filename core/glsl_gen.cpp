@@ -128,15 +128,15 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
                                       ? nodeUniformName(int(k), n.block->params[size_t(n.block->degreeParam)].name)
                                       : glslFloat(n.block->fixedDegree);
             call += " degree *= " + d + ";";
-            const std::string periodAndPhase = ", " + std::to_string(n.period) + ", " + std::to_string(n.phase) + ")";
-            const std::string runs = "iterationsRunBefore(n" + periodAndPhase;
+            const std::string scheduleArgs = ", " + std::to_string(n.period) + ", " + std::to_string(n.phase) + ", " +
+                                             std::to_string(n.start) + ", " + std::to_string(n.stop) + ")";
+            const std::string runs = "iterationsRunBefore(n" + scheduleArgs;
             remaining += "    { float d = log2(" + d + "); remainingLog2 += float(" + runs +
-                         " - iterationsRunBefore(iterations" + periodAndPhase + ") * d; allLog2 += float(" + runs +
+                         " - iterationsRunBefore(iterations" + scheduleArgs + ") * d; allLog2 += float(" + runs +
                          ") * d; }\n";
         }
-        if (n.period > 1)
-            loop += "        if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") { " + call +
-                    " }\n";
+        if (!n.always())
+            loop += "        if (" + n.glslCondition() + ") { " + call + " }\n";
         else
             loop += "        " + call + "\n";
     }

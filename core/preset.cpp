@@ -391,7 +391,7 @@ std::string describeFormula(const Formula& f) {
     auto describeNode = [&](const Node& n, const std::string& prefix) {
         s << prefix << n.block->id << " [" << categoryName(n.block->category) << "]";
         if (!n.enabled) s << " (disabled)";
-        if (n.period > 1) s << " (iterations i % " << n.period << " == " << n.phase << ")";
+        if (!n.always()) s << " (" << n.describe() << ")";
         for (size_t i = 0; i < n.values.size(); ++i) {
             const ParamDecl& d = n.block->params[i];
             s << (i == 0 ? ": " : ", ") << d.name << " = ";

@@ -71,13 +71,17 @@ nlohmann::json colorManagementJson(const RenderSettings& s);
 
 // Pieces of the format that 3D and 2D presets (core/plane/plane_preset.cpp) share.
 // When a node runs: "enabled" (default true), "period" and "phase" (default 1 and 0; the node
-// runs on iterations i with i % period == phase). NodeT: Node or PlaneNode.
+// runs on iterations i with i % period == phase), "start" and "stop" (default 0 and no end; the
+// node runs on iterations start <= i < stop). NodeT: Node or PlaneNode.
 template <class NodeT>
 void readNodeSchedule(FieldReader& node, NodeT& n) {
     n.enabled = node.boolean("enabled", true);
-    n.period = node.integer("period", 1, 1, 16);
-    n.phase = node.integer("phase", 0, 0, 15);
+    n.period = node.integer("period", 1, 1, kMaxPeriod);
+    n.phase = node.integer("phase", 0, 0, kMaxPeriod - 1);
     if (n.phase >= n.period) node.fail("phase must be smaller than period (" + std::to_string(n.period) + ")", "phase");
+    n.start = node.integer("start", 0, 0, kMaxIterations - 1);
+    n.stop = node.integer("stop", kMaxIterations, 1, kMaxIterations);
+    if (n.stop <= n.start) node.fail("stop must be greater than start (" + std::to_string(n.start) + ")", "stop");
 }
 // A node's "params": each of its block's declared parameters within its range (a toggle as
 // true/false, a float as a number, a vector as an array; a direction not zero), any other key
@@ -114,6 +118,8 @@ void writeNodeSchedule(const NodeT& n, nlohmann::json& node) {
     if (!n.enabled) node["enabled"] = false;
     if (n.period != 1) node["period"] = n.period;
     if (n.phase != 0) node["phase"] = n.phase;
+    if (n.start != 0) node["start"] = n.start;
+    if (n.stop != kMaxIterations) node["stop"] = n.stop;
 }
 inline nlohmann::json vecJson(const vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 // A node: its block, its schedule and the parameters that differ from their defaults (floats as
@@ -143,6 +149,7 @@ template <class NodeT>
 void checkEstimatorSchedule(const NodeT& n, const std::string& file, const std::string& path) {
     if (!n.enabled) throw PresetError(file, path + ".enabled", "the estimator cannot be disabled");
     if (n.period != 1) throw PresetError(file, path + ".period", "the estimator runs once, after the loop");
+    if (n.windowed()) throw PresetError(file, path + ".start", "the estimator runs once, after the loop");
 }
 // The image size and samples of the "render" section.
 void readImageSize(FieldReader& render, RenderSettings& s);

@@ -1,6 +1,6 @@
 // Distance estimator template. The generator (core/glsl_gen.cpp) replaces each //@ marker with
 // code built from the formula's node list; values are uniforms, so only a change of structure
-// (blocks, order, enable, period, phase) recompiles. Mirrors fraktal::evaluate() on the CPU.
+// (blocks, order, enable, schedule) recompiles. Mirrors fraktal::evaluate() on the CPU.
 #define FRAKTAL_MAX_ITERATIONS 1000
 //@FRAKTAL_OPTIONS
 
@@ -17,10 +17,13 @@ float potentialShare(float G) {
 
 //@FRAKTAL_NODES
 
-// How many of the iterations 0 .. count - 1 a node of this period and phase runs on
-// (Node::iterationsRunBefore).
-int iterationsRunBefore(int count, int period, int phase) {
+// How many of the iterations 0 .. count - 1 a node of this schedule runs on
+// (IterationSchedule::iterationsRunBefore).
+int cycleRunsBefore(int count, int period, int phase) {
     return count > phase ? (count - phase - 1) / period + 1 : 0;
+}
+int iterationsRunBefore(int count, int period, int phase, int start, int stop) {
+    return cycleRunsBefore(min(count, stop), period, phase) - cycleRunsBefore(min(count, start), period, phase);
 }
 
 #ifdef FRAKTAL_ORBIT_GRADIENT

@@ -138,21 +138,28 @@ TEST(DEQuality, MandelbulbDistanceIsCloseAwayFromTheSurface) {
     EXPECT_GE(lowest, 0.5 / 8.0);
 }
 
-// The drawn surface's log radius counts each power node's remaining runs from its period and phase
+// The drawn surface's log radius counts each power node's remaining runs from its schedule
 // (formula.cpp and formula.glsl alike) instead of looping over the iterations: the count agrees
-// with the iterations the node runs on.
+// with the iterations the node runs on, for every period, phase and window.
 TEST(DEQuality, IterationsRunBeforeCountsTheIterationsANodeRunsOn) {
-    for (int period = 1; period <= 5; ++period)
-        for (int phase = 0; phase < period; ++phase) {
-            Node n = Node::make(*findBlock("mandelbulb"));
-            n.period = period;
-            n.phase = phase;
-            int runs = 0;
-            for (int count = 0; count <= 23; ++count) {
-                EXPECT_EQ(n.iterationsRunBefore(count), runs) << "period " << period << ", phase " << phase;
-                runs += n.runsOn(count);
+    const std::pair<int, int> windows[] = {{0, kMaxIterations}, {0, 1}, {1, kMaxIterations}, {3, 9}, {4, 5}, {7, 30}};
+    for (const auto& [start, stop] : windows)
+        for (int period = 1; period <= 5; ++period)
+            for (int phase = 0; phase < period; ++phase) {
+                Node n = Node::make(*findBlock("mandelbulb"));
+                n.period = period;
+                n.phase = phase;
+                n.start = start;
+                n.stop = stop;
+                int runs = 0;
+                for (int count = 0; count <= 23; ++count) {
+                    EXPECT_EQ(n.iterationsRunBefore(count), runs)
+                        << "period " << period << ", phase " << phase << ", window " << start << ".." << stop;
+                    const bool inWindow = count >= start && count < stop;
+                    EXPECT_EQ(n.runsOn(count), inWindow && count % period == phase);
+                    runs += n.runsOn(count);
+                }
             }
-        }
 }
 
 namespace {

@@ -279,7 +279,13 @@ TEST(GpuCpuAgreement, PotentialEstimateFollowsThePowerDegrees) {
     bulb.values[0].x = 5.0;
     bulb.period = 2;
     bulb.phase = 1;
-    hybrid.nodes = {box, bulb, Node::make(*findBlock("bristorbrot")), Node::make(*findBlock("add_c"))};
+    // A pre-transform on the first two iterations only, and a power from the third on: windows.
+    Node twist = Node::make(*findBlock("rotate"));
+    twist.values[1].x = 30.0;
+    twist.stop = 2;
+    Node bristor = Node::make(*findBlock("bristorbrot"));
+    bristor.start = 3;
+    hybrid.nodes = {twist, box, bulb, bristor, Node::make(*findBlock("add_c"))};
     const Agreement a = compare(hybrid, test::randomPoints(kPoints, 2.0, 37));
     EXPECT_EQ(a.mismatched, 0u) << "worst error " << a.worstExcess << "x the tolerance at (" << a.worstPoint.x << ", "
                                 << a.worstPoint.y << ", " << a.worstPoint.z << ")";

@@ -54,6 +54,27 @@ TEST(Preset, SavesOnlyWhatDiffersFromDefaults) {
     EXPECT_EQ(presetToJson(p)["formula"]["nodes"][0]["params"]["limit"], 1.25);
 }
 
+// A node's iteration window ("start", "stop") is written only where it is not the whole loop, and
+// reads back exactly.
+TEST(Preset, IterationWindowRoundTrips) {
+    Preset p = loadPreset(test::sourceDir() / "presets/mandelbox.json");
+    EXPECT_FALSE(presetToJson(p)["formula"]["nodes"][0].contains("start"));
+    EXPECT_FALSE(presetToJson(p)["formula"]["nodes"][0].contains("stop"));
+    p.formula.nodes[0].start = 2;
+    p.formula.nodes[0].stop = 9;
+    p.formula.nodes[1].start = 5;
+    const nlohmann::json j = presetToJson(p);
+    EXPECT_EQ(j["formula"]["nodes"][0]["start"], 2);
+    EXPECT_EQ(j["formula"]["nodes"][0]["stop"], 9);
+    EXPECT_FALSE(j["formula"]["nodes"][1].contains("stop"));
+    const Preset reloaded = parsePreset(serializePreset(p), "saved.json");
+    EXPECT_EQ(reloaded.formula.nodes[0].schedule(), p.formula.nodes[0].schedule());
+    EXPECT_EQ(reloaded.formula.nodes[1].schedule(), p.formula.nodes[1].schedule());
+    EXPECT_NE(reloaded.formula.structureKey(),
+              loadPreset(test::sourceDir() / "presets/mandelbox.json").formula.structureKey());
+    EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
+}
+
 // On/off parameters (ParamType::Toggle) are written as true/false and read back exactly.
 TEST(PresetToggle, RoundTripsAsTrueAndFalse) {
     Preset p = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
@@ -174,6 +195,8 @@ const BadPreset kBadPresets[] = {
     {"negative_bailout.json", "formula.bailout", "outside the range"},
     {"zero_direction.json", "formula.nodes[0].params.normal", "a direction must not be zero"},
     {"phase_not_below_period.json", "formula.nodes[0].phase", "phase must be smaller than period"},
+    {"stop_not_after_start.json", "formula.nodes[0].stop", "stop must be greater than start (4)"},
+    {"estimator_windowed.json", "formula.nodes[1].start", "the estimator runs once, after the loop"},
     {"duplicate_key.json", "formula.nodes", "duplicated key"},
     {"camera_degenerate.json", "camera", "position and target coincide"},
     {"camera_fov_absurd.json", "camera.fovY", "outside the range [1, 170]"},

@@ -15,8 +15,7 @@ PlaneNode PlaneNode::make(const PlaneBlockDesc& block) {
 std::string PlaneFormula::structureKey() const {
     std::string key = "plane:";
     auto add = [&key](const PlaneNode& n) {
-        key += std::string(n.block->id) + (n.enabled ? "" : "!") + "/" + std::to_string(n.period) + "/" +
-               std::to_string(n.phase) + ";";
+        key += std::string(n.block->id) + (n.enabled ? "" : "!") + "/" + n.key() + ";";
     };
     for (const PlaneNode& n : start) add(n);
     key += "|";
@@ -63,8 +62,8 @@ PlaneEvaluation evaluatePlane(const PlaneFormula& f, const real2& pos) {
     }
     e.escaped = s.escaped;
     e.captured = s.captured;
-    e.smoothIterations =
-        passedBailout ? planeSmoothIterations(e.iterations, glm::length(s.z), f.bailout, s.power) : double(e.iterations);
+    e.smoothIterations = passedBailout ? planeSmoothIterations(e.iterations, glm::length(s.z), f.bailout, s.power)
+                                       : double(e.iterations);
     e.distance = f.estimator.block->estimate(s, c, f.estimator.args());
     e.inside = planeInside(f.estimator.block->membership, e.escaped, e.captured, e.distance);
     return e;

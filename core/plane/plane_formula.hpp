@@ -11,16 +11,16 @@
 
 namespace fraktal {
 
-struct PlaneNode {
+// Runs on the iterations its schedule says, as in 3D.
+struct PlaneNode : IterationSchedule {
     const PlaneBlockDesc* block = nullptr;
     std::vector<ParamValue> values;  // one per block->params (floats in x), in declaration order
     bool enabled = true;
-    int period = 1;  // runs on iterations i with i % period == phase, as in 3D
-    int phase = 0;
 
     static PlaneNode make(const PlaneBlockDesc& block);  // with default parameter values
     Args args() const { return Args{values.data()}; }
-    bool runsOn(int iteration) const { return iteration % period == phase; }
+    IterationSchedule& schedule() { return *this; }
+    const IterationSchedule& schedule() const { return *this; }
 };
 
 struct PlaneFormula {
@@ -30,7 +30,7 @@ struct PlaneFormula {
     int iterations = 100;
     double bailout = 2.0;  // |z| > bailout ends the orbit (escaped)
 
-    // What needs a recompile (block ids, order, enable, period, phase); values are uniforms.
+    // What needs a recompile (block ids, order, enable, schedule); values are uniforms.
     std::string structureKey() const;
     // Whole-number powers only: a non-whole power runs in float on the GPU (see Power).
     bool needsFloatPower() const;

@@ -61,9 +61,8 @@ GeneratedFormula generatePlaneGLSL(const PlaneFormula& f) {
         if (!n.enabled) continue;
         emitNodeFunction(e, k, n, g.nodeNames.back(), false);
         const std::string call = nodeCall(k, n) + ";";
-        if (n.period > 1)
-            loopCalls += "            if (i % " + std::to_string(n.period) + " == " + std::to_string(n.phase) + ") " +
-                         call + "\n";
+        if (!n.always())
+            loopCalls += "            if (" + n.glslCondition() + ") " + call + "\n";
         else
             loopCalls += "            " + call + "\n";
     }

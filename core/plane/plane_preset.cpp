@@ -206,7 +206,7 @@ std::string describePlaneFormula(const PlaneFormula& f) {
     auto describeNode = [&](const PlaneNode& n, const std::string& prefix) {
         s << prefix << n.block->id;
         if (!n.enabled) s << " (disabled)";
-        if (n.period > 1) s << " (iterations i % " << n.period << " == " << n.phase << ")";
+        if (!n.always()) s << " (" << n.describe() << ")";
         for (size_t i = 0; i < n.values.size(); ++i)
             s << (i == 0 ? ": " : ", ") << n.block->params[i].name << " = " << n.values[i].x;
         s << "\n";

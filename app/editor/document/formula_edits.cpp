@@ -39,8 +39,7 @@ namespace {
 Node rebind(const Node& old, const BlockDesc& block) {
     Node n = Node::make(block);
     n.enabled = old.enabled;
-    n.period = old.period;
-    n.phase = old.phase;
+    n.schedule() = old.schedule();
     for (size_t i = 0; i < block.params.size(); ++i) {
         const int j = old.block->paramIndex(block.params[i].name);
         if (j < 0 || old.block->params[size_t(j)].type != block.params[i].type) continue;

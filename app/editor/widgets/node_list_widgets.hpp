@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/editor/widgets/param_widgets.hpp"
+#include "core/iteration_schedule.hpp"
 
 namespace fraktal::editor {
 
@@ -30,7 +31,7 @@ void errorUnder(const std::string& error);
 template <class NodeT>
 std::string nodeLabel(const NodeT& n, int index) {
     std::string label = std::to_string(index + 1) + ". " + std::string(n.block->label);
-    if (n.period > 1) label += "  (iter % " + std::to_string(n.period) + " = " + std::to_string(n.phase) + ")";
+    if (!n.always()) label += "  (" + n.describe() + ")";
     return label;
 }
 
@@ -88,13 +89,26 @@ void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
     ImGui::TextDisabled("%s", std::string(n.block->help).c_str());
     ImGui::PopTextWrapPos();
     if (!estimator) {
-        // Period and phase decide on which iterations the node runs (hybrids): structure edits.
+        // The schedule decides on which iterations the node runs (hybrids, a block on the first
+        // iterations only): structure edits.
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
-        if (ImGui::InputInt("Period", &n.period, 1, 1)) n.period = std::clamp(n.period, 1, 16);
+        if (ImGui::InputInt("Period", &n.period, 1, 1)) n.period = std::clamp(n.period, 1, kMaxPeriod);
         helpMarker("The node runs on iterations i with i % period == phase (hybrids alternate blocks).");
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
         if (ImGui::InputInt("Phase", &n.phase, 1, 1)) n.phase = std::clamp(n.phase, 0, n.period - 1);
         n.phase = std::clamp(n.phase, 0, n.period - 1);
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
+        if (ImGui::InputInt("From iteration", &n.start, 1, 10)) n.start = std::clamp(n.start, 0, kMaxIterations - 1);
+        helpMarker("The node runs from this iteration on (the first is 0).");
+        bool untilSet = n.stop < kMaxIterations;
+        if (ImGui::Checkbox("Stop before iteration", &untilSet)) n.stop = untilSet ? n.start + 1 : kMaxIterations;
+        helpMarker("The node runs only on iterations before this one (a pre-transform on the first iterations).");
+        if (untilSet) {
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+            if (ImGui::InputInt("##stop", &n.stop, 1, 10)) n.stop = std::clamp(n.stop, 1, kMaxIterations - 1);
+        }
+        n.stop = std::max(n.stop, n.start + 1);
     }
     if (n.block->params.empty()) ImGui::TextDisabled("This block has no parameters.");
     for (size_t k = 0; k < n.block->params.size(); ++k) {
