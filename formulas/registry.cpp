@@ -3,6 +3,7 @@
 #include "formulas/abs_fold.hpp"
 #include "formulas/add_c.hpp"
 #include "formulas/amazing_surf.hpp"
+#include "formulas/axis_scale.hpp"
 #include "formulas/box_fold.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/estimators.hpp"
@@ -14,6 +15,7 @@
 #include "formulas/mandelbulb_variants.hpp"
 #include "formulas/menger_fold.hpp"
 #include "formulas/menger_rotate.hpp"
+#include "formulas/menger_scale.hpp"
 #include "formulas/octahedral_fold.hpp"
 #include "formulas/plane_fold.hpp"
 #include "formulas/primitives.hpp"
@@ -40,6 +42,7 @@ constexpr std::array kBlocks{
     describe<SierpinskiFold>(),
     describe<OctahedralFold>(),
     describe<Scale>(),
+    describe<AxisScale>(),
     describe<Translate>(),
     describe<Rotate>(),
     describe<AddC>(),
@@ -51,6 +54,7 @@ constexpr std::array kBlocks{
     describe<KifsOctahedral>(),
     describe<KifsIcosahedral>(),
     describe<MengerRotate>(),
+    describe<MengerScale>(),
     describe<PseudoKleinian>(),
     describe<Kleinian>(),
     describe<ModTile>(),

@@ -13,8 +13,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "core/import/fract_import.hpp"
+#include "core/import/mb2_sequence.hpp"
 #include "test_support.hpp"
 
 namespace fraktal {
@@ -137,13 +139,100 @@ TEST(FractImport, HybridSlotsRunOnTheirPhasesOfTheCycle) {
     EXPECT_EQ(r.preset.formula.bailout, 100.0);
 }
 
+// Mandelbulber2's sequence, worked by hand from CreateSequence: slot 2 stops after iteration 3
+// (its stop is inclusive); from then on the skip lands on slot 1 every time.
+TEST(Mb2Sequence, SlotsOutsideTheirWindowAreSkipped) {
+    mb2::SlotSequencing s;
+    s.hybrid = true;
+    s.runs[0] = s.runs[1] = true;
+    s.count.fill(1);
+    s.last.fill(250);
+    s.last[1] = 3;
+    const std::vector<int> expected{0, 1, 0, 1, 0, 0, 0, 0, 0, 0};
+    EXPECT_EQ(mb2::slotOfEachIteration(s, 10), expected);
+    const auto stretches = mb2::periodicStretches(expected, kMaxPeriod);
+    // Alternation up to iteration 4 or 5, then slot 1 alone: three pattern entries.
+    ASSERT_EQ(stretches.size(), 2u);
+    EXPECT_EQ(stretches[0].start, 0);
+    EXPECT_EQ(stretches[0].pattern, (std::vector<int>{0, 1}));
+    EXPECT_GE(stretches[0].stop, 4);
+    EXPECT_LE(stretches[0].stop, 5);
+    EXPECT_EQ(stretches[1].start, stretches[0].stop);
+    EXPECT_EQ(stretches[1].stop, 10);
+    EXPECT_EQ(stretches[1].pattern, (std::vector<int>{0}));
+    // "Slot 1 once, then slot 2 for 250 iterations": a first-iteration pre-transform.
+    mb2::SlotSequencing pre = s;
+    pre.last[1] = 250;
+    pre.count[1] = 250;
+    const std::vector<int> once = mb2::slotOfEachIteration(pre, 250);
+    EXPECT_EQ(once[0], 0);
+    EXPECT_EQ(std::count(once.begin(), once.end(), 1), 249);
+    EXPECT_EQ(mb2::periodicStretches(once, kMaxPeriod).size(), 2u);
+}
+
+// The stretches cover every sequence exactly: random counts, windows and repeat points.
+TEST(Mb2Sequence, StretchesReproduceEverySequence) {
+    std::mt19937 random(11);
+    for (int trial = 0; trial < 300; ++trial) {
+        mb2::SlotSequencing s;
+        s.hybrid = true;
+        s.repeatFrom = 1 + int(random() % 3);
+        for (int k = 0; k < 4; ++k) {
+            s.runs[size_t(k)] = random() % 4 != 0;
+            s.count[size_t(k)] = random() % 5 == 0 ? 40 : 1 + int(random() % 4);
+            s.first[size_t(k)] = random() % 3 == 0 ? int(random() % 10) : 0;
+            s.last[size_t(k)] = random() % 3 == 0 ? int(random() % 30) : 250;
+        }
+        const std::vector<int> sequence = mb2::slotOfEachIteration(s, 60);
+        std::vector<int> rebuilt;
+        int expectedStart = 0;
+        for (const auto& stretch : mb2::periodicStretches(sequence, kMaxPeriod)) {
+            ASSERT_EQ(stretch.start, expectedStart);
+            ASSERT_LE(stretch.pattern.size(), size_t(kMaxPeriod));
+            for (int i = stretch.start; i < stretch.stop; ++i)
+                rebuilt.push_back(stretch.pattern[size_t(i - stretch.start) % stretch.pattern.size()]);
+            expectedStart = stretch.stop;
+        }
+        EXPECT_EQ(rebuilt, sequence) << "trial " << trial;
+    }
+}
+
+// On every iteration the imported nodes that run are exactly the slot Mandelbulber2's sequence
+// names, in order: a window on slot 2, a long count on slot 3, a rotation of its own window.
+TEST(FractImport, NodeSchedulesFollowTheSequenceIterationByIteration) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nN 40;\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 2;\nformula_3 1002;\n"
+        "formula_start_iteration_2 2;\nformula_stop_iteration_2 9;\nformula_iterations_3 20;\n"
+        "[fractal_1]\nmandelbox_main_rotation_enabled false;\n[fractal_3]\ntransf_rotation 10 0 0;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    mb2::SlotSequencing s;
+    s.hybrid = true;
+    s.runs[0] = s.runs[1] = s.runs[2] = true;
+    s.count.fill(1);
+    s.count[2] = 20;
+    s.last.fill(250);
+    s.first[1] = 2;
+    s.last[1] = 9;
+    const std::vector<int> sequence = mb2::slotOfEachIteration(s, 40);
+    // Each slot's first block: box_fold (mandelbox), mandelbulb_sine, rotate (transf_rotation).
+    const char* firstBlock[] = {"box_fold", "mandelbulb_sine", "rotate"};
+    for (int i = 0; i < 40; ++i) {
+        std::vector<std::string> running;
+        for (const Node& n : r.preset.formula.nodes)
+            if (n.runsOn(i)) running.emplace_back(n.block->id);
+        ASSERT_FALSE(running.empty()) << "iteration " << i;
+        EXPECT_EQ(running.front(), firstBlock[sequence[size_t(i)]]) << "iteration " << i;
+    }
+    EXPECT_LE(r.preset.formula.nodes.size(), size_t(kMaxNodes));
+}
+
 TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
     const mb2::FractImport r = importText(
-        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 3;\nformula_stop_iteration_1 5;\n"
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 13;\nformula_weight_1 0,5;\n"
         "primitive_water_1_enabled true;\n[fractal_2]\n");
     EXPECT_FALSE(r.faithful());
-    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (mandelbulb_power2)", "no fraktal blocks")) << r.unsupported.size();
-    EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "iteration window"));
+    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (mandelbulb2)", "no fraktal blocks")) << r.unsupported.size();
+    EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "formula_weight_1 0,5: a blend"));
     EXPECT_TRUE(mentions(r.unsupported, "main", "primitive water 1"));
     // Values outside a block's range.
     const mb2::FractImport bulb = importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 200;\npower 40;\n");
@@ -153,6 +242,39 @@ TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
 
 // The bulb's angle offsets (degrees, added before the power: beta on the latitude, alpha on the
 // azimuth) are the sine bulb's theta_offset and phi_offset.
+// White's power-2 bulb (mandelbulb_power2) is the latitude bulb with z mirrored; Kaleidoscopic
+// IFS in Menger sponge mode closes with the Menger scale; box_fold_bulb_pow2 is a box fold, the
+// fixed sphere fold, scale 2 and that bulb with z times its factor.
+TEST(FractImport, PowerTwoBulbMengerModeAndBoxFoldBulb) {
+    const mb2::FractImport white = importText("[main_parameters]\nformula_1 3;\n");
+    ASSERT_TRUE(white.faithful());
+    EXPECT_EQ(blockIds(white.preset.formula), (std::vector<std::string>{"mandelbulb_sine", "axis_scale", "add_c"}));
+    EXPECT_EQ(white.preset.formula.nodes[1].values[0], vec3(1.0, 1.0, -1.0));
+    // The step itself against Mandelbulber2's formula at a point: x' = (x^2 - y^2)(1 - z^2 / rho^2),
+    // y' = 2xy (1 - z^2 / rho^2), z' = -2 z rho.
+    const vec3 q(0.3, -0.7, 0.4);
+    P4 p{q, 1.0};
+    for (int k = 0; k < 2; ++k)
+        white.preset.formula.nodes[size_t(k)].block->apply(p, q, white.preset.formula.nodes[size_t(k)].args());
+    const double rho2 = q.x * q.x + q.y * q.y, t = 1.0 - q.z * q.z / rho2;
+    EXPECT_NEAR(p.xyz.x, (q.x * q.x - q.y * q.y) * t, 1e-12);
+    EXPECT_NEAR(p.xyz.y, 2.0 * q.x * q.y * t, 1e-12);
+    EXPECT_NEAR(p.xyz.z, -2.0 * q.z * std::sqrt(rho2), 1e-12);
+
+    const mb2::FractImport menger =
+        importText("[main_parameters]\nformula_1 10;\n[fractal_1]\nIFS_menger_sponge_mode true;\nIFS_scale 3;\n");
+    ASSERT_TRUE(menger.faithful()) << menger.unsupported.front().text();
+    EXPECT_EQ(menger.preset.formula.nodes.back().block->id, "menger_scale");
+
+    const mb2::FractImport box =
+        importText("[main_parameters]\nformula_1 16;\n[fractal_1]\nboxfold_bulbpow2_z_factor 3;\n");
+    ASSERT_TRUE(box.faithful());
+    EXPECT_EQ(blockIds(box.preset.formula),
+              (std::vector<std::string>{"box_fold", "sphere_fold", "scale", "mandelbulb_sine", "axis_scale", "add_c"}));
+    EXPECT_EQ(box.preset.formula.nodes[4].values[0], vec3(1.0, 1.0, -3.0));
+    EXPECT_EQ(box.preset.formula.bailout, 10000.0);
+}
+
 TEST(FractImport, BulbAngleOffsetsAreTheSineBulbsOffsets) {
     const mb2::FractImport r =
         importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 90;\nbeta_angle_offset -45;\npower 2;\n");

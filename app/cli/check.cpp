@@ -287,8 +287,12 @@ int runCheck(const CheckOptions& o) {
                 "fix: `fraktal check --fit --apply %s` fits and writes the estimator (%s at bailout %g here), the "
                 "bound and the factor it measures for them\n",
                 o.preset.c_str(), std::string(why.faster->estimator.block->id).c_str(), why.faster->bailout);
-        else if (useless)
+        else if (useless && why.block >= 0)
             std::printf("fix: no estimator the fit offers is faster; change the block named above or its values\n");
+        else if (useless)
+            std::printf(
+                "fix: no estimator the fit offers is faster, and no one block keeps it loose (taking any one out "
+                "leaves no object to measure): change the stack, e.g. add a step that scales the orbit up\n");
     }
     if (useless) status = 1;
     // Steps whose map jumps (a non-integer power's atan2 cut, a phase's pole, a wrap): the rays

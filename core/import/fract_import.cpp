@@ -1,6 +1,7 @@
 #include "core/import/fract_import.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/import/mb2_sequence.hpp"
 #include "core/json_reader.hpp"
 
 namespace fraktal::mb2 {
@@ -130,6 +132,8 @@ class NodeBuilder {
         const BlockDesc* block = findBlock(blockId);
         if (!block) throw std::logic_error("no block " + std::string(blockId));
         Node n = Node::make(*block);
+        n.start = windowStart_;
+        n.stop = windowStop_;
         for (const Value& v : values) {
             const int i = block->paramIndex(v.name);
             if (i < 0) throw std::logic_error("block " + std::string(blockId) + " has no " + std::string(v.name));
@@ -164,20 +168,34 @@ class NodeBuilder {
         add("rotate", {v("axis", normalize(axis)), f("angle", a)});
     }
 
+    // The nodes `steps` adds run only on iterations [start, stop) (a formula's own window,
+    // transf_start/stop_iterations): none when the window is empty.
+    template <class Steps>
+    void within(int start, int stop, Steps&& steps) {
+        start = std::max(start, 0);
+        stop = std::min(stop, kMaxIterations);
+        if (start >= stop) return;
+        windowStart_ = start;
+        windowStop_ = stop;
+        steps();
+        windowStart_ = 0;
+        windowStop_ = kMaxIterations;
+    }
+
    private:
     Reader& reader_;
     std::vector<Node>& out_;
+    int windowStart_ = 0, windowStop_ = kMaxIterations;
 };
 
 using N = NodeBuilder;
 
 // transf_rotation when `enabled` is on, over the iteration window start/stop (`suffix` names it:
-// "" or "_R"); a window short of every iteration is refused (part 2 brings windows).
+// "" or "_R").
 void windowedRotation(Reader& r, NodeBuilder& b, const std::string& enabled, const std::string& suffix) {
     if (!r.boolean(enabled)) return;
-    if (r.integer("transf_start_iterations" + suffix) > 0 || r.integer("transf_stop_iterations" + suffix) < 250)
-        r.unsupported("transf_start/stop_iterations" + suffix + ": a rotation on some iterations only (part 2)");
-    b.rotation(setRotation2(r.vector("transf_rotation")));
+    b.within(r.integer("transf_start_iterations" + suffix), r.integer("transf_stop_iterations" + suffix),
+             [&] { b.rotation(setRotation2(r.vector("transf_rotation"))); });
 }
 
 // transf_addition_constant, added after the formula's step (nothing when it is zero).
@@ -287,9 +305,12 @@ void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
             b.add("plane_fold", {N::v("normal", normal), N::f("offset", -edge[k])});
         }
     const double s = r.number("IFS_scale");
+    // z = s z - offset (s - 1): a scale about the offset; in Menger sponge mode z's shift applies
+    // only above the middle layer.
     if (r.boolean("IFS_menger_sponge_mode"))
-        return r.unsupported("IFS_menger_sponge_mode: the conditional z shift after the scale (part 2)");
-    b.add("scale", {N::f("scale", s), N::v("center", offset)});
+        b.add("menger_scale", {N::f("scale", s), N::v("offset", offset)});
+    else
+        b.add("scale", {N::f("scale", s), N::v("center", offset)});
 }
 
 void mapMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -297,6 +318,22 @@ void mapMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     // latitude, alpha on the azimuth): the sine bulb's theta_offset and phi_offset.
     b.add("mandelbulb_sine", {N::f("power", r.number("power")), N::f("theta_offset", r.number("beta_angle_offset")),
                               N::f("phi_offset", r.number("alpha_angle_offset"))});
+}
+
+// White's power-2 triplex, z' = -2 z sqrt(x^2 + y^2): the latitude bulb of power 2, z mirrored.
+void mapMandelbulbPower2(Reader&, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("mandelbulb_sine", {N::f("power", 2.0)});
+    b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -1.0))});
+}
+
+// Box fold at the folding factor, the fixed sphere fold (min radius 0.5, fixed 1), scale 2, White's
+// power 2 and z times the z factor (its sign folded into the power's mirror).
+void mapBoxFoldBulbPow2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("box_fold", {N::f("limit", r.number("boxfold_bulbpow2_folding_factor"))});
+    sphereFold(b, 0.5, 1.0);
+    b.add("scale", {N::f("scale", 2.0)});
+    b.add("mandelbulb_sine", {N::f("power", 2.0)});
+    b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
 }
 
 void mapXenodreambuie(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -431,10 +468,12 @@ struct Mapping {
     MapFn map;
 };
 constexpr Mapping kMappings[] = {
-    {2, mapMandelbulb},        {5, mapQuaternion3d},     {7, mapMengerSponge},     {8, mapMandelbox},
-    {10, mapKaleidoscopicIfs}, {11, mapXenodreambuie},   {21, mapBristorbrot},     {61, mapMengerMod1},
-    {62, mapQuaternion3d},     {83, mapIqBulb},          {103, mapPseudoKleinian}, {1001, mapTransfAddConstant},
-    {1002, mapTransfRotation}, {1003, mapTransfScale},   {60, mapAboxModKali},     {74, mapKalisets1},
+    {2, mapMandelbulb},        {3, mapMandelbulbPower2},     {16, mapBoxFoldBulbPow2},
+    {5, mapQuaternion3d},      {7, mapMengerSponge},         {8, mapMandelbox},
+    {10, mapKaleidoscopicIfs}, {11, mapXenodreambuie},       {21, mapBristorbrot},
+    {61, mapMengerMod1},       {62, mapQuaternion3d},        {83, mapIqBulb},
+    {103, mapPseudoKleinian},  {1001, mapTransfAddConstant}, {1002, mapTransfRotation},
+    {1003, mapTransfScale},    {60, mapAboxModKali},         {74, mapKalisets1},
     {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},
 };
 
@@ -708,41 +747,34 @@ FractImport importFract(const FractFile& file) {
     p.name = "";
     Reader main(file, "main_parameters", true, "main", out.unsupported);
 
-    // ---- Which slots run, in which order (nine_fractals.cpp; reference Notes 2) ----
+    // ---- Which slot runs on each iteration (nine_fractals.cpp; reference Notes 2) ----
     const bool hybrid = main.boolean("hybrid_fractal_enable");
     if (main.boolean("boolean_operators"))
         main.unsupported("boolean_operators: each slot a separate object, combined (part 2)");
     const int N = main.integer("N");
-    struct Slot {
-        int index, formula, count;
-    };
-    std::vector<Slot> slots;
-    for (int k = 1; k <= (hybrid ? 9 : 1); ++k) {
-        const std::string n = std::to_string(k);
+    SlotSequencing sequencing;
+    sequencing.hybrid = hybrid;
+    sequencing.repeatFrom = hybrid ? main.integer("repeat_from") : 1;
+    std::vector<int> slots;  // 0-based, in slot order
+    for (int k = 0; k < (hybrid ? kSlots : 1); ++k) {
+        const std::string n = std::to_string(k + 1);
         const int formula = main.integer("formula_" + n);
         if (formula == 0 || !main.boolean("fractal_enable_" + n)) continue;
-        // A count over 16 cannot be a fraktal period (refused below); the nodes stop at 16 copies.
-        const int count = hybrid ? std::clamp(main.integer("formula_iterations_" + n), 1, 17) : 1;
+        sequencing.runs[size_t(k)] = true;
+        sequencing.count[size_t(k)] = main.integer("formula_iterations_" + n);
+        sequencing.first[size_t(k)] = main.integer("formula_start_iteration_" + n);
+        sequencing.last[size_t(k)] = main.integer("formula_stop_iteration_" + n);
         Reader slotMain(file, "main_parameters", true, "slot " + n + " (" + formulaName(formula) + ")",
                         out.unsupported);
-        if (hybrid &&
-            (main.integer("formula_start_iteration_" + n) > 0 || main.integer("formula_stop_iteration_" + n) < N))
-            slotMain.unsupported("formula_start/stop_iteration " + main.raw("formula_start_iteration_" + n) + "-" +
-                                 main.raw("formula_stop_iteration_" + n) + ": an iteration window (part 2)");
         if (hybrid) slotMain.mustBeDefault("formula_weight_" + n, "a blend of the point before and after the slot");
         slotMain.mustBeDefault("check_for_bailout_" + n, "fraktal tests the bailout after every node");
-        slots.push_back({k, formula, count});
+        slots.push_back(k);
     }
     if (slots.empty()) main.unsupported("no formula slot runs");
-    int period = 0;
-    for (const Slot& s : slots) period += s.count;
-    if (hybrid && period > 16)
-        main.unsupported("a hybrid sequence of " + std::to_string(period) +
-                         " iterations (fraktal's period is at most 16; part 2)");
-    if (hybrid) main.mustBeDefault("repeat_from", "a sequence that repeats from a later slot");
+    const std::vector<int> sequence = slotOfEachIteration(sequencing, std::clamp(N, 1, kMaxIterations));
     main.mustBeDefault("initial_waxis", "a fourth coordinate (part 2)");
 
-    // ---- The node list: each slot's nodes on its phases of the cycle ----
+    // ---- Each slot's nodes ----
     // Files up to 2.04 store the factor as one number (MB2's Compatibility() makes it a vector).
     const std::optional<double> uniformFactor = parseNumber(main.raw("fractal_constant_factor"));
     const vec3 factor = uniformFactor ? vec3(*uniformFactor) : main.vector("fractal_constant_factor");
@@ -754,12 +786,15 @@ FractImport importFract(const FractFile& file) {
     std::map<Mb2De, int> deVotes;
     double bailout = 0.0, pkThickness = 1.0;
     bool delta = false;
-    int phase = 0;
-    for (const Slot& slot : slots) {
-        const std::string n = std::to_string(slot.index);
-        const FormulaInfo* info = findFormula(slot.formula);
-        Reader r(file, "fractal_" + n, false, "slot " + n + " (" + formulaName(slot.formula) + ")", out.unsupported);
-        std::vector<Node> group;
+    std::array<std::vector<Node>, kSlots> groups;
+    for (const int k : slots) {
+        const std::string n = std::to_string(k + 1);
+        const int formula = main.integer("formula_" + n);
+        const int runs = int(std::count(sequence.begin(), sequence.end(), k));
+        if (runs == 0) continue;  // outside its window on every iteration
+        const FormulaInfo* info = findFormula(formula);
+        Reader r(file, "fractal_" + n, false, "slot " + n + " (" + formulaName(formula) + ")", out.unsupported);
+        std::vector<Node>& group = groups[size_t(k)];
         NodeBuilder b(r, group);
         if (boxFolding) {
             if (std::abs(main.number("box_folding_value") - 2.0 * main.number("box_folding_limit")) > 1e-9)
@@ -768,9 +803,9 @@ FractImport importFract(const FractFile& file) {
         }
         if (sphericalFolding)
             sphereFold(b, main.number("spherical_folding_inner"), main.number("spherical_folding_outer"));
-        const MapFn map = findMapping(slot.formula);
+        const MapFn map = findMapping(formula);
         if (!map || !info) {
-            r.unsupported("the formula " + formulaName(slot.formula) + " (id " + std::to_string(slot.formula) +
+            r.unsupported("the formula " + formulaName(formula) + " (id " + std::to_string(formula) +
                           ") has no fraktal blocks yet");
             continue;
         }
@@ -782,22 +817,32 @@ FractImport importFract(const FractFile& file) {
             b.add("add_c",
                   {N::f("weight", factor.x), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor.x)});
         }
-        if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += slot.count;
+        if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += runs;
         delta = delta || isDelta(info->de);
         bailout = std::max(bailout, info->bailout);
         if (info->de == Mb2De::PseudoKleinian) pkThickness = r.number("analyticDE_scale_1");
-        for (int copy = 0; copy < slot.count && p.formula.nodes.size() <= size_t(kMaxNodes); ++copy) {
-            for (Node node : group) {
-                node.period = hybrid ? std::clamp(period, 1, 16) : 1;
-                node.phase = hybrid ? std::min(phase, 15) : 0;
-                if (node.phase >= node.period) node.phase = node.period - 1;
-                p.formula.nodes.push_back(std::move(node));
+    }
+
+    // ---- The node list: each stretch of the sequence as schedules (period, phase, window) ----
+    // A node's own window (a rotation on some iterations) meets its stretch's; the last stretch
+    // runs on past N, so that more iterations go on with the same cycle.
+    const int iterationsRun = int(sequence.size());
+    for (const PeriodicStretch& stretch : periodicStretches(sequence, kMaxPeriod)) {
+        const int period = int(stretch.pattern.size());
+        for (int k = 0; k < period; ++k) {
+            if (stretch.pattern[size_t(k)] < 0) continue;
+            for (Node node : groups[size_t(stretch.pattern[size_t(k)])]) {
+                node.period = period;
+                node.phase = (stretch.start + k) % period;
+                node.start = std::max(node.start, stretch.start);
+                if (stretch.stop < iterationsRun) node.stop = std::min(node.stop, stretch.stop);
+                if (node.start >= node.stop || node.iterationsRunBefore(iterationsRun) == 0) continue;
+                if (p.formula.nodes.size() <= size_t(kMaxNodes)) p.formula.nodes.push_back(std::move(node));
             }
-            ++phase;
         }
     }
     if (p.formula.nodes.size() > size_t(kMaxNodes))
-        main.unsupported(std::to_string(p.formula.nodes.size()) + " nodes (fraktal holds at most " +
+        main.unsupported("a sequence of more than " + std::to_string(kMaxNodes) + " nodes (fraktal holds at most " +
                          std::to_string(kMaxNodes) + ")");
 
     // ---- Closing estimator: the DE function (delta_DE_method, delta_DE_function) ----
@@ -829,6 +874,9 @@ FractImport importFract(const FractFile& file) {
     p.formula.deFactor = std::clamp(main.number("DE_factor"), 1e-3, 2.0);
     p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
     if (main.boolean("interior_mode")) main.unsupported("interior_mode: the inside of the set drawn as a solid");
+    main.mustBeDefault("iteration_threshold_mode",
+                       "the surface where orbits stay bounded for N iterations (fraktal's is where the estimate "
+                       "falls under the hit threshold)");
     importObjects(file, main, out);
     if (main.boolean("constant_DE_threshold"))
         out.approximated.push_back({"detail",
