@@ -9,6 +9,8 @@ namespace fraktal::blocks {
 // blend radius k > 0, by Quilez's polynomial smooth minimum
 // smin(a, b) = mix(b, a, h) - k h (1 - h), h = clamp(1/2 + (b - a) / 2k, 0, 1)
 // (iquilezles.org "smooth minimum"); an intersection is -smin(-a, -b). Inside where <= 0.
+// With log_part on, the fractal's part is the log estimate 0.5 log(r) r / |dr| of escape_log
+// (power formulas: a Mandelbulb cut by a box), 0 where the orbit did not escape.
 
 struct PlaneCombine {
     static constexpr std::string_view id = "plane_combine";
@@ -24,11 +26,14 @@ struct PlaneCombine {
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
         ParamDecl{"normal", ParamType::Vec3, {0.0, 1.0, 0.0}, -1.0, 1.0, "Plane normal (normalised before use).", true},
         ParamDecl{"height", ParamType::Float, {-1.0, 0.0, 0.0}, -10.0, 10.0, "Plane offset along the normal."},
+        toggleParam("log_part", false, "On: the fractal's part is the log estimate (power formulas)."),
     };
 
     static constexpr std::string_view glsl = R"(
     float g = dot(c, normalize(normal)) - height;
-    float f = (length(p.xyz) - offset) / abs(p.w);
+    float r = length(p.xyz);
+    float f = log_part > 0.5 ? (r > 1.0 ? 0.5 * max(log(r) - surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
+                             : (r - offset) / abs(p.w);
     float k = max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
     float h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
     return sgn * (mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));
@@ -38,7 +43,9 @@ struct PlaneCombine {
         const vec3 normal = a.v3(3);
         const double height = a.f(4);
         double g = dot(c, normalize(normal)) - height;
-        double f = (length(p.xyz) - offset) / abs(p.w);
+        const double r = length(p.xyz), logPart = a.f(5);
+        double f = logPart > 0.5 ? (r > 1.0 ? 0.5 * max(std::log(r) - p.surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
+                                 : (r - offset) / abs(p.w);
         double k = std::max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
         double h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
         return sgn * (glm::mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));
@@ -59,11 +66,14 @@ struct SphereCombine {
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
         ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Sphere centre."},
         ParamDecl{"radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "Sphere radius."},
+        toggleParam("log_part", false, "On: the fractal's part is the log estimate (power formulas)."),
     };
 
     static constexpr std::string_view glsl = R"(
     float g = length(c - center) - radius;
-    float f = (length(p.xyz) - offset) / abs(p.w);
+    float r = length(p.xyz);
+    float f = log_part > 0.5 ? (r > 1.0 ? 0.5 * max(log(r) - surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
+                             : (r - offset) / abs(p.w);
     float k = max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
     float h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
     return sgn * (mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));
@@ -73,7 +83,9 @@ struct SphereCombine {
         const vec3 center = a.v3(3);
         const double radius = a.f(4);
         double g = length(c - center) - radius;
-        double f = (length(p.xyz) - offset) / abs(p.w);
+        const double r = length(p.xyz), logPart = a.f(5);
+        double f = logPart > 0.5 ? (r > 1.0 ? 0.5 * max(std::log(r) - p.surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
+                                 : (r - offset) / abs(p.w);
         double k = std::max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
         double h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
         return sgn * (glm::mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));
@@ -94,12 +106,15 @@ struct BoxCombine {
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
         ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Box centre."},
         ParamDecl{"size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.001, 10.0, "Half-size of the box."},
+        toggleParam("log_part", false, "On: the fractal's part is the log estimate (power formulas)."),
     };
 
     static constexpr std::string_view glsl = R"(
     vec3 q = abs(c - center) - size;
     float g = length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
-    float f = (length(p.xyz) - offset) / abs(p.w);
+    float r = length(p.xyz);
+    float f = log_part > 0.5 ? (r > 1.0 ? 0.5 * max(log(r) - surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
+                             : (r - offset) / abs(p.w);
     float k = max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
     float h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
     return sgn * (mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));
@@ -109,7 +124,9 @@ struct BoxCombine {
         const vec3 center = a.v3(3), size = a.v3(4);
         vec3 q = abs(c - center) - size;
         double g = length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
-        double f = (length(p.xyz) - offset) / abs(p.w);
+        const double r = length(p.xyz), logPart = a.f(5);
+        double f = logPart > 0.5 ? (r > 1.0 ? 0.5 * max(std::log(r) - p.surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
+                                 : (r - offset) / abs(p.w);
         double k = std::max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
         double h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
         return sgn * (glm::mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));

@@ -275,6 +275,24 @@ TEST(FractImport, PowerTwoBulbMengerModeAndBoxFoldBulb) {
     EXPECT_EQ(box.preset.formula.bailout, 10000.0);
 }
 
+// A box cut (limits_enabled) around a power formula: the box combine with the log estimate as the
+// fractal's part; the bulb keeps Mandelbulber2's radial derivative.
+TEST(FractImport, LimitBoxCutsALogEstimate) {
+    const mb2::FractImport r =
+        importText("[main_parameters]\nlimits_enabled true;\nlimit_min -1 -1 -1;\nlimit_max 1 1 0;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Node& e = r.preset.formula.estimator;
+    ASSERT_EQ(e.block->id, "box_combine");
+    EXPECT_EQ(param(e, "log_part"), 1.0);
+    EXPECT_EQ(param(e, "intersect"), 1.0);
+    EXPECT_EQ(e.values[size_t(e.block->paramIndex("size"))], vec3(1.0, 1.0, 0.5));
+    EXPECT_EQ(param(r.preset.formula.nodes[0], "radial_derivative"), 1.0);
+    // Inside the bulb and the box: inside; inside the bulb above the cut: outside.
+    Formula f = r.preset.formula;
+    EXPECT_LE(distanceEstimate(f, vec3(0.0, 0.0, -0.1)), 0.0);
+    EXPECT_GT(distanceEstimate(f, vec3(0.0, 0.0, 0.2)), 0.0);
+}
+
 TEST(FractImport, BulbAngleOffsetsAreTheSineBulbsOffsets) {
     const mb2::FractImport r =
         importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 90;\nbeta_angle_offset -45;\npower 2;\n");

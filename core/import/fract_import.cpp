@@ -317,12 +317,12 @@ void mapMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     // Mandelbulber2's offsets are degrees, added to the angles before the power (beta on the
     // latitude, alpha on the azimuth): the sine bulb's theta_offset and phi_offset.
     b.add("mandelbulb_sine", {N::f("power", r.number("power")), N::f("theta_offset", r.number("beta_angle_offset")),
-                              N::f("phi_offset", r.number("alpha_angle_offset"))});
+                              N::f("phi_offset", r.number("alpha_angle_offset")), N::f("radial_derivative", 1.0)});
 }
 
 // White's power-2 triplex, z' = -2 z sqrt(x^2 + y^2): the latitude bulb of power 2, z mirrored.
 void mapMandelbulbPower2(Reader&, NodeBuilder& b, std::vector<ImportItem>&) {
-    b.add("mandelbulb_sine", {N::f("power", 2.0)});
+    b.add("mandelbulb_sine", {N::f("power", 2.0), N::f("radial_derivative", 1.0)});
     b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -1.0))});
 }
 
@@ -332,7 +332,7 @@ void mapBoxFoldBulbPow2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("box_fold", {N::f("limit", r.number("boxfold_bulbpow2_folding_factor"))});
     sphereFold(b, 0.5, 1.0);
     b.add("scale", {N::f("scale", 2.0)});
-    b.add("mandelbulb_sine", {N::f("power", 2.0)});
+    b.add("mandelbulb_sine", {N::f("power", 2.0), N::f("radial_derivative", 1.0)});
     b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
 }
 
@@ -674,22 +674,29 @@ std::vector<std::pair<std::string, std::string>> enabledPrimitives(const FractFi
 
 // A cut by a box (limits_enabled) and objects beside the fractal (primitives): fraktal's combine
 // estimators join one box, sphere or plane with the fractal's linear estimate |v| - offset over
-// |dr|, which is what Mandelbulber2's linear and IFS DE functions are.
+// |dr| (Mandelbulber2's linear and IFS DE functions) or its log estimate (log_part: the log DE
+// function; the delta log one as the analytic log estimate).
 void importObjects(const FractFile& file, Reader& main, FractImport& out) {
     Formula& f = out.preset.formula;
     const auto primitives = enabledPrimitives(file);
     const bool limits = main.boolean("limits_enabled");
     if (!limits && primitives.empty()) return;
-    const bool linear = f.estimator.block && f.estimator.block->id == "escape_linear";
+    const std::string_view estimator = f.estimator.block ? f.estimator.block->id : "";
+    const bool linear = estimator == "escape_linear";
+    const bool logPart = estimator == "escape_log" || estimator == "escape_gradient" || estimator == "escape_potential";
     const double offset = linear ? f.estimator.values[0].x : 0.0;
     auto combine = [&](std::string_view id, std::initializer_list<NodeBuilder::Value> values) {
         std::vector<Node> nodes;
         NodeBuilder b(main, nodes);
         b.add(id, values);
+        if (estimator != "escape_log" && logPart)
+            out.approximated.push_back(
+                {"DE", "the cut or object joins the analytic log estimate (" + std::string(estimator) + " before)"});
         f.estimator = std::move(nodes.front());
         f.estimator.values[size_t(f.estimator.block->paramIndex("offset"))].x = offset;
+        f.estimator.values[size_t(f.estimator.block->paramIndex("log_part"))].x = logPart ? 1.0 : 0.0;
     };
-    if (limits && primitives.empty() && linear) {
+    if (limits && primitives.empty() && (linear || logPart)) {
         const vec3 lo = main.vector("limit_min"), hi = main.vector("limit_max");
         combine("box_combine",
                 {N::f("intersect", 1.0), N::v("center", (lo + hi) * 0.5), N::v("size", glm::abs(hi - lo) * 0.5)});
@@ -697,8 +704,9 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
     }
     if (limits)
         main.unsupported("limits_enabled: a box that cuts the fractal" +
-                         std::string(linear ? " together with primitives" : " with a non-linear DE function"));
-    const bool one = primitives.size() == 1 && !limits && linear;
+                         std::string(linear || logPart ? " together with primitives"
+                                                       : " with a DE function other than linear or log"));
+    const bool one = primitives.size() == 1 && !limits && (linear || logPart);
     for (const auto& [type, index] : primitives) {
         const std::string key = "primitive_" + type + "_" + index + "_";
         const std::string where = "primitive " + type + " " + index;
@@ -722,7 +730,7 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
         if (!one || !plain || (type != "box" && type != "sphere" && type != "plane")) {
             main.unsupported(where +
                              ": an object beside the fractal (fraktal's combine estimators join one box, "
-                             "sphere or plane, unrotated, with a linear DE)");
+                             "sphere or plane, unrotated, with a linear or log DE)");
             continue;
         }
         const vec3 position = vectorOf("position", "0 0 0");
