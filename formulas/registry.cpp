@@ -7,6 +7,7 @@
 #include "formulas/box_fold.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/estimators.hpp"
+#include "formulas/hypercomplex.hpp"
 #include "formulas/kifs_icosahedral.hpp"
 #include "formulas/kifs_octahedral.hpp"
 #include "formulas/kifs_tetrahedral.hpp"
@@ -81,6 +82,7 @@ constexpr std::array kBlocks{
     describe<BoxCombine>(),
     describe<QuaternionJulia>(),
     describe<QuaternionMandelbrot>(),
+    describe<HypercomplexMandelbrot>(),
 };
 }  // namespace
 

@@ -10,6 +10,7 @@
 # bench/import/README.md) and OUT/worst.png (a contact sheet of the worst matches: fraktal's
 # mask, Mandelbulber2's, both overlaid; yellow both, red fraktal only, green Mandelbulber2 only).
 # FRACT_LIST: a file of settings files' paths (one a line) to run instead of the whole library.
+# PEER_CACHE: a previous run's img/ folder at the same size, whose mandelbulber2 masks are reused.
 # Needs mandelbulber2 (scripts/install-deps.sh installs it).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -42,6 +43,17 @@ peerSettings() {  # FILE OUT
   for kv in "${pairs[@]}"; do deletes+="/^${kv%% *} /d;"; appends+="${kv};\\n"; done
   sed "$deletes" "$1" | sed "/^\[main_parameters\]/a ${appends%\\n}" > "$2"
 }
+# mandelbulber2's mask of FILE as KEY: from PEER_CACHE (a previous run's img/ at the same size) when
+# it is there (the peer's image depends on the file and the size alone), else rendered.
+peerMask() {  # FILE KEY
+  if [ -n "${PEER_CACHE:-}" ] && [ -f "$PEER_CACHE/mb_$2.png" ]; then
+    cp "$PEER_CACHE/mb_$2.png" "$out/img/mb_$2.png"
+    return
+  fi
+  peerSettings "$1" "$tmp/peer.fract" &&
+    HOME="$tmp" QT_QPA_PLATFORM=offscreen timeout 300 mandelbulber2 -n -f png16alpha -r "$size" \
+      -o "$out/img/mb_$2" "$tmp/peer.fract" > "$tmp/mb.log" 2>&1
+}
 expressible() { grep -qxF "$1 / $2" "$root/bench/import/expressible.txt"; }
 
 printf 'collection\tfile\texpressible\tstatus\treason\tiou\tfraktal_px\tmb2_px\timport_s\n' > "$out/results.tsv"
@@ -58,9 +70,7 @@ while IFS= read -r -d "" -u 3 file; do
     took=$(echo "$(date +%s.%N) - $start" | bc -l | xargs printf %.2f)
     if timeout 300 "$fraktal" render "$tmp/$key.json" --size "$size" --spp 1 -o "$out/img/$key.exr" -q \
         > "$tmp/render.log" 2>&1 &&
-      peerSettings "$file" "$tmp/peer.fract" &&
-      HOME="$tmp" QT_QPA_PLATFORM=offscreen timeout 300 mandelbulber2 -n -f png16alpha -r "$size" \
-        -o "$out/img/mb_$key" "$tmp/peer.fract" > "$tmp/mb.log" 2>&1 && [ -f "$out/img/mb_$key.png" ]; then
+      peerMask "$file" "$key" && [ -f "$out/img/mb_$key.png" ]; then
       read -r iou fpx mpx < <("$tmp/iou" "$out/img/$key.exr" "$out/img/mb_$key.png")
       status=imported
       awk -v i="$iou" 'BEGIN { exit !(i >= 0.9) }' && status=matching

@@ -36,6 +36,9 @@ constexpr FormulaInfo kFormulas[] = {
 #include "core/import/mb2_formula_list.inc"
 };
 
+// Formulas whose orbit fraktal runs in an estimator of its own (4D state).
+constexpr int kHypercomplexId = 4;
+
 const FormulaInfo* findFormula(int id) {
     for (const FormulaInfo& f : kFormulas)
         if (f.id == id) return &f;
@@ -422,6 +425,32 @@ void mapAboxVsIcen1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approxim
     if (length(juliaC) > 0.0) b.add("translate", {N::v("offset", juliaC)});
 }
 
+// Tom Lowe's box in DarkBeam's and mclarekin's form: each part runs in its own iteration window
+// (transf_start/stop_iterations_B fold, _S sphere fold, _A scale, _R rotation, _C tweak scale).
+void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    r.mustBeDefault("transf_function_enabled_false", "the soft (parabolic) fold");
+    r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and z");
+    r.mustBeDefault("transf_function_enabledy_false", "a sphere fold radius that varies with the iteration");
+    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
+    r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c");
+    auto window = [&](const std::string& start, const std::string& stop, auto&& steps) {
+        b.within(r.integer("transf_start_iterations_" + start), r.integer("transf_stop_iterations_" + stop), steps);
+    };
+    window("B", "B", [&] {
+        tgladFold(r, b, r.vector("transf_addition_constant_111"), r.boolean("transf_function_enabled"), approximated);
+    });
+    window("S", "S", [&] {
+        sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
+                   std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
+    });
+    window("A", "A", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
+    additionConstant(r, b);
+    windowedRotation(r, b, "transf_rotation_enabled", "_R");
+    if (r.number("transf_scaleG_1") != 1.0)
+        window("C", "C1", [&] { b.add("scale", {N::f("scale", r.number("transf_scaleG_1"))}); });
+}
+
 void mapKalisets1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_minimum_radius_0", "a clamped inversion radius");
     const double scale = r.number("transf_scale");
@@ -474,7 +503,7 @@ constexpr Mapping kMappings[] = {
     {61, mapMengerMod1},       {62, mapQuaternion3d},        {83, mapIqBulb},
     {103, mapPseudoKleinian},  {1001, mapTransfAddConstant}, {1002, mapTransfRotation},
     {1003, mapTransfScale},    {60, mapAboxModKali},         {74, mapKalisets1},
-    {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},
+    {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},     {119, mapAboxMod11},
 };
 
 MapFn findMapping(int id) {
@@ -775,12 +804,21 @@ FractImport importFract(const FractFile& file) {
         Reader slotMain(file, "main_parameters", true, "slot " + n + " (" + formulaName(formula) + ")",
                         out.unsupported);
         if (hybrid) slotMain.mustBeDefault("formula_weight_" + n, "a blend of the point before and after the slot");
-        slotMain.mustBeDefault("check_for_bailout_" + n, "fraktal tests the bailout after every node");
+        // Mandelbulber2 skips the bailout test after such a slot's iterations (a pre-transform, or a
+        // box whose linear estimate r / dr settles whatever the radius it stops at); fraktal tests
+        // after every iteration, which ends some orbits an iteration sooner.
+        if (!main.boolean("check_for_bailout_" + n))
+            out.approximated.push_back({"slot " + n,
+                                        "check_for_bailout off: fraktal tests the bailout after every "
+                                        "iteration"});
         slots.push_back(k);
     }
     if (slots.empty()) main.unsupported("no formula slot runs");
     const std::vector<int> sequence = slotOfEachIteration(sequencing, std::clamp(N, 1, kMaxIterations));
-    main.mustBeDefault("initial_waxis", "a fourth coordinate (part 2)");
+    if (std::find_if(slots.begin(), slots.end(), [&](int k) {
+            return main.integer("formula_" + std::to_string(k + 1)) == kHypercomplexId;
+        }) == slots.end())
+        main.mustBeDefault("initial_waxis", "a fourth coordinate (part 2)");
 
     // ---- Each slot's nodes ----
     // Files up to 2.04 store the factor as one number (MB2's Compatibility() makes it a vector).
@@ -795,6 +833,7 @@ FractImport importFract(const FractFile& file) {
     double bailout = 0.0, pkThickness = 1.0;
     bool delta = false;
     std::array<std::vector<Node>, kSlots> groups;
+    int hypercomplexSlot = -1;
     for (const int k : slots) {
         const std::string n = std::to_string(k + 1);
         const int formula = main.integer("formula_" + n);
@@ -804,6 +843,18 @@ FractImport importFract(const FractFile& file) {
         Reader r(file, "fractal_" + n, false, "slot " + n + " (" + formulaName(formula) + ")", out.unsupported);
         std::vector<Node>& group = groups[size_t(k)];
         NodeBuilder b(r, group);
+        if (formula == kHypercomplexId) {
+            // A 4D orbit: fraktal's hypercomplex Mandelbrot estimator runs it (below), alone.
+            out.formulas.push_back("hypercomplex");
+            hypercomplexSlot = k;
+            if (slots.size() > 1) r.unsupported("a 4D orbit beside other slots (its estimator runs it alone)");
+            if (boxFolding || sphericalFolding) r.unsupported("global folds before a 4D orbit");
+            if (julia) r.unsupported("julia_mode: a hypercomplex Julia set");
+            if (main.boolean("dont_add_c_constant_" + n)) r.unsupported("dont_add_c_constant: the orbit without c");
+            deVotes[Mb2De::Log] += runs;
+            bailout = std::max(bailout, info ? info->bailout : 10.0);
+            continue;
+        }
         if (boxFolding) {
             if (std::abs(main.number("box_folding_value") - 2.0 * main.number("box_folding_limit")) > 1e-9)
                 main.unsupported("box_folding_value: a global box fold that does not reflect at its limit");
@@ -880,11 +931,24 @@ FractImport importFract(const FractFile& file) {
         main.boolean("use_default_bailout") ? (bailout > 0.0 ? bailout : 100.0) : main.number("bailout");
     p.formula.bailout = std::clamp(p.formula.bailout, 1e-3, 1e10);
     p.formula.deFactor = std::clamp(main.number("DE_factor"), 1e-3, 2.0);
+    if (hypercomplexSlot >= 0) {
+        // The whole orbit in the estimator: N iterations, escaping at the bailout, from
+        // c = (point, initial_waxis).
+        std::vector<Node> nodes;
+        NodeBuilder b(main, nodes);
+        b.add("hypercomplex_mandelbrot", {N::f("slice", main.number("initial_waxis")), N::f("orbit", N),
+                                          N::f("escape", std::max(p.formula.bailout, 2.0))});
+        p.formula.nodes.clear();
+        p.formula.estimator = nodes.front();
+        p.formula.iterations = 1;
+    }
     p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
     if (main.boolean("interior_mode")) main.unsupported("interior_mode: the inside of the set drawn as a solid");
-    main.mustBeDefault("iteration_threshold_mode",
-                       "the surface where orbits stay bounded for N iterations (fraktal's is where the estimate "
-                       "falls under the hit threshold)");
+    if (main.boolean("iteration_threshold_mode"))
+        out.approximated.push_back({"detail",
+                                    "iteration_threshold_mode: Mandelbulber2 stops where the orbit stays bounded "
+                                    "for N iterations; fraktal's estimates measure to that surface and stop within "
+                                    "the hit threshold of it"});
     importObjects(file, main, out);
     if (main.boolean("constant_DE_threshold"))
         out.approximated.push_back({"detail",

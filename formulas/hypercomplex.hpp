@@ -1,0 +1,62 @@
+#pragma once
+#include "core/block.hpp"
+
+namespace fraktal::blocks {
+
+// David Makin's hypercomplex Mandelbrot set (Mandelbulber2's "hypercomplex"): the orbit of
+// q -> q^2 + c in the commutative hypercomplex numbers, whose square of (x, y, z, w) is
+// (x^2 - y^2 - z^2 - w^2, 2xy - 2wz, 2xz - 2yw, 2xw - 2yz), c = (point, slice). Like the
+// quaternion sets (quaternion.hpp) it runs its own 4D orbit from the point the node list leaves,
+// with the estimate 0.5 |q| (log|q| - 2^(i - n) log(escape)) / |dq| of K_n's surface and the
+// running derivative |dq| -> 2 |q| |dq| + |p.w|. The hypercomplex product does not keep norms,
+// so 2 |q| is Mandelbulber2's estimate of the stretch, not a bound: `fraktal check` measures it.
+struct HypercomplexMandelbrot {
+    static constexpr std::string_view id = "hypercomplex_mandelbrot";
+    static constexpr std::string_view label = "Hypercomplex Mandelbrot";
+    static constexpr std::string_view help =
+        "4D hypercomplex Mandelbrot set q -> q^2 + c, c = (point, slice); runs its own orbit from the point.";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::Distance;
+    static constexpr std::array params{
+        ParamDecl{
+            "slice", ParamType::Float, {0.0, 0.0, 0.0}, -2.0, 2.0, "c's fourth coordinate: which 3D slice is seen."},
+        ParamDecl{"orbit", ParamType::Float, {12.0, 0.0, 0.0}, 1.0, 1000.0, "Iterations of the hypercomplex orbit."},
+        ParamDecl{"escape",
+                  ParamType::Float,
+                  {10.0, 0.0, 0.0},
+                  2.0,
+                  1000.0,
+                  "Escape radius of the orbit (larger: a tighter estimate)."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    vec4 k = vec4(p.xyz, slice), q = k;
+    float dq = abs(p.w), q2 = dot(q, q);
+    int i = 0;
+    for (; i < int(orbit) && q2 < escape * escape; ++i) {
+        dq = 2.0 * sqrt(q2) * dq + abs(p.w);
+        q = vec4(q.x * q.x - q.y * q.y - q.z * q.z - q.w * q.w, 2.0 * (q.x * q.y - q.w * q.z),
+                 2.0 * (q.x * q.z - q.y * q.w), 2.0 * (q.x * q.w - q.y * q.z)) + k;
+        q2 = dot(q, q);
+    }
+    float r = sqrt(q2);
+    return q2 < escape * escape ? 0.0 : 0.5 * (log(r) - exp2(float(i - int(orbit))) * log(escape)) * r / dq;
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const double slice = a.f(0), orbit = a.f(1), escape = a.f(2);
+        vec4 k = vec4(p.xyz, slice), q = k;
+        double dq = abs(p.w), q2 = dot(q, q);
+        int i = 0;
+        for (; i < int(orbit) && q2 < escape * escape; ++i) {
+            dq = 2.0 * std::sqrt(q2) * dq + abs(p.w);
+            q = vec4(q.x * q.x - q.y * q.y - q.z * q.z - q.w * q.w, 2.0 * (q.x * q.y - q.w * q.z),
+                     2.0 * (q.x * q.z - q.y * q.w), 2.0 * (q.x * q.w - q.y * q.z)) +
+                k;
+            q2 = dot(q, q);
+        }
+        double r = std::sqrt(q2);
+        return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
+    }
+};
+
+}  // namespace fraktal::blocks
