@@ -293,6 +293,66 @@ TEST(FractImport, LimitBoxCutsALogEstimate) {
     EXPECT_GT(distanceEstimate(f, vec3(0.0, 0.0, 0.2)), 0.0);
 }
 
+// Makin's hypercomplex set runs its own 4D orbit in the hypercomplex_mandelbrot estimator, from
+// c = (point, initial_waxis), N iterations, escaping at the bailout: a point is inside (estimate
+// 0) exactly where Mandelbulber2's orbit, iterated here, stays within the bailout.
+TEST(FractImport, HypercomplexRunsItsOwnOrbit) {
+    const mb2::FractImport r = importText("[main_parameters]\nformula_1 4;\nN 20;\ninitial_waxis 0,3;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_TRUE(r.preset.formula.nodes.empty());
+    const Node& e = r.preset.formula.estimator;
+    ASSERT_EQ(e.block->id, "hypercomplex_mandelbrot");
+    EXPECT_EQ(param(e, "orbit"), 20.0);
+    EXPECT_EQ(param(e, "slice"), 0.3);
+    EXPECT_EQ(param(e, "escape"), 10.0);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    int inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const vec3 point(u(random), u(random), u(random));
+        double x = point.x, y = point.y, z = point.z, w = 0.3;
+        bool escaped = false;
+        for (int i = 0; i < 20 && !escaped; ++i) {
+            const double nx = x * x - y * y - z * z - w * w + point.x, ny = 2.0 * x * y - 2.0 * w * z + point.y,
+                         nz = 2.0 * x * z - 2.0 * y * w + point.z, nw = 2.0 * x * w - 2.0 * y * z + 0.3;
+            x = nx, y = ny, z = nz, w = nw;
+            escaped = x * x + y * y + z * z + w * w >= 100.0;
+        }
+        inside += !escaped;
+        EXPECT_EQ(distanceEstimate(r.preset.formula, point) > 0.0, escaped)
+            << point.x << " " << point.y << " " << point.z;
+    }
+    EXPECT_GT(inside, 50);
+    // Beside other slots the 4D orbit has no place in the node list.
+    const mb2::FractImport hybrid =
+        importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 4;\nformula_2 8;\n");
+    EXPECT_TRUE(mentions(hybrid.unsupported, "slot 1 (hypercomplex)", "a 4D orbit beside other slots"));
+}
+
+// abox_mod11's parts keep their own windows: the tweak scale on iteration 0 only, the fold from 2.
+TEST(FractImport, AboxMod11PartsRunInTheirWindows) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 119;\n[fractal_1]\ntransf_scaleG_1 0,9;\ntransf_start_iterations_B 2;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(blockIds(r.preset.formula),
+              (std::vector<std::string>{"box_fold", "sphere_fold", "scale", "scale", "add_c"}));
+    EXPECT_EQ(r.preset.formula.nodes[0].start, 2);
+    EXPECT_EQ(r.preset.formula.nodes[0].stop, 250);
+    EXPECT_EQ(param(r.preset.formula.nodes[3], "scale"), 0.9);
+    EXPECT_EQ(r.preset.formula.nodes[3].start, 0);
+    EXPECT_EQ(r.preset.formula.nodes[3].stop, 1);
+}
+
+// What changes the image a little is imported and listed, not refused.
+TEST(FractImport, ListsWhatItMatchesApproximately) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\ncheck_for_bailout_1 false;\n"
+        "iteration_threshold_mode true;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_TRUE(mentions(r.approximated, "slot 1", "check_for_bailout off"));
+    EXPECT_TRUE(mentions(r.approximated, "detail", "iteration_threshold_mode"));
+}
+
 TEST(FractImport, BulbAngleOffsetsAreTheSineBulbsOffsets) {
     const mb2::FractImport r =
         importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 90;\nbeta_angle_offset -45;\npower 2;\n");
