@@ -5,6 +5,7 @@
 #include "formulas/amazing_surf.hpp"
 #include "formulas/axis_scale.hpp"
 #include "formulas/box_fold.hpp"
+#include "formulas/box_fold_axes.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/estimators.hpp"
 #include "formulas/hypercomplex.hpp"
@@ -38,6 +39,7 @@ constexpr std::array kBlocks{
     describe<AbsFold>(),
     describe<PlaneFold>(),
     describe<BoxFold>(),
+    describe<BoxFoldAxes>(),
     describe<SphereFold>(),
     describe<MengerFold>(),
     describe<SierpinskiFold>(),

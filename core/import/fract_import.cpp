@@ -367,20 +367,12 @@ void mapIqBulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 }
 
 // Tglad's fold of x and y (and z when `withZ`) at per-axis limits: one box fold when the limits
-// agree; else a pair of plane folds per axis, which is the same fold for |v| < 3 x limit (a box fold
-// reflects once, the pair twice beyond that).
-void tgladFold(Reader& r, NodeBuilder& b, const vec3& limit, bool withZ, std::vector<ImportItem>& approximated) {
+// agree, else the box fold per axis.
+void tgladFold(Reader&, NodeBuilder& b, const vec3& limit, bool withZ, std::vector<ImportItem>&) {
     if (withZ && limit.x == limit.y && limit.y == limit.z) return b.add("box_fold", {N::f("limit", limit.x)});
-    for (int k = 0; k < (withZ ? 3 : 2); ++k) {
-        vec3 normal(0.0);
-        normal[k] = -1.0;
-        b.add("plane_fold", {N::v("normal", normal), N::f("offset", -limit[k])});
-        normal[k] = 1.0;
-        b.add("plane_fold", {N::v("normal", normal), N::f("offset", -limit[k])});
-    }
-    approximated.push_back({r.where(),
-                            "a fold with per-axis limits as two plane folds per axis (the same within "
-                            "3 x the limit)"});
+    // Without z's fold its limit is unused (kept at 1, inside the block's range).
+    b.add("box_fold_axes",
+          {N::v("limit", vec3(limit.x, limit.y, withZ ? limit.z : 1.0)), N::f("fold_z", withZ ? 1.0 : 0.0)});
 }
 
 void mapAmazingSurfMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
