@@ -343,6 +343,30 @@ TEST(FractImport, AboxMod11PartsRunInTheirWindows) {
     EXPECT_EQ(r.preset.formula.nodes[3].stop, 1);
 }
 
+// Amazing Surf mod 2: Tglad's fold with per-axis limits (the box fold per axis, z's fold when
+// enabled), the sphere fold and scale in their windows; other fold types are named.
+TEST(FractImport, AmazingSurfMod2FoldsPerAxisInItsWindows) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 132;\n[fractal_1]\ntransf_addition_constant_111 1 0,5 2;\n"
+        "transf_start_iterations_M 3;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(blockIds(r.preset.formula), (std::vector<std::string>{"box_fold_axes", "sphere_fold", "scale", "add_c"}));
+    const Node& fold = r.preset.formula.nodes[0];
+    EXPECT_EQ(fold.values[0], vec3(1.0, 0.5, 1.0));  // z unfolded: its limit unused
+    EXPECT_EQ(param(fold, "fold_z"), 0.0);
+    EXPECT_EQ(r.preset.formula.nodes[1].start, 3);
+    // The per-axis fold is Tglad's: |v + L| - |v - L| - v on x and y, z as it was.
+    const vec3 q(1.7, -0.9, 2.5);
+    P4 p{q, 1.0};
+    fold.block->apply(p, q, fold.args());
+    EXPECT_NEAR(p.xyz.x, std::abs(q.x + 1.0) - std::abs(q.x - 1.0) - q.x, 1e-12);
+    EXPECT_NEAR(p.xyz.y, std::abs(q.y + 0.5) - std::abs(q.y - 0.5) - q.y, 1e-12);
+    EXPECT_EQ(p.xyz.z, q.z);
+    const mb2::FractImport other =
+        importText("[main_parameters]\nformula_1 132;\n[fractal_1]\naSurf3Folds_order_of_folds_1 type2;\n");
+    EXPECT_TRUE(mentions(other.unsupported, "slot 1 (amazing_surf_mod2)", "a fold other than Tglad's"));
+}
+
 // What changes the image a little is imported and listed, not refused.
 TEST(FractImport, ListsWhatItMatchesApproximately) {
     const mb2::FractImport r = importText(

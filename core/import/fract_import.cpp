@@ -443,6 +443,42 @@ void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
         window("C", "C1", [&] { b.add("scale", {N::f("scale", r.number("transf_scaleG_1"))}); });
 }
 
+// Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
+// when enabled, the offset, then the sphere fold (window M) and scale (window S), the main
+// rotation (window R); +c.
+void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c");
+    r.mustBeDefault("transf_function_enabledCx_false", "an inverted c");
+    r.mustBeDefault("transf_function_enabledAy_false", "a second xy fold");
+    r.mustBeDefault("transf_function_enabledAz_false", "a third xy fold");
+    r.mustBeDefault("transf_function_enabledCz_false", "the soft (parabolic) fold");
+    r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and y");
+    r.mustBeDefault("transf_function_enabledBz_false", "the curved offset");
+    r.mustBeDefault("transf_function_enabled_false", "the cylinder fold");
+    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
+    const std::string type = r.raw("aSurf3Folds_order_of_folds_1");
+    const bool foldXy = r.boolean("transf_function_enabledAx"), foldZ = r.boolean("transf_function_enabledAx_false");
+    if (foldXy && type != "0" && type != "type1")
+        r.unsupported("aSurf3Folds_order_of_folds_1 " + type + ": a fold other than Tglad's");
+    const vec3 limit = r.vector("transf_addition_constant_111");
+    const int start = r.integer("transf_start_iterations_A"), stop = r.integer("transf_stop_iterations_A");
+    if (foldZ && (!foldXy || start > 0 || stop < 250))
+        r.unsupported("transf_function_enabledAx_false: z's fold apart from the xy fold's window");
+    if (foldXy) b.within(start, stop, [&] { tgladFold(r, b, limit, foldZ, approximated); });
+    additionConstant(r, b);
+    if (r.boolean("transf_function_enabledAy")) {
+        b.within(r.integer("transf_start_iterations_M"), r.integer("transf_stop_iterations_M"), [&] {
+            sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
+                       std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
+        });
+        b.within(r.integer("transf_start_iterations_S"), r.integer("transf_stop_iterations_S"),
+                 [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
+    }
+    if (r.boolean("mandelbox_main_rotation_enabled"))
+        b.within(r.integer("transf_start_iterations_R"), r.integer("transf_stop_iterations_R"),
+                 [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
+}
+
 void mapKalisets1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_minimum_radius_0", "a clamped inversion radius");
     const double scale = r.number("transf_scale");
@@ -496,6 +532,7 @@ constexpr Mapping kMappings[] = {
     {103, mapPseudoKleinian},  {1001, mapTransfAddConstant}, {1002, mapTransfRotation},
     {1003, mapTransfScale},    {60, mapAboxModKali},         {74, mapKalisets1},
     {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},     {119, mapAboxMod11},
+    {132, mapAmazingSurfMod2},
 };
 
 MapFn findMapping(int id) {
