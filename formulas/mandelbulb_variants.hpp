@@ -88,9 +88,6 @@ struct MandelbulbSine {
                   -180.0,
                   180.0,
                   "Added to the azimuth phi before the power multiplies it, degrees."},
-        toggleParam("radial_derivative", false,
-                    "On: the running derivative n r^(n-1) alone (Mandelbulber2's), no bound on the azimuth's "
-                    "stretch: thinner near the poles, and the step factor is measured."),
     };
 
     static constexpr std::string_view glsl = R"(
@@ -99,7 +96,7 @@ struct MandelbulbSine {
         float theta = (atan(p.z, length(p.xy)) + radians(theta_offset)) * power;
         float phi = (atan(p.y, p.x) + radians(phi_offset)) * power;
         float cosTheta = length(p.xy) / r, cosImage = abs(cos(theta));
-        float phiStretch = radial_derivative > 0.5 ? 1.0 : cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
+        float phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
         p.w *= power * pow(r, power - 1.0) * phiStretch;
         p.xyz = pow(r, power) * vec3(cos(theta) * cos(phi), cos(theta) * sin(phi), sin(theta));
     } else {
@@ -113,9 +110,7 @@ struct MandelbulbSine {
             double theta = (std::atan2(p.xyz.z, std::hypot(p.xyz.x, p.xyz.y)) + glm::radians(a.f(1))) * power;
             double phi = (std::atan2(p.xyz.y, p.xyz.x) + glm::radians(a.f(2))) * power;
             double cosTheta = std::hypot(p.xyz.x, p.xyz.y) / r, cosImage = abs(cos(theta));
-            double phiStretch = a.f(3) > 0.5                  ? 1.0
-                                : cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta)
-                                                              : power;
+            double phiStretch = cosImage < power * cosTheta ? max(1.0, cosImage / cosTheta) : power;
             p.w *= power * std::pow(r, power - 1.0) * phiStretch;
             p.xyz = std::pow(r, power) * vec3(cos(theta) * cos(phi), cos(theta) * sin(phi), sin(theta));
         } else {
