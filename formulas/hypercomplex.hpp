@@ -1,5 +1,6 @@
 #pragma once
 #include "core/block.hpp"
+#include "formulas/quaternion.hpp"
 
 namespace fraktal::blocks {
 
@@ -43,19 +44,10 @@ struct HypercomplexMandelbrot {
     return q2 < escape * escape ? 0.0 : 0.5 * (log(r) - exp2(float(i - int(orbit))) * log(escape)) * r / dq;
 )";
     static double estimate(const P4& p, const vec3&, Args a) {
-        const double slice = a.f(0), orbit = a.f(1), escape = a.f(2);
-        vec4 k = vec4(p.xyz, slice), q = k;
-        double dq = abs(p.w), q2 = dot(q, q);
-        int i = 0;
-        for (; i < int(orbit) && q2 < escape * escape; ++i) {
-            dq = 2.0 * std::sqrt(q2) * dq + abs(p.w);
-            q = vec4(q.x * q.x - q.y * q.y - q.z * q.z - q.w * q.w, 2.0 * (q.x * q.y - q.w * q.z),
-                     2.0 * (q.x * q.z - q.y * q.w), 2.0 * (q.x * q.w - q.y * q.z)) +
-                k;
-            q2 = dot(q, q);
-        }
-        double r = std::sqrt(q2);
-        return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
+        return mandelbrotOrbitEstimate(p, a.f(0), a.f(1), a.f(2), [](const vec4& q) {
+            return vec4(q.x * q.x - q.y * q.y - q.z * q.z - q.w * q.w, 2.0 * (q.x * q.y - q.w * q.z),
+                        2.0 * (q.x * q.z - q.y * q.w), 2.0 * (q.x * q.w - q.y * q.z));
+        });
     }
 };
 

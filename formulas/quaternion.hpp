@@ -19,6 +19,24 @@ namespace fraktal::blocks {
 // G = log(escape) / 2^n; the distance to it is estimated as (G - that level) / |grad G|, which is
 // 0.5 |q| (log|q| - 2^(i - n) log(escape)) / |dq| with Hart's factor 0.5.
 
+// The Mandelbrot form's own orbit, q -> square(q) + k from q = k = (point, slice), and the
+// estimate of K_n's surface above (dq -> 2 |q| dq + |p.w|, as add_c adds dc/dp each step): the CPU
+// side of the 4D Mandelbrot sets (quaternion here, hypercomplex.hpp), each with its square.
+template <class Square>
+double mandelbrotOrbitEstimate(const P4& p, double slice, double orbit, double escape, Square square) {
+    const vec4 k = vec4(p.xyz, slice);
+    vec4 q = k;
+    double dq = abs(p.w), q2 = dot(q, q);
+    int i = 0;
+    for (; i < int(orbit) && q2 < escape * escape; ++i) {
+        dq = 2.0 * std::sqrt(q2) * dq + abs(p.w);
+        q = square(q) + k;
+        q2 = dot(q, q);
+    }
+    const double r = std::sqrt(q2);
+    return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
+}
+
 struct QuaternionJulia {
     static constexpr std::string_view id = "quaternion_julia";
     static constexpr std::string_view label = "Quaternion Julia";
@@ -110,17 +128,9 @@ struct QuaternionMandelbrot {
     return q2 < escape * escape ? 0.0 : 0.5 * (log(r) - exp2(float(i - int(orbit))) * log(escape)) * r / dq;
 )";
     static double estimate(const P4& p, const vec3&, Args a) {
-        const double slice = a.f(0), orbit = a.f(1), escape = a.f(2);
-        vec4 k = vec4(p.xyz, slice), q = k;
-        double dq = abs(p.w), q2 = dot(q, q);
-        int i = 0;
-        for (; i < int(orbit) && q2 < escape * escape; ++i) {
-            dq = 2.0 * std::sqrt(q2) * dq + abs(p.w);
-            q = vec4(q.x * q.x - dot(vec3(q.y, q.z, q.w), vec3(q.y, q.z, q.w)), 2.0 * q.x * vec3(q.y, q.z, q.w)) + k;
-            q2 = dot(q, q);
-        }
-        double r = std::sqrt(q2);
-        return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
+        return mandelbrotOrbitEstimate(p, a.f(0), a.f(1), a.f(2), [](const vec4& q) {
+            return vec4(q.x * q.x - dot(vec3(q.y, q.z, q.w), vec3(q.y, q.z, q.w)), 2.0 * q.x * vec3(q.y, q.z, q.w));
+        });
     }
 };
 

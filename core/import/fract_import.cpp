@@ -417,6 +417,19 @@ void mapAboxVsIcen1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approxim
     if (length(juliaC) > 0.0) b.add("translate", {N::v("offset", juliaC)});
 }
 
+// The steps `steps` adds, in the formula's window transf_start_iterations_<start> ..
+// transf_stop_iterations_<stop>.
+template <class Steps>
+void inWindow(Reader& r, NodeBuilder& b, const std::string& start, const std::string& stop, Steps&& steps) {
+    b.within(r.integer("transf_start_iterations_" + start), r.integer("transf_stop_iterations_" + stop), steps);
+}
+
+// The sphere fold of squared radii transf_minR2_p25 (inner) and transf_maxR2_1 (fixed).
+void squaredRadiiSphereFold(Reader& r, NodeBuilder& b) {
+    sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
+               std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
+}
+
 // Tom Lowe's box in DarkBeam's and mclarekin's form: each part runs in its own iteration window
 // (transf_start/stop_iterations_B fold, _S sphere fold, _A scale, _R rotation, _C tweak scale).
 void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
@@ -426,21 +439,15 @@ void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c");
-    auto window = [&](const std::string& start, const std::string& stop, auto&& steps) {
-        b.within(r.integer("transf_start_iterations_" + start), r.integer("transf_stop_iterations_" + stop), steps);
-    };
-    window("B", "B", [&] {
+    inWindow(r, b, "B", "B", [&] {
         tgladFold(r, b, r.vector("transf_addition_constant_111"), r.boolean("transf_function_enabled"), approximated);
     });
-    window("S", "S", [&] {
-        sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
-                   std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
-    });
-    window("A", "A", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
+    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
+    inWindow(r, b, "A", "A", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
     additionConstant(r, b);
     windowedRotation(r, b, "transf_rotation_enabled", "_R");
     if (r.number("transf_scaleG_1") != 1.0)
-        window("C", "C1", [&] { b.add("scale", {N::f("scale", r.number("transf_scaleG_1"))}); });
+        inWindow(r, b, "C", "C1", [&] { b.add("scale", {N::f("scale", r.number("transf_scaleG_1"))}); });
 }
 
 // Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
@@ -464,19 +471,14 @@ void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& appr
     const int start = r.integer("transf_start_iterations_A"), stop = r.integer("transf_stop_iterations_A");
     if (foldZ && (!foldXy || start > 0 || stop < 250))
         r.unsupported("transf_function_enabledAx_false: z's fold apart from the xy fold's window");
-    if (foldXy) b.within(start, stop, [&] { tgladFold(r, b, limit, foldZ, approximated); });
+    if (foldXy) inWindow(r, b, "A", "A", [&] { tgladFold(r, b, limit, foldZ, approximated); });
     additionConstant(r, b);
     if (r.boolean("transf_function_enabledAy")) {
-        b.within(r.integer("transf_start_iterations_M"), r.integer("transf_stop_iterations_M"), [&] {
-            sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
-                       std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
-        });
-        b.within(r.integer("transf_start_iterations_S"), r.integer("transf_stop_iterations_S"),
-                 [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
+        inWindow(r, b, "M", "M", [&] { squaredRadiiSphereFold(r, b); });
+        inWindow(r, b, "S", "S", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
     }
     if (r.boolean("mandelbox_main_rotation_enabled"))
-        b.within(r.integer("transf_start_iterations_R"), r.integer("transf_stop_iterations_R"),
-                 [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
+        inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
 }
 
 void mapKalisets1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
