@@ -372,9 +372,13 @@ TEST(FractImport, ListsWhatItMatchesApproximately) {
         importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\ncheck_for_bailout_1 false;\n");
     ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
     EXPECT_TRUE(mentions(r.approximated, "slot 1", "check_for_bailout off"));
-    // Where the surface itself differs, the file is refused by name.
-    const mb2::FractImport threshold = importText("[main_parameters]\niteration_threshold_mode true;\n");
-    EXPECT_TRUE(mentions(threshold.unsupported, "main", "iteration_threshold_mode true: a surface where orbits"));
+    // The surface of orbits bounded for N iterations: met by a box's linear estimate; refused by
+    // name for a bulb's log estimate, whose threshold reaches far out.
+    const mb2::FractImport box = importText("[main_parameters]\nformula_1 8;\niteration_threshold_mode true;\n");
+    ASSERT_TRUE(box.faithful()) << box.unsupported.front().text();
+    EXPECT_TRUE(mentions(box.approximated, "detail", "iteration_threshold_mode"));
+    const mb2::FractImport bulb = importText("[main_parameters]\niteration_threshold_mode true;\n");
+    EXPECT_TRUE(mentions(bulb.unsupported, "main", "iteration_threshold_mode true: a surface where orbits"));
 }
 
 TEST(FractImport, BulbAngleOffsetsAreTheSineBulbsOffsets) {
