@@ -876,12 +876,15 @@ FractImport importFract(const FractFile& file) {
         NodeBuilder b(r, group);
         if (formula == kHypercomplexId) {
             // A 4D orbit: fraktal's hypercomplex Mandelbrot estimator runs it (below), alone.
-            out.formulas.push_back("hypercomplex");
-            hypercomplexSlot = k;
+            // Refused (and, leniently, dropped) beside other slots or with options it lacks.
+            const size_t named = out.unsupported.size();
             if (slots.size() > 1) r.unsupported("a 4D orbit beside other slots (its estimator runs it alone)");
             if (boxFolding || sphericalFolding) r.unsupported("global folds before a 4D orbit");
             if (julia) r.unsupported("julia_mode: a hypercomplex Julia set");
             if (main.boolean("dont_add_c_constant_" + n)) r.unsupported("dont_add_c_constant: the orbit without c");
+            if (out.unsupported.size() > named) continue;
+            out.formulas.push_back("hypercomplex");
+            hypercomplexSlot = k;
             deVotes[Mb2De::Log] += runs;
             bailout = std::max(bailout, info ? info->bailout : 10.0);
             continue;

@@ -90,24 +90,28 @@ void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
     ImGui::PopTextWrapPos();
     if (!estimator) {
         // The schedule decides on which iterations the node runs (hybrids, a block on the first
-        // iterations only): structure edits.
-        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
+        // iterations only): structure edits. Two lines, so that the parameters keep their place.
+        const float field = ImGui::GetContentRegionAvail().x * 0.22f;
+        ImGui::SetNextItemWidth(field);
         if (ImGui::InputInt("Period", &n.period, 1, 1)) n.period = std::clamp(n.period, 1, kMaxPeriod);
-        helpMarker("The node runs on iterations i with i % period == phase (hybrids alternate blocks).");
-        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(field);
         if (ImGui::InputInt("Phase", &n.phase, 1, 1)) n.phase = std::clamp(n.phase, 0, n.period - 1);
         n.phase = std::clamp(n.phase, 0, n.period - 1);
-        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.3f);
-        if (ImGui::InputInt("From iteration", &n.start, 1, 10)) n.start = std::clamp(n.start, 0, kMaxIterations - 1);
-        helpMarker("The node runs from this iteration on (the first is 0).");
+        helpMarker("The node runs on iterations i with i % period == phase (hybrids alternate blocks).");
+        ImGui::SetNextItemWidth(field);
+        if (ImGui::InputInt("From", &n.start, 1, 10)) n.start = std::clamp(n.start, 0, kMaxIterations - 1);
+        ImGui::SameLine();
         bool untilSet = n.stop < kMaxIterations;
-        if (ImGui::Checkbox("Stop before iteration", &untilSet)) n.stop = untilSet ? n.start + 1 : kMaxIterations;
-        helpMarker("The node runs only on iterations before this one (a pre-transform on the first iterations).");
+        if (ImGui::Checkbox("Before", &untilSet)) n.stop = untilSet ? n.start + 1 : kMaxIterations;
         if (untilSet) {
             ImGui::SameLine();
-            ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+            ImGui::SetNextItemWidth(field);
             if (ImGui::InputInt("##stop", &n.stop, 1, 10)) n.stop = std::clamp(n.stop, 1, kMaxIterations - 1);
         }
+        helpMarker(
+            "The node runs from iteration From (the first is 0) and, ticked, only on iterations before "
+            "Before's: a pre-transform on the first iterations.");
         n.stop = std::max(n.stop, n.start + 1);
     }
     if (n.block->params.empty()) ImGui::TextDisabled("This block has no parameters.");
