@@ -55,9 +55,9 @@ run 2 render tests/bad_presets/unknown_block.json -o "$work/bad.exr" -q
 run 2 render presets/menger.json -o "$work/no_such_folder/a.exr" -q
 # The Mandelbulber2 importer: a file it maps, one it refuses (an unmapped formula), one it cannot read.
 printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 7;\nN 6;\n' > "$work/sponge.fract"
-printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 4;\n' > "$work/hyper.fract"
+printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 79;\n' > "$work/quaternion4d.fract"
 printf 'Mandelbulber 1.21;\n' > "$work/old.fract"
 run 0 import "$work/sponge.fract" -o "$work/sponge.json" -q
 run 0 render "$work/sponge.fract" -o "$work/sponge.exr" --size 24x16 --spp 1 -q
-run 2 import "$work/hyper.fract" -o "$work/hyper.json" -q
+run 2 import "$work/quaternion4d.fract" -o "$work/quaternion4d.json" -q
 run 2 import "$work/old.fract" -o "$work/old.json" -q
