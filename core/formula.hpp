@@ -21,8 +21,6 @@ struct Node : IterationSchedule {
 
     static Node make(const BlockDesc& block);  // with default parameter values
     Args args() const { return Args{values.data()}; }
-    IterationSchedule& schedule() { return *this; }
-    const IterationSchedule& schedule() const { return *this; }
 };
 
 // Limits that keep any formula bounded (no preset can hang the machine); kMaxIterations is in

@@ -53,6 +53,9 @@ struct IterationSchedule {
                std::to_string(stop);
     }
     bool operator==(const IterationSchedule&) const = default;
+    // The schedule alone, of a node that carries one (copying it between nodes).
+    IterationSchedule& schedule() { return *this; }
+    const IterationSchedule& schedule() const { return *this; }
 };
 
 }  // namespace fraktal

@@ -12,6 +12,14 @@ namespace fraktal::blocks {
 // With log_part on, the fractal's part is the log estimate 0.5 log(r) r / |dr| of escape_log
 // (power formulas: a Mandelbulb cut by a box), 0 where the orbit did not escape.
 
+// The fractal's part on the CPU (the GLSL bodies below spell it out): the linear estimate, or with
+// log_part on the log one.
+inline double fractalPart(const P4& p, double offset, double logPart) {
+    const double r = length(p.xyz);
+    if (logPart <= 0.5) return (r - offset) / abs(p.w);
+    return r > 1.0 ? 0.5 * max(std::log(r) - p.surfaceLogR, 0.0) * r / abs(p.w) : 0.0;
+}
+
 struct PlaneCombine {
     static constexpr std::string_view id = "plane_combine";
     static constexpr std::string_view label = "Plane with fractal";
@@ -43,9 +51,7 @@ struct PlaneCombine {
         const vec3 normal = a.v3(3);
         const double height = a.f(4);
         double g = dot(c, normalize(normal)) - height;
-        const double r = length(p.xyz), logPart = a.f(5);
-        double f = logPart > 0.5 ? (r > 1.0 ? 0.5 * max(std::log(r) - p.surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
-                                 : (r - offset) / abs(p.w);
+        const double f = fractalPart(p, offset, a.f(5));
         double k = std::max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
         double h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
         return sgn * (glm::mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));
@@ -83,9 +89,7 @@ struct SphereCombine {
         const vec3 center = a.v3(3);
         const double radius = a.f(4);
         double g = length(c - center) - radius;
-        const double r = length(p.xyz), logPart = a.f(5);
-        double f = logPart > 0.5 ? (r > 1.0 ? 0.5 * max(std::log(r) - p.surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
-                                 : (r - offset) / abs(p.w);
+        const double f = fractalPart(p, offset, a.f(5));
         double k = std::max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
         double h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
         return sgn * (glm::mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));
@@ -124,9 +128,7 @@ struct BoxCombine {
         const vec3 center = a.v3(3), size = a.v3(4);
         vec3 q = abs(c - center) - size;
         double g = length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
-        const double r = length(p.xyz), logPart = a.f(5);
-        double f = logPart > 0.5 ? (r > 1.0 ? 0.5 * max(std::log(r) - p.surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
-                                 : (r - offset) / abs(p.w);
+        const double f = fractalPart(p, offset, a.f(5));
         double k = std::max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
         double h = clamp(0.5 + 0.5 * sgn * (g - f) / k, 0.0, 1.0);
         return sgn * (glm::mix(sgn * g, sgn * f, h) - k * h * (1.0 - h));

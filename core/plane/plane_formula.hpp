@@ -19,8 +19,6 @@ struct PlaneNode : IterationSchedule {
 
     static PlaneNode make(const PlaneBlockDesc& block);  // with default parameter values
     Args args() const { return Args{values.data()}; }
-    IterationSchedule& schedule() { return *this; }
-    const IterationSchedule& schedule() const { return *this; }
 };
 
 struct PlaneFormula {
