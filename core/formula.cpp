@@ -34,6 +34,7 @@ std::string Formula::structureKey() const {
         key += std::string(n.block->id) + (n.enabled ? "" : "!") + "/" + n.key() + ";";
     }
     key += "=>" + std::string(estimator.block ? estimator.block->id : "");
+    if (hitInsideOnly) key += "|hit inside only";
     // A user's block is compiled from its text: editing its GLSL or its parameter list (same id)
     // is a change of structure. Built-in blocks are fixed by their id.
     auto addCustom = [&key](const BlockDesc* b) {

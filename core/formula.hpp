@@ -38,6 +38,14 @@ struct Formula {
     double boundRadius = 4.0;
     // Multiplies the estimate: below 1 makes an overshooting hybrid safe (`fraktal check`).
     double deFactor = 1.0;
+    // Where a ray stops. Off: where the estimate falls under the hit threshold (a pixel's
+    // footprint). On: only where the point is inside by the estimator's membership (an escape-time
+    // orbit that stays bounded for all iterations, a distance estimate <= 0), the step crossing into
+    // it bisected back to the threshold; the estimate only sizes the steps, never less than the
+    // threshold. Mandelbulber2's iteration_threshold_mode (render_worker.cpp, calculate_distance.cpp):
+    // around spiky sets (hypercomplex, power-2 bulbs) the log estimate falls under the threshold far
+    // from the set, and this surface is the one its artists framed.
+    bool hitInsideOnly = false;
     // Keeps the user's GLSL blocks that nodes point to alive (shared, so copies stay valid).
     CustomBlocks customBlocks;
 

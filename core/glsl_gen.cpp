@@ -101,6 +101,7 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     // One line either way, so the template keeps its line numbers.
     replaceMarker(tmpl, "//@FRAKTAL_OPTIONS",
                   f.estimator.block->usesOrbitGradient() ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
+    replaceMarker(tmpl, "//@FRAKTAL_HIT_RULE", f.hitInsideOnly ? "#define FRAKTAL_HIT_INSIDE_ONLY" : "");
     const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
     if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
 

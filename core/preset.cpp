@@ -102,6 +102,7 @@ Formula parseFormula(const ReadContext& context, const json& j) {
     f.bailout = r.number("bailout", f.bailout, 1e-3, 1e10);
     f.boundRadius = r.number("boundRadius", f.boundRadius, 1e-3, 1e4);
     f.deFactor = r.number("deFactor", f.deFactor, 1e-3, 2.0);
+    f.hitInsideOnly = r.boolean("hitInsideOnly", f.hitInsideOnly);
     if (r.has("customBlocks")) {
         const json& blocks = r.at("customBlocks");
         if (!blocks.is_array()) r.fail("expected an array of custom blocks", "customBlocks");
@@ -351,6 +352,7 @@ json presetToJson(const Preset& p) {
     if (p.formula.bailout != defaults.bailout) f["bailout"] = p.formula.bailout;
     if (p.formula.boundRadius != defaults.boundRadius) f["boundRadius"] = p.formula.boundRadius;
     if (p.formula.deFactor != defaults.deFactor) f["deFactor"] = p.formula.deFactor;
+    if (p.formula.hitInsideOnly) f["hitInsideOnly"] = true;
     if (!p.formula.customBlocks.empty()) {
         f["customBlocks"] = json::array();
         for (const auto& b : p.formula.customBlocks) f["customBlocks"].push_back(customBlockToJson(*b));
@@ -387,7 +389,7 @@ void savePresetFile(const std::filesystem::path& path, const Preset& preset) {
 std::string describeFormula(const Formula& f) {
     std::ostringstream s;
     s << "iterations " << f.iterations << ", bailout " << f.bailout << ", bound radius " << f.boundRadius
-      << ", DE factor " << f.deFactor << "\n";
+      << ", DE factor " << f.deFactor << (f.hitInsideOnly ? ", hits only inside" : "") << "\n";
     auto describeNode = [&](const Node& n, const std::string& prefix) {
         s << prefix << n.block->id << " [" << categoryName(n.block->category) << "]";
         if (!n.enabled) s << " (disabled)";

@@ -3,6 +3,7 @@
 // (blocks, order, enable, schedule) recompiles. Mirrors fraktal::evaluate() on the CPU.
 #define FRAKTAL_MAX_ITERATIONS 1000
 //@FRAKTAL_OPTIONS
+//@FRAKTAL_HIT_RULE
 
 uniform int u_iterations;
 uniform float u_bailout;

@@ -40,6 +40,9 @@ const int REFINE_STEPS = 3;
 const float REFINE_LEVEL = 0.5;
 
 void refineHit(vec3 ro, vec3 rd, float pixelAngle, float d, inout MarchState s, inout float deEvals) {
+#ifdef FRAKTAL_HIT_INSIDE_ONLY
+    return;  // the hit is the bisected crossing into the inside; the estimate's level sets are not the surface
+#endif
     for (int i = 0; i < REFINE_STEPS; ++i) {
         if (i > 0) {
             d = DE(ro + rd * s.t);
@@ -96,6 +99,12 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
         float d = DEInside(ro + rd * s.t, inside);
         deEvals += 1.0;
         s.steps += 1;
+#ifdef FRAKTAL_HIT_INSIDE_ONLY
+        // Formula::hitInsideOnly: outside, the estimate never stops the ray (a step of at least the
+        // threshold, Mandelbulber2's 1.01 detail sizes); inside, 0, so a step that reaches it is
+        // bisected back by the overshoot recovery below and a ray that starts there hits at once.
+        d = inside ? 0.0 : max(d, 1.01 * pixelAngle * s.t * u_detail);
+#endif
         // While omega > 1 every step so far was omega * lastD, so the previous step length is known.
         float previousStep = s.omega * s.lastD;
         if (s.omega > 1.0 && abs(d) + s.lastD < previousStep) {

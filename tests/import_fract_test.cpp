@@ -372,13 +372,21 @@ TEST(FractImport, ListsWhatItMatchesApproximately) {
         importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\ncheck_for_bailout_1 false;\n");
     ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
     EXPECT_TRUE(mentions(r.approximated, "slot 1", "check_for_bailout off"));
-    // The surface of orbits bounded for N iterations: met by a box's linear estimate; refused by
-    // name for a bulb's log estimate, whose threshold reaches far out.
-    const mb2::FractImport box = importText("[main_parameters]\nformula_1 8;\niteration_threshold_mode true;\n");
-    ASSERT_TRUE(box.faithful()) << box.unsupported.front().text();
-    EXPECT_TRUE(mentions(box.approximated, "detail", "iteration_threshold_mode"));
-    const mb2::FractImport bulb = importText("[main_parameters]\niteration_threshold_mode true;\n");
-    EXPECT_TRUE(mentions(bulb.unsupported, "main", "iteration_threshold_mode true: a surface where orbits"));
+}
+
+// The surface of orbits bounded for N iterations is fraktal's hits only inside, for a box's
+// linear estimate and a bulb's log one alike; without the mode the estimate's threshold stops rays.
+TEST(FractImport, IterationThresholdModeHitsOnlyInside) {
+    for (const char* formula : {"formula_1 8;\n", ""}) {
+        SCOPED_TRACE(formula);
+        const mb2::FractImport on =
+            importText(std::string("[main_parameters]\n") + formula + "iteration_threshold_mode true;\n");
+        ASSERT_TRUE(on.faithful()) << on.unsupported.front().text();
+        EXPECT_TRUE(on.preset.formula.hitInsideOnly);
+        EXPECT_FALSE(mentions(on.approximated, "detail", "iteration_threshold_mode"));
+        const mb2::FractImport off = importText(std::string("[main_parameters]\n") + formula);
+        EXPECT_FALSE(off.preset.formula.hitInsideOnly);
+    }
 }
 
 TEST(FractImport, BulbAngleOffsetsAreTheSineBulbsOffsets) {
@@ -553,7 +561,9 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {km + "hybrid33.fract", ""},
         // The hypercomplex orbit in its own 4D estimator.
         {km + "hypercomplex 03.fract", ""},
-        {"examples/hypercomplex001.fract", "iteration_threshold_mode true"},
+        // Iteration threshold mode: hits only inside (the log estimate is small far around it).
+        {"examples/hypercomplex001.fract", ""},
+        {"examples/stereoscopic 004.fract", "stereo_enabled true"},
         {"examples/quaternion4D_001.fract", "slot 1 (quaternion4d): the formula quaternion4d"},
         {"examples/boolean001.fract", "boolean_operators"},
     };

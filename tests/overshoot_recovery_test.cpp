@@ -169,5 +169,90 @@ TEST(OvershootRecovery, TheViewportsHitsLieOnTheSurface) {
     EXPECT_LE(off, surface / 20);
 }
 
+// Formula::hitInsideOnly (Mandelbulber2's iteration_threshold_mode): rays stop only where the
+// point is inside, the crossing bisected to within the hit threshold, never where the estimate
+// falls under it. The squaring ball at a threshold of 6 footprints: the plain march stops where
+// the potential estimate (half the distance) falls under it, about 12 footprints out; with hits
+// only inside every renderer stops within one threshold outside the ball's surface. The hit
+// pixels are the ball's, less at most a few rim rays whose chord is shorter than a step.
+struct BallHits {
+    int ballPixels = 0, hits = 0, missed = 0, strayHits = 0;
+    int withinThreshold = 0;  // hits whose depth lies in [exact - threshold, exact]
+};
+
+BallHits ballHits(const Preset& p, const std::vector<float>& depth) {
+    BallHits b;
+    const double aspect = double(kW) / kH, pixelAngle = p.camera.pixelAngle(kH);
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const vec3 rd = p.camera.rayDirection(2.0 * (x + 0.5) / kW - 1.0, 1.0 - 2.0 * (y + 0.5) / kH, aspect);
+            const vec3 ro = p.camera.position;
+            const double half = dot(ro, rd), h = half * half - (dot(ro, ro) - kBallRadius * kBallRadius);
+            const bool ball = h > 0.0;
+            const double exact = ball ? -half - std::sqrt(h) : 0.0;
+            const float t = depth[size_t(y) * kW + size_t(x)];
+            const bool hit = t < kMiss;
+            b.ballPixels += ball;
+            b.hits += hit;
+            if (ball && !hit) ++b.missed;
+            if (!ball && hit) ++b.strayHits;
+            if (ball && hit) {
+                const double threshold = pixelAngle * exact * p.render.detail;
+                if (t >= exact - 1.02 * threshold && t <= exact + 1e-4) ++b.withinThreshold;
+            }
+        }
+    return b;
+}
+
+TEST(HitInsideOnly, RaysStopOnTheBoundedOrbitsSurfaceNotWhereTheEstimateIsSmall) {
+    Preset p = solidBall();
+    p.formula.deFactor = 1.0;
+    p.render.detail = 6.0;
+    for (const Renderer& r : kRenderers) {
+        const BallHits plain = ballHits(p, r.depth(p));
+        Preset inside = p;
+        inside.formula.hitInsideOnly = true;
+        const BallHits b = ballHits(inside, r.depth(inside));
+        std::printf(
+            "%s: %d ball pixels; plain march %d of %d hits within a threshold of the surface; hits only "
+            "inside %d of %d (%d missed, %d stray)\n",
+            r.name, b.ballPixels, plain.withinThreshold, plain.hits, b.withinThreshold, b.hits, b.missed, b.strayHits);
+        ASSERT_GT(b.ballPixels, kW * kH / 2);
+        // The plain march stops far out (316 of 3072 hits within a threshold, 184 beside the ball).
+        EXPECT_LT(plain.withinThreshold, plain.hits / 5) << r.name;
+        EXPECT_GT(plain.strayHits, b.ballPixels / 50) << r.name;
+        EXPECT_EQ(b.strayHits, 0) << r.name;
+        EXPECT_LE(b.missed, b.ballPixels / 50) << r.name;
+        EXPECT_EQ(b.withinThreshold, b.hits) << r.name;
+    }
+}
+
+// The viewport's settled colour points with hits only inside lie within a threshold outside the
+// ball's surface (the refinement toward the estimate's level set is skipped in this mode).
+TEST(HitInsideOnly, TheViewportsHitsLieOnTheBoundedOrbitsSurface) {
+    test::glContext();
+    Preset p = solidBall();
+    p.formula.deFactor = 1.0;
+    p.formula.hitInsideOnly = true;
+    p.render.detail = 6.0;
+    viewport::Viewport view;
+    const viewport::Converged settled =
+        viewport::renderUntilSettled(view, p.formula, p.camera, p.render, p.shading, kW, kH, 400);
+    ASSERT_TRUE(settled.settled);
+    const std::vector<float> points = view.readColourPoints();
+    const double pixelAngle = p.camera.pixelAngle(kH);
+    int surface = 0, off = 0;
+    for (size_t i = 0; i + 3 < points.size(); i += 4) {
+        if (points[i + 3] == 0.0f) continue;
+        const vec3 q(points[i], points[i + 1], points[i + 2]);
+        const double threshold = pixelAngle * length(q - p.camera.position) * p.render.detail;
+        ++surface;
+        if (length(q) - kBallRadius > 1.05 * threshold || length(q) < kBallRadius - 1e-4) ++off;
+    }
+    std::printf("viewport, hits only inside: %d of %d colour points off the ball's surface\n", off, surface);
+    EXPECT_GT(surface, kW * kH / 2);
+    EXPECT_EQ(off, 0);
+}
+
 }  // namespace
 }  // namespace fraktal

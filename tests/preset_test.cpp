@@ -19,6 +19,7 @@ void expectSameFormula(const Formula& a, const Formula& b, const std::string& wh
     EXPECT_EQ(a.bailout, b.bailout) << what;
     EXPECT_EQ(a.boundRadius, b.boundRadius) << what;
     EXPECT_EQ(a.deFactor, b.deFactor) << what;
+    EXPECT_EQ(a.hitInsideOnly, b.hitInsideOnly) << what;
     ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
     for (size_t k = 0; k <= a.nodes.size(); ++k) {
         const Node& na = k < a.nodes.size() ? a.nodes[k] : a.estimator;
@@ -73,6 +74,28 @@ TEST(Preset, IterationWindowRoundTrips) {
     EXPECT_NE(reloaded.formula.structureKey(),
               loadPreset(test::sourceDir() / "presets/mandelbox.json").formula.structureKey());
     EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
+}
+
+// The hit rule is written only when on, read back exactly, and a change of structure (the
+// marcher's code differs); a value that is not true or false is refused by name.
+TEST(Preset, HitInsideOnlyRoundTrips) {
+    Preset p = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
+    EXPECT_FALSE(presetToJson(p)["formula"].contains("hitInsideOnly"));
+    const std::string plainKey = p.formula.structureKey();
+    p.formula.hitInsideOnly = true;
+    EXPECT_EQ(presetToJson(p)["formula"]["hitInsideOnly"], true);
+    const Preset reloaded = parsePreset(serializePreset(p), "saved.json");
+    EXPECT_TRUE(reloaded.formula.hitInsideOnly);
+    EXPECT_NE(reloaded.formula.structureKey(), plainKey);
+    EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
+    nlohmann::json bad = presetToJson(p);
+    bad["formula"]["hitInsideOnly"] = "yes";
+    try {
+        parsePreset(bad.dump(), "bad.json");
+        ADD_FAILURE() << "a hit rule that is not true or false was accepted";
+    } catch (const PresetError& e) {
+        EXPECT_NE(std::string(e.what()).find("hitInsideOnly"), std::string::npos) << e.what();
+    }
 }
 
 // On/off parameters (ParamType::Toggle) are written as true/false and read back exactly.

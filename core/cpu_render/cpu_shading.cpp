@@ -23,6 +23,7 @@ constexpr double kRefineLevel = 0.5;
 
 void refineHit(const Scene& scene, const vec3& ro, const vec3& rd, double pixelAngle, double d, MarchState& s,
                double& deEvals) {
+    if (scene.formula.hitInsideOnly) return;
     for (int i = 0; i < kRefineSteps; ++i) {
         if (i > 0) {
             d = scene.de(ro + rd * s.t, deEvals);
@@ -65,8 +66,9 @@ void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd,
                 MarchState& s, double& deEvals) {
     for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
         bool inside = false;
-        const double d = scene.deInside(ro + rd * s.t, inside, deEvals);
+        double d = scene.deInside(ro + rd * s.t, inside, deEvals);
         s.steps += 1;
+        if (scene.formula.hitInsideOnly) d = inside ? 0.0 : std::max(d, 1.01 * pixelAngle * s.t * scene.params.detail);
         const double previousStep = s.omega * s.lastD;
         if (s.omega > 1.0 && std::abs(d) + s.lastD < previousStep) {
             s.t -= previousStep - s.lastD;

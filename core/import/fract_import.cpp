@@ -978,20 +978,9 @@ FractImport importFract(const FractFile& file) {
     }
     p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
     if (main.boolean("interior_mode")) main.unsupported("interior_mode: the inside of the set drawn as a solid");
-    // Mandelbulber2 then stops only where the orbit stays bounded for N iterations; fraktal stops
-    // where the estimate falls under the hit threshold. With a linear estimate (boxes, IFS) that is
-    // within a pixel of the same surface (2 of 2 such examples match); with the log estimate it
-    // reaches far out around spiky sets (hypercomplex, the power-2 bulb: 0 of 9 matched).
-    if (main.boolean("iteration_threshold_mode")) {
-        if (p.formula.estimator.block && p.formula.estimator.block->id == "escape_linear")
-            out.approximated.push_back({"detail",
-                                        "iteration_threshold_mode: the surface where orbits stay bounded for N "
-                                        "iterations, met within the hit threshold by the linear estimate"});
-        else
-            main.unsupported(
-                "iteration_threshold_mode true: a surface where orbits stay bounded for N iterations "
-                "(fraktal stops at the estimate's hit threshold, far out around spiky sets)");
-    }
+    // Mandelbulber2 then stops only where the orbit stays bounded for N iterations: fraktal's hits
+    // only inside (Formula::hitInsideOnly), the estimate sizing the steps.
+    p.formula.hitInsideOnly = main.boolean("iteration_threshold_mode");
     importObjects(file, main, out);
     if (main.boolean("constant_DE_threshold"))
         out.approximated.push_back({"detail",
@@ -1014,6 +1003,10 @@ FractImport importFract(const FractFile& file) {
                          p.formula.estimator.block->membership == Membership::EscapeTime;
     p.render.detail = std::clamp(
         p.formula.deFactor / std::max(main.number("detail_level"), 1e-6) / (logType ? degree : 1.0), 1e-3, 100.0);
+    // In iteration_threshold_mode the threshold is one footprint whatever detail_level says, and a
+    // step outside is at least (1.01 - 0.5) of it times DE_factor (CalcDistThresh, RayMarching):
+    // fraktal's step floor and bisection tolerance, 1.01 hit thresholds, is the same length.
+    if (p.formula.hitInsideOnly) p.render.detail = std::clamp(0.5 * p.formula.deFactor, 1e-3, 100.0);
     importCamera(main, out);
     importLook(file, main, out);
     return out;

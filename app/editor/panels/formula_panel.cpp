@@ -179,6 +179,15 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
             s, estimatorSelected ? estimatorParamTarget(name) : paramTarget(s.selectedNode, name),
             isScalar(shown.block->params[k].type) ? std::vector<double>{v.x} : std::vector<double>{v.x, v.y, v.z});
     });
+    if (estimatorSelected) {
+        // Under the estimator's own parameters, so that the rows above keep their places.
+        ImGui::Checkbox("Hit only inside", &f.hitInsideOnly);
+        noteWidgetRect(s.layout, "checkbox:Hit only inside");
+        helpMarker(
+            "Rays stop only where the point is inside (the orbit stays bounded for every iteration, or the "
+            "estimate is below 0); the estimate only sizes the steps. Mandelbulber2's iteration threshold mode: "
+            "the surface of spiky sets (hypercomplex, power-2 bulbs), whose estimate is small far from them.");
+    }
     if (selected.block->custom) {
         if (const CustomBlock* b = findCustomBlock(f, selected.block->id); b && ImGui::Button("Edit GLSL...")) {
             s.customBlockEditor.definition = b->definition();
