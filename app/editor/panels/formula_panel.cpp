@@ -134,6 +134,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
                 .c_str(),
             s.selectedNode == est))
         s.selectedNode = est;
+    noteWidgetRect(s.layout, "row:estimator");
     if (errorNode == est) ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The closing estimator: turns the final orbit into a distance.");
     if (errorNode == est) errorUnder(error);

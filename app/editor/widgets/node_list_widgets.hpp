@@ -101,13 +101,16 @@ void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
         helpMarker("The node runs on iterations i with i % period == phase (hybrids alternate blocks).");
         ImGui::SetNextItemWidth(field);
         if (ImGui::InputInt("From", &n.start, 1, 10)) n.start = std::clamp(n.start, 0, kMaxIterations - 1);
+        shown.noteLastItem("schedule:From");
         ImGui::SameLine();
         bool untilSet = n.stop < kMaxIterations;
         if (ImGui::Checkbox("Before", &untilSet)) n.stop = untilSet ? n.start + 1 : kMaxIterations;
+        shown.noteLastItem("schedule:Before");
         if (untilSet) {
             ImGui::SameLine();
             ImGui::SetNextItemWidth(field);
             if (ImGui::InputInt("##stop", &n.stop, 1, 10)) n.stop = std::clamp(n.stop, 1, kMaxIterations - 1);
+            shown.noteLastItem("schedule:Before iteration");
         }
         helpMarker(
             "The node runs from iteration From (the first is 0) and, ticked, only on iterations before "

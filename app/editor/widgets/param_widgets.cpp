@@ -59,6 +59,11 @@ void sectionHeader(const char* title) {
     ImGui::Separator();
 }
 
+void ParamWidgetsShown::noteLastItem(std::string name) {
+    const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    widgets.push_back({std::move(name), at.x, at.y, size.x, size.y});
+}
+
 bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown) {
     const std::string name(d.name);
     ImGui::PushID(name.c_str());
@@ -92,10 +97,7 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
                 value = next;
         }
     }
-    if (shown) {
-        const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-        shown->widgets.push_back({name, at.x, at.y, size.x, size.y});
-    }
+    if (shown) shown->noteLastItem(name);
     tooltip(d, shown);
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     const bool isDefault = value == d.defaultValue;

@@ -23,6 +23,8 @@ struct ParamWidgetsShown {
     std::string tooltipParam;  // the parameter whose tooltip is shown (empty: none)
     std::string tooltip;       // its declaration's help text, as the tooltip shows it
     void clear() { *this = {}; }
+    // Records the last ImGui item as `name`.
+    void noteLastItem(std::string name);
 };
 
 // Draws the widget for one parameter; returns whether the value changed this frame. The value
