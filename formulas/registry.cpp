@@ -87,6 +87,7 @@ constexpr std::array kBlocks{
     describe<QuaternionJulia>(),
     describe<QuaternionMandelbrot>(),
     describe<HypercomplexMandelbrot>(),
+    describe<WaterCombine>(),
 };
 }  // namespace
 

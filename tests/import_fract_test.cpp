@@ -292,6 +292,43 @@ TEST(FractImport, LimitBoxCutsALogEstimate) {
     EXPECT_GT(distanceEstimate(f, vec3(0.0, 0.0, 0.2)), 0.0);
 }
 
+// Mandelbulber2's water beside a fractal: the water combine, its frame turned as the file's
+// rotation turns it (180 degrees about x: solid above the plane through the position), its
+// height relative to the wave length; files before 2.13 name it amplitude, and up to 2.12 give it
+// in world units. Waves raised by the objects around are refused by name.
+TEST(FractImport, WaterBesideTheFractal) {
+    const std::string water =
+        "[main_parameters]\nformula_1 8;\nprimitive_water_1_enabled true;\nprimitive_water_1_position 0 0 -1;\n"
+        "primitive_water_1_rotation 180 0 -60;\nprimitive_water_1_length 0,5;\nprimitive_water_1_iterations 7;\n";
+    const mb2::FractImport r = importText(water + "primitive_water_1_relative_amplitude 0,1;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Node& e = r.preset.formula.estimator;
+    ASSERT_EQ(e.block->id, "water_combine");
+    EXPECT_EQ(param(e, "wave_length"), 0.5);
+    EXPECT_EQ(param(e, "amplitude"), 0.1);
+    EXPECT_EQ(param(e, "iterations"), 7.0);
+    EXPECT_EQ(param(e, "log_part"), 0.0);
+    // The turn Mandelbulber2 builds (z by -60, then x by 180) as one: the plane's normal points down.
+    const vec3 axis = e.values[size_t(e.block->paramIndex("axis"))];
+    const double angle = param(e, "angle");
+    const vec3 up(0, 0, 1), k = normalize(axis);
+    const double co = std::cos(glm::radians(angle)), s = std::sin(glm::radians(angle));
+    const vec3 turned = up * co + glm::cross(k, up) * s + k * dot(k, up) * (1.0 - co);
+    EXPECT_NEAR(turned.z, -1.0, 1e-9);
+    // Far from the box: water above z = -1 (beyond the waves' reach of 0.1 x 0.5 x 4.3), none below.
+    EXPECT_LT(distanceEstimate(r.preset.formula, vec3(6.0, 6.0, -0.5)), 0.0);
+    EXPECT_GT(distanceEstimate(r.preset.formula, vec3(6.0, 6.0, -1.5)), 0.0);
+
+    const std::string legacy = "# Mandelbulber settings file\n# version 2.12\n# only modified parameters\n";
+    const mb2::FractImport old =
+        mb2::importFract(parseFractFile(legacy + water + "primitive_water_1_amplitude 0,05;\n", "legacy.fract"));
+    ASSERT_TRUE(old.faithful()) << old.unsupported.front().text();
+    EXPECT_DOUBLE_EQ(param(old.preset.formula.estimator, "amplitude"), 0.1);
+
+    const mb2::FractImport waves = importText(water + "primitive_water_1_wave_from_objects_enable true;\n");
+    EXPECT_TRUE(mentions(waves.unsupported, "main", "primitive water 1: an object beside the fractal"));
+}
+
 // Makin's hypercomplex set runs its own 4D orbit in the hypercomplex_mandelbrot estimator, from
 // c = (point, initial_waxis), N iterations, escaping at the bailout: a point is inside (estimate
 // 0) exactly where Mandelbulber2's orbit, iterated here, stays within the bailout.
@@ -507,7 +544,8 @@ std::string peerSettings(const fs::path& file, const std::string& out) {
                                                                    {"main_light_visibility", "0"},
                                                                    {"aux_light_visibility", "0"},
                                                                    {"main_light_volumetric_enabled", "false"},
-                                                                   {"mat1_transparency_of_surface", "0"}};
+                                                                   {"mat1_transparency_of_surface", "0"},
+                                                                   {"raytraced_reflections", "false"}};
     std::ifstream in(file);
     std::ofstream copy(out);
     std::string line;
@@ -564,6 +602,8 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         // Iteration threshold mode: hits only inside (the log estimate is small far around it).
         {"examples/hypercomplex001.fract", ""},
         {"examples/stereoscopic 004.fract", "stereo_enabled true"},
+        // A Menger sponge on Mandelbulber2's water (the water combine, its frame turned over).
+        {km + "primitive objects - water.fract", ""},
         {"examples/quaternion4D_001.fract", "slot 1 (quaternion4d): the formula quaternion4d"},
         {"examples/boolean001.fract", "boolean_operators"},
     };

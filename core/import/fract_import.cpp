@@ -61,6 +61,19 @@ glm::dmat3 rotationZYX(double z, double y, double x) {
     return rz * ry * rx;
 }
 glm::dmat3 setRotation2(const vec3& degrees) { return rotationZYX(degrees.z, degrees.y, degrees.x); }
+
+// A rotation matrix as one turn about one axis (degrees in (-180, 180]; the axis z for none).
+struct AxisAngle {
+    vec3 axis{0, 0, 1};
+    double degrees = 0.0;
+};
+AxisAngle axisAngle(const glm::dmat3& m) {
+    const glm::dquat q = glm::quat_cast(m);
+    double a = glm::degrees(glm::angle(q));
+    if (std::abs(a) < 1e-9) return {};
+    if (a > 180.0) a -= 360.0;
+    return {normalize(glm::axis(q)), a};
+}
 glm::dmat3 setRotation3(const vec3& degrees) { return rotationZYX(degrees.x, degrees.y, degrees.z); }
 
 // Reads a section's values with Mandelbulber2's defaults for what the file leaves out, and
@@ -162,13 +175,9 @@ class NodeBuilder {
 
     // One `rotate` node for a rotation matrix (any rotation is one turn about one axis).
     void rotation(const glm::dmat3& m) {
-        const glm::dquat q = glm::quat_cast(m);
-        const double angle = glm::degrees(glm::angle(q));
-        if (std::abs(angle) < 1e-9) return;
-        vec3 axis = glm::axis(q);
-        double a = angle;
-        if (a > 180.0) a -= 360.0;
-        add("rotate", {v("axis", normalize(axis)), f("angle", a)});
+        const AxisAngle turn = axisAngle(m);
+        if (std::abs(turn.degrees) < 1e-9) return;
+        add("rotate", {v("axis", turn.axis), f("angle", turn.degrees)});
     }
 
     // The nodes `steps` adds run only on iterations [start, stop) (a formula's own window,
@@ -784,17 +793,33 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
             if (!v) throw PresetError(file.source, "[main_parameters] " + key + name, "expected a number");
             return *v;
         };
-        const bool plain = length(vectorOf("rotation", "0 0 0")) == 0.0 &&
+        const bool water = type == "water";
+        const bool plain = (water || length(vectorOf("rotation", "0 0 0")) == 0.0) &&
                            parseBoolean(value("empty", "false")) != true &&
+                           parseBoolean(value("wave_from_objects_enable", "false")) != true &&
                            length(vectorOf("repeat", "0 0 0")) == 0.0 && !file.find("main_parameters", key + "normal");
-        if (!one || !plain || (type != "box" && type != "sphere" && type != "plane")) {
+        if (!one || !plain || (type != "box" && type != "sphere" && type != "plane" && !water)) {
             main.unsupported(where +
                              ": an object beside the fractal (fraktal's combine estimators join one box, "
-                             "sphere or plane, unrotated, with a linear or log DE)");
+                             "sphere or plane, unrotated, or one water surface, with a linear or log DE)");
             continue;
         }
         const vec3 position = vectorOf("position", "0 0 0");
-        if (type == "sphere") {
+        if (water) {
+            // primitives.cpp and settings.cpp: files before 2.13 name the height `amplitude`, and
+            // those up to 2.12 give it in world units (divided by the length on load).
+            const double waveLength = numberOf("length", "0.1");
+            double amplitude = numberOf("relative_amplitude", "0.2");
+            if (file.versionNumber < 2.13 - 1e-9 && file.find("main_parameters", key + "amplitude"))
+                amplitude = numberOf("amplitude", "0.2");
+            if (file.versionNumber < 2.125) amplitude /= waveLength;
+            const AxisAngle turn = axisAngle(setRotation2(vectorOf("rotation", "0 0 0")));
+            const double frame = main.given("frame_no") ? main.number("frame_no") : 0.0;
+            combine("water_combine", {N::v("center", position), N::v("axis", turn.axis), N::f("angle", turn.degrees),
+                                      N::f("wave_length", waveLength), N::f("amplitude", amplitude),
+                                      N::f("iterations", numberOf("iterations", "5")),
+                                      N::f("phase", -numberOf("anim_speed", "1") * frame * 0.1)});
+        } else if (type == "sphere") {
             combine("sphere_combine", {N::v("center", position), N::f("radius", numberOf("radius", "1"))});
         } else if (type == "plane") {
             // Solid below the plane through `position` with the normal (0, 0, 1) (unrotated).
