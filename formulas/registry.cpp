@@ -2,6 +2,7 @@
 // compile here (see the concepts in core/block.hpp).
 #include "formulas/abs_fold.hpp"
 #include "formulas/add_c.hpp"
+#include "formulas/aexion.hpp"
 #include "formulas/amazing_surf.hpp"
 #include "formulas/axis_scale.hpp"
 #include "formulas/box_fold.hpp"
@@ -88,6 +89,7 @@ constexpr std::array kBlocks{
     describe<QuaternionMandelbrot>(),
     describe<HypercomplexMandelbrot>(),
     describe<WaterCombine>(),
+    describe<AexionEstimator>(),
 };
 }  // namespace
 

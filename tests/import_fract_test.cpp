@@ -229,11 +229,11 @@ TEST(FractImport, NodeSchedulesFollowTheSequenceIterationByIteration) {
 TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
     const mb2::FractImport r = importText(
         "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 13;\nformula_weight_1 0,5;\n"
-        "primitive_water_1_enabled true;\n[fractal_2]\n");
+        "primitive_torus_1_enabled true;\n[fractal_2]\n");
     EXPECT_FALSE(r.faithful());
     EXPECT_TRUE(mentions(r.unsupported, "slot 2 (mandelbulb2)", "no fraktal blocks")) << r.unsupported.size();
     EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "formula_weight_1 0,5: a blend"));
-    EXPECT_TRUE(mentions(r.unsupported, "main", "primitive water 1"));
+    EXPECT_TRUE(mentions(r.unsupported, "main", "primitive torus 1"));
     // Values outside a block's range.
     const mb2::FractImport bulb = importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 200;\npower 40;\n");
     EXPECT_TRUE(mentions(bulb.unsupported, "slot 1 (mandelbulb)", "mandelbulb_sine.phi_offset 200 is outside"));
@@ -363,6 +363,49 @@ TEST(FractImport, HypercomplexRunsItsOwnOrbit) {
     const mb2::FractImport hybrid =
         importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 4;\nformula_2 8;\n");
     EXPECT_TRUE(mentions(hybrid.unsupported, "slot 1 (hypercomplex)", "a 4D orbit beside other slots"));
+}
+
+// Aexion's set runs its own 4D orbit in the aexion estimator: a point is inside (estimate 0)
+// exactly where Mandelbulber2's AexionIteration, written out here, stays within the bailout for N
+// iterations; cadd and the analytic derivative's scale and offset come from the slot.
+TEST(FractImport, AexionRunsItsOwnOrbit) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 19;\nN 14;\nuse_default_bailout false;\nbailout 50;\n[fractal_1]\ncadd "
+        "-1,2;\nanalyticDE_offset_1 0,2;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_TRUE(r.preset.formula.nodes.empty());
+    const Node& e = r.preset.formula.estimator;
+    ASSERT_EQ(e.block->id, "aexion");
+    EXPECT_EQ(param(e, "orbit"), 14.0);
+    EXPECT_EQ(param(e, "escape"), 50.0);
+    EXPECT_EQ(param(e, "cadd"), -1.2);
+    EXPECT_EQ(param(e, "scale"), 1.0);
+    EXPECT_EQ(param(e, "offset"), 0.2);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    int inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const vec3 point(u(random), u(random), u(random));
+        auto fold = [](const vec3& v) {
+            return std::array<double, 4>{std::abs(v.x + v.y + v.z) - 1.2, std::abs(-v.x - v.y + v.z) - 1.2,
+                                         std::abs(-v.x + v.y - v.z) - 1.2, std::abs(v.x - v.y - v.z) - 1.2};
+        };
+        const std::array<double, 4> c = fold(point);
+        auto [x, y, z, w] = c;
+        bool escaped = false;
+        for (int i = 0; i < 14 && !escaped; ++i) {
+            const double nx = x * x - y * y + 2.0 * w * z + c[0], ny = y * y - x * x + 2.0 * w * z + c[1],
+                         nz = z * z - w * w + 2.0 * x * y + c[2], nw = w * w - z * z + 2.0 * x * y + c[3];
+            x = nx, y = ny, z = nz, w = nw;
+            escaped = std::sqrt(x * x + y * y + z * z + w * w) > 50.0;
+        }
+        inside += !escaped;
+        EXPECT_EQ(distanceEstimate(r.preset.formula, point) > 0.0, escaped)
+            << point.x << " " << point.y << " " << point.z;
+    }
+    EXPECT_GT(inside, 20);  // 31 of 2000: the set is thin
+    const mb2::FractImport julia = importText("[main_parameters]\nformula_1 19;\njulia_mode true;\n");
+    EXPECT_TRUE(mentions(julia.unsupported, "slot 1 (aexion)", "julia_mode: a aexion Julia set"));
 }
 
 // abox_mod11's parts keep their own windows: the tweak scale on iteration 0 only, the fold from 2.
@@ -599,6 +642,8 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {km + "hybrid33.fract", ""},
         // The hypercomplex orbit in its own 4D estimator.
         {km + "hypercomplex 03.fract", ""},
+        // Aexion's 4D orbit in its own estimator.
+        {"examples/aexion001.fract", ""},
         // Iteration threshold mode: hits only inside (the log estimate is small far around it).
         {"examples/hypercomplex001.fract", ""},
         {"examples/stereoscopic 004.fract", "stereo_enabled true"},

@@ -38,6 +38,9 @@ constexpr FormulaInfo kFormulas[] = {
 
 // Formulas whose orbit fraktal runs in an estimator of its own (4D state).
 constexpr int kHypercomplexId = 4;
+constexpr int kAexionId = 19;
+// Formulas whose 4D orbit a fraktal estimator runs whole (alone in a file).
+bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula == kAexionId; }
 
 const FormulaInfo* findFormula(int id) {
     for (const FormulaInfo& f : kFormulas)
@@ -889,7 +892,7 @@ FractImport importFract(const FractFile& file) {
     double bailout = 0.0, pkThickness = 1.0;
     bool delta = false;
     std::array<std::vector<Node>, kSlots> groups;
-    int hypercomplexSlot = -1;
+    int ownOrbitSlot = -1;
     for (const int k : slots) {
         const std::string n = std::to_string(k + 1);
         const int formula = main.integer("formula_" + n);
@@ -899,19 +902,23 @@ FractImport importFract(const FractFile& file) {
         Reader r(file, "fractal_" + n, false, "slot " + n + " (" + formulaName(formula) + ")", out.unsupported);
         std::vector<Node>& group = groups[size_t(k)];
         NodeBuilder b(r, group);
-        if (formula == kHypercomplexId) {
-            // A 4D orbit: fraktal's hypercomplex Mandelbrot estimator runs it (below), alone.
-            // Refused (and, leniently, dropped) beside other slots or with options it lacks.
+        if (runsOwnOrbit(formula) && info) {
+            // A 4D orbit: fraktal's hypercomplex Mandelbrot or Aexion estimator runs it (below),
+            // alone. Refused (and, leniently, dropped) beside other slots or with options it lacks.
             const size_t named = out.unsupported.size();
             if (slots.size() > 1) r.unsupported("a 4D orbit beside other slots (its estimator runs it alone)");
             if (boxFolding || sphericalFolding) r.unsupported("global folds before a 4D orbit");
-            if (julia) r.unsupported("julia_mode: a hypercomplex Julia set");
-            if (main.boolean("dont_add_c_constant_" + n)) r.unsupported("dont_add_c_constant: the orbit without c");
+            if (julia) r.unsupported("julia_mode: a " + std::string(info->name) + " Julia set");
+            // Aexion adds its own folded c (cpixelAlreadyHas): dont_add_c changes nothing there.
+            if (formula == kHypercomplexId && main.boolean("dont_add_c_constant_" + n))
+                r.unsupported("dont_add_c_constant: the orbit without c");
+            if (formula == kAexionId && !r.boolean("analyticDE_enabled"))
+                r.unsupported("analyticDE_enabled false: a derivative that stays 1");
             if (out.unsupported.size() > named) continue;
-            out.formulas.push_back("hypercomplex");
-            hypercomplexSlot = k;
+            out.formulas.push_back(std::string(info->name));
+            ownOrbitSlot = k;
             deVotes[Mb2De::Log] += runs;
-            bailout = std::max(bailout, info ? info->bailout : 10.0);
+            bailout = std::max(bailout, info->bailout);
             continue;
         }
         if (boxFolding) {
@@ -990,13 +997,26 @@ FractImport importFract(const FractFile& file) {
         main.boolean("use_default_bailout") ? (bailout > 0.0 ? bailout : 100.0) : main.number("bailout");
     p.formula.bailout = std::clamp(p.formula.bailout, 1e-3, 1e10);
     p.formula.deFactor = std::clamp(main.number("DE_factor"), 1e-3, 2.0);
-    if (hypercomplexSlot >= 0) {
-        // The whole orbit in the estimator: N iterations, escaping at the bailout, from
-        // c = (point, initial_waxis).
+    if (ownOrbitSlot >= 0) {
+        // The whole orbit in the estimator: N iterations, escaping at the bailout. Hypercomplex
+        // from c = (point, initial_waxis); Aexion from the folded point, with its analytic
+        // derivative (scale and offset), which the delta DE method replaces by differences.
+        const std::string n = std::to_string(ownOrbitSlot + 1);
+        const int formula = main.integer("formula_" + n);
         std::vector<Node> nodes;
         NodeBuilder b(main, nodes);
-        b.add("hypercomplex_mandelbrot", {N::f("slice", main.number("initial_waxis")), N::f("orbit", N),
-                                          N::f("escape", std::max(p.formula.bailout, 2.0))});
+        if (formula == kHypercomplexId) {
+            b.add("hypercomplex_mandelbrot", {N::f("slice", main.number("initial_waxis")), N::f("orbit", N),
+                                              N::f("escape", std::max(p.formula.bailout, 2.0))});
+        } else {
+            Reader r(file, "fractal_" + n, false, "slot " + n + " (aexion)", out.unsupported);
+            b.add("aexion",
+                  {N::f("cadd", r.number("cadd")), N::f("orbit", N), N::f("escape", std::max(p.formula.bailout, 2.0)),
+                   N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number("analyticDE_offset_1"))});
+            if (choice.delta)
+                out.approximated.push_back(
+                    {"DE", "delta_DE_method: Aexion's estimate from its analytic derivative, not differences"});
+        }
         p.formula.nodes.clear();
         p.formula.estimator = nodes.front();
         p.formula.iterations = 1;
