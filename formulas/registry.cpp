@@ -5,6 +5,8 @@
 #include "formulas/aexion.hpp"
 #include "formulas/amazing_surf.hpp"
 #include "formulas/axis_scale.hpp"
+#include "formulas/benesi.hpp"
+#include "formulas/benesi_pine_tree.hpp"
 #include "formulas/box_fold.hpp"
 #include "formulas/box_fold_axes.hpp"
 #include "formulas/deforms.hpp"
@@ -70,6 +72,8 @@ constexpr std::array kBlocks{
     describe<AxisScale>(),
     describe<MengerScale>(),
     describe<BoxFoldAxes>(),
+    describe<BenesiPow2>(),
+    describe<BenesiPineTree>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -408,6 +408,42 @@ TEST(FractImport, AexionRunsItsOwnOrbit) {
     EXPECT_TRUE(mentions(julia.unsupported, "slot 1 (aexion)", "julia_mode: a aexion Julia set"));
 }
 
+// Benesi's power 2 is its block then c; the pine tree adds c itself (y and z swapped, scaled per
+// axis) and turns about x. An orbit escapes exactly where Mandelbulber2's BenesiPineTreeIteration,
+// written out here, passes the bailout within N iterations.
+TEST(FractImport, BenesiPowersAndThePineTree) {
+    const mb2::FractImport benesi = importText("[main_parameters]\nformula_1 20;\n");
+    ASSERT_TRUE(benesi.faithful()) << benesi.unsupported.front().text();
+    EXPECT_EQ(blockIds(benesi.preset.formula), (std::vector<std::string>{"benesi_pow2", "add_c"}));
+    const mb2::FractImport pine = importText(
+        "[main_parameters]\nformula_1 66;\nN 9;\n[fractal_1]\ntransf_constant_multiplier_100 1 0,5 0,75;\n"
+        "transf_angle_0 30;\n");
+    ASSERT_TRUE(pine.faithful()) << pine.unsupported.front().text();
+    EXPECT_EQ(blockIds(pine.preset.formula), (std::vector<std::string>{"benesi_pine_tree"}));
+    const double bailout = pine.preset.formula.bailout;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    int inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const vec3 point(u(random), u(random), u(random));
+        const vec3 c = point * vec3(1.0, 0.5, 0.75);
+        vec3 z = point;
+        bool escaped = false;
+        for (int i = 0; i < 9 && !escaped; ++i) {
+            const vec3 zz = z * z;
+            const double t = zz.y + zz.z > 0.0 ? 2.0 * z.x / std::sqrt(zz.y + zz.z) : 1.0;
+            z = vec3(zz.x - zz.y - zz.z + c.x, 2.0 * t * z.y * z.z + c.z, t * (zz.y - zz.z) + c.y);
+            const double beta = glm::radians(30.0), y = z.y;
+            z.y = y * std::cos(beta) + z.z * std::sin(beta);
+            z.z = -y * std::sin(beta) + z.z * std::cos(beta);
+            escaped = length(z) > bailout;
+        }
+        inside += !escaped;
+        EXPECT_EQ(evaluate(pine.preset.formula, point).escaped, escaped) << point.x << " " << point.y << " " << point.z;
+    }
+    EXPECT_GT(inside, 40);  // 73 of 2000
+}
+
 // abox_mod11's parts keep their own windows: the tweak scale on iteration 0 only, the fold from 2.
 TEST(FractImport, AboxMod11PartsRunInTheirWindows) {
     const mb2::FractImport r = importText(

@@ -370,6 +370,12 @@ void mapPseudoKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     additionConstant(r, b);
 }
 
+void mapBenesi(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("benesi_pow2", {}); }
+void mapBenesiPineTree(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("benesi_pine_tree",
+          {N::v("multiplier", r.vector("transf_constant_multiplier_100")), N::f("angle", r.number("transf_angle_0"))});
+}
+
 void mapQuaternion3d(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("bristorbrot", {N::f("twist", 0.0)}); }
 void mapBristorbrot(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("bristorbrot", {N::f("twist", 1.0)}); }
 
@@ -539,14 +545,18 @@ struct Mapping {
     MapFn map;
 };
 constexpr Mapping kMappings[] = {
-    {2, mapMandelbulb},        {3, mapMandelbulbPower2},     {16, mapBoxFoldBulbPow2},
-    {5, mapQuaternion3d},      {7, mapMengerSponge},         {8, mapMandelbox},
-    {10, mapKaleidoscopicIfs}, {11, mapXenodreambuie},       {21, mapBristorbrot},
-    {61, mapMengerMod1},       {62, mapQuaternion3d},        {83, mapIqBulb},
-    {103, mapPseudoKleinian},  {1001, mapTransfAddConstant}, {1002, mapTransfRotation},
-    {1003, mapTransfScale},    {60, mapAboxModKali},         {74, mapKalisets1},
-    {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},     {119, mapAboxMod11},
-    {132, mapAmazingSurfMod2},
+    {2, mapMandelbulb},        {3, mapMandelbulbPower2},
+    {16, mapBoxFoldBulbPow2},  {5, mapQuaternion3d},
+    {7, mapMengerSponge},      {8, mapMandelbox},
+    {10, mapKaleidoscopicIfs}, {11, mapXenodreambuie},
+    {21, mapBristorbrot},      {61, mapMengerMod1},
+    {62, mapQuaternion3d},     {83, mapIqBulb},
+    {103, mapPseudoKleinian},  {1001, mapTransfAddConstant},
+    {1002, mapTransfRotation}, {1003, mapTransfScale},
+    {60, mapAboxModKali},      {74, mapKalisets1},
+    {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},
+    {119, mapAboxMod11},       {132, mapAmazingSurfMod2},
+    {20, mapBenesi},           {66, mapBenesiPineTree},
 };
 
 MapFn findMapping(int id) {
