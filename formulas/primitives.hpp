@@ -41,7 +41,7 @@ struct PlaneCombine {
         toggleParam("intersect", false, "On: intersection; off: union."),
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
         ParamDecl{"normal", ParamType::Vec3, {0.0, 1.0, 0.0}, -1.0, 1.0, "Plane normal (normalised before use).", true},
-        ParamDecl{"height", ParamType::Float, {-1.0, 0.0, 0.0}, -10.0, 10.0, "Plane offset along the normal."},
+        ParamDecl{"height", ParamType::Float, {-1.0, 0.0, 0.0}, -100.0, 100.0, "Plane offset along the normal."},
         toggleParam("log_part", false, "On: the fractal's part is the log estimate (power formulas)."),
     };
 
@@ -76,8 +76,8 @@ struct SphereCombine {
             "offset", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "The fractal's part: |v| - offset over |dr|."},
         toggleParam("intersect", false, "On: intersection; off: union."),
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
-        ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Sphere centre."},
-        ParamDecl{"radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "Sphere radius."},
+        ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -100.0, 100.0, "Sphere centre."},
+        ParamDecl{"radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 100.0, "Sphere radius."},
         toggleParam("log_part", false, "On: the fractal's part is the log estimate (power formulas)."),
     };
 
@@ -112,8 +112,8 @@ struct BoxCombine {
             "offset", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "The fractal's part: |v| - offset over |dr|."},
         toggleParam("intersect", false, "On: intersection; off: union."),
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
-        ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Box centre."},
-        ParamDecl{"size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.001, 10.0, "Half-size of the box."},
+        ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -100.0, 100.0, "Box centre."},
+        ParamDecl{"size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.001, 100.0, "Half-size of the box."},
         toggleParam("log_part", false, "On: the fractal's part is the log estimate (power formulas)."),
     };
 
@@ -173,7 +173,7 @@ struct WaterCombine {
             "offset", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "The fractal's part: |v| - offset over |dr|."},
         toggleParam("intersect", false, "On: intersection; off: union."),
         ParamDecl{"blend", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 2.0, "Smooth blend radius k (0: sharp)."},
-        ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, -1.0}, -10.0, 10.0, "A point of the still water's plane."},
+        ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, -1.0}, -100.0, 100.0, "A point of the still water's plane."},
         ParamDecl{"axis",
                   ParamType::Vec3,
                   {0.0, 0.0, 1.0},
