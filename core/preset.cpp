@@ -153,7 +153,14 @@ Camera parseCamera(const ReadContext& context, const json& j, ThinLens& lens) {
     c.position = r.requiredVector<3>("position", -1e4, 1e4);
     c.target = r.requiredVector<3>("target", -1e4, 1e4);
     c.up = r.vector<3>("up", c.up, -1e4, 1e4);
-    c.fovY = r.number("fovY", c.fovY, 1.0, 170.0);
+    const std::string projection = r.string("projection", std::string(kProjectionNames[0]));
+    const auto named = std::find(std::begin(kProjectionNames), std::end(kProjectionNames), projection);
+    if (named == std::end(kProjectionNames))
+        r.fail("unknown projection \"" + projection + "\" (expected perspective, fisheye or equirectangular)",
+               "projection");
+    c.projection = Projection(named - std::begin(kProjectionNames));
+    // A pinhole sees less than half the sphere; the wide projections up to all of it.
+    c.fovY = r.number("fovY", c.fovY, 1.0, c.projection == Projection::Perspective ? 170.0 : 360.0);
     c.flipVertical = r.boolean("flipVertical", c.flipVertical);
     if (length(c.target - c.position) < 1e-9) r.fail("position and target coincide");
     if (length(glm::cross(normalize(c.target - c.position), c.up)) < 1e-6)
@@ -368,6 +375,7 @@ json presetToJson(const Preset& p) {
     if (p.camera.up != camDefaults.up) c["up"] = vecJson(p.camera.up);
     if (p.camera.fovY != camDefaults.fovY) c["fovY"] = p.camera.fovY;
     if (p.camera.flipVertical) c["flipVertical"] = true;
+    if (p.camera.projection != Projection::Perspective) c["projection"] = kProjectionNames[int(p.camera.projection)];
     j["camera"] = c;
     if (json r = renderJson(p.render); !r.empty()) j["render"] = r;
     if (json c = colorManagementJson(p.render); !c.empty()) j["colorManagement"] = c;

@@ -235,7 +235,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     pixel.y = u_imageSize.y - 1 - pixel.y;  // framebuffer row 0 is the image's bottom row
     float aspect = float(u_imageSize.x) / float(u_imageSize.y);
-    float pixelAngle = 2.0 * u_tanHalfFovY / float(u_imageSize.y);
+    float pixelAngle = projectionPixelAngle(u_tanHalfFovY, u_halfFovY, u_projection, u_imageSize);
     vec3 sumBeauty = vec3(0.0), sumDiffuseDirect = vec3(0.0), sumDiffuseIndirect = vec3(0.0),
          sumSpecular = vec3(0.0), sumEmission = vec3(0.0), sumAlbedo = vec3(0.0), sumNormal = vec3(0.0);
     float coverage = 0.0, deEvals = 0.0;
@@ -244,8 +244,8 @@ void main() {
         float jx = rng(), jy = rng();
         float ndcX = 2.0 * (float(pixel.x) + jx) / float(u_imageSize.x) - 1.0;
         float ndcY = 1.0 - 2.0 * (float(pixel.y) + jy) / float(u_imageSize.y);
-        vec3 rd = normalize(u_cameraForward + u_cameraRight * (ndcX * u_tanHalfFovY * aspect) +
-                            u_cameraUp * (ndcY * u_tanHalfFovY));
+        vec3 rd = projectionRay(ndcX, ndcY, aspect, u_cameraRight, u_cameraUp, u_cameraForward, u_tanHalfFovY,
+                                u_halfFovY, u_projection);
         vec3 ro = u_cameraPosition;
         float a1 = rng(), a2 = rng();
         thinLensRay(ro, rd, u_cameraForward, u_cameraRight, u_cameraUp, a1, a2);
@@ -354,9 +354,9 @@ void main() {
     float depth = 0.0;
     if (u_writeDepth != 0) {
         depth = 1e30;
-        vec3 rd = normalize(u_cameraForward +
-                            u_cameraRight * ((2.0 * (float(pixel.x) + 0.5) / float(u_imageSize.x) - 1.0) * u_tanHalfFovY * aspect) +
-                            u_cameraUp * ((1.0 - 2.0 * (float(pixel.y) + 0.5) / float(u_imageSize.y)) * u_tanHalfFovY));
+        vec3 rd = projectionRay(2.0 * (float(pixel.x) + 0.5) / float(u_imageSize.x) - 1.0,
+                                1.0 - 2.0 * (float(pixel.y) + 0.5) / float(u_imageSize.y), aspect, u_cameraRight,
+                                u_cameraUp, u_cameraForward, u_tanHalfFovY, u_halfFovY, u_projection);
         float tStart, tEnd;
         if (clipToBound(u_cameraPosition, rd, tStart, tEnd)) {
             MarchState s = marchStart(tStart);

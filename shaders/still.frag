@@ -76,7 +76,7 @@ void main() {
     ivec2 pixel = u_tileOrigin + ivec2(gl_FragCoord.xy);
     if (pixel.x >= u_imageSize.x || pixel.y >= u_imageSize.y) discard;
     float aspect = float(u_imageSize.x) / float(u_imageSize.y);
-    float pixelAngle = 2.0 * u_tanHalfFovY / float(u_imageSize.y);
+    float pixelAngle = projectionPixelAngle(u_tanHalfFovY, u_halfFovY, u_projection, u_imageSize);
     uint h = hashPixel(uvec2(pixel));
     vec2 rotation = vec2(float(h & 0xffffu), float(h >> 16u)) / 65536.0;
     uint hLens = hashPixel(uvec2(h, 0x9e3779b9u));
@@ -97,8 +97,8 @@ void main() {
         vec2 imagePos = vec2(pixel) + 0.5 + offset;
         float ndcX = 2.0 * imagePos.x / float(u_imageSize.x) - 1.0;
         float ndcY = 1.0 - 2.0 * imagePos.y / float(u_imageSize.y);
-        vec3 rd = normalize(u_cameraForward + u_cameraRight * (ndcX * u_tanHalfFovY * aspect) +
-                            u_cameraUp * (ndcY * u_tanHalfFovY));
+        vec3 rd = projectionRay(ndcX, ndcY, aspect, u_cameraRight, u_cameraUp, u_cameraForward, u_tanHalfFovY,
+                                u_halfFovY, u_projection);
         vec3 ro = u_cameraPosition;
         // Depth of field: the k-th point of a Halton (2, 3) sequence on the aperture, shifted per
         // pixel (Cranley-Patterson) by a second hash so that it does not follow the filter offset.

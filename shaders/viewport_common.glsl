@@ -86,31 +86,30 @@ vec3 cameraRay(vec2 imagePos) {
     float aspect = float(u_size.x) / float(u_size.y);
     float ndcX = 2.0 * imagePos.x / float(u_size.x) - 1.0;
     float ndcY = 1.0 - 2.0 * imagePos.y / float(u_size.y);
-    return normalize(u_cameraForward + u_cameraRight * (ndcX * u_tanHalfFovY * aspect) +
-                     u_cameraUp * (ndcY * u_tanHalfFovY));
+    return projectionRay(ndcX, ndcY, aspect, u_cameraRight, u_cameraUp, u_cameraForward, u_tanHalfFovY, u_halfFovY,
+                         u_projection);
 }
 
 // Where a world point lies in the image of a camera (position, basis, tan of half the vertical
-// field of view): pixels from the top-left corner, the inverse of cameraRay. t is its distance
-// from the camera. False when it is behind the camera.
+// field of view, half of it in radians, projection): pixels from the top-left corner, the inverse
+// of cameraRay. t is its distance from the camera. False when the camera does not see it.
 // `size`: the image's size in pixels (reprojection into a grid of another size passes its own).
 bool projectToImageOfSize(vec3 world, vec3 position, vec3 right, vec3 up, vec3 forward, float tanHalfFovY,
-                          ivec2 size, out vec2 imagePos, out float t) {
+                          float halfFovY, int projection, ivec2 size, out vec2 imagePos, out float t) {
     vec3 v = world - position;
-    float z = dot(v, forward);
     t = length(v);
     imagePos = vec2(-1.0);
-    if (z <= 0.0) return false;
-    float aspect = float(size.x) / float(size.y);
-    float ndcX = dot(v, right) / (z * tanHalfFovY * aspect);
-    float ndcY = dot(v, up) / (z * tanHalfFovY);
-    imagePos = vec2(0.5 * (ndcX + 1.0) * float(size.x), 0.5 * (1.0 - ndcY) * float(size.y));
+    vec2 ndc;
+    if (!projectDirection(v, right, up, forward, tanHalfFovY, halfFovY, projection, float(size.x) / float(size.y), ndc))
+        return false;
+    imagePos = vec2(0.5 * (ndc.x + 1.0) * float(size.x), 0.5 * (1.0 - ndc.y) * float(size.y));
     return true;
 }
 
 bool projectToImage(vec3 world, vec3 position, vec3 right, vec3 up, vec3 forward, float tanHalfFovY,
                     out vec2 imagePos, out float t) {
-    return projectToImageOfSize(world, position, right, up, forward, tanHalfFovY, u_size, imagePos, t);
+    return projectToImageOfSize(world, position, right, up, forward, tanHalfFovY, u_halfFovY, u_projection, u_size,
+                                imagePos, t);
 }
 
 // Mirror of fraktal::viewport::extendConeCoverage (the seed's conservative stop, 4.1).

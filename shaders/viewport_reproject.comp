@@ -41,14 +41,15 @@ layout(rgba32f) uniform writeonly image2D u_reprojCarried;   // xyz: its point, 
 // those near it.
 layout(r32ui) uniform uimage2D u_depth;
 uniform vec3 u_newCameraPosition, u_newRight, u_newUp, u_newForward;
-uniform float u_newTanHalfFovY;
+uniform float u_newTanHalfFovY, u_newHalfFovY;
+uniform int u_newProjection;
 
 // The new pixel a world point projects into, where in the image (pixels from the top-left), and
 // its distance from the new camera; false when it is behind the camera or off-screen.
 bool projectToNewView(vec3 world, out ivec2 target, out vec2 imagePos, out float t) {
     target = ivec2(0);
     if (!projectToImageOfSize(world, u_newCameraPosition, u_newRight, u_newUp, u_newForward, u_newTanHalfFovY,
-                              u_newSize, imagePos, t))
+                              u_newHalfFovY, u_newProjection, u_newSize, imagePos, t))
         return false;
     if (any(lessThan(imagePos, vec2(0.0))) || any(greaterThanEqual(imagePos, vec2(u_newSize)))) return false;
     target = ivec2(imagePos);

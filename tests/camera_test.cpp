@@ -54,5 +54,36 @@ TEST(Camera, RaysThroughTheImageEdgesSpanTheFieldOfView) {
     EXPECT_NEAR(camera.pixelAngle(360), 2.0 * std::tan(glm::radians(25.0)) / 360.0, 1e-15);
 }
 
+// The fish eye is equidistant: the angle from the view axis is fovY/2 times the distance from
+// the centre in image heights' halves, in every direction (a 180-degree dome at the top edge).
+// The equirectangular image spans 2 fovY across and fovY up whatever its aspect: at 180 degrees
+// its left and right edges look backward and its top edge straight up. Their pixels are fovY /
+// height (2 fovY / width across an equirectangular image narrower than 2:1).
+TEST(Camera, WideProjectionsSpanTheirAngles) {
+    Camera camera;
+    camera.position = vec3(0.3, 0.4, 5.0);
+    camera.target = vec3(0.0, 0.1, 0.0);
+    camera.fovY = 180.0;
+    const CameraBasis b = camera.basis();
+    const double aspect = 16.0 / 9.0;
+    camera.projection = Projection::FishEye;
+    expectNear(camera.rayDirection(0.0, 0.0, aspect), b.forward);
+    expectNear(camera.rayDirection(0.0, 1.0, aspect), b.up);
+    expectNear(camera.rayDirection(0.5 / aspect, 0.0, aspect), normalize(b.forward + b.right));
+    const vec3 corner = camera.rayDirection(0.6 / aspect, -0.8, aspect);
+    EXPECT_NEAR(std::acos(dot(corner, b.forward)), glm::radians(90.0), 1e-12);  // |(0.6, -0.8)| = 1
+    EXPECT_NEAR(dot(corner, b.right) / dot(corner, -b.up), 0.6 / 0.8, 1e-12);
+    EXPECT_NEAR(camera.pixelAngle(360, 640), glm::radians(180.0) / 360.0, 1e-15);
+
+    camera.projection = Projection::Equirectangular;
+    expectNear(camera.rayDirection(0.0, 0.0, aspect), b.forward);
+    expectNear(camera.rayDirection(1.0, 0.0, aspect), -b.forward);
+    expectNear(camera.rayDirection(0.5, 0.0, aspect), b.right);
+    expectNear(camera.rayDirection(0.5, 0.0, 2.0), b.right);  // the same whatever the aspect
+    expectNear(camera.rayDirection(0.3, 1.0, aspect), b.up);
+    EXPECT_NEAR(camera.pixelAngle(360, 720), glm::radians(180.0) / 360.0, 1e-15);
+    EXPECT_NEAR(camera.pixelAngle(360, 640), glm::radians(360.0) / 640.0, 1e-15);
+}
+
 }  // namespace
 }  // namespace fraktal

@@ -444,6 +444,21 @@ TEST(FractImport, BenesiPowersAndThePineTree) {
     EXPECT_GT(inside, 40);  // 73 of 2000
 }
 
+// Mandelbulber2's fish eye and equirectangular cameras: fraktal's projections, 180 x fov degrees
+// up (fov is the internal one before 2.21, 2 tan of half the degrees from 2.21 on).
+TEST(FractImport, WideCamerasAreFraktalsProjections) {
+    const mb2::FractImport fish = importText("[main_parameters]\nperspective_type fish_eye;\nfov 0,7;\n");
+    ASSERT_TRUE(fish.faithful()) << fish.unsupported.front().text();
+    EXPECT_EQ(fish.preset.camera.projection, Projection::FishEye);
+    EXPECT_NEAR(fish.preset.camera.fovY, 126.0, 1e-9);
+    const mb2::FractImport panorama = importText("[main_parameters]\nperspective_type 2;\n");
+    ASSERT_TRUE(panorama.faithful()) << panorama.unsupported.front().text();
+    EXPECT_EQ(panorama.preset.camera.projection, Projection::Equirectangular);
+    EXPECT_NEAR(panorama.preset.camera.fovY, 180.0, 1e-9);
+    const mb2::FractImport cut = importText("[main_parameters]\nperspective_type 3;\n");
+    EXPECT_TRUE(mentions(cut.unsupported, "main", "perspective_type 3"));
+}
+
 // abox_mod11's parts keep their own windows: the tweak scale on iteration 0 only, the fold from 2.
 TEST(FractImport, AboxMod11PartsRunInTheirWindows) {
     const mb2::FractImport r = importText(
@@ -651,6 +666,7 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         << "mandelbulber2 is missing: scripts/install-deps.sh installs it";
     const std::string km = "examples/Krzysztof Marczak collection - license Creative Commons (CC-BY 4.0)/";
     const std::string gm = "examples/Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/";
+    const std::string rp = "examples/Robert Pancoast collection - license Creative Commons (CC-BY 4.0)/";
     const std::vector<Expected> cases = {
         {"toolbar/mandelbox scale 2.fract", ""},
         {"toolbar/mandelbox scale -2.fract", ""},
@@ -678,6 +694,8 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {km + "hybrid33.fract", ""},
         // The hypercomplex orbit in its own 4D estimator.
         {km + "hypercomplex 03.fract", ""},
+        // An equirectangular panorama (fraktal's equirectangular projection).
+        {rp + "icoastahedron.fract", ""},
         // Aexion's 4D orbit in its own estimator.
         {"examples/aexion001.fract", ""},
         // Iteration threshold mode: hits only inside (the log estimate is small far around it).

@@ -98,6 +98,34 @@ TEST(Preset, HitInsideOnlyRoundTrips) {
     }
 }
 
+// The camera's projection is written only when not the pinhole and read back exactly; the wide
+// projections may see up to 360 degrees, a pinhole 170; an unknown name is refused by name.
+TEST(Preset, CameraProjectionRoundTrips) {
+    Preset p = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
+    EXPECT_FALSE(presetToJson(p)["camera"].contains("projection"));
+    p.camera.projection = Projection::Equirectangular;
+    p.camera.fovY = 180.0;
+    EXPECT_EQ(presetToJson(p)["camera"]["projection"], "equirectangular");
+    const Preset reloaded = parsePreset(serializePreset(p), "saved.json");
+    EXPECT_EQ(reloaded.camera.projection, Projection::Equirectangular);
+    EXPECT_EQ(reloaded.camera.fovY, 180.0);
+    EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
+    auto refused = [](nlohmann::json j, const std::string& expected) {
+        try {
+            parsePreset(j.dump(), "bad.json");
+            ADD_FAILURE() << "accepted " << j["camera"].dump();
+        } catch (const PresetError& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+    };
+    nlohmann::json bad = presetToJson(p);
+    bad["camera"]["projection"] = "cylindrical";
+    refused(bad, "unknown projection \"cylindrical\"");
+    bad = presetToJson(p);
+    bad["camera"].erase("projection");
+    refused(bad, "fovY");  // 180 degrees through a pinhole
+}
+
 // On/off parameters (ParamType::Toggle) are written as true/false and read back exactly.
 TEST(PresetToggle, RoundTripsAsTrueAndFalse) {
     Preset p = loadPreset(test::sourceDir() / "presets/mandelbulb.json");

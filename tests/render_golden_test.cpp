@@ -91,6 +91,35 @@ TEST_P(GoldenTest, GlMatchesCpuReference) {
 INSTANTIATE_TEST_SUITE_P(ShippedPresets, GoldenTest, ::testing::ValuesIn(test::shippedPresets()),
                          [](const auto& info) { return info.param.stem().string(); });
 
+// The wide projections (shaders/camera.glsl against Camera::rayDirection): the Mandelbulb seen
+// through a 180-degree fish eye and as a 360-degree equirectangular panorama from close by, on the
+// GL still and the CPU reference alike.
+TEST(GoldenProjections, FishEyeAndEquirectangularGlMatchCpuReference) {
+    Preset preset = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
+    preset.camera.position = normalize(preset.camera.position) * 1.6;
+    preset.camera.fovY = 180.0;
+    const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
+    const DisplayTransform display(color, "scene_linear", "sRGB", "Standard", 0.0);
+    for (Projection projection : {Projection::FishEye, Projection::Equirectangular}) {
+        preset.camera.projection = projection;
+        RenderSettings r = preset.render;
+        r.width = projection == Projection::FishEye ? 64 : 128;
+        r.height = 64;
+        r.spp = 1;
+        const ShadingParams shading = resolveShading(preset.shading, r, preset.formula);
+        const DisplayImage gpu = toDisplay(renderGL(preset, r, shading), display);
+        const DisplayImage cpu = toDisplay(renderReference(preset.formula, preset.camera, r, shading), display);
+        const double p = psnr(gpu.rgb, cpu.rgb);
+        const char* name = kProjectionNames[int(projection)].data();
+        std::printf("%s: PSNR %.1f dB, coverage GL %.3f CPU %.3f\n", name, p, gpu.coverage, cpu.coverage);
+        EXPECT_GE(p, 35.0) << name;
+        EXPECT_NEAR(gpu.coverage, cpu.coverage, 0.03) << name;
+        // The bulb fills part of the view, not all of it (0.18 of the dome, 0.09 of the panorama).
+        EXPECT_GT(cpu.coverage, 0.05) << name;
+        EXPECT_LT(cpu.coverage, 0.9) << name;
+    }
+}
+
 // Adaptive sampling (shaders/still.frag) stops where a pixel's samples agree: flat sky and smooth
 // surface stop at two samples, edges take all of them, and the image stays that of fixed sampling.
 TEST(StillAdaptive, StopsWhereSamplesAgreeAndKeepsTheImage) {

@@ -177,7 +177,8 @@ struct Tracer {
         vec3 rd = camera.rayDirection(ndcX, ndcY, aspect);
         vec3 ro = camera.position;
         const double a1 = rng.next(), a2 = rng.next();
-        if (lighting.lens.enabled()) {
+        // The wide projections are pinholes (setLensUniforms).
+        if (lighting.lens.enabled() && camera.projection == Projection::Perspective) {
             const CameraBasis basis = camera.basis();
             const double focus = focusDistanceOf(lighting.lens, camera);
             const vec3 focusPoint = ro + rd * (focus / dot(rd, basis.forward));
@@ -363,7 +364,7 @@ PathImage pathTraceReference(const PathScene& scene, int firstSample, int sample
     const int w = scene.render.width, h = scene.render.height;
     image.resize(w, h);
     image.spp = samples;
-    const Tracer tracer{scene, cpu::Scene{scene.formula, scene.shading}, scene.camera.pixelAngle(h)};
+    const Tracer tracer{scene, cpu::Scene{scene.formula, scene.shading}, scene.camera.pixelAngle(h, w)};
     std::atomic<int> nextRow{0};
     auto worker = [&] {
         for (int y = nextRow++; y < h; y = nextRow++)

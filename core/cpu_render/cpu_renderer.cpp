@@ -15,7 +15,7 @@ ImageStrip renderReference(const Formula& formula, const Camera& camera, const R
     image.resize(render.width, 0, render.height);
     const cpu::Scene scene{formula, shading};
     const double aspect = double(render.width) / double(render.height);
-    const double pixelAngle = camera.pixelAngle(render.height);
+    const double pixelAngle = camera.pixelAngle(render.height, render.width);
 
     auto renderPixel = [&](int x, int y) {
         const size_t i = (size_t(y) * size_t(render.width) + size_t(x)) * 4;

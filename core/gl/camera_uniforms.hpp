@@ -12,14 +12,15 @@
 namespace fraktal::gl {
 
 struct CameraUniformNames {
-    const char *position, *right, *up, *forward, *tanHalfFovY;
+    const char *position, *right, *up, *forward, *tanHalfFovY, *halfFovY, *projection;
 };
 inline constexpr CameraUniformNames kCameraUniforms{"u_cameraPosition", "u_cameraRight", "u_cameraUp",
-                                                    "u_cameraForward", "u_tanHalfFovY"};
+                                                    "u_cameraForward",  "u_tanHalfFovY", "u_halfFovY",
+                                                    "u_projection"};
 
 // Their locations in one program, looked up once when it is built (-1: not in the program).
 struct CameraLocations {
-    GLint position = -1, right = -1, up = -1, forward = -1, tanHalfFovY = -1;
+    GLint position = -1, right = -1, up = -1, forward = -1, tanHalfFovY = -1, halfFovY = -1, projection = -1;
     CameraLocations() = default;
     explicit CameraLocations(GLuint program, const CameraUniformNames& names = kCameraUniforms);
 };

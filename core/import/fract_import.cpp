@@ -645,13 +645,27 @@ void importCamera(Reader& main, FractImport& out) {
     // Three-point perspective: ray = normalize(u fov, 1, v fov) with v in [-1/2, 1/2] over the
     // image height, so tan(fovY / 2) = fov / 2; files from 2.21 store the angle in degrees.
     c.fovY = file.versionNumber >= 2.21 - 1e-9 ? fov : glm::degrees(2.0 * std::atan(fov / 2.0));
-    if (!(c.fovY >= 1.0 && c.fovY <= 170.0)) {
-        main.unsupported("fov " + fmt(fov) + ": a field of view of " + fmt(c.fovY) + " degrees (fraktal: 1 to 170)");
-        c.fovY = std::clamp(c.fovY, 1.0, 170.0);
-    }
+    // The wide projections (projection_3d.cpp, CalculateViewVector) turn by fov x pi/2 from the
+    // centre to the top edge, with that same internal fov (2 tan of half the angle from 2.21 on):
+    // fraktal's fovY is 180 fov degrees. Equirectangular's image is taken as 2:1 there whatever its
+    // size; fraktal's pixels are square in angle (the same picture at 2:1).
     const std::string perspective = main.raw("perspective_type");
-    if (perspective != "0" && perspective != "three_point")
-        main.unsupported("perspective_type " + perspective + ": fraktal's camera is a three-point perspective");
+    const bool fishEye = perspective == "1" || perspective == "fish_eye";
+    const bool equirectangular = perspective == "2" || perspective == "equirectangular";
+    if (fishEye || equirectangular) {
+        const double internal = file.versionNumber >= 2.21 - 1e-9 ? 2.0 * std::tan(glm::radians(fov) * 0.5) : fov;
+        c.projection = fishEye ? Projection::FishEye : Projection::Equirectangular;
+        c.fovY = 180.0 * internal;
+    } else if (perspective != "0" && perspective != "three_point") {
+        main.unsupported("perspective_type " + perspective +
+                         ": fraktal's cameras are perspective, fish eye and equirectangular");
+    }
+    const double widest = c.projection == Projection::Perspective ? 170.0 : 360.0;
+    if (!(c.fovY >= 1.0 && c.fovY <= widest)) {
+        main.unsupported("fov " + fmt(fov) + ": a field of view of " + fmt(c.fovY) + " degrees (fraktal: 1 to " +
+                         fmt(widest) + ")");
+        c.fovY = std::clamp(c.fovY, 1.0, widest);
+    }
     main.mustBeDefault("sweet_spot_horizontal_angle", "a view turned after the frame");
     main.mustBeDefault("sweet_spot_vertical_angle", "a view turned after the frame");
     main.mustBeDefault("stereo_enabled", "stereo pairs");

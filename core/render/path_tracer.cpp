@@ -15,7 +15,8 @@ static_assert(kMaxLightsInShader == kMaxLights);
 
 std::string pathTraceProgramSource() {
     return std::string(shaderTemplate("march.glsl")) + "\n" + std::string(shaderTemplate("shade.glsl")) + "\n" +
-           std::string(shaderTemplate("lens.glsl")) + "\n" + std::string(shaderTemplate("pathtrace.frag"));
+           std::string(shaderTemplate("camera.glsl")) + "\n" + std::string(shaderTemplate("lens.glsl")) + "\n" +
+           std::string(shaderTemplate("pathtrace.frag"));
 }
 
 template <class T>

@@ -15,7 +15,8 @@ constexpr int kFilterTableSize = 65;  // FILTER_TABLE_SIZE in shaders/still.frag
 
 std::string stillProgramSource() {
     return std::string(shaderTemplate("march.glsl")) + "\n" + std::string(shaderTemplate("shade.glsl")) + "\n" +
-           std::string(shaderTemplate("lens.glsl")) + "\n" + std::string(shaderTemplate("still.frag"));
+           std::string(shaderTemplate("camera.glsl")) + "\n" + std::string(shaderTemplate("lens.glsl")) + "\n" +
+           std::string(shaderTemplate("still.frag"));
 }
 }  // namespace
 

@@ -44,7 +44,8 @@ std::string formulaValuesKey(const Formula& f) {
 }
 
 bool sameCamera(const Camera& a, const Camera& b) {
-    return a.position == b.position && a.target == b.target && a.up == b.up && a.fovY == b.fovY;
+    return a.position == b.position && a.target == b.target && a.up == b.up && a.fovY == b.fovY &&
+           a.projection == b.projection;
 }
 
 FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool reprojectEnabled,

@@ -20,7 +20,8 @@ std::string concat(std::initializer_list<const char*> names) {
 // A compute pass without the formula, from viewport_common.glsl and its own file.
 gl::Program compileViewportProgram(const char* name, const char* defines = "") {
     const GeneratedFormula none;
-    return gl::compileCompute(assembleShader(none, name, concat({"lens.glsl", "viewport_common.glsl", name}), defines));
+    return gl::compileCompute(
+        assembleShader(none, name, concat({"camera.glsl", "lens.glsl", "viewport_common.glsl", name}), defines));
 }
 
 Pass withUniforms(gl::Program program) {
@@ -49,7 +50,8 @@ FormulaProgram compileFormulaPass(const Formula& f, const GeneratedFormula& g, c
 
 PassUniforms::PassUniforms(GLuint program)
     : camera(program),
-      newCamera(program, {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY"}),
+      newCamera(program, {"u_newCameraPosition", "u_newRight", "u_newUp", "u_newForward", "u_newTanHalfFovY",
+                          "u_newHalfFovY", "u_newProjection"}),
       lens(program) {
     const auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
     size = at("u_size");
@@ -85,18 +87,18 @@ void FormulaProgram::use(const MarchState& state, const Formula& f, const Shadin
 
 ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey()) {
     const GeneratedFormula g = generateFormulaGLSL(f);
-    const std::initializer_list<const char*> resume = {"march.glsl", "shade.glsl", "lens.glsl", "viewport_common.glsl",
-                                                       "viewport_march.comp"};
+    const std::initializer_list<const char*> resume = {"march.glsl", "shade.glsl",           "camera.glsl",
+                                                       "lens.glsl",  "viewport_common.glsl", "viewport_march.comp"};
     march = compileFormulaPass(f, g, "viewport_march.comp", "#define START 0\n#define FROM_LIST 0", resume);
     marchFromList = compileFormulaPass(f, g, "viewport_march.comp", "#define START 0\n#define FROM_LIST 1", resume);
     marchFromStart = compileFormulaPass(f, g, "viewport_march.comp", "#define START 1\n#define FROM_LIST 0",
-                                        {"march.glsl", "shade.glsl", "lens.glsl", "viewport_common.glsl",
+                                        {"march.glsl", "shade.glsl", "camera.glsl", "lens.glsl", "viewport_common.glsl",
                                          "viewport_start.glsl", "viewport_march.comp"});
-    shade =
-        compileFormulaPass(f, g, "viewport_shade.comp", "",
-                           {"march.glsl", "shade.glsl", "lens.glsl", "viewport_common.glsl", "viewport_shade.comp"});
+    shade = compileFormulaPass(
+        f, g, "viewport_shade.comp", "",
+        {"march.glsl", "shade.glsl", "camera.glsl", "lens.glsl", "viewport_common.glsl", "viewport_shade.comp"});
     cone = compileFormulaPass(f, g, "viewport_cone.comp", "",
-                              {"march.glsl", "lens.glsl", "viewport_common.glsl", "viewport_cone.comp"});
+                              {"march.glsl", "camera.glsl", "lens.glsl", "viewport_common.glsl", "viewport_cone.comp"});
     accumulateAtRest = compileViewportPass("viewport_accumulate.comp", "#define AT_REST 1");
     accumulateMoving = compileViewportPass("viewport_accumulate.comp", "#define AT_REST 0");
     resolve = compileViewportPass("viewport_resolve.comp");
@@ -128,7 +130,7 @@ void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, in
     gl::setCameraUniforms(at.camera, camera);
     gl::setLensUniforms(at.lens, lens, camera);
     glUniform2i(at.size, width, height);
-    glUniform1f(at.pixelAngle, float(camera.pixelAngle(height)));
+    glUniform1f(at.pixelAngle, float(camera.pixelAngle(height, width)));
 }
 
 }  // namespace fraktal::viewport

@@ -2,6 +2,7 @@
 // saved view slots (undoable, saved with the preset).
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 #include "app/editor/input/fly_speed.hpp"
@@ -30,7 +31,8 @@ void drawCameraTab(EditorState& s) {
             "Speed follows the distance to the surface.");
     ImGui::PopTextWrapPos();
 
-    const double fovLo = 5.0, fovHi = 120.0;
+    // A pinhole up to 120 degrees (wider stretches the edges); the wide projections to the whole sphere.
+    const double fovLo = 5.0, fovHi = cam.projection == Projection::Perspective ? 120.0 : 360.0;
     const auto keyValue = [](const vec3& v) { return std::vector<double>{v.x, v.y, v.z}; };
     keyMarker(s, "camera.fovY", {cam.fovY});
     ImGui::DragScalar("Field of view", ImGuiDataType_Double, &cam.fovY, 0.2f, &fovLo, &fovHi, "%.1f deg",
@@ -45,6 +47,20 @@ void drawCameraTab(EditorState& s) {
     noteWidgetRect(s.layout, "button:Reset view");
     ImGui::SameLine();
     ImGui::TextDisabled("(Home)");
+    // On the same line, so that the rows below keep their places.
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    int projection = int(cam.projection);
+    const char* projections[] = {"Perspective", "Fish eye", "Equirectangular"};
+    if (ImGui::Combo("Projection", &projection, projections, IM_ARRAYSIZE(projections))) {
+        cam.projection = Projection(projection);
+        if (cam.projection == Projection::Perspective) cam.fovY = std::min(cam.fovY, 120.0);
+    }
+    noteWidgetRect(s.layout, "combo:Projection");
+    helpMarker(
+        "Perspective: a pinhole. Fish eye: the angle from the centre grows with the distance from it (a dome "
+        "at 180 degrees). Equirectangular: longitude across, latitude up; a 2:1 image at 180 degrees is a 360 "
+        "panorama. The wide projections have no depth of field.");
 
     sectionHeader("Fly speed");
     const DistanceAt de = s.eyeDistance.of(f);
