@@ -147,23 +147,36 @@ TEST(OvershootRecovery, AnOvershootingBulbKeepsItsDepth) {
 // point a step left from is known from that state, so it recovers as the still does. Its colour
 // points at rest lie on the ball's surface, within two pixel footprints (without the recovery
 // 2608 of 2864 did not).
-TEST(OvershootRecovery, TheViewportsHitsLieOnTheSurface) {
+// The settled viewport's colour points of `scene`: how many lie on a surface, and how many of those
+// `isOff` (the point and its pixel footprint times the hit threshold) rejects.
+struct ColourPoints {
+    int surface = 0, off = 0;
+};
+template <class IsOff>
+ColourPoints settledColourPoints(const Preset& scene, IsOff isOff) {
     test::glContext();
-    const Preset ball = solidBall();
     viewport::Viewport view;
     const viewport::Converged settled =
-        viewport::renderUntilSettled(view, ball.formula, ball.camera, ball.render, ball.shading, kW, kH, 400);
-    ASSERT_TRUE(settled.settled);
+        viewport::renderUntilSettled(view, scene.formula, scene.camera, scene.render, scene.shading, kW, kH, 400);
+    EXPECT_TRUE(settled.settled);
     const std::vector<float> points = view.readColourPoints();
-    const double pixelAngle = ball.camera.pixelAngle(kH);
-    int surface = 0, off = 0;
+    const double pixelAngle = scene.camera.pixelAngle(kH);
+    ColourPoints c;
     for (size_t i = 0; i + 3 < points.size(); i += 4) {
         if (points[i + 3] == 0.0f) continue;
-        const vec3 p(points[i], points[i + 1], points[i + 2]);
-        const double footprint = pixelAngle * length(p - ball.camera.position) * std::max(ball.render.detail, 1.0);
-        ++surface;
-        if (std::abs(length(p) - kBallRadius) > 2.0 * footprint) ++off;
+        const vec3 q(points[i], points[i + 1], points[i + 2]);
+        ++c.surface;
+        c.off += isOff(q, pixelAngle * length(q - scene.camera.position) * scene.render.detail);
     }
+    return c;
+}
+
+TEST(OvershootRecovery, TheViewportsHitsLieOnTheSurface) {
+    const Preset ball = solidBall();
+    const auto [surface, off] = settledColourPoints(ball, [&](const vec3& q, double threshold) {
+        const double footprint = threshold / ball.render.detail * std::max(ball.render.detail, 1.0);
+        return std::abs(length(q) - kBallRadius) > 2.0 * footprint;
+    });
     std::printf("viewport: %d of %d colour points off the ball's surface\n", off, surface);
     EXPECT_GT(surface, kW * kH / 2);
     EXPECT_LE(off, surface / 20);
@@ -230,25 +243,13 @@ TEST(HitInsideOnly, RaysStopOnTheBoundedOrbitsSurfaceNotWhereTheEstimateIsSmall)
 // The viewport's settled colour points with hits only inside lie within a threshold outside the
 // ball's surface (the refinement toward the estimate's level set is skipped in this mode).
 TEST(HitInsideOnly, TheViewportsHitsLieOnTheBoundedOrbitsSurface) {
-    test::glContext();
     Preset p = solidBall();
     p.formula.deFactor = 1.0;
     p.formula.hitInsideOnly = true;
     p.render.detail = 6.0;
-    viewport::Viewport view;
-    const viewport::Converged settled =
-        viewport::renderUntilSettled(view, p.formula, p.camera, p.render, p.shading, kW, kH, 400);
-    ASSERT_TRUE(settled.settled);
-    const std::vector<float> points = view.readColourPoints();
-    const double pixelAngle = p.camera.pixelAngle(kH);
-    int surface = 0, off = 0;
-    for (size_t i = 0; i + 3 < points.size(); i += 4) {
-        if (points[i + 3] == 0.0f) continue;
-        const vec3 q(points[i], points[i + 1], points[i + 2]);
-        const double threshold = pixelAngle * length(q - p.camera.position) * p.render.detail;
-        ++surface;
-        if (length(q) - kBallRadius > 1.05 * threshold || length(q) < kBallRadius - 1e-4) ++off;
-    }
+    const auto [surface, off] = settledColourPoints(p, [](const vec3& q, double threshold) {
+        return length(q) - kBallRadius > 1.05 * threshold || length(q) < kBallRadius - 1e-4;
+    });
     std::printf("viewport, hits only inside: %d of %d colour points off the ball's surface\n", off, surface);
     EXPECT_GT(surface, kW * kH / 2);
     EXPECT_EQ(off, 0);

@@ -41,6 +41,27 @@ std::vector<float> freshRender(const Scene& s, const Camera& camera, ViewportOpt
     return c.image;
 }
 
+// An orbit of 12 reprojected frames, then the camera stops: the settled image of the moving
+// viewport, the fresh viewport's for the same view, and that view.
+struct AfterOrbit {
+    Converged settled;
+    std::vector<float> fresh;
+    Camera camera;
+};
+
+AfterOrbit orbitThenSettle(const Scene& s, const ViewportOptions& options) {
+    AfterOrbit a;
+    Viewport moving(options);
+    a.camera = s.preset.camera;
+    for (int f = 0; f <= 12; ++f) {
+        a.camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, f, 1.0);
+        moving.render(s.preset.formula, a.camera, s.render, s.preset.shading, kW, kH);
+    }
+    a.settled = renderUntilSettled(moving, s.preset.formula, a.camera, s.render, s.preset.shading, kW, kH, kMaxFrames);
+    a.fresh = freshRender(s, a.camera, options);
+    return a;
+}
+
 // After an orbit of reprojected frames the camera stops; the progressive image must converge to
 // what a fresh viewport renders for that view.
 TEST(ViewportGL, ReprojectedImageConvergesToFreshRenderForEveryPreset) {
@@ -49,18 +70,9 @@ TEST(ViewportGL, ReprojectedImageConvergesToFreshRenderForEveryPreset) {
     options.maxSamples = 4;
     for (const auto& path : test::shippedPresets()) {
         SCOPED_TRACE(path.filename().string());
-        const Scene s = loadScene(path);
-        Viewport moving(options);
-        Camera camera = s.preset.camera;
-        for (int f = 0; f <= 12; ++f) {
-            camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, f, 1.0);
-            moving.render(s.preset.formula, camera, s.render, s.preset.shading, kW, kH);
-        }
-        Converged settled =
-            renderUntilSettled(moving, s.preset.formula, camera, s.render, s.preset.shading, kW, kH, kMaxFrames);
-        ASSERT_TRUE(settled.settled);
-        const std::vector<float> reference = freshRender(s, camera, options);
-        EXPECT_GE(displayPsnr(settled.image, reference), 40.0);
+        const AfterOrbit a = orbitThenSettle(loadScene(path), options);
+        ASSERT_TRUE(a.settled.settled);
+        EXPECT_GE(displayPsnr(a.settled.image, a.fresh), 40.0);
     }
 }
 
@@ -76,17 +88,11 @@ TEST(ViewportGL, ReprojectedImageConvergesToFreshRenderThroughWideProjections) {
     for (Projection projection : {Projection::FishEye, Projection::Equirectangular}) {
         SCOPED_TRACE(kProjectionNames[int(projection)]);
         s.preset.camera.projection = projection;
-        Viewport moving(options);
-        Camera camera = s.preset.camera;
-        for (int f = 0; f <= 12; ++f) {
-            camera = cameraOnPath(s.preset.camera, CameraPath::Orbit, f, 1.0);
-            moving.render(s.preset.formula, camera, s.render, s.preset.shading, kW, kH);
-        }
-        Converged settled =
-            renderUntilSettled(moving, s.preset.formula, camera, s.render, s.preset.shading, kW, kH, kMaxFrames);
-        ASSERT_TRUE(settled.settled);
-        const std::vector<float> reference = freshRender(s, camera, options);
-        const double p = displayPsnr(settled.image, reference);
+        const AfterOrbit a = orbitThenSettle(s, options);
+        ASSERT_TRUE(a.settled.settled);
+        const Camera& camera = a.camera;
+        const Converged& settled = a.settled;
+        const double p = displayPsnr(settled.image, a.fresh);
         // The viewport draws the projection the CPU reference draws: the same share of hits.
         RenderSettings r = s.render;
         r.width = kW;
