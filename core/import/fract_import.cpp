@@ -647,8 +647,8 @@ void importCamera(Reader& main, FractImport& out) {
     c.fovY = file.versionNumber >= 2.21 - 1e-9 ? fov : glm::degrees(2.0 * std::atan(fov / 2.0));
     // The wide projections (projection_3d.cpp, CalculateViewVector) turn by fov x pi/2 from the
     // centre to the top edge, with that same internal fov (2 tan of half the angle from 2.21 on):
-    // fraktal's fovY is 180 fov degrees. Equirectangular's image is taken as 2:1 there whatever its
-    // size; fraktal's pixels are square in angle (the same picture at 2:1).
+    // fraktal's fovY is 180 fov degrees. Both programs' equirectangular image spans 2 fovY across
+    // whatever its aspect (render_worker.cpp takes it as 2:1; shaders/camera.glsl).
     const std::string perspective = main.raw("perspective_type");
     const bool fishEye = perspective == "1" || perspective == "fish_eye";
     const bool equirectangular = perspective == "2" || perspective == "equirectangular";
@@ -839,7 +839,7 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
             double amplitude = numberOf("relative_amplitude", "0.2");
             if (file.versionNumber < 2.13 - 1e-9 && file.find("main_parameters", key + "amplitude"))
                 amplitude = numberOf("amplitude", "0.2");
-            if (file.versionNumber < 2.125) amplitude /= waveLength;
+            if (file.versionNumber <= 2.12 + 1e-9) amplitude /= waveLength;
             const AxisAngle turn = axisAngle(setRotation2(vectorOf("rotation", "0 0 0")));
             const double frame = main.given("frame_no") ? main.number("frame_no") : 0.0;
             combine("water_combine", {N::v("center", position), N::v("axis", turn.axis), N::f("angle", turn.degrees),
