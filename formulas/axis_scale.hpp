@@ -15,7 +15,7 @@ struct AxisScale {
     static constexpr Category category = Category::Transform;
     static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
-        ParamDecl{"scale", ParamType::Vec3, {1.0, 1.0, -1.0}, -20.0, 20.0, "Factor for x, y and z."},
+        ParamDecl{"scale", ParamType::Vec3, {1.0, 1.0, -1.0}, -100.0, 100.0, "Factor for x, y and z."},
     };
 
     static constexpr std::string_view glsl = R"(

@@ -26,6 +26,7 @@
 #include "formulas/primitives.hpp"
 #include "formulas/pseudo_kleinian.hpp"
 #include "formulas/quaternion.hpp"
+#include "formulas/riemann_sphere.hpp"
 #include "formulas/rotate.hpp"
 #include "formulas/scale.hpp"
 #include "formulas/sierpinski_fold.hpp"
@@ -74,6 +75,9 @@ constexpr std::array kBlocks{
     describe<BoxFoldAxes>(),
     describe<BenesiPow2>(),
     describe<BenesiPineTree>(),
+    describe<RiemannSphere>(),
+    describe<RiemannSphereV1>(),
+    describe<RiemannSphereV2>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -118,7 +118,9 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
             recoverOvershoot(ro, rd, s.t - previousStep, s.lastD, s.t, pixelAngle, s, deEvals);
             break;
         }
-        if (d < pixelAngle * s.t * u_detail) {
+        // At or below the threshold: an estimate of 0 at the ray's start (a camera inside an
+        // escape-time object, where the threshold is 0 too) is a hit, not a step of nothing.
+        if (d <= pixelAngle * s.t * u_detail) {
             s.lastD = d;
             s.status = MARCH_HIT;
             break;

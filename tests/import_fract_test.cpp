@@ -444,6 +444,109 @@ TEST(FractImport, BenesiPowersAndThePineTree) {
     EXPECT_GT(inside, 40);  // 73 of 2000
 }
 
+// msltoe's three Riemann spheres, each with values off its defaults: an orbit escapes where
+// Mandelbulber2's iteration (RiemannSphereMsltoe, V1, V2 in fractal_formulas.cpp), written out
+// here in double, passes the bailout within N iterations. Points on the edge of the set may go
+// either way (V2's lift is written with tan in fraktal, sin / (1 + cos) there): at most 1 % differ.
+TEST(FractImport, RiemannSpheresFollowMandelbulber2sOrbits) {
+    struct Case {
+        const char* body;
+        std::vector<std::string> blocks;
+        vec3 (*step)(const vec3& z);
+    };
+    const Case cases[] = {
+        {"formula_1 72;\nN 4;\n[fractal_1]\ntransf_scale 1,1;\ntransf_offsetA_0 0,3;\ntransf_offsetB_0 -0,2;\n"
+         "transf_addition_constant 0 0 0,1;\n",
+         {"riemann_sphere", "translate"},
+         [](const vec3& v) {
+             const double r = length(v);
+             const vec3 z = v * (1.1 / r);
+             const double q = 1.0 / (1.0 - z.z), s0 = z.x * q, t0 = z.y * q;
+             const double p = std::min(1.0 + s0 * s0 + t0 * t0, 36.0);
+             const double s = std::abs(std::sin(3.14159265358979 * s0 + 0.3)),
+                          t = std::abs(std::sin(3.14159265358979 * t0 - 0.2));
+             const double radius = -0.25 + std::pow(r * r, p);
+             return vec3(2.0 * s, 2.0 * t, -1.0 + s * s + t * t) * (radius / (1.0 + s * s + t * t)) + vec3(0, 0, 0.1);
+         }},
+        {"formula_1 71;\nN 8;\n[fractal_1]\ntransf_scale 0,9;\ntransf_constant_multiplier_441 3 4 1,5;\n",
+         {"riemann_sphere_v1"},
+         [](const vec3& v) {
+             const double r = length(v);
+             const vec3 z = v * (0.9 / r);
+             const double q = 1.0 / (1.0 - z.z);
+             vec3 t(z.x * q, z.y * q, 0.0);
+             t.z = (r - 1.5) * (1.0 + t.x * t.x + t.y * t.y);
+             t.x -= std::floor(t.x + 0.5), t.y -= std::floor(t.y + 0.5);
+             return t * vec3(3.0, 4.0, 1.5);
+         }},
+        {"formula_1 139;\nN 3;\n[fractal_1]\ntransf_scale_08 0,7;\ntransf_scaleA_1 1,25;\ntransf_offset_010 0,1 1,2 "
+         "0;\n",
+         {"riemann_sphere_v2"},
+         [](const vec3& v) {
+             const double r = length(v);
+             const vec3 z = v * (0.7 / r);
+             double rx = z.x / (z.y - 1.0), rz = z.z / (z.y - 1.0);
+             const double theta = 8.0 * std::atan2(2.0 * rx, rx * rx - 1.0) * 1.25;
+             const double phi = 8.0 * std::atan2(2.0 * rz, rz * rz - 1.0);
+             rx = std::sin(theta) / (1.0 + std::cos(theta));
+             rz = std::sin(phi) / (1.0 + std::cos(phi));
+             const double rxz = rx * rx + rz * rz, d = 2.0 / (rxz + 1.0);
+             return vec3(rx * d, (rxz - 1.0) * 0.5 * d, rz * d) * (r * r * r * r) + vec3(0.1, 1.2, 0.0);
+         }},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.body);
+        const mb2::FractImport r = importText(std::string("[main_parameters]\n") + c.body);
+        ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+        std::vector<std::string> blocks = blockIds(r.preset.formula);
+        EXPECT_EQ(blocks, c.blocks);
+        const Formula& f = r.preset.formula;
+        std::mt19937 random(5);
+        std::uniform_real_distribution<double> u(-1.5, 1.5);
+        int inside = 0, differ = 0;
+        const int points = 2000;
+        for (int k = 0; k < points; ++k) {
+            const vec3 point(u(random), u(random), u(random));
+            vec3 z = point;
+            bool escaped = false;
+            for (int i = 0; i < f.iterations && !escaped; ++i) {
+                z = c.step(z);
+                escaped = !(length(z) <= f.bailout);
+            }
+            inside += !escaped;
+            differ += evaluate(f, point).escaped != escaped;
+        }
+        std::printf("%s: %d of %d inside, %d differ\n", blocks.front().c_str(), inside, points, differ);
+        EXPECT_LE(differ, points / 100);
+        EXPECT_GT(inside, points / 100);
+        EXPECT_LT(inside, points - points / 100);
+    }
+    // A rotation of V1's projected plane happens inside its step: refused by name.
+    const mb2::FractImport turned =
+        importText("[main_parameters]\nformula_1 71;\n[fractal_1]\ntransf_rotation_enabled true;\n");
+    EXPECT_TRUE(mentions(turned.unsupported, "slot 1 (riemann_sphere_msltoe_v1)", "inside the step"));
+}
+
+// box_fold_bulb_pow2_v2: each part in its window (fold B, sphere fold S, scale C, power A), the
+// power's z times the z factor; a sphere fold off the origin is refused.
+TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 125;\n[fractal_1]\ntransf_addition_constant_111 0,5 1 1;\n"
+        "transf_scale 0,9;\ntransf_start_iterations_A 8;\ntransf_stop_iterations_A 9;\n"
+        "transf_stop_iterations_C 12;\nboxfold_bulbpow2_z_factor 20;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Formula& f = r.preset.formula;
+    EXPECT_EQ(blockIds(f), (std::vector<std::string>{"box_fold_axes", "sphere_fold", "scale", "mandelbulb_sine",
+                                                     "axis_scale", "add_c"}));
+    EXPECT_EQ(f.nodes[2].stop, 12);
+    EXPECT_EQ(f.nodes[3].start, 8);
+    EXPECT_EQ(f.nodes[3].stop, 9);
+    EXPECT_EQ(f.nodes[4].values[0], vec3(1.0, 1.0, -20.0));
+    const mb2::FractImport off =
+        importText("[main_parameters]\nformula_1 125;\n[fractal_1]\nmandelbox_offset 0 0 0,2;\n");
+    EXPECT_TRUE(mentions(off.unsupported, "slot 1 (box_fold_bulb_pow2_v2)", "centred off the origin"));
+}
+
 // Mandelbulber2's fish eye and equirectangular cameras: fraktal's projections, 180 x fov degrees
 // up (fov is the internal one before 2.21, 2 tan of half the degrees from 2.21 on).
 TEST(FractImport, WideCamerasAreFraktalsProjections) {
@@ -700,6 +803,10 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {"examples/aexion001.fract", ""},
         // Iteration threshold mode: hits only inside (the log estimate is small far around it).
         {"examples/hypercomplex001.fract", ""},
+        // msltoe's Riemann sphere V1 (a tiled stereographic plane), delta DE: the orbit gradient.
+        {"examples/riemann_sphere_msltoe_v1_001.fract", ""},
+        // box_fold_bulb_pow2_v2: its fold, sphere fold, scale and power each in its own window.
+        {gm + "boxFoldBulb_v2_01.fract", ""},
         {"examples/stereoscopic 004.fract", "stereo_enabled true"},
         // A Menger sponge on Mandelbulber2's water (the water combine, its frame turned over).
         {km + "primitive objects - water.fract", ""},

@@ -136,6 +136,20 @@ void expectDepthKept(const char* what, const Preset& scene, double minHitShare, 
 // without it every hit pixel stayed behind (2912 of 2912).
 TEST(OvershootRecovery, StepsIntoASolidBallComeBackToItsSurface) { expectDepthKept("ball", solidBall(), 0.5, 0.05); }
 
+// A camera inside the squaring ball: the estimate is 0 where the ray starts, and so is the hit
+// threshold (it grows with the distance along the ray). Every pixel is a hit at the camera; a
+// march that stepped by 0 there ran out of steps with nothing drawn.
+TEST(OvershootRecovery, ACameraInsideAnEscapeTimeObjectSeesItEverywhere) {
+    Preset p = solidBall();
+    p.formula.deFactor = 1.0;
+    p.camera.position = vec3(0.1, 0.15, 0.2);
+    for (const Renderer& r : kRenderers) {
+        const std::vector<float> depth = r.depth(p);
+        const long atCamera = std::count_if(depth.begin(), depth.end(), [](float z) { return z < 1e-3f; });
+        EXPECT_EQ(atCamera, long(depth.size())) << r.name;
+    }
+}
+
 // The shipped Mandelbulb at twice its factor: rays that land inside are bisected back (104 of 1531
 // pixels behind without the recovery, 73 with); what is left are rays that stepped across a thin
 // part and out again, which no membership test sees.

@@ -79,7 +79,7 @@ void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd,
             recoverOvershoot(scene, ro, rd, s.t - previousStep, s.lastD, s.t, pixelAngle, s, deEvals);
             break;
         }
-        if (d < pixelAngle * s.t * scene.params.detail) {
+        if (d <= pixelAngle * s.t * scene.params.detail) {
             s.lastD = d;
             s.status = MarchStatus::Hit;
             break;

@@ -468,6 +468,20 @@ void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
         inWindow(r, b, "C", "C1", [&] { b.add("scale", {N::f("scale", r.number("transf_scaleG_1"))}); });
 }
 
+// box_fold_bulb_pow2_v2: Tglad's fold per axis (window B), the sphere fold of squared radii
+// (window S), the scale (window C), then White's power 2 with z times the z factor (window A).
+void mapBoxFoldBulbPow2V2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
+    r.mustBeDefault("transf_scale_vary_0", "a scale that varies with the iteration");
+    inWindow(r, b, "B", "B", [&] { tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated); });
+    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
+    inWindow(r, b, "C", "C", [&] { b.add("scale", {N::f("scale", r.number("transf_scale"))}); });
+    inWindow(r, b, "A", "A", [&] {
+        b.add("mandelbulb_sine", {N::f("power", 2.0)});
+        b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
+    });
+}
+
 // Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
 // when enabled, the offset, then the sphere fold (window M) and scale (window S), the main
 // rotation (window R); +c.
@@ -528,6 +542,26 @@ void mapAboxModKali(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("scale", {N::f("scale", r.number("transf_scale_015"))});
 }
 
+// msltoe's Riemann spheres: the rotation before the step (the first and V2), V1's inside it.
+void mapRiemannSphere(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    if (r.boolean("transf_rotation_enabled")) b.rotation(setRotation2(r.vector("transf_rotation")));
+    b.add("riemann_sphere", {N::f("scale", r.number("transf_scale")), N::f("s_phase", r.number("transf_offsetA_0")),
+                             N::f("t_phase", r.number("transf_offsetB_0"))});
+    additionConstant(r, b);
+}
+void mapRiemannSphereV1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_rotation_enabled", "a rotation of the projected plane inside the step");
+    b.add("riemann_sphere_v1",
+          {N::f("scale", r.number("transf_scale")), N::v("multiplier", r.vector("transf_constant_multiplier_441"))});
+    additionConstant(r, b);
+}
+void mapRiemannSphereV2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    if (r.boolean("transf_rotation_enabled")) b.rotation(setRotation2(r.vector("transf_rotation")));
+    b.add("riemann_sphere_v2",
+          {N::f("scale", r.number("transf_scale_08")), N::f("theta_scale", r.number("transf_scaleA_1")),
+           N::f("phi_scale", r.number("transf_scaleB_1")), N::v("offset", r.vector("transf_offset_010"))});
+}
+
 void mapTransfAddConstant(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("translate",
           {N::v("offset", r.vector("transf_addition_constant") + r.vector("transf_addition_constantA_000"))});
@@ -545,18 +579,34 @@ struct Mapping {
     MapFn map;
 };
 constexpr Mapping kMappings[] = {
-    {2, mapMandelbulb},        {3, mapMandelbulbPower2},
-    {16, mapBoxFoldBulbPow2},  {5, mapQuaternion3d},
-    {7, mapMengerSponge},      {8, mapMandelbox},
-    {10, mapKaleidoscopicIfs}, {11, mapXenodreambuie},
-    {21, mapBristorbrot},      {61, mapMengerMod1},
-    {62, mapQuaternion3d},     {83, mapIqBulb},
-    {103, mapPseudoKleinian},  {1001, mapTransfAddConstant},
-    {1002, mapTransfRotation}, {1003, mapTransfScale},
-    {60, mapAboxModKali},      {74, mapKalisets1},
-    {76, mapAboxVsIcen1},      {77, mapAmazingSurfMod1},
-    {119, mapAboxMod11},       {132, mapAmazingSurfMod2},
-    {20, mapBenesi},           {66, mapBenesiPineTree},
+    {2, mapMandelbulb},
+    {3, mapMandelbulbPower2},
+    {16, mapBoxFoldBulbPow2},
+    {5, mapQuaternion3d},
+    {7, mapMengerSponge},
+    {8, mapMandelbox},
+    {10, mapKaleidoscopicIfs},
+    {11, mapXenodreambuie},
+    {21, mapBristorbrot},
+    {61, mapMengerMod1},
+    {62, mapQuaternion3d},
+    {83, mapIqBulb},
+    {103, mapPseudoKleinian},
+    {1001, mapTransfAddConstant},
+    {1002, mapTransfRotation},
+    {1003, mapTransfScale},
+    {60, mapAboxModKali},
+    {74, mapKalisets1},
+    {76, mapAboxVsIcen1},
+    {77, mapAmazingSurfMod1},
+    {119, mapAboxMod11},
+    {132, mapAmazingSurfMod2},
+    {20, mapBenesi},
+    {66, mapBenesiPineTree},
+    {125, mapBoxFoldBulbPow2V2},
+    {71, mapRiemannSphereV1},
+    {72, mapRiemannSphere},
+    {139, mapRiemannSphereV2},
 };
 
 MapFn findMapping(int id) {

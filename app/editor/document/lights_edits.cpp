@@ -122,7 +122,7 @@ std::optional<double> sphereTrace(const DistanceAt& de, const vec3& ro, const ve
     double t = tStart;
     for (int i = 0; i < maxSteps && t <= tEnd; ++i) {
         const double d = de(ro + rd * t);
-        if (d < pixelAngle * t * detail) return t;
+        if (d <= pixelAngle * t * detail) return t;
         t += d;
     }
     return std::nullopt;
