@@ -15,9 +15,7 @@ struct AbsFold {
     static constexpr std::string_view glsl = R"(
     p.xyz = abs(p.xyz);
 )";
-    static void apply(P4& p, const vec3&, Args) {
-        p.xyz = abs(p.xyz);
-    }
+    static void apply(P4& p, const vec3&, Args) { p.xyz = abs(p.xyz); }
 };
 
 }  // namespace fraktal::blocks

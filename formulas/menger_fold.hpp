@@ -19,9 +19,15 @@ struct MengerFold {
     a = min(p.y - p.z, 0.0); p.y -= a; p.z += a;
 )";
     static void apply(P4& p, const vec3&, Args) {
-        double a = min(p.xyz.x - p.xyz.y, 0.0); p.xyz.x -= a; p.xyz.y += a;
-        a = min(p.xyz.x - p.xyz.z, 0.0); p.xyz.x -= a; p.xyz.z += a;
-        a = min(p.xyz.y - p.xyz.z, 0.0); p.xyz.y -= a; p.xyz.z += a;
+        double a = min(p.xyz.x - p.xyz.y, 0.0);
+        p.xyz.x -= a;
+        p.xyz.y += a;
+        a = min(p.xyz.x - p.xyz.z, 0.0);
+        p.xyz.x -= a;
+        p.xyz.z += a;
+        a = min(p.xyz.y - p.xyz.z, 0.0);
+        p.xyz.y -= a;
+        p.xyz.z += a;
     }
 };
 

@@ -20,10 +20,18 @@ struct OctahedralFold {
     a = min(p.x - p.z, 0.0); p.x -= a; p.z += a;
 )";
     static void apply(P4& p, const vec3&, Args) {
-        double a = min(p.xyz.x + p.xyz.y, 0.0); p.xyz.x -= a; p.xyz.y -= a;
-        a = min(p.xyz.x + p.xyz.z, 0.0); p.xyz.x -= a; p.xyz.z -= a;
-        a = min(p.xyz.x - p.xyz.y, 0.0); p.xyz.x -= a; p.xyz.y += a;
-        a = min(p.xyz.x - p.xyz.z, 0.0); p.xyz.x -= a; p.xyz.z += a;
+        double a = min(p.xyz.x + p.xyz.y, 0.0);
+        p.xyz.x -= a;
+        p.xyz.y -= a;
+        a = min(p.xyz.x + p.xyz.z, 0.0);
+        p.xyz.x -= a;
+        p.xyz.z -= a;
+        a = min(p.xyz.x - p.xyz.y, 0.0);
+        p.xyz.x -= a;
+        p.xyz.y += a;
+        a = min(p.xyz.x - p.xyz.z, 0.0);
+        p.xyz.x -= a;
+        p.xyz.z += a;
     }
 };
 

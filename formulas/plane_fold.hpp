@@ -14,7 +14,8 @@ struct PlaneFold {
     static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
         ParamDecl{"normal", ParamType::Vec3, {0.0, 0.0, 1.0}, -1.0, 1.0, "Plane normal (normalised before use).", true},
-        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -10.0, 10.0, "Signed distance of the plane from the origin."},
+        ParamDecl{
+            "offset", ParamType::Float, {0.0, 0.0, 0.0}, -10.0, 10.0, "Signed distance of the plane from the origin."},
     };
 
     static constexpr std::string_view glsl = R"(

@@ -9,6 +9,7 @@
 #include "formulas/benesi_pine_tree.hpp"
 #include "formulas/box_fold.hpp"
 #include "formulas/box_fold_axes.hpp"
+#include "formulas/coastalbrot.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/estimators.hpp"
 #include "formulas/hypercomplex.hpp"
@@ -16,11 +17,14 @@
 #include "formulas/kifs_octahedral.hpp"
 #include "formulas/kifs_tetrahedral.hpp"
 #include "formulas/kleinian.hpp"
+#include "formulas/mandelbox_smooth.hpp"
 #include "formulas/mandelbulb.hpp"
+#include "formulas/mandelbulb_eye.hpp"
 #include "formulas/mandelbulb_variants.hpp"
 #include "formulas/menger_fold.hpp"
 #include "formulas/menger_rotate.hpp"
 #include "formulas/menger_scale.hpp"
+#include "formulas/msltoe.hpp"
 #include "formulas/octahedral_fold.hpp"
 #include "formulas/plane_fold.hpp"
 #include "formulas/primitives.hpp"
@@ -78,6 +82,11 @@ constexpr std::array kBlocks{
     describe<RiemannSphere>(),
     describe<RiemannSphereV1>(),
     describe<RiemannSphereV2>(),
+    describe<Coastalbrot>(),
+    describe<MandelbulbEye>(),
+    describe<MsltoeDonut>(),
+    describe<MsltoeSym2Mod>(),
+    describe<MandelboxSmoothFold>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),
@@ -98,6 +107,7 @@ constexpr std::array kBlocks{
     describe<HypercomplexMandelbrot>(),
     describe<WaterCombine>(),
     describe<AexionEstimator>(),
+    describe<EscapeLinearGradientEstimator>(),
 };
 }  // namespace
 

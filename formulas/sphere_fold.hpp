@@ -13,8 +13,14 @@ struct SphereFold {
     static constexpr Category category = Category::Fold;
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr std::array params{
-        ParamDecl{"min_radius", ParamType::Float, {0.5, 0.0, 0.0}, 0.001, 4.0, "Inner radius Rm: inside it the fold is a uniform scale."},
-        ParamDecl{"fixed_radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.001, 4.0, "Fixed radius Rf: the sphere of inversion."},
+        ParamDecl{"min_radius",
+                  ParamType::Float,
+                  {0.5, 0.0, 0.0},
+                  0.001,
+                  4.0,
+                  "Inner radius Rm: inside it the fold is a uniform scale."},
+        ParamDecl{
+            "fixed_radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.001, 4.0, "Fixed radius Rf: the sphere of inversion."},
     };
 
     static constexpr std::string_view glsl = R"(

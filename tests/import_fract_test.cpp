@@ -444,21 +444,53 @@ TEST(FractImport, BenesiPowersAndThePineTree) {
     EXPECT_GT(inside, 40);  // 73 of 2000
 }
 
-// msltoe's three Riemann spheres, each with values off its defaults: an orbit escapes where
-// Mandelbulber2's iteration (RiemannSphereMsltoe, V1, V2 in fractal_formulas.cpp), written out
-// here in double, passes the bailout within N iterations. Points on the edge of the set may go
-// either way (V2's lift is written with tan in fraktal, sin / (1 + cos) there): at most 1 % differ.
+// A formula imported from a settings file's body, against Mandelbulber2's own iteration written out
+// here in double (`step`, from fractal_formulas.cpp, with c added where Mandelbulber2 adds it):
+// its blocks, and an orbit from each of 2000 points escapes where the written-out one passes the
+// bailout within N iterations. Points on the edge of the set may go either way where fraktal
+// writes a step differently (V2's lift with tan, sin / (1 + cos) there): at most 1 % differ, and
+// at least 1 % lie on each side.
+struct OrbitCase {
+    const char* body;
+    std::vector<std::string> blocks;
+    vec3 (*step)(const vec3& z, const vec3& c);
+    double extent = 1.5;  // points are drawn from [-extent, extent]^3
+};
+void expectOrbitsFollowMandelbulber2(const OrbitCase& c) {
+    SCOPED_TRACE(c.body);
+    const mb2::FractImport r = importText(std::string("[main_parameters]\n") + c.body);
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const std::vector<std::string> blocks = blockIds(r.preset.formula);
+    EXPECT_EQ(blocks, c.blocks);
+    const Formula& f = r.preset.formula;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> u(-c.extent, c.extent);
+    int inside = 0, differ = 0;
+    const int points = 2000;
+    for (int k = 0; k < points; ++k) {
+        const vec3 point(u(random), u(random), u(random));
+        vec3 z = point;
+        bool escaped = false;
+        for (int i = 0; i < f.iterations && !escaped; ++i) {
+            z = c.step(z, point);
+            escaped = !(length(z) <= f.bailout);
+        }
+        inside += !escaped;
+        differ += evaluate(f, point).escaped != escaped;
+    }
+    std::printf("%s: %d of %d inside, %d differ\n", blocks.front().c_str(), inside, points, differ);
+    EXPECT_LE(differ, points / 100);
+    EXPECT_GT(inside, points / 100);
+    EXPECT_LT(inside, points - points / 100);
+}
+
+// msltoe's three Riemann spheres, each with values off its defaults (no c: Mandelbulber2 adds none).
 TEST(FractImport, RiemannSpheresFollowMandelbulber2sOrbits) {
-    struct Case {
-        const char* body;
-        std::vector<std::string> blocks;
-        vec3 (*step)(const vec3& z);
-    };
-    const Case cases[] = {
+    const OrbitCase cases[] = {
         {"formula_1 72;\nN 4;\n[fractal_1]\ntransf_scale 1,1;\ntransf_offsetA_0 0,3;\ntransf_offsetB_0 -0,2;\n"
          "transf_addition_constant 0 0 0,1;\n",
          {"riemann_sphere", "translate"},
-         [](const vec3& v) {
+         [](const vec3& v, const vec3&) {
              const double r = length(v);
              const vec3 z = v * (1.1 / r);
              const double q = 1.0 / (1.0 - z.z), s0 = z.x * q, t0 = z.y * q;
@@ -470,7 +502,7 @@ TEST(FractImport, RiemannSpheresFollowMandelbulber2sOrbits) {
          }},
         {"formula_1 71;\nN 8;\n[fractal_1]\ntransf_scale 0,9;\ntransf_constant_multiplier_441 3 4 1,5;\n",
          {"riemann_sphere_v1"},
-         [](const vec3& v) {
+         [](const vec3& v, const vec3&) {
              const double r = length(v);
              const vec3 z = v * (0.9 / r);
              const double q = 1.0 / (1.0 - z.z);
@@ -482,7 +514,7 @@ TEST(FractImport, RiemannSpheresFollowMandelbulber2sOrbits) {
         {"formula_1 139;\nN 3;\n[fractal_1]\ntransf_scale_08 0,7;\ntransf_scaleA_1 1,25;\ntransf_offset_010 0,1 1,2 "
          "0;\n",
          {"riemann_sphere_v2"},
-         [](const vec3& v) {
+         [](const vec3& v, const vec3&) {
              const double r = length(v);
              const vec3 z = v * (0.7 / r);
              double rx = z.x / (z.y - 1.0), rz = z.z / (z.y - 1.0);
@@ -494,37 +526,80 @@ TEST(FractImport, RiemannSpheresFollowMandelbulber2sOrbits) {
              return vec3(rx * d, (rxz - 1.0) * 0.5 * d, rz * d) * (r * r * r * r) + vec3(0.1, 1.2, 0.0);
          }},
     };
-    for (const Case& c : cases) {
-        SCOPED_TRACE(c.body);
-        const mb2::FractImport r = importText(std::string("[main_parameters]\n") + c.body);
-        ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
-        std::vector<std::string> blocks = blockIds(r.preset.formula);
-        EXPECT_EQ(blocks, c.blocks);
-        const Formula& f = r.preset.formula;
-        std::mt19937 random(5);
-        std::uniform_real_distribution<double> u(-1.5, 1.5);
-        int inside = 0, differ = 0;
-        const int points = 2000;
-        for (int k = 0; k < points; ++k) {
-            const vec3 point(u(random), u(random), u(random));
-            vec3 z = point;
-            bool escaped = false;
-            for (int i = 0; i < f.iterations && !escaped; ++i) {
-                z = c.step(z);
-                escaped = !(length(z) <= f.bailout);
-            }
-            inside += !escaped;
-            differ += evaluate(f, point).escaped != escaped;
-        }
-        std::printf("%s: %d of %d inside, %d differ\n", blocks.front().c_str(), inside, points, differ);
-        EXPECT_LE(differ, points / 100);
-        EXPECT_GT(inside, points / 100);
-        EXPECT_LT(inside, points - points / 100);
-    }
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
     // A rotation of V1's projected plane happens inside its step: refused by name.
     const mb2::FractImport turned =
         importText("[main_parameters]\nformula_1 71;\n[fractal_1]\ntransf_rotation_enabled true;\n");
     EXPECT_TRUE(mentions(turned.unsupported, "slot 1 (riemann_sphere_msltoe_v1)", "inside the step"));
+}
+
+// Coastalbrot, the Mandelbulb eye, msltoe's sym2 mod and donut and the smooth Mandelbox, each
+// with values off its defaults.
+TEST(FractImport, CoastalbrotEyeMsltoeAndSmoothMandelboxFollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 129;\nN 5;\n",
+         {"coastalbrot", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             const double r = length(z);
+             return glm::sin(glm::sin(glm::sin(3.14159265358979 / 3 + z * 3.14159265358979))) * std::pow(r, 8.7) + c;
+         }},
+        {"formula_1 800;\nN 6;\n[fractal_1]\nbuffalo_preabs_z true;\nbuffalo_abs_x true;\ntransf_scaleB_1 0,2;\n"
+         "transf_scaleC_1 1,6;\ntransf_scale_1 1,5;\ntransf_addition_constantA_000 0,3 0,1 -0,1;\n",
+         {"mandelbulb_eye", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             const vec3 z(v.x, v.y, std::abs(v.z));
+             const double rr = dot(z, z), t = std::sqrt(z.x * z.x + z.y * z.y);
+             const double theta = std::atan2(t, z.z) * 0.2 + std::atan2(t, -z.z) * 1.6;
+             const double phi = std::atan2(z.y, z.x) * 1.5 + std::atan2(-z.y, z.x);
+             const vec3 w(rr * std::sin(theta) * std::cos(phi), rr * std::sin(theta) * std::sin(phi),
+                          rr * std::cos(theta));
+             return vec3(std::abs(w.x), w.y, w.z) + vec3(0.3, 0.1, -0.1) + c;
+         },
+         1.2},
+        {"formula_1 51;\nN 6;\n[fractal_1]\ntransf_scale 1,2;\ntransf_offset 0,1;\ntransf_scale_1 0,9;\n"
+         "transf_addition_constant 0 0,2 0;\n",
+         {"msltoe_sym2_mod", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z = std::abs(v.y) < std::abs(v.z) ? vec3(v.x, v.z, v.y) : v;
+             if (z.y > z.z) z.x = -z.x;
+             const vec3 z2 = z * z;
+             const double zr = 1.0 - z2.z / (z2.x + z2.y + z2.z);
+             vec3 t((z2.x - z2.y) * zr, 2.0 * z.x * z.y * zr * 1.2, 2.0 * z.z * std::sqrt(z2.x + z2.y));
+             t += vec3(0.0, 0.2, 0.0);
+             t *= 1.0 + 0.1 / -length(t);
+             return t * 0.9 + c;
+         }},
+        {"formula_1 82;\nN 4;\n[fractal_1]\ndonut_number 6;\ndonut_factor 2,5;\ndonut_ring_thickness 0,2;\n",
+         {"msltoe_donut"},
+         [](const vec3& z, const vec3&) {
+             const double sector = 2.0 * 3.14159265358979 / 6.0;
+             const double R2 = 1.0 - std::sqrt(z.x * z.x + z.y * z.y);
+             const double t = R2 * R2 + z.z * z.z - 0.04;
+             const double theta2 = sector * std::round(std::atan2(z.y, z.x) / sector);
+             if (!(t > 0.03)) return z / t;
+             const double c1 = std::cos(theta2), s1 = std::sin(theta2);
+             const double x1 = c1 * z.x + s1 * z.y - 1.0, y1 = -s1 * z.x + c1 * z.y;
+             return 2.5 * vec3(x1, z.z, y1);
+         }},
+        {"formula_1 17;\nN 8;\n[fractal_1]\nmandelbox_sharpness 2,5;\nmandelbox_scale -1,8;\n",
+         {"mandelbox_smooth_fold", "scale", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             auto greater = [](double a, double b) { return 1.0 / (1.0 + std::exp(2.5 * (b - a))); };
+             auto less = [](double a, double b) { return 1.0 / (1.0 + std::exp(2.5 * (a - b))); };
+             vec3 z = v;
+             for (int k = 0; k < 3; ++k) {
+                 const double k1 = greater(z[k], 1.0), k2 = less(z[k], -1.0);
+                 z[k] = z[k] * (1.0 - k1) + (2.0 - z[k]) * k1;
+                 z[k] = z[k] * (1.0 - k2) + (-2.0 - z[k]) * k2;
+             }
+             const double r2 = dot(z, z), rk1 = less(r2, 0.25), rk21 = (1.0 - rk1) * less(r2, 1.0);
+             z = z * (1.0 - rk1) + z * (4.0 * rk1);
+             z = z * (1.0 - rk21) + z * (1.0 / r2 * rk21);
+             return z * -1.8 + c;
+         },
+         3.0},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
 // box_fold_bulb_pow2_v2: each part in its window (fold B, sphere fold S, scale C, power A), the

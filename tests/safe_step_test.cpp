@@ -224,7 +224,8 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     std::vector<const BlockDesc*> blocks = stepBlocks();
     std::erase_if(blocks, [](const BlockDesc* b) {
         return b->id == "axis_scale" || b->id == "menger_scale" || b->id == "box_fold_axes" || b->id == "benesi_pow2" ||
-               b->id == "benesi_pine_tree" || b->id.starts_with("riemann_sphere");
+               b->id == "benesi_pine_tree" || b->id.starts_with("riemann_sphere") || b->id == "coastalbrot" ||
+               b->id == "mandelbulb_eye" || b->id.starts_with("msltoe_") || b->id == "mandelbox_smooth_fold";
     });
     std::mt19937_64 rng(20);
     std::uniform_int_distribution<size_t> pickBlock(0, blocks.size() - 1);

@@ -562,6 +562,44 @@ void mapRiemannSphereV2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
            N::f("phi_scale", r.number("transf_scaleB_1")), N::v("offset", r.vector("transf_offset_010"))});
 }
 
+void mapCoastalbrot(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("coastalbrot", {}); }
+
+void mapMandelbulbEye(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    auto axes = [&](const char* prefix) {
+        const std::string k = std::string("buffalo_") + prefix;
+        return vec3(r.boolean(k + "x"), r.boolean(k + "y"), r.boolean(k + "z"));
+    };
+    b.add("mandelbulb_eye",
+          {N::v("abs_before", axes("preabs_")), N::f("theta_scale", r.number("transf_scaleB_1")),
+           N::f("theta2_scale", r.number("transf_scaleC_1")), N::f("phi_scale", r.number("transf_scale_1")),
+           N::f("phi_mirror", r.boolean("transf_function_enabled_false")), N::v("abs_after", axes("abs_")),
+           N::v("offset", r.vector("transf_addition_constantA_000"))});
+}
+
+void mapMsltoeDonut(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("msltoe_donut",
+          {N::f("ring_radius", r.number("donut_ring_radius")), N::f("thickness", r.number("donut_ring_thickness")),
+           N::f("sections", r.number("donut_number")), N::f("factor", r.number("donut_factor"))});
+}
+
+void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
+    b.add("msltoe_sym2_mod",
+          {N::f("y_scale", r.number("transf_scale")), N::v("add", r.vector("transf_addition_constant")),
+           N::f("offset", r.number("transf_offset")), N::f("scale", r.number("transf_scale_1"))});
+}
+
+// The smooth folds, the main rotation, the scale (a uniform scale commutes with the rotation).
+void mapMandelboxSmooth(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("mandelbox_smooth_fold",
+          {N::f("limit", r.number("mandelbox_folding_limit")), N::f("value", r.number("mandelbox_folding_value")),
+           N::f("min_radius", std::max(r.number("mandelbox_folding_min_radius"), 0.001)),
+           N::f("fixed_radius", r.number("mandelbox_folding_fixed_radius")),
+           N::f("sharpness", r.number("mandelbox_sharpness"))});
+    if (r.boolean("mandelbox_main_rotation_enabled")) b.rotation(setRotation2(r.vector("mandelbox_rotation_main")));
+    b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
+}
+
 void mapTransfAddConstant(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("translate",
           {N::v("offset", r.vector("transf_addition_constant") + r.vector("transf_addition_constantA_000"))});
@@ -607,6 +645,11 @@ constexpr Mapping kMappings[] = {
     {71, mapRiemannSphereV1},
     {72, mapRiemannSphere},
     {139, mapRiemannSphereV2},
+    {129, mapCoastalbrot},
+    {800, mapMandelbulbEye},
+    {82, mapMsltoeDonut},
+    {51, mapMsltoeSym2Mod},
+    {17, mapMandelboxSmooth},
 };
 
 MapFn findMapping(int id) {
@@ -630,12 +673,11 @@ void addEstimator(Formula& f, const EstimatorChoice& choice, Reader& main, doubl
     const double offset = main.number("linear_DE_offset");
     switch (choice.de) {
         case Mb2De::Linear:
-        case Mb2De::DeltaLinear:
-            set("escape_linear", {{"offset", std::clamp(offset, 0.0, 10.0)}});
-            if (choice.delta || choice.de == Mb2De::DeltaLinear)
-                approximated.push_back(
-                    {"DE", "Mandelbulber2's delta (numerical) linear DE is fraktal's analytic r / dr"});
+        case Mb2De::DeltaLinear: {
+            const bool delta = choice.delta || choice.de == Mb2De::DeltaLinear;
+            set(delta ? "escape_linear_gradient" : "escape_linear", {{"offset", std::clamp(offset, 0.0, 10.0)}});
             return;
+        }
         case Mb2De::Ifs: set("escape_linear", {{"offset", 2.0}}); return;
         case Mb2De::Log:
         case Mb2De::DeltaLog:
