@@ -62,6 +62,59 @@ struct Kleinian {
     }
 };
 
+// Jos Leys' Kleinian in Mandelbulber2's form (fractal_formulas.cpp JosKleinianIteration; Jos Leys,
+// fractalforums.com "an escape-time algorithm for Kleinian group limit sets"): the point wrapped
+// into the box [-s.x, s.x) x [1 - s.y, 1 - s.y + a s.y) x [-s.z, s.z) (common_math.cpp wrap; no
+// shear, y wrapped too), turned half about (-b/2, a/2) above the wavy separation line
+// y = a (0.5 + 0.2 sin(sign(b) pi (x + b/2) / s.x)), then the Mobius generator as in `kleinian`.
+// Close it with kleinian_de (Mandelbulber2's Jos-Kleinian DE function).
+struct JosKleinian {
+    static constexpr std::string_view id = "jos_kleinian";
+    static constexpr std::string_view label = "Kleinian (Mandelbulber2)";
+    static constexpr std::string_view help =
+        "Jos Leys' Kleinian step as Mandelbulber2 has it: wrap x, y and z, half turn above a wavy line, Mobius "
+        "inversion.";
+    static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump =
+        "its map jumps where it wraps the point into its box and where it turns half above the separation line";
+    static constexpr std::array params{
+        ParamDecl{"klein_r", ParamType::Float, {2.0, 0.0, 0.0}, 1.5, 2.1, "Real part a of the generator's trace."},
+        ParamDecl{
+            "klein_i", ParamType::Float, {0.0, 0.0, 0.0}, -0.5, 0.5, "Imaginary part b of the generator's trace."},
+        ParamDecl{"box_size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.1, 4.0, "Wrap sizes s (y's period is a s.y)."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float a = klein_r, b = klein_i;
+    vec3 period = vec3(2.0 * box_size.x, a * box_size.y, 2.0 * box_size.z);
+    vec3 start = vec3(-box_size.x, 1.0 - box_size.y, -box_size.z);
+    vec3 v = p.xyz - start;
+    v = v - period * floor(v / period) + start;
+    if (v.y >= a * (0.5 + 0.2 * sin(sign(b) * 3.14159265358979 * (v.x + b * 0.5) / box_size.x)))
+        v = vec3(-b, a, 0.0) - v;
+    float ir = 1.0 / max(dot(v, v), 1e-12);
+    v *= -ir;
+    p.xyz = vec3(-b - v.x, a + v.y, v.z);
+    p.w *= ir;
+)";
+    static void apply(P4& p, const vec3&, Args args) {
+        const double klein_r = args.f(0), klein_i = args.f(1);
+        const vec3 box_size = args.v3(2);
+        double a = klein_r, b = klein_i;
+        vec3 period = vec3(2.0 * box_size.x, a * box_size.y, 2.0 * box_size.z);
+        vec3 start = vec3(-box_size.x, 1.0 - box_size.y, -box_size.z);
+        vec3 v = p.xyz - start;
+        v = v - period * glm::floor(v / period) + start;
+        if (v.y >= a * (0.5 + 0.2 * std::sin(glm::sign(b) * 3.14159265358979 * (v.x + b * 0.5) / box_size.x)))
+            v = vec3(-b, a, 0.0) - v;
+        double ir = 1.0 / std::max(dot(v, v), 1e-12);
+        v *= -ir;
+        p.xyz = vec3(-b - v.x, a + v.y, v.z);
+        p.w *= ir;
+    }
+};
+
 // Jos Leys' Kleinian distance (the closing line of Fragmentarium's Jos Leys / Knighty Kleinian
 // example: DE = min(y, Clamp_y) / max(DF, Clamp_DF), y = min(z.y, a - z.y)): after the loop the
 // orbit has been mapped into the strip 0 <= y <= a between the two tangent planes, whose

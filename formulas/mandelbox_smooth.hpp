@@ -8,10 +8,11 @@ namespace fraktal::blocks {
 // a > b (common_math.h SmoothConditionAGreaterB). Per axis, x blends towards value - x as x passes
 // +limit and towards -value - x as it passes -limit (both steps read x before either fold); then
 // with r^2 = |v|^2, the inner scaling fixed^2 / min^2 blends in below min^2 and fixed^2 / r^2
-// between min^2 and fixed^2. The scale follows as its own node. The blends can stretch a little
-// more than the sharp folds' bounds, so the running derivative takes the sphere folds' factors
-// and `fraktal check` measures the step factor. Each exponent is held within +-80 so that single
-// precision gives the step's 0 or 1 rather than overflowing.
+// between min^2 and fixed^2: v k(r^2). The scale follows as its own node. The running
+// derivative bounds the Jacobian at the point: the box part is diagonal (the largest |dx'/dx|,
+// the steps' slopes included), the sphere part k I + 2 k'(r^2) v v^T stretches by k across and
+// k + 2 r^2 k' along v. Each exponent is held within +-80 so that single precision gives the
+// step's 0 or 1 rather than overflowing.
 struct MandelboxSmoothFold {
     static constexpr std::string_view id = "mandelbox_smooth_fold";
     static constexpr std::string_view label = "Smooth Mandelbox folds";
@@ -29,31 +30,43 @@ struct MandelboxSmoothFold {
     };
 
     static constexpr std::string_view glsl = R"(
-    vec3 v = p.xyz;
-    vec3 above = 1.0 / (1.0 + exp(clamp(sharpness * (limit - v), -80.0, 80.0)));
-    vec3 below = 1.0 / (1.0 + exp(clamp(sharpness * (v + limit), -80.0, 80.0)));
-    v = v * (1.0 - above) + (value - v) * above;
-    v = v * (1.0 - below) + (-value - v) * below;
-    float r2 = dot(v, v), mR2 = min_radius * min_radius, fR2 = fixed_radius * fixed_radius;
+    vec3 x = p.xyz;
+    vec3 above = 1.0 / (1.0 + exp(clamp(sharpness * (limit - x), -80.0, 80.0)));
+    vec3 below = 1.0 / (1.0 + exp(clamp(sharpness * (x + limit), -80.0, 80.0)));
+    vec3 y = x * (1.0 - above) + (value - x) * above;
+    vec3 dy = 1.0 - 2.0 * above + (value - 2.0 * x) * sharpness * above * (1.0 - above);
+    vec3 v = y * (1.0 - below) + (-value - y) * below;
+    vec3 dv = dy * (1.0 - 2.0 * below) + (2.0 * y + value) * sharpness * below * (1.0 - below);
+    float r2 = max(dot(v, v), 1e-12), mR2 = min_radius * min_radius, fR2 = fixed_radius * fixed_radius;
     float inner = 1.0 / (1.0 + exp(clamp(sharpness * (r2 - mR2), -80.0, 80.0)));
-    float shell = (1.0 - inner) / (1.0 + exp(clamp(sharpness * (r2 - fR2), -80.0, 80.0)));
-    float k = (1.0 - inner + fR2 / mR2 * inner) * (1.0 - shell + fR2 / max(r2, 1e-30) * shell);
+    float outer = 1.0 / (1.0 + exp(clamp(sharpness * (r2 - fR2), -80.0, 80.0)));
+    float dInner = -sharpness * inner * (1.0 - inner), dOuter = -sharpness * outer * (1.0 - outer);
+    float shell = (1.0 - inner) * outer, dShell = (1.0 - inner) * dOuter - dInner * outer;
+    float A = 1.0 + (fR2 / mR2 - 1.0) * inner, dA = (fR2 / mR2 - 1.0) * dInner;
+    float B = 1.0 + (fR2 / r2 - 1.0) * shell, dB = (fR2 / r2 - 1.0) * dShell - fR2 / (r2 * r2) * shell;
+    float k = A * B, dk = dA * B + A * dB;
     p.xyz = v * k;
-    p.w *= k;
+    p.w *= max(abs(dv.x), max(abs(dv.y), abs(dv.z))) * max(abs(k), abs(k + 2.0 * r2 * dk));
 )";
     static void apply(P4& p, const vec3&, Args a) {
         const double limit = a.f(0), value = a.f(1), min_radius = a.f(2), fixed_radius = a.f(3), sharpness = a.f(4);
-        vec3 v = p.xyz;
-        vec3 above = 1.0 / (1.0 + glm::exp(glm::clamp(sharpness * (limit - v), -80.0, 80.0)));
-        vec3 below = 1.0 / (1.0 + glm::exp(glm::clamp(sharpness * (v + limit), -80.0, 80.0)));
-        v = v * (1.0 - above) + (value - v) * above;
-        v = v * (1.0 - below) + (-value - v) * below;
-        double r2 = dot(v, v), mR2 = min_radius * min_radius, fR2 = fixed_radius * fixed_radius;
+        vec3 x = p.xyz;
+        vec3 above = 1.0 / (1.0 + glm::exp(glm::clamp(sharpness * (limit - x), -80.0, 80.0)));
+        vec3 below = 1.0 / (1.0 + glm::exp(glm::clamp(sharpness * (x + limit), -80.0, 80.0)));
+        vec3 y = x * (1.0 - above) + (value - x) * above;
+        vec3 dy = 1.0 - 2.0 * above + (value - 2.0 * x) * sharpness * above * (1.0 - above);
+        vec3 v = y * (1.0 - below) + (-value - y) * below;
+        vec3 dv = dy * (1.0 - 2.0 * below) + (2.0 * y + value) * sharpness * below * (1.0 - below);
+        double r2 = std::max(dot(v, v), 1e-12), mR2 = min_radius * min_radius, fR2 = fixed_radius * fixed_radius;
         double inner = 1.0 / (1.0 + std::exp(std::clamp(sharpness * (r2 - mR2), -80.0, 80.0)));
-        double shell = (1.0 - inner) / (1.0 + std::exp(std::clamp(sharpness * (r2 - fR2), -80.0, 80.0)));
-        double k = (1.0 - inner + fR2 / mR2 * inner) * (1.0 - shell + fR2 / std::max(r2, 1e-30) * shell);
+        double outer = 1.0 / (1.0 + std::exp(std::clamp(sharpness * (r2 - fR2), -80.0, 80.0)));
+        double dInner = -sharpness * inner * (1.0 - inner), dOuter = -sharpness * outer * (1.0 - outer);
+        double shell = (1.0 - inner) * outer, dShell = (1.0 - inner) * dOuter - dInner * outer;
+        double A = 1.0 + (fR2 / mR2 - 1.0) * inner, dA = (fR2 / mR2 - 1.0) * dInner;
+        double B = 1.0 + (fR2 / r2 - 1.0) * shell, dB = (fR2 / r2 - 1.0) * dShell - fR2 / (r2 * r2) * shell;
+        double k = A * B, dk = dA * B + A * dB;
         p.xyz = v * k;
-        p.w *= k;
+        p.w *= max(abs(dv.x), max(abs(dv.y), abs(dv.z))) * max(abs(k), abs(k + 2.0 * r2 * dk));
     }
 };
 

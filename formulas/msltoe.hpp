@@ -8,8 +8,9 @@ namespace fraktal::blocks {
 // (t = (R - rho)^2 + z^2 - thickness^2 > 0.03) the point's sector is turned onto +x, moved to the
 // ring's centre and scaled by `factor` with y and z swapped (each sector's copy of the ring holds
 // the whole again); inside the tube it is divided by t. Mandelbulber2 estimates its distance by
-// differences; the running derivative here is the step's own factor, |factor| outside the tube
-// and 1 / |t| inside. The map jumps between sectors and at the tube's edge.
+// differences (escape_linear_gradient); the running derivative here bounds the step's Jacobian,
+// |factor| outside the tube and, for v / t inside, 1 / |t| + |v| |grad t| / t^2 with
+// |grad t| = 2 sqrt(t + thickness^2). The map jumps between sectors and at the tube's edge.
 struct MsltoeDonut {
     static constexpr std::string_view id = "msltoe_donut";
     static constexpr std::string_view label = "msltoe donut";
@@ -37,8 +38,9 @@ struct MsltoeDonut {
         p.xyz = factor * v.xzy;
         p.w *= abs(factor);
     } else {
+        float grad = 2.0 * sqrt(max(t + thickness * thickness, 0.0));
+        p.w *= 1.0 / abs(t) + length(p.xyz) * grad / (t * t);
         p.xyz /= t;
-        p.w /= abs(t);
     }
 )";
     static void apply(P4& p, const vec3&, Args a) {
@@ -54,8 +56,9 @@ struct MsltoeDonut {
             p.xyz = factor * vec3(v.x, v.z, v.y);
             p.w *= abs(factor);
         } else {
+            double grad = 2.0 * std::sqrt(std::max(t + thickness * thickness, 0.0));
+            p.w *= 1.0 / abs(t) + length(p.xyz) * grad / (t * t);
             p.xyz /= t;
-            p.w /= abs(t);
         }
     }
 };

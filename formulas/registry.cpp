@@ -1,5 +1,6 @@
 // The block registry: one line per block. A block that lacks part of its declaration fails to
 // compile here (see the concepts in core/block.hpp).
+#include "formulas/abs_add_conditional.hpp"
 #include "formulas/abs_fold.hpp"
 #include "formulas/add_c.hpp"
 #include "formulas/aexion.hpp"
@@ -87,6 +88,8 @@ constexpr std::array kBlocks{
     describe<MsltoeDonut>(),
     describe<MsltoeSym2Mod>(),
     describe<MandelboxSmoothFold>(),
+    describe<JosKleinian>(),
+    describe<AbsAddConditional>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -602,6 +602,73 @@ TEST(FractImport, CoastalbrotEyeMsltoeAndSmoothMandelboxFollowMandelbulber2sOrbi
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// Jos Leys' Kleinian in Mandelbulber2's form closes with kleinian_de, Mandelbulber2's Jos-Kleinian DE
+// function: the estimate at random points is Mandelbulber2's, min(min(y, a - y), tweak) /
+// max(DE, offset), after its JosKleinianIteration written out here (the first iteration's sphere
+// inversion included).
+TEST(FractImport, JosKleinianIsMandelbulber2sStepAndDistance) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 122;\nN 7;\n[fractal_1]\ntransf_folding_value 1,9;\ntransf_offset 0,073;\n"
+        "analyticDE_tweak_005 0,28;\nanalyticDE_offset_1 1,5;\ntransf_offset_111 1 1 0,8;\n"
+        "transf_sphere_inversion_enabled_false true;\ntransf_maxR2_1 0,3;\ntransf_offset_000 0,2 -1,2 0;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Formula& f = r.preset.formula;
+    EXPECT_EQ(blockIds(f), (std::vector<std::string>{"translate", "sphere_invert", "translate", "jos_kleinian"}));
+    EXPECT_EQ(f.estimator.block->id, "kleinian_de");
+    const double a = 1.9, b = 0.073;
+    const vec3 box(1.0, 1.0, 0.8);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    int differ = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const vec3 point(u(random), u(random), u(random));
+        vec3 z = point;
+        double de = 1.0;
+        for (int i = 0; i < 7; ++i) {
+            if (i < 1) {
+                z += vec3(0.2, -1.2, 0.0);
+                const double rr = dot(z, z);
+                z *= 0.3 / rr;
+                de *= 0.3 / rr;
+                z -= vec3(0.2, -1.2, 0.0);
+            }
+            const vec3 size(2.0 * box.x, a * box.y, 2.0 * box.z), start(-box.x, -box.y + 1.0, -box.z);
+            const vec3 w = z - start;
+            z = w - size * glm::floor(w / size) + start;
+            if (z.y >= a * (0.5 + 0.2 * std::sin(3.14159265358979 * (z.x + b * 0.5) / box.x))) z = vec3(-b, a, 0.0) - z;
+            const double iR = 1.0 / dot(z, z);
+            z *= -iR;
+            z.x = -b - z.x;
+            z.y = a + z.y;
+            de *= std::abs(iR);
+        }
+        const double expected = std::min(std::min(z.y, a - z.y), 0.28) / std::max(de, 1.5);
+        const double got = evaluate(f, point).distance / f.deFactor;
+        differ += !(std::abs(got - expected) <= 1e-9 * std::max(1.0, std::abs(expected)));
+    }
+    std::printf("jos_kleinian: %d of 2000 estimates differ from Mandelbulber2's\n", differ);
+    EXPECT_LE(differ, 20);  // points on a wrap's edge or the separation line may go either way
+    const mb2::FractImport flat =
+        importText("[main_parameters]\nformula_1 122;\n[fractal_1]\ntransf_spheres_enabled false;\n");
+    EXPECT_TRUE(mentions(flat.unsupported, "main", "transf_spheres_enabled false"));
+}
+
+// transf_abs_add_conditional reads x's multiplier from transf_scale3D_000 and y's and z's from
+// transf_offset_000, as Mandelbulber2 does.
+TEST(FractImport, AbsAddConditionalReadsEachAxisWhereMandelbulber2Does) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 2;\nformula_2 1065;\nhybrid_fractal_enable true;\n[fractal_2]\n"
+        "transf_function_enabledz false;\ntransf_offset_000 0,5 0,4 0,3;\ntransf_scale3D_000 0,2 0 0;\n"
+        "transf_offset_111 1 2 1;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const auto node = std::find_if(r.preset.formula.nodes.begin(), r.preset.formula.nodes.end(),
+                                   [](const Node& n) { return n.block->id == "abs_add_conditional"; });
+    ASSERT_NE(node, r.preset.formula.nodes.end());
+    EXPECT_EQ(node->values[0], vec3(1.0, 1.0, 0.0));
+    EXPECT_EQ(node->values[1], vec3(1.0, 2.0, 1.0));
+    EXPECT_EQ(node->values[2], vec3(0.2, 0.4, 0.3));
+}
+
 // box_fold_bulb_pow2_v2: each part in its window (fold B, sphere fold S, scale C, power A), the
 // power's z times the z factor; a sphere fold off the origin is refused.
 TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {

@@ -562,6 +562,32 @@ void mapRiemannSphereV2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
            N::f("phi_scale", r.number("transf_scaleB_1")), N::v("offset", r.vector("transf_offset_010"))});
 }
 
+// Jos Leys' Kleinian (Mandelbulber2's form), after its optional sphere inversion on the first
+// iteration: z + offset inverted in the sphere of squared radius maxR2, then + add - offset.
+void mapJosKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    if (r.boolean("transf_sphere_inversion_enabled_false"))
+        b.within(0, 1, [&] {
+            const vec3 offset = r.vector("transf_offset_000");
+            if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+            b.add("sphere_invert", {N::f("radius", std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)))});
+            const vec3 back = r.vector("transf_addition_constant") - offset;
+            if (length(back) > 0.0) b.add("translate", {N::v("offset", back)});
+        });
+    b.add("jos_kleinian",
+          {N::f("klein_r", r.number("transf_folding_value")), N::f("klein_i", r.number("transf_offset")),
+           N::v("box_size", r.vector("transf_offset_111"))});
+}
+
+// x's multiplier is transf_scale3D_000's x, y's and z's transf_offset_000's (as Mandelbulber2
+// reads them).
+void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const vec3 axes(r.boolean("transf_function_enabledx"), r.boolean("transf_function_enabledy"),
+                    r.boolean("transf_function_enabledz"));
+    const vec3 offset = r.vector("transf_offset_000");
+    b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", r.vector("transf_offset_111")),
+                                  N::v("multiplier", vec3(r.vector("transf_scale3D_000").x, offset.y, offset.z))});
+}
+
 void mapCoastalbrot(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("coastalbrot", {}); }
 
 void mapMandelbulbEye(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -650,6 +676,8 @@ constexpr Mapping kMappings[] = {
     {82, mapMsltoeDonut},
     {51, mapMsltoeSym2Mod},
     {17, mapMandelboxSmooth},
+    {122, mapJosKleinian},
+    {1065, mapTransfAbsAddConditional},
 };
 
 MapFn findMapping(int id) {
@@ -664,7 +692,19 @@ struct EstimatorChoice {
     bool delta = false;
 };
 
-void addEstimator(Formula& f, const EstimatorChoice& choice, Reader& main, double pkThickness,
+// What the closing DE functions read from a formula's own settings (Mandelbulber2 reads the
+// first formula's in a hybrid).
+struct EstimatorValues {
+    double pkThickness = 1.0;  // the pseudo-Kleinian's analyticDE_scale_1
+    // The Jos-Kleinian's strip height (transf_folding_value), the caps of its distance
+    // (analyticDE_tweak_005) and of the least derivative (analyticDE_offset_1), and whether the
+    // strip's far plane counts (transf_spheres_enabled).
+    double josHeight = 2.0, josClampY = 0.05, josClampDf = 1.0;
+    bool josSpheres = true;
+    bool josRead = false;
+};
+
+void addEstimator(Formula& f, const EstimatorChoice& choice, Reader& main, const EstimatorValues& values,
                   std::vector<ImportItem>& approximated) {
     auto set = [&](std::string_view id, std::initializer_list<std::pair<std::string_view, double>> values) {
         f.estimator = Node::make(*findBlock(id));
@@ -684,11 +724,28 @@ void addEstimator(Formula& f, const EstimatorChoice& choice, Reader& main, doubl
             set(choice.delta || choice.de == Mb2De::DeltaLog ? "escape_gradient" : "escape_log", {});
             return;
         case Mb2De::PseudoKleinian:
-            set("pseudo_kleinian_de", {{"thickness", std::clamp(pkThickness, 0.0, 1.0)}, {"offset", 0.0}});
+            set("pseudo_kleinian_de", {{"thickness", std::clamp(values.pkThickness, 0.0, 1.0)}, {"offset", 0.0}});
             return;
-        case Mb2De::JosKleinian:
-            main.unsupported("the Jos-Kleinian DE function (MB2's jos_kleinian form, part 2)");
-            break;
+        case Mb2De::JosKleinian: {
+            // min(y, a - y) capped, over the derivative held above its least: kleinian_de.
+            if (!values.josSpheres) {
+                main.unsupported("transf_spheres_enabled false: the Jos-Kleinian DE without the strip's far plane");
+                break;
+            }
+            const BlockDesc& de = *findBlock("kleinian_de");
+            const double v[] = {values.josHeight, values.josClampY, values.josClampDf};
+            bool inRange = true;
+            for (size_t i = 0; i < 3; ++i)
+                if (!(v[i] >= de.params[i].min && v[i] <= de.params[i].max)) {
+                    main.unsupported("kleinian_de." + std::string(de.params[i].name) + " " + fmt(v[i]) +
+                                     " is outside fraktal's range [" + fmt(de.params[i].min) + ", " +
+                                     fmt(de.params[i].max) + "]");
+                    inRange = false;
+                }
+            if (!inRange) break;
+            set("kleinian_de", {{"klein_r", v[0]}, {"clamp_y", v[1]}, {"clamp_df", v[2]}});
+            return;
+        }
         case Mb2De::Difs: main.unsupported("the dIFS DE function (an orbit-minimum estimate, part 2)"); break;
         case Mb2De::None: break;  // no mapped formula: each is named already
     }
@@ -1005,7 +1062,8 @@ FractImport importFract(const FractFile& file) {
         main.unsupported("fractal_constant_factor " + fmt(factor) + ": a per-axis multiple of c");
     const bool boxFolding = main.boolean("box_folding"), sphericalFolding = main.boolean("spherical_folding");
     std::map<Mb2De, int> deVotes;
-    double bailout = 0.0, pkThickness = 1.0;
+    double bailout = 0.0;
+    EstimatorValues estimatorValues;
     bool delta = false;
     std::array<std::vector<Node>, kSlots> groups;
     int ownOrbitSlot = -1;
@@ -1061,7 +1119,14 @@ FractImport importFract(const FractFile& file) {
         if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += runs;
         delta = delta || isDelta(info->de);
         bailout = std::max(bailout, info->bailout);
-        if (info->de == Mb2De::PseudoKleinian) pkThickness = r.number("analyticDE_scale_1");
+        if (info->de == Mb2De::PseudoKleinian) estimatorValues.pkThickness = r.number("analyticDE_scale_1");
+        if (info->de == Mb2De::JosKleinian && !estimatorValues.josRead) {
+            estimatorValues.josHeight = r.number("transf_folding_value");
+            estimatorValues.josClampY = r.number("analyticDE_tweak_005");
+            estimatorValues.josClampDf = r.number("analyticDE_offset_1");
+            estimatorValues.josSpheres = r.boolean("transf_spheres_enabled");
+            estimatorValues.josRead = true;
+        }
     }
 
     // ---- The node list: each stretch of the sequence as schedules (period, phase, window) ----
@@ -1104,7 +1169,7 @@ FractImport importFract(const FractFile& file) {
     if (choice.delta && choice.de == Mb2De::Linear) choice.de = Mb2De::DeltaLinear;
     if (choice.delta && choice.de == Mb2De::Log) choice.de = Mb2De::DeltaLog;
     if (!p.formula.nodes.empty() || !out.unsupported.empty())
-        addEstimator(p.formula, choice, main, pkThickness, out.approximated);
+        addEstimator(p.formula, choice, main, estimatorValues, out.approximated);
 
     // ---- Iterations, bailout, step ----
     p.formula.iterations = std::clamp(N, 1, kMaxIterations);
