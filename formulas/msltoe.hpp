@@ -109,4 +109,46 @@ struct MsltoeSym2Mod {
     }
 };
 
+// eiffie's variant of msltoe's Julia bulb (Mandelbulber2's eiffie_msltoe): the (y, z) plane folded
+// into the sector |psi| <= pi / 8 about +y (psi = |mod(atan2(z, y) + 9 pi / 8, pi / 4) - pi / 8|),
+// then the sym2 mod's power, add, pull and scale (without its octant swap). The running
+// derivative is Mandelbulber2's 2 r |scale|; the sector fold is continuous, the power's latitude
+// is not bounded by it.
+struct EiffieMsltoe {
+    static constexpr std::string_view id = "eiffie_msltoe";
+    static constexpr std::string_view label = "eiffie msltoe";
+    static constexpr std::string_view help =
+        "(y, z) folded into a pi/4 sector about +y, then the power 2 triplex plus add, pulled in by offset, scaled.";
+    static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::Local;
+    static constexpr Degree degree{{}, 2.0};
+    static constexpr std::array params = MsltoeSym2Mod::params;
+
+    static constexpr std::string_view glsl = R"(
+    p.w *= 2.0 * length(p.xyz) * abs(scale);
+    float psi = abs(mod(atan(p.z, p.y) + 3.53429173528852, 0.785398163397448) - 0.392699081698724);
+    float yz = length(p.yz);
+    vec3 v = vec3(p.x, cos(psi) * yz, sin(psi) * yz);
+    vec3 v2 = v * v;
+    float zr = 1.0 - v2.z / max(v2.x + v2.y + v2.z, 1e-30);
+    v = vec3((v2.x - v2.y) * zr, 2.0 * v.x * v.y * zr * y_scale, 2.0 * v.z * sqrt(v2.x + v2.y)) + add;
+    float len = max(length(v), 1e-30);
+    p.xyz = v * (1.0 - offset / len) * scale;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double y_scale = a.f(0), offset = a.f(2), scale = a.f(3);
+        const vec3 add = a.v3(1);
+        p.w *= 2.0 * length(p.xyz) * abs(scale);
+        double psi =
+            abs(glm::mod(std::atan2(p.xyz.z, p.xyz.y) + 3.53429173528852, 0.785398163397448) - 0.392699081698724);
+        double yz = std::hypot(p.xyz.y, p.xyz.z);
+        vec3 v = vec3(p.xyz.x, cos(psi) * yz, sin(psi) * yz);
+        vec3 v2 = v * v;
+        double zr = 1.0 - v2.z / std::max(v2.x + v2.y + v2.z, 1e-30);
+        v = vec3((v2.x - v2.y) * zr, 2.0 * v.x * v.y * zr * y_scale, 2.0 * v.z * std::sqrt(v2.x + v2.y)) + add;
+        double len = std::max(length(v), 1e-30);
+        p.xyz = v * (1.0 - offset / len) * scale;
+    }
+};
+
 }  // namespace fraktal::blocks

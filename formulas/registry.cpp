@@ -25,6 +25,7 @@
 #include "formulas/menger_fold.hpp"
 #include "formulas/menger_rotate.hpp"
 #include "formulas/menger_scale.hpp"
+#include "formulas/menger_smooth.hpp"
 #include "formulas/msltoe.hpp"
 #include "formulas/octahedral_fold.hpp"
 #include "formulas/plane_fold.hpp"
@@ -90,6 +91,8 @@ constexpr std::array kBlocks{
     describe<MandelboxSmoothFold>(),
     describe<JosKleinian>(),
     describe<AbsAddConditional>(),
+    describe<EiffieMsltoe>(),
+    describe<MengerSmooth>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -602,6 +602,58 @@ TEST(FractImport, CoastalbrotEyeMsltoeAndSmoothMandelboxFollowMandelbulber2sOrbi
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// Mandelbulber2's smooth sort of a pair (MengerSmoothIteration): a - t, b + t.
+void smoothSort(double& a, double& b, double weight, double k) {
+    double t = a - b;
+    t = weight * (t - std::sqrt(t * t + k));
+    a -= t;
+    b += t;
+}
+
+// eiffie's msltoe, the smooth Menger sponge and its mod 1 (the corner and z's fold centre given
+// differently, the sorts weighted, the box offset after).
+TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 70;\nN 6;\n[fractal_1]\ntransf_scale 1,1;\ntransf_addition_constant -0,3 0 0;\n",
+         {"eiffie_msltoe", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             const double psi =
+                 std::abs(std::fmod(std::atan2(v.z, v.y) + 3.14159265358979 * 9.0 / 8.0, 3.14159265358979 / 4.0) -
+                          3.14159265358979 / 8.0);
+             const double yz = std::sqrt(v.y * v.y + v.z * v.z);
+             const vec3 z(v.x, std::cos(psi) * yz, std::sin(psi) * yz), z2 = z * z;
+             const double m = 1.0 - z2.z / (z2.x + z2.y + z2.z);
+             return vec3((z2.x - z2.y) * m, 2.0 * z.x * z.y * m * 1.1, 2.0 * z.z * std::sqrt(z2.x + z2.y)) +
+                    vec3(-0.3, 0.0, 0.0) + c;
+         }},
+        {"formula_1 113;\nN 5;\n[fractal_1]\ntransf_offset_0005 0,01;\n",
+         {"menger_smooth"},
+         [](const vec3& v, const vec3&) {
+             const double k = 0.01, sc1 = 2.0, sc2 = 2.0 / 3.0;
+             vec3 z = glm::sqrt(v * v + k);
+             smoothSort(z.x, z.y, 0.5, k);
+             smoothSort(z.x, z.z, 0.5, k);
+             smoothSort(z.y, z.z, 0.5, k);
+             z.z = -std::sqrt((z.z - 0.5 * sc2) * (z.z - 0.5 * sc2) + k) + 0.5 * sc2;
+             return vec3(3.0 * z.x - sc1, 3.0 * z.y - sc1, 3.0 * z.z);
+         }},
+        {"formula_1 114;\nN 5;\n[fractal_1]\ntransf_scale_05 0,45;\ntransf_constant_multiplier_111 1 2 1;\n"
+         "transf_function_enabledx_false true;\ntransf_addition_constantA_000 0,2 0 0;\n",
+         {"menger_smooth", "abs_add_conditional"},
+         [](const vec3& v, const vec3&) {
+             const double k = 0.005;
+             vec3 z = glm::abs(v);
+             smoothSort(z.x, z.y, 0.45, k);
+             smoothSort(z.x, z.z, 0.45, 2.0 * k);
+             smoothSort(z.y, z.z, 0.45, k);
+             z.z = -std::sqrt((z.z - 1.0 / 3.0) * (z.z - 1.0 / 3.0) + k) + 1.0 / 3.0;
+             z = vec3(3.0 * z.x - 2.0, 3.0 * z.y - 2.0, 3.0 * z.z);
+             return vec3(glm::sign(z.x) * 0.2 + z.x, z.y, z.z);
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 // Jos Leys' Kleinian in Mandelbulber2's form closes with kleinian_de, Mandelbulber2's Jos-Kleinian DE
 // function: the estimate at random points is Mandelbulber2's, min(min(y, a - y), tweak) /
 // max(DE, offset), after its JosKleinianIteration written out here (the first iteration's sphere

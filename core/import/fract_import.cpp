@@ -608,11 +608,48 @@ void mapMsltoeDonut(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
            N::f("sections", r.number("donut_number")), N::f("factor", r.number("donut_factor"))});
 }
 
-void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+// msltoe's sym2 mod and eiffie's variant share their parameters.
+void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
-    b.add("msltoe_sym2_mod",
-          {N::f("y_scale", r.number("transf_scale")), N::v("add", r.vector("transf_addition_constant")),
-           N::f("offset", r.number("transf_offset")), N::f("scale", r.number("transf_scale_1"))});
+    b.add(block, {N::f("y_scale", r.number("transf_scale")), N::v("add", r.vector("transf_addition_constant")),
+                  N::f("offset", r.number("transf_offset")), N::f("scale", r.number("transf_scale_1"))});
+}
+void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "msltoe_sym2_mod"); }
+void mapEiffieMsltoe(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "eiffie_msltoe"); }
+
+// The smooth Menger sponge, its rotation in window R.
+void mapMengerSmooth(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledz_false", "iteration weights");
+    const double k = r.number("transf_offset_0005");
+    b.add("menger_smooth", {N::f("scale", r.number("transf_scale_3")), N::v("offset", r.vector("transf_offset_1105")),
+                            N::f("abs_smoothness", k), N::v("sort_smoothness", vec3(k)), N::f("fold_smoothness", k)});
+    windowedRotation(r, b, "transf_rotation_enabled", "_R");
+}
+
+// Its mod 1: the abs rounded by its own amount, each sort by its own, weighted; the corner given
+// as (o.x (s - 1), o.y (s - 1)) and z's fold centre as o.z / 3; then the rotation (window R) and
+// the box offset sign(v) a + v (window A: abs_add_conditional with multiplier 2).
+void mapMengerSmoothMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledF_false", "an abs with an added offset");
+    r.mustBeDefault("transf_function_enabledz_false", "iteration weights");
+    if (!r.boolean("transf_function_enabled"))
+        r.unsupported("transf_function_enabled false: a Menger step without its abs");
+    const double s = r.number("transf_scale_3"), k = r.number("transf_offset_0005");
+    if (std::abs(s - 1.0) < 1e-9) return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+    const vec3 corner = r.vector("transf_constant_multiplier_221");
+    b.add("menger_smooth",
+          {N::f("scale", s),
+           N::v("offset", vec3(corner.x / (s - 1.0), corner.y / (s - 1.0), corner.z * s / (3.0 * (s - 1.0)))),
+           N::f("abs_smoothness", r.number("transf_offset_0")),
+           N::v("sort_smoothness", k * r.vector("transf_constant_multiplier_111")), N::f("fold_smoothness", k),
+           N::f("sort_weight", r.number("transf_scale_05"))});
+    windowedRotation(r, b, "transf_rotation_enabled", "_R");
+    if (r.boolean("transf_function_enabledx_false"))
+        inWindow(r, b, "A", "A", [&] {
+            b.add("abs_add_conditional",
+                  {N::v("axes", vec3(1.0)), N::v("offset", r.vector("transf_addition_constantA_000")),
+                   N::v("multiplier", vec3(2.0))});
+        });
 }
 
 // The smooth folds, the main rotation, the scale (a uniform scale commutes with the rotation).
@@ -678,6 +715,9 @@ constexpr Mapping kMappings[] = {
     {17, mapMandelboxSmooth},
     {122, mapJosKleinian},
     {1065, mapTransfAbsAddConditional},
+    {70, mapEiffieMsltoe},
+    {113, mapMengerSmooth},
+    {114, mapMengerSmoothMod1},
 };
 
 MapFn findMapping(int id) {
