@@ -266,6 +266,27 @@ struct EscapeLinearEstimator {
     }
 };
 
+// The linear estimate on the distance to the z axis, (r_xy - offset) / |dr|: Mandelbulber2's
+// pseudo_kleinian_std_de takes r = (x^2 + y^2)^(1/2) after its step (compute_fractal.cpp), and its
+// linear DE function divides that by the running derivative.
+struct EscapeLinearXyEstimator {
+    static constexpr std::string_view id = "escape_linear_xy";
+    static constexpr std::string_view label = "Escape time (linear, xy)";
+    static constexpr std::string_view help =
+        "(r_xy - offset) / |dr| with r_xy the distance to the z axis (Mandelbulber2's pseudo-Kleinian std DE).";
+    static constexpr Category category = Category::Estimator;
+    static constexpr Membership membership = Membership::EscapeTime;
+    static constexpr std::array params = EscapeLinearEstimator::params;
+
+    static constexpr std::string_view glsl = R"(
+    return (length(p.xy) - offset) / abs(p.w);
+)";
+    static double estimate(const P4& p, const vec3&, Args a) {
+        const double offset = a.f(0);
+        return (std::hypot(p.xyz.x, p.xyz.y) - offset) / abs(p.w);
+    }
+};
+
 // Mandelbulber2's delta DE for its linear formulas (calculate_distance.cpp): 0.5 (r - offset) /
 // |grad r|, with |grad r| = r |grad log r| from differences of the orbit (P4::orbitGradient, as the
 // escape gradient's) in place of the running derivative. Where a step's own factor misjudges its

@@ -7,9 +7,11 @@
 #include "formulas/amazing_surf.hpp"
 #include "formulas/axis_scale.hpp"
 #include "formulas/benesi.hpp"
+#include "formulas/benesi_folds.hpp"
 #include "formulas/benesi_pine_tree.hpp"
 #include "formulas/box_fold.hpp"
 #include "formulas/box_fold_axes.hpp"
+#include "formulas/box_fold_soft.hpp"
 #include "formulas/coastalbrot.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/estimators.hpp"
@@ -93,6 +95,10 @@ constexpr std::array kBlocks{
     describe<AbsAddConditional>(),
     describe<EiffieMsltoe>(),
     describe<MengerSmooth>(),
+    describe<BenesiT1>(),
+    describe<BenesiBoxFold>(),
+    describe<BoxFoldSoft>(),
+    describe<BoxFoldGeneral>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),
@@ -114,6 +120,7 @@ constexpr std::array kBlocks{
     describe<WaterCombine>(),
     describe<AexionEstimator>(),
     describe<EscapeLinearGradientEstimator>(),
+    describe<EscapeLinearXyEstimator>(),
 };
 }  // namespace
 

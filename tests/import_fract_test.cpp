@@ -654,6 +654,98 @@ TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// Pseudo-Kleinian orbits stay bounded (no escape to compare): the orbit trap's least |v| over N
+// iterations against Mandelbulber2's iteration written out (`step(z, i)`, i the iteration for its
+// windows) for 2000 points; at most 1 % may differ (a fold's edge).
+void expectTrapFollowsMandelbulber2(const char* body, const std::vector<std::string>& blocks,
+                                    vec3 (*step)(const vec3& z, int i)) {
+    SCOPED_TRACE(body);
+    const mb2::FractImport r = importText(std::string("[main_parameters]\n") + body);
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(blockIds(r.preset.formula), blocks);
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    int differ = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const vec3 point(u(random), u(random), u(random));
+        vec3 z = point;
+        double least = 1e20;
+        for (int i = 0; i < r.preset.formula.iterations; ++i) {
+            z = step(z, i);
+            least = std::min(least, length(z));
+        }
+        const double got = evaluate(r.preset.formula, point).trap.value.w;
+        differ += !(std::abs(got - least) <= 1e-9 * std::max(1.0, least));
+    }
+    std::printf("%s: %d of 2000 traps differ from Mandelbulber2's\n", blocks.back().c_str(), differ);
+    EXPECT_LE(differ, 20);
+}
+
+// Benesi's frame (Mandelbulber2's SQRT_2_3 etc.) and back.
+vec3 intoBenesiFrame(const vec3& z) {
+    const double xz = z.x * std::sqrt(2.0 / 3.0) - z.z * std::sqrt(1.0 / 3.0);
+    return vec3((xz - z.y) * std::sqrt(0.5), (xz + z.y) * std::sqrt(0.5),
+                z.x * std::sqrt(1.0 / 3.0) + z.z * std::sqrt(2.0 / 3.0));
+}
+vec3 outOfBenesiFrame(const vec3& z) {
+    const double xz = (z.y + z.x) * std::sqrt(0.5);
+    return vec3(z.z * std::sqrt(1.0 / 3.0) + xz * std::sqrt(2.0 / 3.0), (z.y - z.x) * std::sqrt(0.5),
+                z.z * std::sqrt(2.0 / 3.0) - xz * std::sqrt(1.0 / 3.0));
+}
+// The pseudo-Kleinian fold (clamp form) with size 0.55 into the box c.
+vec3 pseudoKleinianFold(const vec3& z, const vec3& c) {
+    const vec3 w = glm::clamp(z, -c, c) * 2.0 - z;
+    return w * std::max(0.55 / dot(w, w), 1.0);
+}
+
+// The pseudo-Kleinian mod 2 (Benesi's box fold on iteration 3, both pseudo-Kleinian folds, the
+// added constant, the box fold softened on iteration 0) and the std DE (Benesi's T1 on iteration
+// 0, the general box fold, the pseudo-Kleinian fold; closed on r_xy).
+TEST(FractImport, PseudoKleinianModsFollowMandelbulber2sOrbits) {
+    expectTrapFollowsMandelbulber2(
+        "formula_1 117;\nN 6;\n[fractal_1]\ntransf_addition_constant_0777 0,5 0,7 0,3;\n"
+        "transf_function_enabledAy_false true;\ntransf_function_enabledF_false true;\ntransf_function_enabledx_false "
+        "true;\ntransf_function_enabled_false true;\ntransf_minimum_radius_05 0,55;\ntransf_offsetA_000 0,6 0,6 0,7;\n"
+        "transf_scale3D_000 0,3 0 0,6;\ntransf_scale3D_333 2,6 3 3;\ntransf_start_iterations_D 3;\n"
+        "transf_stop_iterations_A 1;\ntransf_stop_iterationsTM_1 4;\ntransf_addition_constant 0,2 -0,1 0;\n",
+        {"benesi_box_fold", "pseudo_kleinian", "pseudo_kleinian", "translate", "box_fold_soft", "box_fold_soft"},
+        [](const vec3& v, int i) {
+            const vec3 c(0.5, 0.7, 0.3), a(0.6, 0.6, 0.7);
+            vec3 z = v;
+            if (i == 3) {
+                z = glm::abs(intoBenesiFrame(z)) * vec3(2.6, 3.0, 3.0);
+                z = outOfBenesiFrame(glm::abs(z + 1.0) - glm::abs(z - 1.0) - z);
+            }
+            z = pseudoKleinianFold(pseudoKleinianFold(z, c), c) + vec3(0.2, -0.1, 0.0);
+            z = glm::abs(z + a) - glm::abs(z - a) - z;
+            if (i < 1) {
+                const vec3 s(0.3, 0.0, 0.6);
+                for (int k = 0; k < 3; ++k) {
+                    double add = 0.0;
+                    if (std::abs(z[k]) < a[k]) add = z[k] * z[k] / (2.0 * a[k]);
+                    if (std::abs(z[k]) > a[k] && std::abs(z[k]) < 2.0 * a[k])
+                        add = (2.0 * a[k] - std::abs(z[k])) * (2.0 * a[k] - std::abs(z[k])) / (2.0 * a[k]);
+                    z[k] -= glm::sign(z[k]) * add * s[k];
+                }
+            }
+            return z;
+        });
+    expectTrapFollowsMandelbulber2(
+        "formula_1 101;\nN 6;\n[fractal_1]\ntransf_benesi_T1_enabled_false true;\ntransf_function_enabled false;\n"
+        "transf_function_enabledF_false true;\ntransf_offset_000 0,01 0 0;\ntransf_offsetF_000 0,02 0 0;\n"
+        "transf_addition_constantP_000 0,6 0,7 0,8;\n",
+        {"benesi_t1", "box_fold_general", "pseudo_kleinian"}, [](const vec3& v, int i) {
+            vec3 z = v;
+            if (i < 1) z = outOfBenesiFrame(glm::abs(intoBenesiFrame(z)) * 2.0) - vec3(2.0, 0.0, 0.0);
+            z = glm::abs(z + vec3(0.02, 0.0, 0.0)) - glm::abs(z - vec3(0.01, 0.0, 0.0)) - z;
+            const vec3 c(0.7);
+            const vec3 w = glm::clamp(z, -c, c) * 2.0 - z;
+            return w * std::max(0.5 / dot(w, w), 1.0);
+        });
+    const mb2::FractImport std = importText("[main_parameters]\nformula_1 101;\n");
+    EXPECT_EQ(std.preset.formula.estimator.block->id, "escape_linear_xy");
+}
+
 // Jos Leys' Kleinian in Mandelbulber2's form closes with kleinian_de, Mandelbulber2's Jos-Kleinian DE
 // function: the estimate at random points is Mandelbulber2's, min(min(y, a - y), tweak) /
 // max(DE, offset), after its JosKleinianIteration written out here (the first iteration's sphere

@@ -18,7 +18,8 @@ namespace fraktal::mb2 {
 namespace {
 
 // Mandelbulber2's closing DE function of a formula (fractal_list.cpp; the reference's T5).
-enum class Mb2De { Linear, Log, Ifs, PseudoKleinian, JosKleinian, Difs, DeltaLinear, DeltaLog, None };
+// LinearXy: the linear DE on the distance to the z axis (pseudo_kleinian_std_de's r).
+enum class Mb2De { Linear, Log, Ifs, PseudoKleinian, JosKleinian, Difs, DeltaLinear, DeltaLog, LinearXy, None };
 // Whether Mandelbulber2 adds c after the formula by default (dont_add_c_constant flips it), or
 // the formula adds its own.
 enum class CAdd { Yes, No, Own };
@@ -482,6 +483,99 @@ void mapBoxFoldBulbPow2V2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
     });
 }
 
+// The pseudo-Kleinian mod 2, each part in its window: the rotation (R), Benesi's T1 (T) and
+// box fold (D to TM), the clamp-style pseudo-Kleinian fold (C) and its conditional form (B, the
+// same map), the added constant, then the box fold at offsetA with its parabolic softening (F; the
+// softening in window A only).
+void mapPseudoKleinianMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledS_false", "the sphere fold with a radius that varies with the iteration");
+    r.mustBeDefault("transf_function_enabledP_false", "the Menger prism fold");
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    if (r.boolean("transf_benesi_T1_enabled_false"))
+        b.within(r.integer("transf_start_iterations_T"), r.integer("transf_stop_iterationsT_1"), [&] {
+            b.add("benesi_t1",
+                  {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
+        });
+    if (r.boolean("transf_function_enabledx_false"))
+        b.within(r.integer("transf_start_iterations_D"), r.integer("transf_stop_iterationsTM_1"), [&] {
+            b.add("benesi_box_fold", {N::v("scale", r.vector("transf_scale3D_333")),
+                                      N::v("limit", r.vector("transf_addition_constant_111"))});
+        });
+    auto pseudoKleinian = [&] {
+        b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
+                                  N::f("size", r.number("transf_minimum_radius_05"))});
+    };
+    if (r.boolean("transf_function_enabledAy")) inWindow(r, b, "C", "C", pseudoKleinian);
+    if (r.boolean("transf_function_enabledAy_false")) inWindow(r, b, "B", "B", pseudoKleinian);
+    additionConstant(r, b);
+    if (r.boolean("transf_function_enabledF_false")) {
+        const int start = r.integer("transf_start_iterations_F"), stop = r.integer("transf_stop_iterations_F");
+        const vec3 limit = r.vector("transf_offsetA_000");
+        auto fold = [&](int from, int to, const vec3& softness) {
+            b.within(from, to, [&] { b.add("box_fold_soft", {N::v("limit", limit), N::v("softness", softness)}); });
+        };
+        if (r.boolean("transf_function_enabled_false")) {
+            const int softStart = std::max(start, r.integer("transf_start_iterations_A"));
+            const int softStop = std::min(stop, r.integer("transf_stop_iterations_A"));
+            fold(start, std::min(stop, softStart), vec3(0.0));
+            fold(softStart, softStop, r.vector("transf_scale3D_000"));
+            fold(std::max(start, softStop), stop, vec3(0.0));
+        } else {
+            fold(start, stop, vec3(0.0));
+        }
+    }
+}
+
+// The pseudo-Kleinian std DE (Knighty's, Theli-at's in Mandelbulber2), each part in its window: the
+// rotation (R), Benesi's T1 (start .. T1) and box fold (D .. TM), the general box fold (F), the
+// Menger step (M) and its added constant, the clamp-style pseudo-Kleinian fold (C) and its
+// conditional form (B), the added constant. Its DE is the linear one on r_xy (escape_linear_xy).
+void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledP_false", "the Menger prism fold");
+    r.mustBeDefault("transf_scaleB_1", "a scale inside the pseudo-Kleinian fold");
+    for (const char* axis : {"transf_function_enabledAx", "transf_function_enabledAy", "transf_function_enabledAz",
+                             "transf_function_enabledx", "transf_function_enabledy", "transf_function_enabledz"})
+        r.mustBeDefault(axis, "a box fold with one of its limits left out");
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    if (r.boolean("transf_benesi_T1_enabled_false"))
+        b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterationsT_1"), [&] {
+            b.add("benesi_t1",
+                  {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
+        });
+    if (r.boolean("transf_function_enabledx_false"))
+        b.within(r.integer("transf_start_iterations_D"), r.integer("transf_stop_iterationsTM_1"), [&] {
+            b.add("benesi_box_fold", {N::v("scale", r.vector("transf_scale3D_333")),
+                                      N::v("limit", r.vector("transf_addition_constant_111"))});
+        });
+    if (r.boolean("transf_function_enabledF_false"))
+        inWindow(r, b, "F", "F", [&] {
+            b.add("box_fold_general",
+                  {N::v("low", r.vector("transf_offsetF_000")), N::v("high", r.vector("transf_offset_000")),
+                   N::v("mirror", r.vector("transf_scale3D_111")), N::v("offset", r.vector("transf_offsetA_000"))});
+        });
+    if (r.boolean("transf_function_enabled"))
+        inWindow(r, b, "M", "M", [&] {
+            const double s = r.number("transf_scale_3");
+            const vec3 corner = r.vector("transf_constant_multiplierA_111");
+            if (std::abs(corner.z - 1.0) > 1e-9)
+                r.unsupported("transf_constant_multiplierA_111.z " + fmt(corner.z) +
+                              ": the z shift's threshold stays at 1");
+            if (std::abs(s - 1.0) < 1e-9)
+                return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+            b.add("menger_rotate", {N::f("scale", s), N::v("offset", 2.0 * corner / (s - 1.0))});
+            const vec3 add = r.vector("transf_addition_constantA_000");
+            if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+        });
+    auto pseudoKleinian = [&] {
+        b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
+                                  N::f("size", r.number("transf_minimum_radius_05"))});
+    };
+    if (r.boolean("transf_function_enabledAy")) inWindow(r, b, "C", "C", pseudoKleinian);
+    if (r.boolean("transf_function_enabledAy_false")) inWindow(r, b, "B", "B", pseudoKleinian);
+    additionConstant(r, b);
+}
+
 // Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
 // when enabled, the offset, then the sphere fold (window M) and scale (window S), the main
 // rotation (window R); +c.
@@ -718,6 +812,8 @@ constexpr Mapping kMappings[] = {
     {70, mapEiffieMsltoe},
     {113, mapMengerSmooth},
     {114, mapMengerSmoothMod1},
+    {117, mapPseudoKleinianMod2},
+    {101, mapPseudoKleinianStdDE},
 };
 
 MapFn findMapping(int id) {
@@ -759,6 +855,7 @@ void addEstimator(Formula& f, const EstimatorChoice& choice, Reader& main, const
             return;
         }
         case Mb2De::Ifs: set("escape_linear", {{"offset", 2.0}}); return;
+        case Mb2De::LinearXy: set("escape_linear_xy", {{"offset", std::clamp(offset, 0.0, 10.0)}}); return;
         case Mb2De::Log:
         case Mb2De::DeltaLog:
             set(choice.delta || choice.de == Mb2De::DeltaLog ? "escape_gradient" : "escape_log", {});
