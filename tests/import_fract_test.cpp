@@ -455,6 +455,8 @@ struct OrbitCase {
     std::vector<std::string> blocks;
     vec3 (*step)(const vec3& z, const vec3& c);
     double extent = 1.5;  // points are drawn from [-extent, extent]^3
+    // In place of `step` where a part runs on some iterations only (i counts from 0).
+    vec3 (*stepAt)(const vec3& z, const vec3& c, int i) = nullptr;
 };
 void expectOrbitsFollowMandelbulber2(const OrbitCase& c) {
     SCOPED_TRACE(c.body);
@@ -472,7 +474,7 @@ void expectOrbitsFollowMandelbulber2(const OrbitCase& c) {
         vec3 z = point;
         bool escaped = false;
         for (int i = 0; i < f.iterations && !escaped; ++i) {
-            z = c.step(z, point);
+            z = c.stepAt ? c.stepAt(z, point, i) : c.step(z, point);
             escaped = !(length(z) <= f.bailout);
         }
         inside += !escaped;
@@ -649,6 +651,50 @@ TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {
              z.z = -std::sqrt((z.z - 1.0 / 3.0) * (z.z - 1.0 / 3.0) + k) + 1.0 / 3.0;
              z = vec3(3.0 * z.x - 2.0, 3.0 * z.y - 2.0, 3.0 * z.z);
              return vec3(glm::sign(z.x) * 0.2 + z.x, z.y, z.z);
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
+// Mandelbulber2's Mandelbox then Menger (two Menger steps an iteration from iteration 1, each
+// adding c) and the abox mod Kali V2 with z left unfolded (its constant added before and after
+// the rotation).
+TEST(FractImport, MandelboxMengerAndAboxModKaliV2FollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 91;\nN 5;\n[fractal_1]\nmandelbox_scale -1,9;\ntransf_int_1 2;\ntransf_start_iterations_M 1;\n"
+         "transf_function_enabledx_false true;\n",
+         {"box_fold_axes", "sphere_fold", "scale", "menger_rotate", "add_c", "menger_rotate", "add_c", "add_c"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3& c, int i) {
+             vec3 z = glm::clamp(v, -1.0, 1.0) * 2.0 - v;
+             const double r2 = dot(z, z);
+             z *= r2 < 0.25 ? 4.0 : r2 < 1.0 ? 1.0 / r2 : 1.0;
+             z *= -1.9;
+             for (int k = 0; k < 2 && i >= 1; ++k) {
+                 z = glm::abs(z);
+                 if (z.x < z.y) std::swap(z.x, z.y);
+                 if (z.x < z.z) std::swap(z.x, z.z);
+                 if (z.y < z.z) std::swap(z.y, z.z);
+                 z = z * 3.0 - vec3(2.0, 2.0, 0.0);
+                 if (z.z > 1.0) z.z -= 2.0;
+                 z += c;
+             }
+             return z + c;
+         }},
+        {"formula_1 135;\nN 6;\n[fractal_1]\ntransf_function_enabledM false;\ntransf_maxR2_1 1,5;\n"
+         "transf_scale_015 2;\ntransf_rotation 26 0 0;\ntransf_rotation_enabled true;\n"
+         "transf_addition_constant 0,1 0 0;\n",
+         {"plane_fold", "plane_fold", "axis_scale", "translate", "sphere_fold", "scale", "translate", "rotate",
+          "translate", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z(0.5 - std::abs(v.x), 0.5 - std::abs(v.y), v.z);
+             const double rr = dot(z, z);
+             z *= 2.0 * (rr < 0.25 ? 1.5 / 0.25 : rr < 1.5 ? 1.5 / rr : 1.0);
+             z += vec3(0.1, 0.0, 0.0);
+             const double a = glm::radians(26.0);
+             z = vec3(z.x, std::cos(a) * z.y - std::sin(a) * z.z, std::sin(a) * z.y + std::cos(a) * z.z);
+             return z + vec3(0.1, 0.0, 0.0) + c;
          }},
     };
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);

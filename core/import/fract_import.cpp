@@ -527,6 +527,49 @@ void mapPseudoKleinianMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
     }
 }
 
+// The Mandelbox then Menger steps (Mandelbulber2's mandelbox_menger), each part in its window: the
+// box fold (A; z's limit times transf_scale_1), the sphere fold (B), the main rotation (R), the
+// scale (S), then transf_int_1 Menger steps (M), each with its added constant and, with the c
+// option, c times the B multiplier.
+void mapMandelboxMenger(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("mandelbox_rotations_enabled", "the box fold in tilted frames");
+    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, its axes reordered");
+    const double limit = r.number("mandelbox_folding_limit"), value = r.number("mandelbox_folding_value");
+    if (std::abs(value - 2.0 * limit) > 1e-9)
+        r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
+                      ": fraktal's box fold reflects at the limit (value = 2 x limit)");
+    inWindow(r, b, "A", "A", [&] {
+        b.add("box_fold_axes",
+              {N::v("limit", vec3(limit, limit, limit * r.number("transf_scale_1"))), N::f("fold_z", 1.0)});
+    });
+    inWindow(r, b, "B", "B", [&] {
+        sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+    });
+    if (r.boolean("mandelbox_main_rotation_enabled"))
+        inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
+    inWindow(r, b, "S", "S", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
+    if (!r.boolean("transf_function_enabled")) return;
+    const double s = r.number("transf_scale_3");
+    const vec3 corner = r.vector("transf_constant_multiplierA_111");
+    if (std::abs(corner.z - 1.0) > 1e-9)
+        r.unsupported("transf_constant_multiplierA_111.z " + fmt(corner.z) + ": the z shift's threshold stays at 1");
+    if (std::abs(s - 1.0) < 1e-9) return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+    const bool addC = r.boolean("transf_function_enabledx_false");
+    if (addC) r.mustBeDefault("mandelbulbMulti_order_of_xyz_C", "c's axes reordered");
+    const double weight = addC ? uniformMultiplier(r, "transf_constant_multiplierB_111") : 0.0;
+    inWindow(r, b, "M", "M", [&] {
+        for (int k = 0; k < std::clamp(r.integer("transf_int_1"), 0, 8); ++k) {
+            b.add("menger_rotate", {N::f("scale", s), N::v("offset", 2.0 * corner / (s - 1.0))});
+            const vec3 add = r.vector("transf_addition_constantA_000");
+            if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+            if (addC) b.add("add_c", {N::f("weight", weight)});
+        }
+    });
+    if (r.integer("transf_int_1") > 8)
+        r.unsupported("transf_int_1 " + r.raw("transf_int_1") + ": more than 8 Menger steps an iteration");
+}
+
 // The pseudo-Kleinian std DE (Knighty's, Theli-at's in Mandelbulber2), each part in its window: the
 // rotation (R), Benesi's T1 (start .. T1) and box fold (D .. TM), the general box fold (F), the
 // Menger step (M) and its added constant, the clamp-style pseudo-Kleinian fold (C) and its
@@ -634,6 +677,32 @@ void mapAboxModKali(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("translate", {N::v("offset", r.vector("transf_addition_constant_0555"))});
     sphereFold(b, std::sqrt(std::max(r.number("transf_minimum_radius_06"), 0.0)), 1.0);
     b.add("scale", {N::f("scale", r.number("transf_scale_015"))});
+}
+
+// Its V2: a - |v| on x and y (and z unless transf_function_enabledM is off), the sphere fold of
+// squared radii minR2 and maxR2 times scale_015, then the added constant on both sides of the
+// rotation (window start .. stop), as Mandelbulber2 adds it twice.
+void mapAboxModKaliV2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
+    r.mustBeDefault("transf_function_enabledS_false", "signs restored from the point before the fold");
+    const vec3 a = r.vector("transf_addition_constant_0555");
+    if (r.boolean("transf_function_enabledM")) {
+        b.add("abs_fold", {});
+        b.add("scale", {N::f("scale", -1.0)});
+        b.add("translate", {N::v("offset", a)});
+    } else {
+        b.add("plane_fold", {N::v("normal", vec3(1, 0, 0)), N::f("offset", 0.0)});
+        b.add("plane_fold", {N::v("normal", vec3(0, 1, 0)), N::f("offset", 0.0)});
+        b.add("axis_scale", {N::v("scale", vec3(-1.0, -1.0, 1.0))});
+        b.add("translate", {N::v("offset", vec3(a.x, a.y, 0.0))});
+    }
+    squaredRadiiSphereFold(r, b);
+    b.add("scale", {N::f("scale", r.number("transf_scale_015"))});
+    additionConstant(r, b);
+    if (r.boolean("transf_rotation_enabled"))
+        b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"),
+                 [&] { b.rotation(setRotation2(r.vector("transf_rotation"))); });
+    additionConstant(r, b);
 }
 
 // msltoe's Riemann spheres: the rotation before the step (the first and V2), V1's inside it.
@@ -814,6 +883,8 @@ constexpr Mapping kMappings[] = {
     {114, mapMengerSmoothMod1},
     {117, mapPseudoKleinianMod2},
     {101, mapPseudoKleinianStdDE},
+    {91, mapMandelboxMenger},
+    {135, mapAboxModKaliV2},
 };
 
 MapFn findMapping(int id) {
