@@ -33,6 +33,7 @@
 #include "formulas/plane_fold.hpp"
 #include "formulas/primitives.hpp"
 #include "formulas/pseudo_kleinian.hpp"
+#include "formulas/quadratic_bulbs.hpp"
 #include "formulas/quaternion.hpp"
 #include "formulas/riemann_sphere.hpp"
 #include "formulas/rotate.hpp"
@@ -99,6 +100,8 @@ constexpr std::array kBlocks{
     describe<BenesiBoxFold>(),
     describe<BoxFoldSoft>(),
     describe<BoxFoldGeneral>(),
+    describe<Mandelbulb2>(),
+    describe<Lkmitch>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -700,6 +700,44 @@ TEST(FractImport, MandelboxMengerAndAboxModKaliV2FollowMandelbulber2sOrbits) {
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// Buddhi's Mandelbulb 2, lkmitch's quadratic and the buffalo bulb (z's abs before, x's after,
+// z not mirrored).
+TEST(FractImport, QuadraticBulbsFollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 13;\nN 6;\n",
+         {"mandelbulb2", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             const double r = length(v);
+             vec3 z = v;
+             auto square = [&z](int a, int b) {
+                 const double pair = std::sqrt(z[a] * z[a] + z[b] * z[b]);
+                 z /= pair;
+                 const double t = z[a] * z[a] - z[b] * z[b];
+                 z[b] = 2.0 * z[a] * z[b];
+                 z[a] = t;
+                 z *= pair;
+             };
+             square(0, 1);
+             square(1, 2);
+             square(0, 2);
+             return z * r + c;
+         }},
+        {"formula_1 49;\nN 6;\n",
+         {"lkmitch", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             return vec3(z.x * z.x - 2.0 * z.y * z.z, z.z * z.z + 2.0 * z.x * z.y, z.y * z.y - 2.0 * z.x * z.z) + c;
+         }},
+        {"formula_1 41;\nN 6;\n[fractal_1]\nbuffalo_preabs_z true;\nbuffalo_abs_x true;\nbuffalo_pos_z true;\n",
+         {"plane_fold", "mandelbulb_sine", "plane_fold", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             const vec3 z(v.x, v.y, std::abs(v.z));
+             const double x2 = z.x * z.x, y2 = z.y * z.y, t = 1.0 - z.z * z.z / (x2 + y2);
+             return vec3(std::abs((x2 - y2) * t), 2.0 * z.x * z.y * t, 2.0 * z.z * std::sqrt(x2 + y2)) + c;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 // Pseudo-Kleinian orbits stay bounded (no escape to compare): the orbit trap's least |v| over N
 // iterations against Mandelbulber2's iteration written out (`step(z, i)`, i the iteration for its
 // windows) for 2000 points; at most 1 % may differ (a fold's edge).

@@ -751,6 +751,26 @@ void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportIte
                                   N::v("multiplier", vec3(r.vector("transf_scale3D_000").x, offset.y, offset.z))});
 }
 
+void mapMandelbulb2(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("mandelbulb2", {}); }
+void mapLkmitch(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("lkmitch", {}); }
+
+// The buffalo bulb: White's power-2 triplex (the sine bulb of power 2, z mirrored unless
+// buffalo_pos_z) between |axis| folds chosen per axis (plane folds through the origin).
+void mapBuffalo(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    auto absFolds = [&](const std::string& prefix) {
+        for (int k = 0; k < 3; ++k)
+            if (r.boolean(prefix + "xyz"[k])) {
+                vec3 normal(0.0);
+                normal[k] = 1.0;
+                b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+            }
+    };
+    absFolds("buffalo_preabs_");
+    b.add("mandelbulb_sine", {N::f("power", 2.0)});
+    if (!r.boolean("buffalo_pos_z")) b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -1.0))});
+    absFolds("buffalo_abs_");
+}
+
 void mapCoastalbrot(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("coastalbrot", {}); }
 
 void mapMandelbulbEye(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -885,6 +905,9 @@ constexpr Mapping kMappings[] = {
     {101, mapPseudoKleinianStdDE},
     {91, mapMandelboxMenger},
     {135, mapAboxModKaliV2},
+    {13, mapMandelbulb2},
+    {49, mapLkmitch},
+    {41, mapBuffalo},
 };
 
 MapFn findMapping(int id) {
