@@ -33,6 +33,54 @@ struct PseudoKleinian {
     }
 };
 
+// The pseudo-Kleinian formulas' prism fold (Mandelbulber2's "prism shape", fractal_formulas.cpp
+// PseudoKleinianIteration and its mods): |y| and |z|; x and y moved along (sqrt 3, -1) by
+// t = max(0, scale (y / 2 - x sqrt(3) / 2)) (at scale 1 the reflection in the plane at 60 degrees),
+// y folded to |y - t|; y and z sorted; shifted by gap (sqrt(3)/2, 3/2, 3/2); z and x sorted;
+// where x > 0, y and z clamped at 0. The moving part is I - 2 scale n n^T (n the plane's unit
+// normal), which stretches by max(1, |1 - 2 scale|); the clamp where x > 0 makes the map jump
+// across x = 0.
+struct PrismFold {
+    static constexpr std::string_view id = "prism_fold";
+    static constexpr std::string_view label = "Prism fold";
+    static constexpr std::string_view help =
+        "The pseudo-Kleinian prism shape: folds onto a 60-degree wedge, sorts, shifts by gap, clamps.";
+    static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = "its map jumps across x = 0, where it clamps y and z at 0 on one side";
+    static constexpr std::array params{
+        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 4.0, "Strength of the 60-degree fold (1 reflects)."},
+        ParamDecl{"gap", ParamType::Vec3, {0.0, 0.0, 0.0}, -4.0, 4.0, "Shift, times (sqrt(3)/2, 3/2, 3/2)."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    vec3 v = vec3(p.x, abs(p.y), abs(p.z));
+    float t = max(0.0, (v.x * -0.866025403784439 + v.y * 0.5) * scale);
+    v.x += t * 1.73205080756888;
+    v.y = abs(v.y - t);
+    if (v.y > v.z) v.yz = v.zy;
+    v -= gap * vec3(0.866025403784439, 1.5, 1.5);
+    if (v.z > v.x) v.xz = v.zx;
+    if (v.x > 0.0) v.yz = max(v.yz, 0.0);
+    p.xyz = v;
+    p.w *= max(1.0, abs(1.0 - 2.0 * scale));
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double scale = a.f(0);
+        const vec3 gap = a.v3(1);
+        vec3 v = vec3(p.xyz.x, abs(p.xyz.y), abs(p.xyz.z));
+        double t = std::max(0.0, (v.x * -0.866025403784439 + v.y * 0.5) * scale);
+        v.x += t * 1.73205080756888;
+        v.y = abs(v.y - t);
+        if (v.y > v.z) std::swap(v.y, v.z);
+        v -= gap * vec3(0.866025403784439, 1.5, 1.5);
+        if (v.z > v.x) std::swap(v.x, v.z);
+        if (v.x > 0.0) v.y = std::max(v.y, 0.0), v.z = std::max(v.z, 0.0);
+        p.xyz = v;
+        p.w *= max(1.0, abs(1.0 - 2.0 * scale));
+    }
+};
+
 // Knighty's pseudo-Kleinian distance: the orbit's end point against a thin cylinder about the
 // z axis, max(rxy - thickness, |rxy z| / r), over the running derivative, less offset
 // (Knighty's DEoffset, Fragmentarium "PseudoKleinian.frag", subtracted after the division as

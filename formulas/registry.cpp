@@ -102,6 +102,7 @@ constexpr std::array kBlocks{
     describe<BoxFoldGeneral>(),
     describe<Mandelbulb2>(),
     describe<Lkmitch>(),
+    describe<PrismFold>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

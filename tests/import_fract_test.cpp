@@ -228,10 +228,10 @@ TEST(FractImport, NodeSchedulesFollowTheSequenceIterationByIteration) {
 
 TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
     const mb2::FractImport r = importText(
-        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 13;\nformula_weight_1 0,5;\n"
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 79;\nformula_weight_1 0,5;\n"
         "primitive_torus_1_enabled true;\n[fractal_2]\n");
     EXPECT_FALSE(r.faithful());
-    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (mandelbulb2)", "no fraktal blocks")) << r.unsupported.size();
+    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (quaternion4d)", "no fraktal blocks")) << r.unsupported.size();
     EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "formula_weight_1 0,5: a blend"));
     EXPECT_TRUE(mentions(r.unsupported, "main", "primitive torus 1"));
     // Values outside a block's range.
@@ -822,6 +822,37 @@ TEST(FractImport, PseudoKleinianModsFollowMandelbulber2sOrbits) {
             vec3 z = v;
             if (i < 1) z = outOfBenesiFrame(glm::abs(intoBenesiFrame(z)) * 2.0) - vec3(2.0, 0.0, 0.0);
             z = glm::abs(z + vec3(0.02, 0.0, 0.0)) - glm::abs(z - vec3(0.01, 0.0, 0.0)) - z;
+            const vec3 c(0.7);
+            const vec3 w = glm::clamp(z, -c, c) * 2.0 - z;
+            return w * std::max(0.5 / dot(w, w), 1.0);
+        });
+    // The plain pseudo-Kleinian with its first iteration's inversion, the prism fold (iteration 0) and
+    // Tglad's fold without z.
+    expectTrapFollowsMandelbulber2(
+        "formula_1 103;\nN 5;\n[fractal_1]\ntransf_sphere_inversion_enabled_false true;\ntransf_maxR2_1 0,8;\n"
+        "transf_offset_000 0,1 0 0;\ntransf_function_enabledP_false true;\ntransf_scale 1,2;\n"
+        "transf_constant_multiplier_000 0,1 0 0,2;\ntransf_function_enabledBy_false true;\ntransf_function_enabledBy "
+        "false;\ntransf_addition_constant_111 0,9 0,8 1;\n",
+        {"translate", "sphere_invert", "translate", "prism_fold", "box_fold_axes", "pseudo_kleinian"},
+        [](const vec3& v, int i) {
+            vec3 z = v;
+            if (i < 1) {
+                z += vec3(0.1, 0.0, 0.0);
+                z *= 0.8 / dot(z, z);
+                z -= vec3(0.1, 0.0, 0.0);
+                z.y = std::abs(z.y);
+                z.z = std::abs(z.z);
+                const double t = std::max(0.0, (z.x * -std::sqrt(0.75) + z.y * 0.5) * 1.2);
+                z.x -= t * -std::sqrt(3.0);
+                z.y = std::abs(z.y - t);
+                if (z.y > z.z) std::swap(z.y, z.z);
+                z -= vec3(0.1, 0.0, 0.2) * vec3(std::sqrt(0.75), 1.5, 1.5);
+                if (z.z > z.x) std::swap(z.z, z.x);
+                if (z.x > 0.0) z.y = std::max(0.0, z.y), z.z = std::max(0.0, z.z);
+            }
+            const vec3 limit(0.9, 0.8, 1.0);
+            const vec3 folded = glm::abs(z + limit) - glm::abs(z - limit) - z;
+            z = vec3(folded.x, folded.y, z.z);
             const vec3 c(0.7);
             const vec3 w = glm::clamp(z, -c, c) * 2.0 - z;
             return w * std::max(0.5 / dot(w, w), 1.0);

@@ -227,6 +227,22 @@ double uniformMultiplier(Reader& r, const std::string& key) {
     return m.x;
 }
 
+// The steps `steps` adds, in the formula's window transf_start_iterations_<start> ..
+// transf_stop_iterations_<stop>.
+template <class Steps>
+void inWindow(Reader& r, NodeBuilder& b, const std::string& start, const std::string& stop, Steps&& steps) {
+    b.within(r.integer("transf_start_iterations_" + start), r.integer("transf_stop_iterations_" + stop), steps);
+}
+
+// The pseudo-Kleinian formulas' prism fold in window P .. P1.
+void prismFold(Reader& r, NodeBuilder& b) {
+    if (!r.boolean("transf_function_enabledP_false")) return;
+    b.within(r.integer("transf_start_iterations_P"), r.integer("transf_stop_iterations_P1"), [&] {
+        b.add("prism_fold",
+              {N::f("scale", r.number("transf_scale")), N::v("gap", r.vector("transf_constant_multiplier_000"))});
+    });
+}
+
 // ---- The formulas fraktal's blocks express (reference T5 "maps", T6 for each kernel) ----
 
 // The sphere fold's inner radius: Mandelbulber2 files use 0 on purpose (no inner scaling), below
@@ -360,11 +376,35 @@ void mapXenodreambuie(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("mandelbulb_cosine", {N::f("power", r.number("power"))});
 }
 
+// The pseudo-Kleinian: the first iteration's sphere inversion (v + offset inverted in the sphere of
+// squared radius maxR2, then + addA - offset), the prism fold (P), Tglad's fold (E; z's with
+// transf_function_enabledBy) and the box fold (A; z's limit times transf_scale_1), the clamp fold
+// and inversion, the rotation (R) and the added constant.
 void mapPseudoKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    r.mustBeDefault("transf_sphere_inversion_enabled_false", "a first-iteration sphere inversion (part 2)");
-    r.mustBeDefault("transf_function_enabledP_false", "the Menger prism fold");
-    r.mustBeDefault("transf_function_enabledBy_false", "the Tglad fold");
-    r.mustBeDefault("transf_function_enabledBx_false", "the box fold before the clamp");
+    if (r.boolean("transf_sphere_inversion_enabled_false"))
+        b.within(0, 1, [&] {
+            const vec3 offset = r.vector("transf_offset_000");
+            if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+            b.add("sphere_invert", {N::f("radius", std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)))});
+            const vec3 back = r.vector("transf_addition_constantA_000") - offset;
+            if (length(back) > 0.0) b.add("translate", {N::v("offset", back)});
+        });
+    prismFold(r, b);
+    if (r.boolean("transf_function_enabledBy_false"))
+        b.within(r.integer("transf_start_iterations_E"), r.integer("transf_stop_iterations_E"), [&] {
+            b.add("box_fold_axes", {N::v("limit", r.vector("transf_addition_constant_111")),
+                                    N::f("fold_z", r.boolean("transf_function_enabledBy") ? 1.0 : 0.0)});
+        });
+    if (r.boolean("transf_function_enabledBx_false")) {
+        const double limit = r.number("mandelbox_folding_limit"), value = r.number("mandelbox_folding_value");
+        if (std::abs(value - 2.0 * limit) > 1e-9)
+            r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
+                          ": fraktal's box fold reflects at the limit (value = 2 x limit)");
+        inWindow(r, b, "A", "A", [&] {
+            b.add("box_fold_axes",
+                  {N::v("limit", vec3(limit, limit, limit * r.number("transf_scale_1"))), N::f("fold_z", 1.0)});
+        });
+    }
     b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
                               N::f("size", r.number("transf_minimum_radius_05"))});
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
@@ -436,13 +476,6 @@ void mapAboxVsIcen1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approxim
     if (length(juliaC) > 0.0) b.add("translate", {N::v("offset", juliaC)});
 }
 
-// The steps `steps` adds, in the formula's window transf_start_iterations_<start> ..
-// transf_stop_iterations_<stop>.
-template <class Steps>
-void inWindow(Reader& r, NodeBuilder& b, const std::string& start, const std::string& stop, Steps&& steps) {
-    b.within(r.integer("transf_start_iterations_" + start), r.integer("transf_stop_iterations_" + stop), steps);
-}
-
 // The sphere fold of squared radii transf_minR2_p25 (inner) and transf_maxR2_1 (fixed).
 void squaredRadiiSphereFold(Reader& r, NodeBuilder& b) {
     sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
@@ -489,8 +522,8 @@ void mapBoxFoldBulbPow2V2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
 // softening in window A only).
 void mapPseudoKleinianMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_function_enabledS_false", "the sphere fold with a radius that varies with the iteration");
-    r.mustBeDefault("transf_function_enabledP_false", "the Menger prism fold");
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
+    prismFold(r, b);
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
     if (r.boolean("transf_benesi_T1_enabled_false"))
         b.within(r.integer("transf_start_iterations_T"), r.integer("transf_stop_iterationsT_1"), [&] {
@@ -575,11 +608,11 @@ void mapMandelboxMenger(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 // Menger step (M) and its added constant, the clamp-style pseudo-Kleinian fold (C) and its
 // conditional form (B), the added constant. Its DE is the linear one on r_xy (escape_linear_xy).
 void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    r.mustBeDefault("transf_function_enabledP_false", "the Menger prism fold");
     r.mustBeDefault("transf_scaleB_1", "a scale inside the pseudo-Kleinian fold");
     for (const char* axis : {"transf_function_enabledAx", "transf_function_enabledAy", "transf_function_enabledAz",
                              "transf_function_enabledx", "transf_function_enabledy", "transf_function_enabledz"})
         r.mustBeDefault(axis, "a box fold with one of its limits left out");
+    prismFold(r, b);
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
     if (r.boolean("transf_benesi_T1_enabled_false"))
         b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterationsT_1"), [&] {
@@ -846,6 +879,28 @@ void mapMandelboxSmooth(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
 }
 
+// transf_abs_add_multi: |v + a| - |v - o| - m v + add per axis, the general box fold.
+void mapTransfAbsAddMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    for (const char* axis : {"transf_function_enabledAx", "transf_function_enabledAy", "transf_function_enabledAz",
+                             "transf_function_enabledx", "transf_function_enabledy", "transf_function_enabledz"})
+        r.mustBeDefault(axis, "a box fold with one of its limits left out");
+    b.add("box_fold_general",
+          {N::v("low", r.vector("transf_addition_constant")), N::v("high", r.vector("transf_offset_000")),
+           N::v("mirror", r.vector("transf_scale3D_111")), N::v("offset", r.vector("transf_offsetA_000"))});
+}
+
+// transf_spherical_inv: v + offset scaled, inverted in the unit sphere, less offset and the added
+// constant. Its conditional mode (inversion within a radius) is refused.
+void mapTransfSphericalInv(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledz_false", "the conditional inversion (within the fixed radius)");
+    const vec3 offset = r.vector("mandelbox_offset");
+    if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+    b.add("scale", {N::f("scale", r.number("transf_scale"))});
+    b.add("sphere_invert", {N::f("radius", 1.0)});
+    const vec3 back = offset + r.vector("transf_addition_constant");
+    if (length(back) > 0.0) b.add("translate", {N::v("offset", -back)});
+}
+
 void mapTransfAddConstant(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("translate",
           {N::v("offset", r.vector("transf_addition_constant") + r.vector("transf_addition_constantA_000"))});
@@ -908,6 +963,8 @@ constexpr Mapping kMappings[] = {
     {13, mapMandelbulb2},
     {49, mapLkmitch},
     {41, mapBuffalo},
+    {1029, mapTransfAbsAddMulti},
+    {1055, mapTransfSphericalInv},
 };
 
 MapFn findMapping(int id) {
