@@ -103,6 +103,7 @@ constexpr std::array kBlocks{
     describe<Mandelbulb2>(),
     describe<Lkmitch>(),
     describe<PrismFold>(),
+    describe<AddCAxes>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -727,6 +727,13 @@ TEST(FractImport, QuadraticBulbsFollowMandelbulber2sOrbits) {
          [](const vec3& z, const vec3& c) {
              return vec3(z.x * z.x - 2.0 * z.y * z.z, z.z * z.z + 2.0 * z.x * z.y, z.y * z.y - 2.0 * z.x * z.z) + c;
          }},
+        // c times a factor per axis (add_c_axes).
+        {"formula_1 49;\nN 6;\nfractal_constant_factor 1 0,5 0,8;\n",
+         {"lkmitch", "add_c_axes"},
+         [](const vec3& z, const vec3& c) {
+             return vec3(z.x * z.x - 2.0 * z.y * z.z, z.z * z.z + 2.0 * z.x * z.y, z.y * z.y - 2.0 * z.x * z.z) +
+                    c * vec3(1.0, 0.5, 0.8);
+         }},
         {"formula_1 41;\nN 6;\n[fractal_1]\nbuffalo_preabs_z true;\nbuffalo_abs_x true;\nbuffalo_pos_z true;\n",
          {"plane_fold", "mandelbulb_sine", "plane_fold", "add_c"},
          [](const vec3& v, const vec3& c) {

@@ -484,16 +484,33 @@ void squaredRadiiSphereFold(Reader& r, NodeBuilder& b) {
 
 // Tom Lowe's box in DarkBeam's and mclarekin's form: each part runs in its own iteration window
 // (transf_start/stop_iterations_B fold, _S sphere fold, _A scale, _R rotation, _C tweak scale).
+// The fold's parabolic softening (window D .. D1) is the soft box fold where the windows meet.
 void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
-    r.mustBeDefault("transf_function_enabled_false", "the soft (parabolic) fold");
     r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and z");
     r.mustBeDefault("transf_function_enabledy_false", "a sphere fold radius that varies with the iteration");
     r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c");
-    inWindow(r, b, "B", "B", [&] {
-        tgladFold(r, b, r.vector("transf_addition_constant_111"), r.boolean("transf_function_enabled"), approximated);
-    });
+    const vec3 limit = r.vector("transf_addition_constant_111");
+    const bool foldZ = r.boolean("transf_function_enabled");
+    const int foldStart = r.integer("transf_start_iterations_B"), foldStop = r.integer("transf_stop_iterations_B");
+    auto fold = [&](int from, int to) { b.within(from, to, [&] { tgladFold(r, b, limit, foldZ, approximated); }); };
+    const int softStart = std::max(r.integer("transf_start_iterations_D"), 0);
+    const int softStop = std::min(r.integer("transf_stop_iterations_D1"), kMaxIterations);
+    if (r.boolean("transf_function_enabled_false") && softStart < softStop) {
+        if (!foldZ || softStart < foldStart || softStop > foldStop)
+            r.unsupported(
+                "transf_function_enabled_false: the parabolic softening apart from the box fold of x, y "
+                "and z (iterations " +
+                std::to_string(softStart) + " to " + std::to_string(softStop) + ")");
+        fold(foldStart, std::min(foldStop, softStart));
+        b.within(softStart, softStop, [&] {
+            b.add("box_fold_soft", {N::v("limit", limit), N::v("softness", r.vector("transf_scale3D_000"))});
+        });
+        fold(std::max(foldStart, softStop), foldStop);
+    } else {
+        fold(foldStart, foldStop);
+    }
     inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
     inWindow(r, b, "A", "A", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
     additionConstant(r, b);
@@ -1346,8 +1363,7 @@ FractImport importFract(const FractFile& file) {
     const vec3 factor = uniformFactor ? vec3(*uniformFactor) : main.vector("fractal_constant_factor");
     const bool julia = main.boolean("julia_mode");
     const vec3 juliaC = main.vector("julia_c");
-    if (std::abs(factor.x - factor.y) > 1e-12 || std::abs(factor.x - factor.z) > 1e-12)
-        main.unsupported("fractal_constant_factor " + fmt(factor) + ": a per-axis multiple of c");
+    const bool perAxisFactor = std::abs(factor.x - factor.y) > 1e-12 || std::abs(factor.x - factor.z) > 1e-12;
     const bool boxFolding = main.boolean("box_folding"), sphericalFolding = main.boolean("spherical_folding");
     std::map<Mb2De, int> deVotes;
     double bailout = 0.0;
@@ -1400,7 +1416,10 @@ FractImport importFract(const FractFile& file) {
         map(r, b, out.approximated);
         const bool dontAddC = main.boolean("dont_add_c_constant_" + n);
         const bool addC = info->c == CAdd::Yes ? !dontAddC : info->c == CAdd::No ? dontAddC : false;
-        if (addC) {
+        if (addC && perAxisFactor) {
+            b.add("add_c_axes",
+                  {N::v("weights", factor), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor)});
+        } else if (addC) {
             b.add("add_c",
                   {N::f("weight", factor.x), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor.x)});
         }
