@@ -953,6 +953,20 @@ TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {
     const mb2::FractImport off =
         importText("[main_parameters]\nformula_1 125;\n[fractal_1]\nmandelbox_offset 0 0 0,2;\n");
     EXPECT_TRUE(mentions(off.unsupported, "slot 1 (box_fold_bulb_pow2_v2)", "centred off the origin"));
+    // V3 adds the octahedral fold with |x| and a scale about offset_100 (window D); a scale that
+    // varies with the iteration is refused.
+    const mb2::FractImport v3 = importText(
+        "[main_parameters]\nformula_1 126;\n[fractal_1]\ntransf_function_enabledD_false true;\ntransf_scaleA_2 1,5;\n"
+        "transf_stop_iterations_D 5;\n");
+    ASSERT_TRUE(v3.faithful()) << v3.unsupported.front().text();
+    EXPECT_EQ(blockIds(v3.preset.formula),
+              (std::vector<std::string>{"box_fold", "sphere_fold", "scale", "octahedral_fold", "plane_fold", "scale",
+                                        "mandelbulb_sine", "axis_scale", "add_c"}));
+    EXPECT_EQ(v3.preset.formula.nodes[5].stop, 5);
+    EXPECT_EQ(v3.preset.formula.nodes[5].values[0].x, 1.5);
+    const mb2::FractImport varying =
+        importText("[main_parameters]\nformula_1 126;\n[fractal_1]\ntransf_scale_vary_0 0,1;\n");
+    EXPECT_TRUE(mentions(varying.unsupported, "slot 1 (box_fold_bulb_pow2_v3)", "varies with the iteration"));
 }
 
 // Mandelbulber2's fish eye and equirectangular cameras: fraktal's projections, 180 x fov degrees

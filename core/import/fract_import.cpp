@@ -669,6 +669,35 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
     additionConstant(r, b);
 }
 
+// box_fold_bulb_pow2_v3: V2's parts (fold B, sphere fold S, scale C), then Benesi's box fold (TM),
+// the octahedral fold with |x| and the scale about offset_100 (D), the rotation (R), before the
+// power (A). Its first-iteration sphere inversion, Menger fold and varying scale are refused.
+void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    r.mustBeDefault("transf_sphere_inversion_enabled_false", "a first-iteration sphere inversion");
+    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
+    r.mustBeDefault("transf_scale_vary_0", "a scale that varies with the iteration");
+    r.mustBeDefault("transf_function_enabledF_false", "the Menger fold after an offset abs");
+    inWindow(r, b, "B", "B", [&] { tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated); });
+    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
+    inWindow(r, b, "C", "C", [&] { b.add("scale", {N::f("scale", r.number("transf_scale"))}); });
+    if (r.boolean("transf_function_enabledX_false"))
+        b.within(r.integer("transf_start_iterationsTM"), r.integer("transf_stop_iterationsTM_1"), [&] {
+            b.add("benesi_box_fold", {N::v("scale", r.vector("transf_scale3D_333")),
+                                      N::v("limit", r.vector("transf_addition_constantA_111"))});
+        });
+    if (r.boolean("transf_function_enabledD_false"))
+        inWindow(r, b, "D", "D", [&] {
+            b.add("octahedral_fold", {});
+            b.add("plane_fold", {N::v("normal", vec3(1, 0, 0)), N::f("offset", 0.0)});
+            b.add("scale", {N::f("scale", r.number("transf_scaleA_2")), N::v("center", r.vector("transf_offset_100"))});
+        });
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    inWindow(r, b, "A", "A", [&] {
+        b.add("mandelbulb_sine", {N::f("power", 2.0)});
+        b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
+    });
+}
+
 // Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
 // when enabled, the offset, then the sphere fold (window M) and scale (window S), the main
 // rotation (window R); +c.
@@ -918,6 +947,13 @@ void mapTransfSphericalInv(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
     if (length(back) > 0.0) b.add("translate", {N::v("offset", -back)});
 }
 
+// transf_benesi_t1: |v| scaled per axis in Benesi's frame, less offset_200 (its rotation inside the
+// frame refused).
+void mapTransfBenesiT1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_rotation_enabled", "a rotation inside Benesi's frame");
+    b.add("benesi_t1", {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
+}
+
 void mapTransfAddConstant(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("translate",
           {N::v("offset", r.vector("transf_addition_constant") + r.vector("transf_addition_constantA_000"))});
@@ -982,6 +1018,8 @@ constexpr Mapping kMappings[] = {
     {41, mapBuffalo},
     {1029, mapTransfAbsAddMulti},
     {1055, mapTransfSphericalInv},
+    {126, mapBoxFoldBulbPow2V3},
+    {1009, mapTransfBenesiT1},
 };
 
 MapFn findMapping(int id) {
