@@ -16,7 +16,7 @@ struct MengerRotate {
     static constexpr DerivativeBound derivative = DerivativeBound::None;
     static constexpr std::string_view jump = "its map jumps where it shifts z back below the middle layer";
     static constexpr std::array params{
-        ParamDecl{"scale", ParamType::Float, {3.0, 0.0, 0.0}, 1.0, 4.0, "Scale s per iteration."},
+        ParamDecl{"scale", ParamType::Float, {3.0, 0.0, 0.0}, 1.0, 5.0, "Scale s per iteration."},
         ParamDecl{"offset", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.0, 4.0, "Corner the scaling keeps fixed."},
         ParamDecl{"axis", ParamType::Vec3, {1.0, 0.0, 0.0}, -1.0, 1.0, "Rotation axis (normalised before use).", true},
         ParamDecl{"angle", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Rotation per iteration, degrees."},

@@ -210,7 +210,7 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
 // the check reports NOT SOUND (no safe step factor) and stacks whose object the check's rays
 // never reach from outside (nothing inside the bound, or everything) are drawn again.
 // The median ratio over all samples is printed with its distribution, and must be above 0.5: not
-// safe by being slow. It is 0.514 (0.545 before gradient twins were refused after a jump; a twin
+// safe by being slow. It is 0.521 (0.545 before gradient twins were refused after a jump; a twin
 // across a jump is no derivative, and its worst rays are rare), 0.497 with the fixed margins alone
 // (0.8 of the sampled worst, 0.7 after a jump) at the time of that 0.545. The ten slowest stacks
 // are printed with their blocks, and every stack whose median is under 0.02 must have the block
