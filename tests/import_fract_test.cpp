@@ -935,6 +935,31 @@ TEST(FractImport, AbsAddConditionalReadsEachAxisWhereMandelbulber2Does) {
     EXPECT_EQ(node->values[2], vec3(0.2, 0.4, 0.3));
 }
 
+// transf_diagonal_fold's swaps are plane folds through the diagonal planes; where the windowed
+// variant is chosen each runs in its own window.
+TEST(FractImport, DiagonalFoldSwapsArePlaneFolds) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 1098;\nformula_2 8;\nhybrid_fractal_enable true;\n[fractal_1]\n"
+        "transf_function_enabledAx_false true;\ntransf_function_enabledAy_false true;\n"
+        "transf_start_iterations_B 3;\ntransf_stop_iterations_B 5;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    std::vector<const Node*> folds;
+    for (const Node& n : r.preset.formula.nodes)
+        if (n.block->id == "plane_fold") folds.push_back(&n);
+    ASSERT_EQ(folds.size(), 2u);
+    EXPECT_EQ(folds[0]->values[0], vec3(-1.0, 1.0, 0.0));
+    EXPECT_EQ(folds[1]->values[0], vec3(0.0, -1.0, 1.0));
+    // A point with x > y comes out with them swapped; y and z are swapped only on the slot's
+    // iterations in [3, 5) (the hybrid alternates: 4).
+    P4 p{vec3(0.7, 0.2, -0.4), 1.0};
+    folds[0]->block->apply(p, vec3(0.0), folds[0]->args());
+    EXPECT_NEAR(p.xyz.x, 0.2, 1e-12);
+    EXPECT_NEAR(p.xyz.y, 0.7, 1e-12);
+    EXPECT_TRUE(folds[0]->runsOn(2) && folds[0]->runsOn(6));
+    EXPECT_TRUE(folds[1]->runsOn(4));
+    EXPECT_FALSE(folds[1]->runsOn(2) || folds[1]->runsOn(3) || folds[1]->runsOn(6));
+}
+
 // box_fold_bulb_pow2_v2: each part in its window (fold B, sphere fold S, scale C, power A), the
 // power's z times the z factor; a sphere fold off the origin is refused.
 TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {

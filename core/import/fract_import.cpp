@@ -954,6 +954,21 @@ void mapTransfBenesiT1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("benesi_t1", {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
 }
 
+// transf_diagonal_fold: x and y swapped where x > y, y and z where y > z, z and x where z > x (each a
+// plane fold through the diagonal plane), each on all iterations or in its own window (A, B, C).
+void mapTransfDiagonalFold(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const bool windowed = r.boolean("transf_function_enabledAx_false");
+    auto swapFold = [&](const char* enabled, const char* window, const vec3& normal) {
+        if (!r.boolean(enabled)) return;
+        const int start = windowed ? r.integer(std::string("transf_start_iterations_") + window) : 0;
+        const int stop = windowed ? r.integer(std::string("transf_stop_iterations_") + window) : kMaxIterations;
+        b.within(start, stop, [&] { b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)}); });
+    };
+    swapFold("transf_function_enabledAx", "A", vec3(-1.0, 1.0, 0.0));
+    swapFold("transf_function_enabledAy_false", "B", vec3(0.0, -1.0, 1.0));
+    swapFold("transf_function_enabledAz_false", "C", vec3(1.0, 0.0, -1.0));
+}
+
 void mapTransfAddConstant(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("translate",
           {N::v("offset", r.vector("transf_addition_constant") + r.vector("transf_addition_constantA_000"))});
@@ -1020,6 +1035,7 @@ constexpr Mapping kMappings[] = {
     {1055, mapTransfSphericalInv},
     {126, mapBoxFoldBulbPow2V3},
     {1009, mapTransfBenesiT1},
+    {1098, mapTransfDiagonalFold},
 };
 
 MapFn findMapping(int id) {
