@@ -243,6 +243,56 @@ void prismFold(Reader& r, NodeBuilder& b) {
     });
 }
 
+// The first iteration's sphere inversion of the Kleinian formulas: v + offset_000 inverted in the
+// sphere of squared radius maxR2, then + `add` - offset_000.
+void firstIterationInversion(Reader& r, NodeBuilder& b, const std::string& add) {
+    if (!r.boolean("transf_sphere_inversion_enabled_false")) return;
+    b.within(0, 1, [&] {
+        const vec3 offset = r.vector("transf_offset_000");
+        if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+        b.add("sphere_invert", {N::f("radius", std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)))});
+        const vec3 back = r.vector(add) - offset;
+        if (length(back) > 0.0) b.add("translate", {N::v("offset", back)});
+    });
+}
+
+// The pseudo-Kleinian mods' Benesi T1 (window `t1Start` .. T_1) and Benesi box fold (D .. TM_1).
+void benesiFolds(Reader& r, NodeBuilder& b, const std::string& t1Start) {
+    if (r.boolean("transf_benesi_T1_enabled_false"))
+        b.within(r.integer(t1Start), r.integer("transf_stop_iterationsT_1"), [&] {
+            b.add("benesi_t1",
+                  {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
+        });
+    if (r.boolean("transf_function_enabledx_false"))
+        b.within(r.integer("transf_start_iterations_D"), r.integer("transf_stop_iterationsTM_1"), [&] {
+            b.add("benesi_box_fold", {N::v("scale", r.vector("transf_scale3D_333")),
+                                      N::v("limit", r.vector("transf_addition_constant_111"))});
+        });
+}
+
+// The pseudo-Kleinian mods' clamp-style fold (window C) and its conditional form (B, the same map).
+void pseudoKleinianFolds(Reader& r, NodeBuilder& b) {
+    auto fold = [&] {
+        b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
+                                  N::f("size", r.number("transf_minimum_radius_05"))});
+    };
+    if (r.boolean("transf_function_enabledAy")) inWindow(r, b, "C", "C", fold);
+    if (r.boolean("transf_function_enabledAy_false")) inWindow(r, b, "B", "B", fold);
+}
+
+// Mandelbulber2's box fold at mandelbox_folding_limit with z's limit times transf_scale_1, in
+// window A (fraktal's folds reflect at the limit: a folding value other than twice it is refused).
+void boxFoldScaledZ(Reader& r, NodeBuilder& b) {
+    const double limit = r.number("mandelbox_folding_limit"), value = r.number("mandelbox_folding_value");
+    if (std::abs(value - 2.0 * limit) > 1e-9)
+        r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
+                      ": fraktal's box fold reflects at the limit (value = 2 x limit)");
+    inWindow(r, b, "A", "A", [&] {
+        b.add("box_fold_axes",
+              {N::v("limit", vec3(limit, limit, limit * r.number("transf_scale_1"))), N::f("fold_z", 1.0)});
+    });
+}
+
 // ---- The formulas fraktal's blocks express (reference T5 "maps", T6 for each kernel) ----
 
 // The sphere fold's inner radius: Mandelbulber2 files use 0 on purpose (no inner scaling), below
@@ -381,30 +431,14 @@ void mapXenodreambuie(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 // transf_function_enabledBy) and the box fold (A; z's limit times transf_scale_1), the clamp fold
 // and inversion, the rotation (R) and the added constant.
 void mapPseudoKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    if (r.boolean("transf_sphere_inversion_enabled_false"))
-        b.within(0, 1, [&] {
-            const vec3 offset = r.vector("transf_offset_000");
-            if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
-            b.add("sphere_invert", {N::f("radius", std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)))});
-            const vec3 back = r.vector("transf_addition_constantA_000") - offset;
-            if (length(back) > 0.0) b.add("translate", {N::v("offset", back)});
-        });
+    firstIterationInversion(r, b, "transf_addition_constantA_000");
     prismFold(r, b);
     if (r.boolean("transf_function_enabledBy_false"))
         b.within(r.integer("transf_start_iterations_E"), r.integer("transf_stop_iterations_E"), [&] {
             b.add("box_fold_axes", {N::v("limit", r.vector("transf_addition_constant_111")),
                                     N::f("fold_z", r.boolean("transf_function_enabledBy") ? 1.0 : 0.0)});
         });
-    if (r.boolean("transf_function_enabledBx_false")) {
-        const double limit = r.number("mandelbox_folding_limit"), value = r.number("mandelbox_folding_value");
-        if (std::abs(value - 2.0 * limit) > 1e-9)
-            r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
-                          ": fraktal's box fold reflects at the limit (value = 2 x limit)");
-        inWindow(r, b, "A", "A", [&] {
-            b.add("box_fold_axes",
-                  {N::v("limit", vec3(limit, limit, limit * r.number("transf_scale_1"))), N::f("fold_z", 1.0)});
-        });
-    }
+    if (r.boolean("transf_function_enabledBx_false")) boxFoldScaledZ(r, b);
     b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
                               N::f("size", r.number("transf_minimum_radius_05"))});
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
@@ -542,22 +576,8 @@ void mapPseudoKleinianMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
     prismFold(r, b);
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
-    if (r.boolean("transf_benesi_T1_enabled_false"))
-        b.within(r.integer("transf_start_iterations_T"), r.integer("transf_stop_iterationsT_1"), [&] {
-            b.add("benesi_t1",
-                  {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
-        });
-    if (r.boolean("transf_function_enabledx_false"))
-        b.within(r.integer("transf_start_iterations_D"), r.integer("transf_stop_iterationsTM_1"), [&] {
-            b.add("benesi_box_fold", {N::v("scale", r.vector("transf_scale3D_333")),
-                                      N::v("limit", r.vector("transf_addition_constant_111"))});
-        });
-    auto pseudoKleinian = [&] {
-        b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
-                                  N::f("size", r.number("transf_minimum_radius_05"))});
-    };
-    if (r.boolean("transf_function_enabledAy")) inWindow(r, b, "C", "C", pseudoKleinian);
-    if (r.boolean("transf_function_enabledAy_false")) inWindow(r, b, "B", "B", pseudoKleinian);
+    benesiFolds(r, b, "transf_start_iterations_T");
+    pseudoKleinianFolds(r, b);
     additionConstant(r, b);
     if (r.boolean("transf_function_enabledF_false")) {
         const int start = r.integer("transf_start_iterations_F"), stop = r.integer("transf_stop_iterations_F");
@@ -585,14 +605,7 @@ void mapMandelboxMenger(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("mandelbox_rotations_enabled", "the box fold in tilted frames");
     r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, its axes reordered");
-    const double limit = r.number("mandelbox_folding_limit"), value = r.number("mandelbox_folding_value");
-    if (std::abs(value - 2.0 * limit) > 1e-9)
-        r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
-                      ": fraktal's box fold reflects at the limit (value = 2 x limit)");
-    inWindow(r, b, "A", "A", [&] {
-        b.add("box_fold_axes",
-              {N::v("limit", vec3(limit, limit, limit * r.number("transf_scale_1"))), N::f("fold_z", 1.0)});
-    });
+    boxFoldScaledZ(r, b);
     inWindow(r, b, "B", "B", [&] {
         sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
     });
@@ -631,16 +644,7 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
         r.mustBeDefault(axis, "a box fold with one of its limits left out");
     prismFold(r, b);
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
-    if (r.boolean("transf_benesi_T1_enabled_false"))
-        b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterationsT_1"), [&] {
-            b.add("benesi_t1",
-                  {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
-        });
-    if (r.boolean("transf_function_enabledx_false"))
-        b.within(r.integer("transf_start_iterations_D"), r.integer("transf_stop_iterationsTM_1"), [&] {
-            b.add("benesi_box_fold", {N::v("scale", r.vector("transf_scale3D_333")),
-                                      N::v("limit", r.vector("transf_addition_constant_111"))});
-        });
+    benesiFolds(r, b, "transf_start_iterations");
     if (r.boolean("transf_function_enabledF_false"))
         inWindow(r, b, "F", "F", [&] {
             b.add("box_fold_general",
@@ -660,12 +664,7 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
             const vec3 add = r.vector("transf_addition_constantA_000");
             if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
         });
-    auto pseudoKleinian = [&] {
-        b.add("pseudo_kleinian", {N::v("box_size", r.vector("transf_addition_constant_0777")),
-                                  N::f("size", r.number("transf_minimum_radius_05"))});
-    };
-    if (r.boolean("transf_function_enabledAy")) inWindow(r, b, "C", "C", pseudoKleinian);
-    if (r.boolean("transf_function_enabledAy_false")) inWindow(r, b, "B", "B", pseudoKleinian);
+    pseudoKleinianFolds(r, b);
     additionConstant(r, b);
 }
 
@@ -807,14 +806,7 @@ void mapRiemannSphereV2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 // Jos Leys' Kleinian (Mandelbulber2's form), after its optional sphere inversion on the first
 // iteration: z + offset inverted in the sphere of squared radius maxR2, then + add - offset.
 void mapJosKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    if (r.boolean("transf_sphere_inversion_enabled_false"))
-        b.within(0, 1, [&] {
-            const vec3 offset = r.vector("transf_offset_000");
-            if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
-            b.add("sphere_invert", {N::f("radius", std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)))});
-            const vec3 back = r.vector("transf_addition_constant") - offset;
-            if (length(back) > 0.0) b.add("translate", {N::v("offset", back)});
-        });
+    firstIterationInversion(r, b, "transf_addition_constant");
     b.add("jos_kleinian",
           {N::f("klein_r", r.number("transf_folding_value")), N::f("klein_i", r.number("transf_offset")),
            N::v("box_size", r.vector("transf_offset_111"))});
