@@ -45,6 +45,21 @@ TEST(Preset, EveryShippedPresetRoundTripsExactly) {
     }
 }
 
+// The preset format's block table (presets/README.md, "Blocks") names every registered block, so
+// that a block added without its documentation fails here.
+TEST(Preset, TheFormatDocumentNamesEveryBlock) {
+    std::ifstream in(test::sourceDir() / "presets" / "README.md");
+    ASSERT_TRUE(in.good());
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string doc = text.str();
+    const size_t table = doc.find("## Blocks");
+    ASSERT_NE(table, std::string::npos);
+    for (const BlockDesc& block : allBlocks())
+        EXPECT_NE(doc.find("`" + std::string(block.id) + "`", table), std::string::npos)
+            << block.id << " is not in presets/README.md's block table";
+}
+
 TEST(Preset, SavesOnlyWhatDiffersFromDefaults) {
     Preset p = loadPreset(test::sourceDir() / "presets/mandelbox.json");
     const nlohmann::json j = presetToJson(p);
