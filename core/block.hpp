@@ -119,6 +119,13 @@ struct BlockDescOf {
     // for which the formula runs four more orbits per estimate.
     std::string_view gradientOf{};
     bool usesOrbitGradient() const { return !gradientOf.empty(); }
+    // Whether the check offers this twin in place of the estimator it differentiates. A twin kept
+    // for another program's convention (Mandelbulber2's halved delta DE) is measured only where a
+    // formula chose it.
+    bool offeredAsTwin = true;
+    // The editor's "Add block" menu lists a block with a group in a submenu of that name under its
+    // kind (the blocks that open Mandelbulber2's formulas), so that the kinds' own lists stay short.
+    std::string_view menuGroup{};
     // Orbits evaluated per estimate (1, or 5 with the orbit gradient): the check weighs an
     // estimator's speed by it.
     int orbitsPerEstimate() const { return usesOrbitGradient() ? 5 : 1; }
@@ -212,11 +219,13 @@ constexpr Desc describeAs() {
            .category = B::category,
            .params = std::span<const ParamDecl>(B::params),
            .glsl = B::glsl};
+    if constexpr (requires { B::menuGroup; }) d.menuGroup = B::menuGroup;
     if constexpr (EstimatorBlockFor<B, Desc>) {
         static_assert(B::category == Category::Estimator, "an estimator block must say so");
         d.estimate = &B::estimate;
         d.membership = B::membership;
         if constexpr (requires { B::gradientOf; }) d.gradientOf = B::gradientOf;
+        if constexpr (requires { B::offeredAsTwin; }) d.offeredAsTwin = B::offeredAsTwin;
     } else {
         static_assert(B::category != Category::Estimator, "an estimator block needs estimate()");
         d.apply = &B::apply;

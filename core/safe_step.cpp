@@ -150,7 +150,7 @@ std::vector<EstimatorMeasurement> compareEstimators(const Formula& f, const Safe
     const bool jumpsBefore = derivativeBound(f.nodes) == DerivativeBound::None;
     for (size_t i = 0, measuredSoFar = jumpsBefore ? 0 : out.size(); i < measuredSoFar; ++i)
         for (const BlockDesc& twin : allBlocks())
-            if (twin.gradientOf == out[i].estimator.block->id) {
+            if (twin.offeredAsTwin && twin.gradientOf == out[i].estimator.block->id) {
                 Node g = Node::make(twin);
                 g.values = out[i].estimator.values;
                 add(g);

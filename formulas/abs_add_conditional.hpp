@@ -10,6 +10,7 @@ namespace fraktal::blocks {
 // the largest |m - 1| of the enabled axes (1 for the others).
 struct AbsAddConditional {
     static constexpr std::string_view id = "abs_add_conditional";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Abs add conditional";
     static constexpr std::string_view help =
         "Per enabled axis, x -> sign(x) (offset - |x| + m |x|): the half-spaces shifted apart and scaled.";

@@ -12,6 +12,7 @@ namespace fraktal::blocks {
 // transf_benesi_t1: |v| scaled per axis in Benesi's frame, then `offset` subtracted.
 struct BenesiT1 {
     static constexpr std::string_view id = "benesi_t1";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Benesi T1";
     static constexpr std::string_view help =
         "Benesi's fold: |v| scaled per axis in the frame whose z is the space diagonal, less offset.";
@@ -51,6 +52,7 @@ struct BenesiT1 {
 // there (|v + L| - |v - L| - v), and back.
 struct BenesiBoxFold {
     static constexpr std::string_view id = "benesi_box_fold";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Benesi box fold";
     static constexpr std::string_view help =
         "In the frame whose z is the space diagonal: |v| scaled per axis, then the box fold at limit L.";

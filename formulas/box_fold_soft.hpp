@@ -11,6 +11,7 @@ namespace fraktal::blocks {
 // 1 + max |s| (at most 1 where s is 0: the plain fold), a bound everywhere.
 struct BoxFoldSoft {
     static constexpr std::string_view id = "box_fold_soft";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Soft box fold";
     static constexpr std::string_view help =
         "Box fold per axis at limits L, each coordinate then eased towards 0 by s x^2 / 2L (a parabolic "
@@ -54,6 +55,7 @@ struct BoxFoldSoft {
 // largest of those magnitudes over the axes, a bound everywhere.
 struct BoxFoldGeneral {
     static constexpr std::string_view id = "box_fold_general";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "General box fold";
     static constexpr std::string_view help =
         "x -> |x + low| - |x - high| - m x per axis, plus offset: the box fold with its limits and mirror apart.";

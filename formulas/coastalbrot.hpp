@@ -10,6 +10,7 @@ namespace fraktal::blocks {
 // `fraktal check` measures the step factor).
 struct Coastalbrot {
     static constexpr std::string_view id = "coastalbrot";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Coastalbrot";
     static constexpr std::string_view help = "Each coordinate through three nested sines, scaled by r^8.7.";
     static constexpr Category category = Category::Power;

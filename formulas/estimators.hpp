@@ -271,6 +271,7 @@ struct EscapeLinearEstimator {
 // linear DE function divides that by the running derivative.
 struct EscapeLinearXyEstimator {
     static constexpr std::string_view id = "escape_linear_xy";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Escape time (linear, xy)";
     static constexpr std::string_view help =
         "(r_xy - offset) / |dr| with r_xy the distance to the z axis (Mandelbulber2's pseudo-Kleinian std DE).";
@@ -295,6 +296,7 @@ struct EscapeLinearXyEstimator {
 // linear estimate is twice it (the step factor, measured, makes up the stride). No bound.
 struct EscapeLinearGradientEstimator {
     static constexpr std::string_view id = "escape_linear_gradient";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Escape time (linear, gradient)";
     static constexpr std::string_view help =
         "0.5 r / |grad r| from differences of the orbit (four more orbits per estimate) instead of the running "
@@ -302,6 +304,9 @@ struct EscapeLinearGradientEstimator {
     static constexpr Category category = Category::Estimator;
     static constexpr Membership membership = Membership::EscapeTime;
     static constexpr std::string_view gradientOf = EscapeLinearEstimator::id;
+    // Mandelbulber2's convention, for the files that ask for it: the check does not offer it in
+    // place of the linear estimate (a formula that chose it is measured with it).
+    static constexpr bool offeredAsTwin = false;
     static constexpr std::array params = EscapeLinearEstimator::params;
 
     static constexpr std::string_view glsl = R"(

@@ -70,6 +70,7 @@ struct Kleinian {
 // Close it with kleinian_de (Mandelbulber2's Jos-Kleinian DE function).
 struct JosKleinian {
     static constexpr std::string_view id = "jos_kleinian";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Kleinian (Mandelbulber2)";
     static constexpr std::string_view help =
         "Jos Leys' Kleinian step as Mandelbulber2 has it: wrap x, y and z, half turn above a wavy line, Mobius "

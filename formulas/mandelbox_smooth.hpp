@@ -15,6 +15,7 @@ namespace fraktal::blocks {
 // step's 0 or 1 rather than overflowing.
 struct MandelboxSmoothFold {
     static constexpr std::string_view id = "mandelbox_smooth_fold";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Smooth Mandelbox folds";
     static constexpr std::string_view help =
         "The Mandelbox's box and sphere folds with logistic steps in place of their conditions (Mandelbulber2's "

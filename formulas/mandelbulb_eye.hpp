@@ -13,6 +13,7 @@ namespace fraktal::blocks {
 // are whole numbers.
 struct MandelbulbEye {
     static constexpr std::string_view id = "mandelbulb_eye";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Mandelbulb eye";
     static constexpr std::string_view help =
         "Power 2 whose angles sum those from both poles (scaled), with |axis| folds before and after, plus offset.";

@@ -13,6 +13,7 @@ namespace fraktal::blocks {
 // running derivative grows by s max(1, |1 - 4w|)^3, a bound everywhere.
 struct MengerSmooth {
     static constexpr std::string_view id = "menger_smooth";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Smooth Menger";
     static constexpr std::string_view help =
         "The Menger sponge's abs, sort and z fold with rounded corners, then the scale about its corner.";

@@ -13,6 +13,7 @@ namespace fraktal::blocks {
 // |grad t| = 2 sqrt(t + thickness^2). The map jumps between sectors and at the tube's edge.
 struct MsltoeDonut {
     static constexpr std::string_view id = "msltoe_donut";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "msltoe donut";
     static constexpr std::string_view help =
         "Rings of rings: each sector of the ring about z is moved to the centre and scaled; inside a thin tube, "
@@ -70,6 +71,7 @@ struct MsltoeDonut {
 // derivative is Mandelbulber2's 2 r |scale|; the swaps make the map jump.
 struct MsltoeSym2Mod {
     static constexpr std::string_view id = "msltoe_sym2_mod";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "msltoe sym2 mod";
     static constexpr std::string_view help =
         "Power 2 triplex whose squaring depends on the octant (y, z swapped, x negated), plus add, pulled in by "
@@ -116,6 +118,7 @@ struct MsltoeSym2Mod {
 // is not bounded by it.
 struct EiffieMsltoe {
     static constexpr std::string_view id = "eiffie_msltoe";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "eiffie msltoe";
     static constexpr std::string_view help =
         "(y, z) folded into a pi/4 sector about +y, then the power 2 triplex plus add, pulled in by offset, scaled.";

@@ -42,6 +42,7 @@ struct PseudoKleinian {
 // across x = 0.
 struct PrismFold {
     static constexpr std::string_view id = "prism_fold";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Prism fold";
     static constexpr std::string_view help =
         "The pseudo-Kleinian prism shape: folds onto a 60-degree wedge, sorts, shifts by gap, clamps.";

@@ -12,6 +12,7 @@ namespace fraktal::blocks {
 // then the whole scaled by r. Undefined where a pair is 0; there it is left as it is.
 struct Mandelbulb2 {
     static constexpr std::string_view id = "mandelbulb2";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Mandelbulb 2";
     static constexpr std::string_view help =
         "Buddhi's bulb: the angle doubled in the xy, then yz, then xz plane, the radius squared.";
@@ -62,6 +63,7 @@ struct Mandelbulb2 {
 // lkmitch's quadratic (Mandelbulber2's lkmitch): (x^2 - 2yz, z^2 + 2xy, y^2 - 2xz).
 struct Lkmitch {
     static constexpr std::string_view id = "lkmitch";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "lkmitch";
     static constexpr std::string_view help = "lkmitch's quadratic map (x^2 - 2yz, z^2 + 2xy, y^2 - 2xz).";
     static constexpr Category category = Category::Power;

@@ -3,6 +3,7 @@
 #include "formulas/abs_add_conditional.hpp"
 #include "formulas/abs_fold.hpp"
 #include "formulas/add_c.hpp"
+#include "formulas/add_c_axes.hpp"
 #include "formulas/aexion.hpp"
 #include "formulas/amazing_surf.hpp"
 #include "formulas/axis_scale.hpp"

@@ -17,6 +17,7 @@ namespace fraktal::blocks {
 // precision keeps the square of the result (r^72 of a point at r = 4 does not fit a float).
 struct RiemannSphere {
     static constexpr std::string_view id = "riemann_sphere";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Riemann sphere";
     static constexpr std::string_view help =
         "msltoe's Riemann sphere: project to the plane, fold it by |sin|, lift back at radius r^(2p) - 1/4.";
@@ -66,6 +67,7 @@ struct RiemannSphere {
 // analytic one, 4 scale |v'| / r.
 struct RiemannSphereV1 {
     static constexpr std::string_view id = "riemann_sphere_v1";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Riemann sphere V1";
     static constexpr std::string_view help =
         "msltoe's Riemann sphere V1: project to the plane, tile it, and lift by (r - 3/2)(1 + s^2 + t^2).";
@@ -110,6 +112,7 @@ struct RiemannSphereV1 {
 // stays finite, and the lift takes its large values to the pole (0, 1, 0) as it should.
 struct RiemannSphereV2 {
     static constexpr std::string_view id = "riemann_sphere_v2";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Riemann sphere V2";
     static constexpr std::string_view help =
         "msltoe's Riemann sphere V2: the plane's angles multiplied by 8, lifted back at radius r^4, plus offset.";

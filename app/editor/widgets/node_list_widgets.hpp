@@ -125,14 +125,28 @@ void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
 }
 
 // The "Add block" menu's items for one category's blocks; returns the one picked, or nullptr.
-// `current` is ticked (the estimator in use).
+// `current` is ticked (the estimator in use). Blocks with a menu group follow in one submenu per
+// group, in the order the groups first appear.
 template <class BlockT>
 const BlockT* blockMenuItems(const std::vector<const BlockT*>& blocks, const BlockT* current = nullptr) {
     const BlockT* picked = nullptr;
-    for (const BlockT* b : blocks) {
-        if (ImGui::MenuItem(std::string(b->label).c_str(), nullptr, current == b)) picked = b;
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(b->help).c_str());
-    }
+    auto items = [&](std::string_view group) {
+        for (const BlockT* b : blocks) {
+            if (b->menuGroup != group) continue;
+            if (ImGui::MenuItem(std::string(b->label).c_str(), nullptr, current == b)) picked = b;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(b->help).c_str());
+        }
+    };
+    items({});
+    std::vector<std::string_view> groups;
+    for (const BlockT* b : blocks)
+        if (!b->menuGroup.empty() && std::find(groups.begin(), groups.end(), b->menuGroup) == groups.end())
+            groups.push_back(b->menuGroup);
+    for (std::string_view group : groups)
+        if (ImGui::BeginMenu(std::string(group).c_str())) {
+            items(group);
+            ImGui::EndMenu();
+        }
     return picked;
 }
 
