@@ -280,6 +280,22 @@ void pseudoKleinianFolds(Reader& r, NodeBuilder& b) {
     if (r.boolean("transf_function_enabledAy_false")) inWindow(r, b, "B", "B", fold);
 }
 
+// A Menger step of Mandelbulber2's formulas (abs, sort, scale transf_scale_3, x and y less twice the
+// corner transf_constant_multiplierA_111, z only above 1): menger_rotate about corner 2 c / (s - 1).
+// False, with the reason named, where fraktal's step cannot hold it.
+bool mengerStepWithCorner(Reader& r, double& scale, vec3& offset) {
+    scale = r.number("transf_scale_3");
+    const vec3 corner = r.vector("transf_constant_multiplierA_111");
+    if (std::abs(corner.z - 1.0) > 1e-9)
+        r.unsupported("transf_constant_multiplierA_111.z " + fmt(corner.z) + ": the z shift's threshold stays at 1");
+    if (std::abs(scale - 1.0) < 1e-9) {
+        r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+        return false;
+    }
+    offset = 2.0 * corner / (scale - 1.0);
+    return true;
+}
+
 // Mandelbulber2's box fold at mandelbox_folding_limit with z's limit times transf_scale_1, in
 // window A (fraktal's folds reflect at the limit: a folding value other than twice it is refused).
 void boxFoldScaledZ(Reader& r, NodeBuilder& b) {
@@ -408,14 +424,20 @@ void mapMandelbulbPower2(Reader&, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -1.0))});
 }
 
+// White's power-2 triplex with z times the box_fold_bulb_pow2 formulas' z factor: the sine bulb of
+// power 2, the factor's sign folded into its z mirror.
+void whitePower2TimesZFactor(Reader& r, NodeBuilder& b) {
+    b.add("mandelbulb_sine", {N::f("power", 2.0)});
+    b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
+}
+
 // Box fold at the folding factor, the fixed sphere fold (min radius 0.5, fixed 1), scale 2, White's
 // power 2 and z times the z factor (its sign folded into the power's mirror).
 void mapBoxFoldBulbPow2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("box_fold", {N::f("limit", r.number("boxfold_bulbpow2_folding_factor"))});
     sphereFold(b, 0.5, 1.0);
     b.add("scale", {N::f("scale", 2.0)});
-    b.add("mandelbulb_sine", {N::f("power", 2.0)});
-    b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
+    whitePower2TimesZFactor(r, b);
 }
 
 void mapXenodreambuie(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -561,10 +583,7 @@ void mapBoxFoldBulbPow2V2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
     inWindow(r, b, "B", "B", [&] { tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated); });
     inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
     inWindow(r, b, "C", "C", [&] { b.add("scale", {N::f("scale", r.number("transf_scale"))}); });
-    inWindow(r, b, "A", "A", [&] {
-        b.add("mandelbulb_sine", {N::f("power", 2.0)});
-        b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
-    });
+    inWindow(r, b, "A", "A", [&] { whitePower2TimesZFactor(r, b); });
 }
 
 // The pseudo-Kleinian mod 2, each part in its window: the rotation (R), Benesi's T1 (T) and
@@ -612,18 +631,15 @@ void mapMandelboxMenger(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     if (r.boolean("mandelbox_main_rotation_enabled"))
         inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
     inWindow(r, b, "S", "S", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
-    if (!r.boolean("transf_function_enabled")) return;
-    const double s = r.number("transf_scale_3");
-    const vec3 corner = r.vector("transf_constant_multiplierA_111");
-    if (std::abs(corner.z - 1.0) > 1e-9)
-        r.unsupported("transf_constant_multiplierA_111.z " + fmt(corner.z) + ": the z shift's threshold stays at 1");
-    if (std::abs(s - 1.0) < 1e-9) return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+    double s = 0.0;
+    vec3 offset(0.0);
+    if (!r.boolean("transf_function_enabled") || !mengerStepWithCorner(r, s, offset)) return;
     const bool addC = r.boolean("transf_function_enabledx_false");
     if (addC) r.mustBeDefault("mandelbulbMulti_order_of_xyz_C", "c's axes reordered");
     const double weight = addC ? uniformMultiplier(r, "transf_constant_multiplierB_111") : 0.0;
     inWindow(r, b, "M", "M", [&] {
         for (int k = 0; k < std::clamp(r.integer("transf_int_1"), 0, 8); ++k) {
-            b.add("menger_rotate", {N::f("scale", s), N::v("offset", 2.0 * corner / (s - 1.0))});
+            b.add("menger_rotate", {N::f("scale", s), N::v("offset", offset)});
             const vec3 add = r.vector("transf_addition_constantA_000");
             if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
             if (addC) b.add("add_c", {N::f("weight", weight)});
@@ -653,14 +669,10 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
         });
     if (r.boolean("transf_function_enabled"))
         inWindow(r, b, "M", "M", [&] {
-            const double s = r.number("transf_scale_3");
-            const vec3 corner = r.vector("transf_constant_multiplierA_111");
-            if (std::abs(corner.z - 1.0) > 1e-9)
-                r.unsupported("transf_constant_multiplierA_111.z " + fmt(corner.z) +
-                              ": the z shift's threshold stays at 1");
-            if (std::abs(s - 1.0) < 1e-9)
-                return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
-            b.add("menger_rotate", {N::f("scale", s), N::v("offset", 2.0 * corner / (s - 1.0))});
+            double s = 0.0;
+            vec3 offset(0.0);
+            if (!mengerStepWithCorner(r, s, offset)) return;
+            b.add("menger_rotate", {N::f("scale", s), N::v("offset", offset)});
             const vec3 add = r.vector("transf_addition_constantA_000");
             if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
         });
@@ -691,10 +703,7 @@ void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
             b.add("scale", {N::f("scale", r.number("transf_scaleA_2")), N::v("center", r.vector("transf_offset_100"))});
         });
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
-    inWindow(r, b, "A", "A", [&] {
-        b.add("mandelbulb_sine", {N::f("power", 2.0)});
-        b.add("axis_scale", {N::v("scale", vec3(1.0, 1.0, -r.number("boxfold_bulbpow2_z_factor")))});
-    });
+    inWindow(r, b, "A", "A", [&] { whitePower2TimesZFactor(r, b); });
 }
 
 // Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
