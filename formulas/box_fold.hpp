@@ -12,7 +12,7 @@ struct BoxFold {
     static constexpr Category category = Category::Fold;
     static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
-        ParamDecl{"limit", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 4.0, "Folding limit L."},
+        ParamDecl{"limit", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 8.0, "Folding limit L."},
     };
 
     static constexpr std::string_view glsl = R"(

@@ -15,6 +15,7 @@
 #include "formulas/box_fold_soft.hpp"
 #include "formulas/coastalbrot.hpp"
 #include "formulas/deforms.hpp"
+#include "formulas/generalized_box_fold.hpp"
 #include "formulas/estimators.hpp"
 #include "formulas/hypercomplex.hpp"
 #include "formulas/kifs_icosahedral.hpp"
@@ -105,6 +106,7 @@ constexpr std::array kBlocks{
     describe<Lkmitch>(),
     describe<PrismFold>(),
     describe<AddCAxes>(),
+    describe<GeneralizedBoxFold>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),
@@ -127,6 +129,7 @@ constexpr std::array kBlocks{
     describe<AexionEstimator>(),
     describe<EscapeLinearGradientEstimator>(),
     describe<EscapeLinearXyEstimator>(),
+    describe<HypercomplexJulia>(),
 };
 }  // namespace
 

@@ -347,6 +347,20 @@ void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
 }
 
+// generalized_fold_box: the box fold on the polyhedron of mandelbox_generalized_fold_type at
+// mandelbox_solid, then the Mandelbox's sphere fold, main rotation and scale.
+void mapGeneralizedFoldBox(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("mandelbox_melt", "a melted generalized fold (the reflection eased within the melt layer)");
+    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
+    const int type = r.integer("mandelbox_generalized_fold_type");
+    if (type < 0 || type > 7)
+        r.unsupported("mandelbox_generalized_fold_type " + std::to_string(type) + ": Mandelbulber2 has types 0 to 7");
+    b.add("generalized_box_fold", {N::f("type", type), N::f("solid", r.number("mandelbox_solid"))});
+    sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+    if (r.boolean("mandelbox_main_rotation_enabled")) b.rotation(setRotation2(r.vector("mandelbox_rotation_main")));
+    b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
+}
+
 void mapMengerSponge(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     // abs, sort, z *= s, x and y less 2, z less 2 above 1: menger_rotate with the corner 2 / (s - 1).
     const double s = r.number("transf_scale_3");
@@ -993,6 +1007,7 @@ constexpr Mapping kMappings[] = {
     {5, mapQuaternion3d},
     {7, mapMengerSponge},
     {8, mapMandelbox},
+    {37, mapGeneralizedFoldBox},
     {10, mapKaleidoscopicIfs},
     {11, mapXenodreambuie},
     {21, mapBristorbrot},
@@ -1441,7 +1456,8 @@ FractImport importFract(const FractFile& file) {
             const size_t named = out.unsupported.size();
             if (slots.size() > 1) r.unsupported("a 4D orbit beside other slots (its estimator runs it alone)");
             if (boxFolding || sphericalFolding) r.unsupported("global folds before a 4D orbit");
-            if (julia) r.unsupported("julia_mode: a " + std::string(info->name) + " Julia set");
+            if (julia && formula != kHypercomplexId)
+                r.unsupported("julia_mode: a " + std::string(info->name) + " Julia set");
             // Aexion adds its own folded c (cpixelAlreadyHas): dont_add_c changes nothing there.
             if (formula == kHypercomplexId && main.boolean("dont_add_c_constant_" + n))
                 r.unsupported("dont_add_c_constant: the orbit without c");
@@ -1548,7 +1564,12 @@ FractImport importFract(const FractFile& file) {
         const int formula = main.integer("formula_" + n);
         std::vector<Node> nodes;
         NodeBuilder b(main, nodes);
-        if (formula == kHypercomplexId) {
+        if (formula == kHypercomplexId && julia) {
+            // Julia mode adds julia_c times the constant factor in place of c, its fourth coordinate 0.
+            b.add("hypercomplex_julia", {N::v("constant", juliaC * factor), N::f("constant_w", 0.0),
+                                         N::f("slice", main.number("initial_waxis")), N::f("orbit", N),
+                                         N::f("escape", std::max(p.formula.bailout, 2.0))});
+        } else if (formula == kHypercomplexId) {
             b.add("hypercomplex_mandelbrot", {N::f("slice", main.number("initial_waxis")), N::f("orbit", N),
                                               N::f("escape", std::max(p.formula.bailout, 2.0))});
         } else {
