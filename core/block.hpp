@@ -129,6 +129,9 @@ struct BlockDescOf {
     // Orbits evaluated per estimate (1, or 5 with the orbit gradient): the check weighs an
     // estimator's speed by it.
     int orbitsPerEstimate() const { return usesOrbitGradient() ? 5 : 1; }
+    // A dIFS shape step (formulas/difs.hpp): it measures a shape and lowers P4::orbitDistance,
+    // which only the `difs` estimator reads.
+    bool difsShape = false;
     // 3D steps declare it; estimators, 2D blocks and custom blocks (unknown GLSL) bound nothing.
     DerivativeBound derivative = DerivativeBound::None;
     // Where the bound depends on the parameters (a power's map jumps at the atan2 cut unless the
@@ -232,6 +235,7 @@ constexpr Desc describeAs() {
         if constexpr (requires { B::derivative; }) d.derivative = B::derivative;
         if constexpr (requires(Args a) { B::derivativeFor(a); }) d.derivativeFor = &B::derivativeFor;
         if constexpr (requires { B::stretchGrowsWithRadius; }) d.stretchGrowsWithRadius = B::stretchGrowsWithRadius;
+        if constexpr (requires { B::difsShape; }) d.difsShape = B::difsShape;
         if constexpr (mayJump<B>()) {
             static_assert(
                 requires { B::jump; }, "a step whose map can jump says where (static constexpr jump)");

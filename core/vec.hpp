@@ -34,6 +34,11 @@ struct P4 {
     // Set only for estimators that ask for it (BlockDesc::usesOrbitGradient()), else 0 (GLSL:
     // `orbitGradient`).
     double orbitGradient = 0.0;
+    // The least of the distances the dIFS shape steps measured along the orbit, each over the
+    // running derivative where it was taken (formulas/difs.hpp): the dIFS estimator's value. 1000
+    // (Mandelbulber2's start) until a shape step runs. GLSL: the global `orbitDistance`, which
+    // formulaEval resets.
+    double orbitDistance = 1000.0;
 };
 
 using glm::abs;

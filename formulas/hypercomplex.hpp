@@ -58,6 +58,7 @@ struct HypercomplexMandelbrot {
 // point), and the estimate of K_n's surface as above.
 struct HypercomplexJulia {
     static constexpr std::string_view id = "hypercomplex_julia";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
     static constexpr std::string_view label = "Hypercomplex Julia";
     static constexpr std::string_view help =
         "4D hypercomplex Julia set q -> q^2 + k from q = (point, slice); runs its own orbit from the point.";
@@ -66,8 +67,12 @@ struct HypercomplexJulia {
     static constexpr std::array params{
         ParamDecl{"constant", ParamType::Vec3, {-0.5, 0.0, 0.0}, -4.0, 4.0, "k's first three coordinates."},
         ParamDecl{"constant_w", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "k's fourth coordinate."},
-        ParamDecl{
-            "slice", ParamType::Float, {0.0, 0.0, 0.0}, -2.0, 2.0, "The start's fourth coordinate: which slice is seen."},
+        ParamDecl{"slice",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  -2.0,
+                  2.0,
+                  "The start's fourth coordinate: which slice is seen."},
         ParamDecl{"orbit", ParamType::Float, {12.0, 0.0, 0.0}, 1.0, 1000.0, "Iterations of the hypercomplex orbit."},
         ParamDecl{"escape",
                   ParamType::Float,

@@ -15,8 +15,9 @@
 #include "formulas/box_fold_soft.hpp"
 #include "formulas/coastalbrot.hpp"
 #include "formulas/deforms.hpp"
-#include "formulas/generalized_box_fold.hpp"
+#include "formulas/difs.hpp"
 #include "formulas/estimators.hpp"
+#include "formulas/generalized_box_fold.hpp"
 #include "formulas/hypercomplex.hpp"
 #include "formulas/kifs_icosahedral.hpp"
 #include "formulas/kifs_octahedral.hpp"
@@ -107,6 +108,11 @@ constexpr std::array kBlocks{
     describe<PrismFold>(),
     describe<AddCAxes>(),
     describe<GeneralizedBoxFold>(),
+    describe<DifsTorus>(),
+    describe<DifsBox>(),
+    describe<DifsEllipsoid>(),
+    describe<DifsGrid>(),
+    describe<DifsHexGrid>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),
@@ -130,6 +136,7 @@ constexpr std::array kBlocks{
     describe<EscapeLinearGradientEstimator>(),
     describe<EscapeLinearXyEstimator>(),
     describe<HypercomplexJulia>(),
+    describe<DifsEstimator>(),
 };
 }  // namespace
 

@@ -16,6 +16,10 @@ float potentialShare(float G) {
     return G < 0.1 ? 1.0 - G * (1.0 / 2.0 - G * (1.0 / 6.0 - G * (1.0 / 24.0 - G / 120.0))) : (1.0 - exp(-G)) / G;
 }
 
+// The dIFS shapes' running least distance (P4::orbitDistance): the shape steps lower it, the dIFS
+// estimator returns it; each orbit starts it afresh.
+float orbitDistance;
+
 //@FRAKTAL_NODES
 
 // How many of the iterations 0 .. count - 1 a node of this schedule runs on
@@ -36,6 +40,7 @@ float orbitValue(vec3 pos, int count) {
     vec4 p = vec4(pos, 1.0);
     vec3 c = pos;
     float degree = 1.0;
+    orbitDistance = 1000.0;
     for (int i = 0; i < count; ++i) {
 //@FRAKTAL_ORBIT_LOOP
     }
@@ -60,6 +65,7 @@ float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped)
     vec3 c = pos;
     float degree = 1.0;  // the power steps' degrees multiplied (P4::degree on the CPU)
     trap = vec4(1e20);
+    orbitDistance = 1000.0;
     iterations = 0;
     escaped = false;
     float bailout2 = u_bailout * u_bailout;

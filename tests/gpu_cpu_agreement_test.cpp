@@ -91,8 +91,9 @@ void expectFewIllConditioned(const Agreement& a, const std::string& what) {
     EXPECT_LE(a.illConditioned, kPoints / 50) << what;
 }
 
-// A formula that exercises one block: the block repeated a few times, closed by a sphere; or,
-// for an estimator, a rotation and a scale closed by it. Its on/off parameters are all on or all
+// A formula that exercises one block: the block repeated a few times, closed by a sphere (a dIFS
+// shape: turned, scaled and closed by the dIFS estimate); or, for an estimator, a rotation and a
+// scale closed by it. Its on/off parameters are all on or all
 // off (`togglesOn`), so each branch of a block is compared.
 Formula formulaFor(const BlockDesc& block, uint64_t seed, bool togglesOn) {
     std::mt19937_64 rng(seed);
@@ -111,13 +112,20 @@ Formula formulaFor(const BlockDesc& block, uint64_t seed, bool togglesOn) {
     Formula f;
     f.iterations = 3;
     f.bailout = 100.0;
+    Node rotate = Node::make(*findBlock("rotate"));
+    rotate.values[1].x = 30.0;
+    Node scale = Node::make(*findBlock("scale"));
+    scale.values[0].x = 1.5;
     if (block.isEstimator()) {
-        Node rotate = Node::make(*findBlock("rotate"));
-        rotate.values[1].x = 30.0;
-        Node scale = Node::make(*findBlock("scale"));
-        scale.values[0].x = 1.5;
         f.nodes = {rotate, scale};
+        // The dIFS estimate reads what shape steps measured along the orbit.
+        if (block.id == "difs") f.nodes.insert(f.nodes.begin(), Node::make(*findBlock("difs_box")));
         f.estimator = node;
+    } else if (block.difsShape) {
+        // A shape step changes nothing but the dIFS estimate: measured at each point of an orbit
+        // that turns, shrinks and moves.
+        f.nodes = {node, rotate, scale, Node::make(*findBlock("add_c"))};
+        f.estimator = Node::make(*findBlock("difs"));
     } else {
         // add_c keeps power iterations from collapsing to 0 (float underflow, not a block error).
         f.nodes = {node, Node::make(*findBlock("add_c"))};

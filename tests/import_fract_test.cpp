@@ -365,6 +365,94 @@ TEST(FractImport, HypercomplexRunsItsOwnOrbit) {
     EXPECT_TRUE(mentions(hybrid.unsupported, "slot 1 (hypercomplex)", "a 4D orbit beside other slots"));
 }
 
+// Julia mode: the hypercomplex Julia set of julia_c times the constant factor, the orbit written
+// out as Mandelbulber2 runs it (q -> q^2 + (julia_c, 0) from (point, initial_waxis)).
+TEST(FractImport, HypercomplexJuliaAddsItsConstant) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 4;\nN 12;\njulia_mode true;\njulia_c -0,5 0,1 0;\nfractal_constant_factor 2;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Node& e = r.preset.formula.estimator;
+    ASSERT_EQ(e.block->id, "hypercomplex_julia");
+    EXPECT_EQ(param(e, "constant", 0), -1.0);
+    EXPECT_EQ(param(e, "constant", 1), 0.2);
+    std::mt19937 random(4);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    int inside = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const vec3 point(u(random), u(random), u(random));
+        double x = point.x, y = point.y, z = point.z, w = 0.0;
+        bool escaped = false;
+        for (int i = 0; i < 12 && !escaped; ++i) {
+            const double nx = x * x - y * y - z * z - w * w - 1.0, ny = 2.0 * x * y - 2.0 * w * z + 0.2,
+                         nz = 2.0 * x * z - 2.0 * y * w, nw = 2.0 * x * w - 2.0 * y * z;
+            x = nx, y = ny, z = nz, w = nw;
+            escaped = x * x + y * y + z * z + w * w >= 100.0;
+        }
+        inside += !escaped;
+        EXPECT_EQ(distanceEstimate(r.preset.formula, point) > 0.0, escaped)
+            << point.x << " " << point.y << " " << point.z;
+    }
+    EXPECT_GT(inside, 20);
+}
+
+// The dIFS formulas and transforms: shape steps whose least distance is the difs estimate. The
+// donut measures its torus before its step, over the derivative after it (|factor| w + 1); the
+// transforms divide by w + 1; the grids are measured in transf_rotation's frame (a turn there and
+// back). The delta DE method, under which Mandelbulber2 draws |z| as the distance, is refused.
+TEST(FractImport, DifsShapesCloseWithTheLeastShapeDistance) {
+    const mb2::FractImport donut = importText(
+        "[main_parameters]\nformula_1 610;\n[fractal_1]\ndonut_factor 2;\ndonut_number 3;\n"
+        "donut_ring_thickness 0,101;\n");
+    ASSERT_TRUE(donut.faithful()) << donut.unsupported.front().text();
+    EXPECT_EQ(donut.preset.formula.estimator.block->id, "difs");
+    ASSERT_EQ(blockIds(donut.preset.formula), (std::vector<std::string>{"difs_torus", "msltoe_donut"}));
+    const Node& torus = donut.preset.formula.nodes[0];
+    EXPECT_EQ(param(torus, "thickness"), 0.101);
+    EXPECT_EQ(param(torus, "w_scale"), 2.0);
+    EXPECT_EQ(param(torus, "w_offset"), 1.0);
+    // At a point outside the tube, one iteration: the torus over 2 + 1.
+    Formula one = donut.preset.formula;
+    one.iterations = 1;
+    const vec3 x(0.4, 0.3, 0.5);
+    const double ring = length(glm::dvec2(length(glm::dvec2(x.x, x.y)) - 1.0, x.z)) - 0.101;
+    EXPECT_NEAR(distanceEstimate(one, x), ring / 3.0 * one.deFactor, 1e-12);
+
+    const mb2::FractImport grid = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 1613;\n[fractal_2]\n"
+        "transf_rotation_enabled true;\ntransf_rotation 0 0 30;\ntransf_scale_1 0,25;\n"
+        "transf_function_enabledJ_false true;\n");
+    ASSERT_TRUE(grid.faithful()) << grid.unsupported.front().text();
+    EXPECT_EQ(grid.preset.formula.estimator.block->id, "difs");
+    const std::vector<std::string> ids = blockIds(grid.preset.formula);
+    const auto at = std::find(ids.begin(), ids.end(), "difs_grid");
+    ASSERT_NE(at, ids.end());
+    ASSERT_TRUE(at != ids.begin() && at + 1 != ids.end());
+    EXPECT_EQ(*(at - 1), "rotate");
+    EXPECT_EQ(*(at + 1), "rotate");
+    const Node& g = grid.preset.formula.nodes[size_t(at - ids.begin())];
+    EXPECT_EQ(param(g, "cell"), 0.25);
+    EXPECT_EQ(param(g, "square_bars"), 1.0);
+    EXPECT_EQ(param(g, "w_offset"), 1.0);
+
+    const mb2::FractImport delta = importText("[main_parameters]\nformula_1 610;\ndelta_DE_method 1;\n");
+    EXPECT_TRUE(mentions(delta.unsupported, "main", "the dIFS DE function with the delta DE method"));
+}
+
+// The generalized fold box: its polyhedron's fold, the Mandelbox's sphere fold, rotation and scale.
+TEST(FractImport, GeneralizedFoldBoxIsThePolyhedralFold) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 37;\n[fractal_1]\nmandelbox_generalized_fold_type 5;\n"
+        "mandelbox_scale -1,5;\nmandelbox_folding_min_radius 0,1;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    ASSERT_EQ(blockIds(r.preset.formula),
+              (std::vector<std::string>{"generalized_box_fold", "sphere_fold", "scale", "add_c"}));
+    EXPECT_EQ(param(r.preset.formula.nodes[0], "type"), 5.0);
+    EXPECT_EQ(param(r.preset.formula.nodes[0], "solid"), 1.0);
+    EXPECT_EQ(param(r.preset.formula.nodes[2], "scale"), -1.5);
+    const mb2::FractImport melted = importText("[main_parameters]\nformula_1 37;\n[fractal_1]\nmandelbox_melt 0,2;\n");
+    EXPECT_TRUE(mentions(melted.unsupported, "slot 1 (generalized_fold_box)", "a melted generalized fold"));
+}
+
 // Aexion's set runs its own 4D orbit in the aexion estimator: a point is inside (estimate 0)
 // exactly where Mandelbulber2's AexionIteration, written out here, stays within the bailout for N
 // iterations; cadd and the analytic derivative's scale and offset come from the slot.
@@ -1254,6 +1342,10 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {"examples/riemann_sphere_msltoe_v1_001.fract", ""},
         // box_fold_bulb_pow2_v2: its fold, sphere fold, scale and power each in its own window.
         {gm + "boxFoldBulb_v2_01.fract", ""},
+        // dIFS: the donut's torus measured along its orbit (the difs estimate).
+        {"examples/msltoe_donut_001.fract", ""},
+        // The generalized box fold on the icosahedron.
+        {km + "GeneralizedFoldBox01.fract", ""},
         {"examples/stereoscopic 004.fract", "stereo_enabled true"},
         // A Menger sponge on Mandelbulber2's water (the water combine, its frame turned over).
         {km + "primitive objects - water.fract", ""},

@@ -885,6 +885,46 @@ void mapMsltoeDonut(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
            N::f("sections", r.number("donut_number")), N::f("factor", r.number("donut_factor"))});
 }
 
+// ---- dIFS: shape steps whose least distance along the orbit is the estimate (formulas/difs.hpp) ----
+
+// difs_msltoe_donut: the distance to the donut's torus at the point before the step, over the
+// derivative after it (DE times the factor, plus 1), then msltoe's donut.
+void mapDifsMsltoeDonut(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const double radius = r.number("donut_ring_radius"), thickness = r.number("donut_ring_thickness");
+    const double factor = r.number("donut_factor");
+    b.add("difs_torus", {N::f("ring_radius", radius), N::f("thickness", thickness), N::f("w_scale", std::abs(factor)),
+                         N::f("w_offset", 1.0)});
+    b.add("msltoe_donut", {N::f("ring_radius", radius), N::f("thickness", thickness),
+                           N::f("sections", r.number("donut_number")), N::f("factor", factor)});
+}
+
+// The transf_difs shapes divide by DE + 1 and leave the point as it is.
+void mapTransfDifsBox(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("difs_box", {N::v("size", r.vector("transf_addition_constant_111")), N::f("w_offset", 1.0)});
+}
+void mapTransfDifsEllipsoid(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("difs_ellipsoid", {N::v("radii", r.vector("transf_addition_constant_111")), N::f("w_offset", 1.0)});
+}
+// The grids: measured in the frame of transf_rotation when it is on (a turn there and back).
+// Mandelbulber2 divides the square grid's z by transf_scaleF_1 before the turn and the hexagonal
+// one's after it; fraktal's grids divide in their own frame, so the square grid with both is refused.
+void difsGrid(Reader& r, NodeBuilder& b, std::string_view block, bool zScaledFirst) {
+    const bool turned = r.boolean("transf_rotation_enabled");
+    const double zScale = r.number("transf_scaleF_1");
+    if (turned && zScaledFirst && zScale != 1.0)
+        r.unsupported("transf_scaleF_1 " + fmt(zScale) + " with transf_rotation_enabled: z scaled before the turn");
+    const glm::dmat3 turn = setRotation2(r.vector("transf_rotation"));
+    if (turned) b.rotation(turn);
+    b.add(block, {N::f("cell", r.number("transf_scale_1")), N::f("thickness", r.number("transf_offset_0005")),
+                  N::f("z_scale", zScale), N::f("square_bars", r.boolean("transf_function_enabledJ_false") ? 1.0 : 0.0),
+                  N::f("w_offset", 1.0)});
+    if (turned) b.rotation(glm::transpose(turn));
+}
+void mapTransfDifsGrid(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { difsGrid(r, b, "difs_grid", true); }
+void mapTransfDifsHextgrid2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    difsGrid(r, b, "difs_hex_grid", false);
+}
+
 // msltoe's sym2 mod and eiffie's variant share their parameters.
 void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
@@ -1052,6 +1092,11 @@ constexpr Mapping kMappings[] = {
     {126, mapBoxFoldBulbPow2V3},
     {1009, mapTransfBenesiT1},
     {1098, mapTransfDiagonalFold},
+    {610, mapDifsMsltoeDonut},
+    {1600, mapTransfDifsBox},
+    {1602, mapTransfDifsEllipsoid},
+    {1603, mapTransfDifsHextgrid2},
+    {1613, mapTransfDifsGrid},
 };
 
 MapFn findMapping(int id) {
@@ -1121,7 +1166,17 @@ void addEstimator(Formula& f, const EstimatorChoice& choice, Reader& main, const
             set("kleinian_de", {{"klein_r", v[0]}, {"clamp_y", v[1]}, {"clamp_df", v[2]}});
             return;
         }
-        case Mb2De::Difs: main.unsupported("the dIFS DE function (an orbit-minimum estimate, part 2)"); break;
+        case Mb2De::Difs:
+            // Mandelbulber2's delta DE method takes |z| itself as the distance of a dIFS formula
+            // (calculate_distance.cpp: "Can we calculate dIFS in deltaDE mode?").
+            if (choice.delta) {
+                main.unsupported(
+                    "the dIFS DE function with the delta DE method (Mandelbulber2 then draws |z| as the "
+                    "distance)");
+                break;
+            }
+            set("difs", {});
+            return;
         case Mb2De::None: break;  // no mapped formula: each is named already
     }
     set("escape_linear", {});
@@ -1133,6 +1188,7 @@ Mb2De functionFromSetting(int function, Mb2De preferred) {
         case 2: return Mb2De::Log;
         case 3: return Mb2De::PseudoKleinian;
         case 4: return Mb2De::JosKleinian;
+        case 5: return Mb2De::Difs;
         default: return preferred;
     }
 }
