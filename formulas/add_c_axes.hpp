@@ -4,7 +4,9 @@
 namespace fraktal::blocks {
 
 // Add c with a weight per axis (Mandelbulber2's fractal_constant_factor given per axis): the
-// derivative gains the largest |weight|, the map's stretch in c; Julia mode adds julia_c.
+// derivative gains the largest |weight|, the map's stretch in c; Julia mode adds julia_c. With
+// swap_xy the constant's x and y change places (Mandelbulber2 adds c that way after aboxMod1 and
+// amazing surf: compute_fractal.cpp).
 struct AddCAxes {
     static constexpr std::string_view id = "add_c_axes";
     static constexpr std::string_view menuGroup = "Mandelbulber2";
@@ -18,16 +20,23 @@ struct AddCAxes {
             "weights", ParamType::Vec3, {1.0, 1.0, 1.0}, -2.0, 2.0, "Multiple of c per axis (not in Julia mode)."},
         toggleParam("julia", false, "On: add the fixed constant julia_c (a Julia set); off: add c (Mandelbrot type)."),
         ParamDecl{"julia_c", ParamType::Vec3, {-0.2, 0.6, 0.2}, -10.0, 10.0, "The constant added in Julia mode."},
+        toggleParam("swap_xy", false,
+                    "On: the constant's x and y exchanged first (c or julia_c; Mandelbulber2's aboxMod1 and "
+                    "amazing surf)."),
     };
 
     static constexpr std::string_view glsl = R"(
-    p.xyz += julia > 0.5 ? julia_c : c * weights;
+    vec3 k = julia > 0.5 ? julia_c : c;
+    if (swap_xy > 0.5) k = k.yxz;
+    p.xyz += julia > 0.5 ? k : k * weights;
     p.w += julia > 0.5 ? 0.0 : max(abs(weights.x), max(abs(weights.y), abs(weights.z)));
 )";
     static void apply(P4& p, const vec3& c, Args a) {
         const vec3 weights = a.v3(0), julia_c = a.v3(2);
-        const double julia = a.f(1);
-        p.xyz += julia > 0.5 ? julia_c : c * weights;
+        const double julia = a.f(1), swap_xy = a.f(3);
+        vec3 k = julia > 0.5 ? julia_c : c;
+        if (swap_xy > 0.5) k = vec3(k.y, k.x, k.z);
+        p.xyz += julia > 0.5 ? k : k * weights;
         p.w += julia > 0.5 ? 0.0 : max(abs(weights.x), max(abs(weights.y), abs(weights.z)));
     }
 };

@@ -623,6 +623,47 @@ TEST(FractImport, RiemannSpheresFollowMandelbulber2sOrbits) {
     EXPECT_TRUE(mentions(turned.unsupported, "slot 1 (riemann_sphere_msltoe_v1)", "inside the step"));
 }
 
+// aboxMod1 (its fold at the folding value, the sphere fold of squared radii, the scale, c with x
+// and y exchanged) and mandelbulb_abs_power2 (the buffalo step between rotations and offsets, in
+// their windows), each with values off its defaults, against the iteration written out.
+TEST(FractImport, AboxMod1AndAbsPower2FollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 64;\nN 12;\n[fractal_1]\nmandelbox_folding_value 1,5;\ntransf_scale_1 0,8;\n"
+         "transf_minimum_radius_0 0,2;\nmandelbox_scale -1,7;\n",
+         {"plane_fold", "plane_fold", "plane_fold", "box_fold_axes", "sphere_fold", "scale", "add_c_axes"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z = v;
+             const vec3 value(1.5, 1.5, 1.5 * 0.8);
+             for (int k = 0; k < 3; ++k) z[k] = value[k] - std::abs(std::abs(z[k]) - value[k]);
+             const double rr = dot(z, z);
+             if (rr < 0.2)
+                 z *= 1.0 / 0.2;
+             else if (rr < 1.0)
+                 z *= 1.0 / rr;
+             return z * -1.7 + vec3(c.y, c.x, c.z);
+         },
+         3.0},
+        {"formula_1 137;\nN 10;\n[fractal_1]\nbuffalo_abs_x true;\nbuffalo_preabs_z true;\ntransf_rotation_enabled "
+         "true;\ntransf_rotation 0 -33 -40;\ntransf_stop_iterations_R 2;\ntransf_offset_000 0,2 -0,1 0;\n"
+         "transf_start_iterations_M 1;\n",
+         {"rotate", "plane_fold", "mandelbulb_sine", "axis_scale", "plane_fold", "translate", "add_c"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3& c, int i) {
+             vec3 z = v;
+             if (i < 2)
+                 z = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(-40.0), vec3(0, 0, 1))) *
+                     glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(-33.0), vec3(0, 1, 0))) * z;
+             z.z = std::abs(z.z);
+             const double x2 = z.x * z.x, y2 = z.y * z.y, temp = 1.0 - z.z * z.z / (x2 + y2);
+             z = vec3(std::abs((x2 - y2) * temp), 2.0 * z.x * z.y * temp, -2.0 * z.z * std::sqrt(x2 + y2));
+             if (i >= 1) z += vec3(0.2, -0.1, 0.0);
+             return z + c;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 // Coastalbrot, the Mandelbulb eye, msltoe's sym2 mod and donut and the smooth Mandelbox, each
 // with values off its defaults.
 TEST(FractImport, CoastalbrotEyeMsltoeAndSmoothMandelboxFollowMandelbulber2sOrbits) {
@@ -1346,7 +1387,9 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {"examples/msltoe_donut_001.fract", ""},
         // The generalized box fold on the icosahedron.
         {km + "GeneralizedFoldBox01.fract", ""},
-        {"examples/stereoscopic 004.fract", "stereo_enabled true"},
+        // A red-cyan anaglyph, drawn from between the eyes; a pair one above the other is refused.
+        {"examples/stereoscopic 004.fract", ""},
+        {rp + "menger-4D.fract", "stereo pairs side by side or one above the other"},
         // A Menger sponge on Mandelbulber2's water (the water combine, its frame turned over).
         {km + "primitive objects - water.fract", ""},
         {"examples/quaternion4D_001.fract", "slot 1 (quaternion4d): the formula quaternion4d"},

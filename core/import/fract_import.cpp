@@ -37,6 +37,9 @@ constexpr FormulaInfo kFormulas[] = {
 #include "core/import/mb2_formula_list.inc"
 };
 
+// Formulas after which Mandelbulber2 adds c with x and y exchanged.
+constexpr int kAboxMod1Id = 64;
+constexpr int kAmazingSurfId = 73;
 // Formulas whose orbit fraktal runs in an estimator of its own (4D state).
 constexpr int kHypercomplexId = 4;
 constexpr int kAexionId = 19;
@@ -345,6 +348,30 @@ void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
     if (r.boolean("mandelbox_main_rotation_enabled")) b.rotation(setRotation2(r.vector("mandelbox_rotation_main")));
     b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
+}
+
+// abox_mod1: |x| and |y| (and |z|, its limit times transf_scale_1, when transf_function_enabledz)
+// reflected at mandelbox_folding_value (value - ||x| - value|); the sphere fold of squared radii
+// transf_minimum_radius_0 and transf_maxR2_1; the scale; the rotation (window R). c follows with
+// x and y exchanged.
+void mapAboxMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_addition_constant", "a shift before the fold");
+    r.mustBeDefault("transf_function_enabled_false", "the sphere fold on a power of r");
+    r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c in a chosen axis order");
+    const bool foldZ = r.boolean("transf_function_enabledz");
+    for (int k = 0; k < (foldZ ? 3 : 2); ++k) {
+        vec3 normal(0.0);
+        normal[k] = 1.0;
+        b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+    }
+    const double value = r.number("mandelbox_folding_value");
+    b.add("box_fold_axes",
+          {N::v("limit", vec3(value, value, value * r.number("transf_scale_1"))), N::f("fold_z", foldZ ? 1.0 : 0.0)});
+    sphereFold(b, std::sqrt(std::max(r.number("transf_minimum_radius_0"), 0.0)),
+               std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
+    b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
+    windowedRotation(r, b, "transf_rotation_enabled", "_R");
 }
 
 // generalized_fold_box: the box fold on the polyhedron of mandelbox_generalized_fold_type at
@@ -865,6 +892,37 @@ void mapBuffalo(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     absFolds("buffalo_abs_");
 }
 
+// mandelbulb_abs_power2: the buffalo step between a rotation (window R) and an offset (window D)
+// before it and an offset (window M) and the main rotation (window S) after it, then the final
+// abs of the chosen axes (window H).
+void mapMandelbulbAbsPower2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c in a chosen axis order");
+    windowedRotation(r, b, "transf_rotation_enabled", "_R");
+    auto offset = [&](const std::string& enabled, const std::string& window, const std::string& key) {
+        const vec3 v = r.vector(key);
+        if (r.boolean(enabled) && length(v) > 0.0)
+            inWindow(r, b, window, window, [&] { b.add("translate", {N::v("offset", v)}); });
+    };
+    offset("transf_function_enabledD_false", "D", "transf_offsetA_000");
+    mapBuffalo(r, b, approximated);
+    offset("transf_function_enabledM", "M", "transf_offset_000");
+    if (r.boolean("transf_function_enabled"))
+        inWindow(r, b, "S", "S", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
+    if (r.boolean("transf_function_enabledP_false"))
+        inWindow(r, b, "H", "H", [&] {
+            for (int k = 0; k < 3; ++k)
+                if (r.boolean(std::string("transf_function_enabledC") + "xyz"[k] + "_false")) {
+                    vec3 normal(0.0);
+                    normal[k] = 1.0;
+                    b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+                }
+        });
+    if (r.boolean("analyticDE_enabled_false"))
+        approximated.push_back({r.where(),
+                                "analyticDE_enabled_false: the derivative's scale and offset are left as "
+                                "they are (the log estimate's own)"});
+}
+
 void mapCoastalbrot(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("coastalbrot", {}); }
 
 void mapMandelbulbEye(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -1092,6 +1150,8 @@ constexpr Mapping kMappings[] = {
     {126, mapBoxFoldBulbPow2V3},
     {1009, mapTransfBenesiT1},
     {1098, mapTransfDiagonalFold},
+    {137, mapMandelbulbAbsPower2},
+    {64, mapAboxMod1},
     {610, mapDifsMsltoeDonut},
     {1600, mapTransfDifsBox},
     {1602, mapTransfDifsEllipsoid},
@@ -1248,7 +1308,18 @@ void importCamera(Reader& main, FractImport& out) {
     }
     main.mustBeDefault("sweet_spot_horizontal_angle", "a view turned after the frame");
     main.mustBeDefault("sweet_spot_vertical_angle", "a view turned after the frame");
-    main.mustBeDefault("stereo_enabled", "stereo pairs");
+    // Red-cyan anaglyphs (stereo_mode 2) are drawn as the view from between the eyes; pairs side by
+    // side or one above the other are other pictures and are refused.
+    if (main.boolean("stereo_enabled")) {
+        const std::string mode = main.raw("stereo_mode");
+        if (mode == "2" || mode == "red_cyan")
+            out.approximated.push_back({"camera", "stereo_mode red-cyan: one view from between the eyes (" +
+                                                      fmt(main.number("stereo_eye_distance")) +
+                                                      " apart), no anaglyph"});
+        else
+            main.unsupported("stereo_enabled true: stereo pairs side by side or one above the other (stereo_mode " +
+                             mode + ")");
+    }
     // The v1.x picture: the top image row at v = -1/2 (render_job.cpp), a mirror of the standard
     // one.
     c.flipVertical = main.boolean("legacy_coordinate_system");
@@ -1543,9 +1614,11 @@ FractImport importFract(const FractFile& file) {
         map(r, b, out.approximated);
         const bool dontAddC = main.boolean("dont_add_c_constant_" + n);
         const bool addC = info->c == CAdd::Yes ? !dontAddC : info->c == CAdd::No ? dontAddC : false;
-        if (addC && perAxisFactor) {
-            b.add("add_c_axes",
-                  {N::v("weights", factor), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor)});
+        // aboxMod1 and amazing surf add c with x and y exchanged (compute_fractal.cpp).
+        const bool swapC = formula == kAboxMod1Id || formula == kAmazingSurfId;
+        if (addC && (perAxisFactor || swapC)) {
+            b.add("add_c_axes", {N::v("weights", factor), N::f("julia", julia ? 1.0 : 0.0),
+                                 N::v("julia_c", juliaC * factor), N::f("swap_xy", swapC ? 1.0 : 0.0)});
         } else if (addC) {
             b.add("add_c",
                   {N::f("weight", factor.x), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor.x)});
