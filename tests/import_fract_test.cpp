@@ -438,6 +438,44 @@ TEST(FractImport, DifsShapesCloseWithTheLeastShapeDistance) {
     EXPECT_TRUE(mentions(delta.unsupported, "main", "the dIFS DE function with the delta DE method"));
 }
 
+// Mandelbulber2's 4D transforms after a 3D formula: with the fourth coordinate 0 throughout they
+// are 3D steps (Tglad's fold per axis with a negative limit, the conditional abs add, the weight
+// on chosen iterations as a scale there); one that would move w off 0 is refused.
+TEST(FractImport, FourDTransformsOnAnOrbitWhoseFourthCoordinateStaysZero) {
+    const std::string menger = "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 7;\nformula_2 ";
+    const mb2::FractImport tglad =
+        importText(menger + "1045;\n[fractal_2]\ntransf_addition_constant_0000 0,2 -0,1 0,3 0,5;\n");
+    ASSERT_TRUE(tglad.faithful()) << tglad.unsupported.front().text();
+    const std::vector<std::string> ids = blockIds(tglad.preset.formula);
+    const auto fold = std::find(ids.begin(), ids.end(), "box_fold_general");
+    ASSERT_NE(fold, ids.end());
+    const Node& n = tglad.preset.formula.nodes[size_t(fold - ids.begin())];
+    EXPECT_EQ(param(n, "low", 1), -0.1);
+    EXPECT_EQ(param(n, "high", 1), -0.1);
+    // Tglad's fold at a negative limit, |y - 0.1| - |y + 0.1| - y, on a point.
+    P4 p{vec3(0.3, 0.05, -2.0), 1.0};
+    n.block->apply(p, vec3(0.0), n.args());
+    EXPECT_NEAR(p.xyz.y, std::abs(0.05 - 0.1) - std::abs(0.05 + 0.1) - 0.05, 1e-12);
+    EXPECT_NEAR(p.xyz.z, std::abs(-2.0 + 0.3) - std::abs(-2.0 - 0.3) + 2.0, 1e-12);
+
+    const mb2::FractImport weight = importText(
+        "[main_parameters]\nformula_1 1041;\nformula_2 7;\nhybrid_fractal_enable true;\n[fractal_1]\n"
+        "transf_scale 2;\ntransf_int_A 2;\ntransf_offset 0,5;\n");
+    ASSERT_TRUE(weight.faithful()) << weight.unsupported.front().text();
+    int scales = 0;
+    for (const Node& k : weight.preset.formula.nodes)
+        if (k.block->id == "scale") {
+            ++scales;
+            if (k.runsOn(2) && !k.runsOn(4)) {
+                EXPECT_DOUBLE_EQ(param(k, "scale"), 2.5 / 2.0);
+            }
+        }
+    EXPECT_EQ(scales, 2);
+
+    const mb2::FractImport moved = importText(menger + "1042;\n[fractal_2]\ntransf_offset_0000 0 0 0 0,1;\n");
+    EXPECT_TRUE(mentions(moved.unsupported, "slot 2 (transf_spherical_fold4d)", "centred off the origin"));
+}
+
 // The generalized fold box: its polyhedron's fold, the Mandelbox's sphere fold, rotation and scale.
 TEST(FractImport, GeneralizedFoldBoxIsThePolyhedralFold) {
     const mb2::FractImport r = importText(

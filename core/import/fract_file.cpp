@@ -142,6 +142,18 @@ std::optional<vec3> parseVector(std::string_view text) {
     return v;
 }
 
+std::optional<glm::dvec4> parseVector4(std::string_view text) {
+    const auto parts = words(text);
+    if (parts.size() != 4) return std::nullopt;
+    glm::dvec4 v;
+    for (int i = 0; i < 4; ++i) {
+        const auto x = parseNumber(parts[size_t(i)]);
+        if (!x) return std::nullopt;
+        v[i] = *x;
+    }
+    return v;
+}
+
 std::optional<bool> parseBoolean(std::string_view text) {
     text = trim(text);
     if (text == "true" || text == "1") return true;

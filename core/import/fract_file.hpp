@@ -52,7 +52,8 @@ bool isFractPath(const std::filesystem::path& path);
 // Values as Mandelbulber2 writes them. Each returns nothing for text it cannot read; the caller
 // names the parameter in its error.
 std::optional<double> parseNumber(std::string_view text);
-std::optional<vec3> parseVector(std::string_view text);  // 3 numbers (a 4th is refused)
+std::optional<vec3> parseVector(std::string_view text);         // 3 numbers (a 4th is refused)
+std::optional<glm::dvec4> parseVector4(std::string_view text);  // 4 numbers (the 4D transforms')
 std::optional<bool> parseBoolean(std::string_view text);
 std::optional<vec3> parseColour(std::string_view text);  // 16-bit hex triple -> 0..1 (display-referred)
 

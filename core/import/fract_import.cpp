@@ -103,6 +103,7 @@ class Reader {
     double number(const std::string& key) const { return read(key, parseNumber(raw(key)), "a number"); }
     int integer(const std::string& key) const { return int(std::lround(number(key))); }
     vec3 vector(const std::string& key) const { return read(key, parseVector(raw(key)), "three numbers"); }
+    glm::dvec4 vector4(const std::string& key) const { return read(key, parseVector4(raw(key)), "four numbers"); }
     bool boolean(const std::string& key) const { return read(key, parseBoolean(raw(key)), "true or false"); }
     vec3 colour(const std::string& key) const { return read(key, parseColour(raw(key)), "a 16-bit hex colour"); }
 
@@ -943,6 +944,69 @@ void mapMsltoeDonut(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
            N::f("sections", r.number("donut_number")), N::f("factor", r.number("donut_factor"))});
 }
 
+// ---- Mandelbulber2's 4D transforms on an orbit whose fourth coordinate stays 0 ----
+// The importer takes initial_waxis 0 (the hypercomplex orbit apart), and Mandelbulber2's 3D
+// formulas leave the fourth coordinate w of their CVector4 at 0 (c's is 0). These transforms map
+// w = 0 to 0 when their own w parts do, so on such an orbit they are the 3D steps below; a part
+// that would move w off 0 is refused.
+
+void mapTransfScale4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledF_false", "a scale that varies with the iteration");
+    b.add("scale", {N::f("scale", r.number("transf_scale"))});
+}
+void mapTransfSphericalFold4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_offset_0000", "a sphere fold centred off the origin");
+    squaredRadiiSphereFold(r, b);
+}
+// z times transf_scale, plus z times transf_offset on iteration transf_int_A and times
+// transf_offset_0 on transf_int_B: the scale, and on those iterations a scale by the ratio.
+void mapTransfIterationWeight4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const double s = r.number("transf_scale");
+    const int a = r.integer("transf_int_A"), c = r.integer("transf_int_B");
+    const double onA = r.number("transf_offset"), onB = r.number("transf_offset_0");
+    if (s == 0.0) return r.unsupported("transf_scale 0: a weight that collapses the orbit");
+    if (s != 1.0) b.add("scale", {N::f("scale", s)});
+    auto on = [&](int i) {
+        const double weight = s + (i == a ? onA : 0.0) + (i == c ? onB : 0.0);
+        if (weight != s) b.within(i, i + 1, [&] { b.add("scale", {N::f("scale", weight / s)}); });
+    };
+    on(a);
+    if (c != a) on(c);
+}
+// Tglad's fold of each enabled axis at transf_addition_constant_0000 (a limit may be negative),
+// in its window (A, B, C): one general box fold when the three agree, else one per axis (the
+// others left as they are: low = high = 0 with mirror -1).
+void mapTransfAbsAddTgladFold4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const glm::dvec4 limit = r.vector4("transf_addition_constant_0000");
+    const char* enabled[3] = {"transf_function_enabledAx", "transf_function_enabledAy", "transf_function_enabledAz"};
+    const char* window[3] = {"A", "B", "C"};
+    auto fold = [&](const vec3& axes) {
+        const vec3 l = vec3(limit) * axes;
+        b.add("box_fold_general", {N::v("low", l), N::v("high", l), N::v("mirror", 2.0 * axes - vec3(1.0))});
+    };
+    bool same = true;
+    for (int k = 0; k < 3; ++k)
+        same =
+            same && r.boolean(enabled[k]) &&
+            r.integer(std::string("transf_start_iterations_") + window[k]) == r.integer("transf_start_iterations_A") &&
+            r.integer(std::string("transf_stop_iterations_") + window[k]) == r.integer("transf_stop_iterations_A");
+    if (same) return inWindow(r, b, "A", "A", [&] { fold(vec3(1.0)); });
+    for (int k = 0; k < 3; ++k) {
+        if (!r.boolean(enabled[k])) continue;
+        vec3 axis(0.0);
+        axis[k] = 1.0;
+        inWindow(r, b, window[k], window[k], [&] { fold(axis); });
+    }
+}
+void mapTransfAbsAddConditional4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    const vec3 axes(r.boolean("transf_function_enabledx"), r.boolean("transf_function_enabledy"),
+                    r.boolean("transf_function_enabledz"));
+    b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", vec3(r.vector4("transf_offset_1111"))),
+                                  N::v("multiplier", vec3(r.vector4("transf_scale_0000")))});
+    if (r.number("analyticDE_scale_1") != 1.0)
+        approximated.push_back({r.where(), "analyticDE_scale_1: the derivative's own factor is left out"});
+}
+
 // ---- dIFS: shape steps whose least distance along the orbit is the estimate (formulas/difs.hpp) ----
 
 // difs_msltoe_donut: the distance to the donut's torus at the point before the step, over the
@@ -1152,6 +1216,11 @@ constexpr Mapping kMappings[] = {
     {1098, mapTransfDiagonalFold},
     {137, mapMandelbulbAbsPower2},
     {64, mapAboxMod1},
+    {1043, mapTransfScale4d},
+    {1042, mapTransfSphericalFold4d},
+    {1041, mapTransfIterationWeight4d},
+    {1045, mapTransfAbsAddTgladFold4d},
+    {1067, mapTransfAbsAddConditional4d},
     {610, mapDifsMsltoeDonut},
     {1600, mapTransfDifsBox},
     {1602, mapTransfDifsEllipsoid},
