@@ -34,6 +34,11 @@ std::string Formula::structureKey() const {
         key += std::string(n.block->id) + (n.enabled ? "" : "!") + "/" + n.key() + ";";
     }
     key += "=>" + std::string(estimator.block ? estimator.block->id : "");
+    // An object's kind, operation, shell and whether it is on are compiled in; its placement and
+    // parameters are uniforms.
+    for (const SceneObject& o : objects)
+        key += "+" + std::string(o.block->id) + ":" + std::string(kObjectOperationNames[int(o.operation)]) +
+               (o.hollow ? ":hollow" : "") + (o.enabled ? "" : ":off");
     if (hitInsideOnly) key += "|hit inside only";
     // A user's block is compiled from its text: editing its GLSL or its parameter list (same id)
     // is a change of structure. Built-in blocks are fixed by their id.
@@ -152,6 +157,9 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
     e.orbitGradient = p.orbitGradient;
     e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
     e.inside = isInside(*f.estimator.block, e.distance, e.escaped);
+    if (!f.objects.empty())
+        e.distance = combineObjects(f.objects, pos, e.distance, e.inside,
+                                    f.estimator.block->membership == Membership::EscapeTime);
     return e;
 }
 

@@ -8,6 +8,7 @@
 #include "core/block.hpp"
 #include "core/custom_block.hpp"
 #include "core/iteration_schedule.hpp"
+#include "core/scene_object.hpp"
 
 namespace fraktal {
 
@@ -46,6 +47,10 @@ struct Formula {
     // around spiky sets (hypercomplex, power-2 bulbs) the log estimate falls under the threshold far
     // from the set, and this surface is the one its artists framed.
     bool hitInsideOnly = false;
+    // Objects beside the fractal, combined in order with the estimate after it (each joined with
+    // it, intersecting it or carved from it): Mandelbulber2's primitives and limit box. Their
+    // distances are exact, so the DE factor does not scale them.
+    std::vector<SceneObject> objects;
     // Keeps the user's GLSL blocks that nodes point to alive (shared, so copies stay valid).
     CustomBlocks customBlocks;
 
@@ -68,7 +73,7 @@ struct Evaluation {
     OrbitTrap trap;
     int iterations = 0;          // iterations run before escape (or all of them)
     bool escaped = false;        // the orbit passed the bailout
-    bool inside = false;         // membership, per the estimator's Membership rule
+    bool inside = false;         // membership, per the estimator's Membership rule and the objects
     double orbitGradient = 0.0;  // P4::orbitGradient, for estimators that read it (else 0)
 };
 

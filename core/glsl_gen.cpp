@@ -49,6 +49,53 @@ std::string nodeCall(int k, const Node& node, bool estimator, const std::string&
     return call + ")";
 }
 
+// The objects beside the fractal: a function per object (its kind's body under its own #line
+// numbers, after the estimator's), then fraktalObjects(pos, d, escaped), which combines them with
+// the estimate in order; it mirrors combineObjects() in core/scene_object.cpp. `escaped` is the
+// escape-time membership's flag of an orbit outside, which an object sets or clears. Returns ""
+// when there are none (the estimate is returned as it is).
+std::string emitObjects(GlslEmitter& e, const Formula& f, std::vector<std::string>& names) {
+    std::string combine;
+    const int first = int(f.nodes.size()) + 1;
+    for (size_t j = 0; j < f.objects.size(); ++j) {
+        const SceneObject& o = f.objects[j];
+        names.push_back("object " + std::to_string(j + 1) + " \"" + std::string(o.block->label) + "\" (" +
+                        std::string(o.block->id) + ")");
+        if (!o.enabled) continue;
+        const int k = int(j);
+        std::vector<GlslEmitter::Param> params;
+        std::string call = "fraktal_object" + std::to_string(j) + "(" + objectPlacementUniformName(k, "turn") +
+                           " * (pos - " + objectPlacementUniformName(k, "center") + ")";
+        for (const ParamDecl& p : o.block->params) {
+            params.push_back({glslType(p.type), objectUniformName(k, p.name), p.name});
+            call += ", " + objectUniformName(k, p.name);
+        }
+        call += ")";
+        e.line("uniform vec3 " + objectPlacementUniformName(k, "center") + ";");
+        e.line("uniform mat3 " + objectPlacementUniformName(k, "turn") + ";");
+        e.nodeFunction(first + k, o.block->id, names.back(), "float fraktal_object" + std::to_string(j) + "(vec3 pos",
+                       params, o.block->glsl);
+        const std::string od = o.hollow ? "abs(" + call + ")" : call;
+        switch (o.operation) {
+            case ObjectOperation::Join:
+                combine += "    { float o = " + od + "; d = min(d, o); if (o <= 0.0) escaped = false; }\n";
+                break;
+            case ObjectOperation::Intersect:
+                combine += "    { float o = " + od + "; d = max(d, o); if (o > 0.0) escaped = true; }\n";
+                break;
+            case ObjectOperation::Carve:
+                combine += "    { float o = " + od + "; d = max(d, -o); if (o <= 0.0) escaped = true; }\n";
+                break;
+        }
+    }
+    if (f.objects.empty()) return "";
+    e.line("float fraktalObjects(vec3 pos, float d, inout bool escaped) {");
+    e.out += combine;
+    e.line("    return d;");
+    e.line("}");
+    return combine.empty() ? " " : combine;
+}
+
 void replaceMarker(std::string& text, std::string_view marker, const std::string& with) {
     replaceTemplateMarker(text, marker, with, "formula.glsl");
 }
@@ -94,6 +141,12 @@ std::string nodeUniformName(int nodeIndex, std::string_view param) {
     return "u_n" + std::to_string(nodeIndex) + "_" + std::string(param);
 }
 std::string estimatorUniformName(std::string_view param) { return "u_est_" + std::string(param); }
+std::string objectUniformName(int objectIndex, std::string_view param) {
+    return "u_o" + std::to_string(objectIndex) + "_" + std::string(param);
+}
+std::string objectPlacementUniformName(int objectIndex, std::string_view what) {
+    return "u_op" + std::to_string(objectIndex) + "_" + std::string(what);
+}
 
 GeneratedFormula generateFormulaGLSL(const Formula& f) {
     GeneratedFormula g;
@@ -115,6 +168,7 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     const int est = int(f.nodes.size());
     g.nodeNames.push_back(listedNodeName("estimator", -1, *f.estimator.block));
     emitNodeFunction(e, est, f.estimator, g.nodeNames.back(), true);
+    const std::string objects = emitObjects(e, f, g.nodeNames);
 
     std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
     std::string loop, remaining;
@@ -146,7 +200,10 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     replaceMarker(rest, "//@FRAKTAL_ORBIT_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_REMAINING_DEGREE", remaining);
-    replaceMarker(rest, "//@FRAKTAL_ESTIMATE", "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";");
+    replaceMarker(rest, "//@FRAKTAL_ESTIMATE",
+                  objects.empty() ? "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";"
+                                  : "    return fraktalObjects(pos, u_deFactor * " + nodeCall(est, f.estimator, true) +
+                                        ", escaped);");
     const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
     replaceMarker(rest, "//@FRAKTAL_MEMBERSHIP", escapeTime ? "    return !escaped;" : "    return d <= 0.0;");
     // The orbit gradient (estimators that read it): the estimate without it sets the difference

@@ -14,7 +14,8 @@ namespace fraktal {
 // reports every error as source string 0 whatever #line says (glslang honours both):
 //   lines 1 .. 4999        the program's own template (march, probe...)
 //   5000 + n               line n of the generated formula code (shaders/formula.glsl)
-//   10000 * (k + 1) + n    line n of node k's GLSL (the estimator is the last node)
+//   10000 * (k + 1) + n    line n of node k's GLSL (the estimator is the last node, the objects
+//                          beside the fractal follow it)
 inline constexpr int kFormulaLineBase = 5000;
 inline constexpr int kNodeLineStride = 10000;
 
@@ -67,6 +68,9 @@ void replaceTemplateMarker(std::string& text, std::string_view marker, const std
 // Uniform names, shared by the generator and the uploader.
 std::string nodeUniformName(int nodeIndex, std::string_view param);
 std::string estimatorUniformName(std::string_view param);
+// An object's parameter, and its placement ("center", "turn": the mat3 localFromWorld).
+std::string objectUniformName(int objectIndex, std::string_view param);
+std::string objectPlacementUniformName(int objectIndex, std::string_view what);
 
 // A complete shader: "#version 450 core", optional defines, the formula, then the program's
 // own source (which calls DE / formulaDE).

@@ -95,6 +95,45 @@ std::shared_ptr<const CustomBlock> parseCustomBlockKeepingUnknown(const ReadCont
     }
 }
 
+// An object beside the fractal: {"object": kind, "operation": "join" | "intersect" | "carve",
+// "hollow", "enabled", "center", "axis", "angle", "params"}. Errors name it as "object N 'kind'".
+SceneObject parseObject(const ReadContext& context, const json& j, const std::string& path, size_t listNumber) {
+    FieldReader r(context, j, path);
+    const json& id = r.at("object");
+    if (!id.is_string()) r.fail("expected an object kind string, found " + FieldReader::typeName(id), "object");
+    const ObjectDesc* kind = findObject(id.get<std::string>());
+    if (!kind) {
+        std::string known;
+        for (const ObjectDesc& o : allObjects()) known += (known.empty() ? "" : ", ") + std::string(o.id);
+        r.fail("object " + std::to_string(listNumber) + ": unknown kind '" + id.get<std::string>() +
+                   "' (known kinds: " + known + ")",
+               "object");
+    }
+    SceneObject o = SceneObject::make(*kind);
+    const std::string operation = r.string("operation", std::string(kObjectOperationNames[0]));
+    const auto named = std::find(std::begin(kObjectOperationNames), std::end(kObjectOperationNames), operation);
+    if (named == std::end(kObjectOperationNames))
+        r.fail("object " + std::to_string(listNumber) + ": unknown operation \"" + operation +
+                   "\" (expected join, intersect or carve)",
+               "operation");
+    o.operation = ObjectOperation(named - std::begin(kObjectOperationNames));
+    o.hollow = r.boolean("hollow", false);
+    o.enabled = r.boolean("enabled", true);
+    o.center = r.vector<3>("center", o.center, -1e4, 1e4);
+    o.axis = r.vector<3>("axis", o.axis, -1.0, 1.0);
+    if (length(o.axis) < 1e-9) r.fail("object " + std::to_string(listNumber) + ": the axis must not be zero", "axis");
+    o.angle = r.number("angle", 0.0, -360.0, 360.0);
+    try {
+        readNodeParams(r, o, listNumber, "object");
+    } catch (const PresetError& e) {
+        std::string reason = e.reason();
+        if (reason.starts_with("block ")) reason = "object " + reason.substr(6);
+        throw PresetError(e.file(), e.field(), reason);
+    }
+    r.finish();
+    return o;
+}
+
 Formula parseFormula(const ReadContext& context, const json& j) {
     FieldReader r(context, j, "formula");
     Formula f;
@@ -142,6 +181,18 @@ Formula parseFormula(const ReadContext& context, const json& j) {
         } else {
             f.nodes.push_back(std::move(n));
         }
+    }
+    if (r.has("objects")) {
+        const json& objects = r.at("objects");
+        if (!objects.is_array())
+            r.fail("expected an array of objects, found " + FieldReader::typeName(objects), "objects");
+        if (objects.size() > size_t(kMaxObjects))
+            r.fail("too many objects (" + std::to_string(objects.size()) + "; at most " + std::to_string(kMaxObjects) +
+                       ")",
+                   "objects");
+        for (size_t i = 0; i < objects.size(); ++i)
+            f.objects.push_back(
+                parseObject(context, objects[i], r.child("objects") + "[" + std::to_string(i) + "]", i + 1));
     }
     r.finish();
     return f;
@@ -346,6 +397,19 @@ json shadingJson(const ShadingSettings& s) {
 
 }  // namespace
 
+// An object beside the fractal: its kind, what differs from the defaults, its parameters.
+json objectToJson(const SceneObject& o) {
+    json j = paramsOnlyJson(o);
+    j["object"] = o.block->id;
+    if (o.operation != ObjectOperation::Join) j["operation"] = kObjectOperationNames[int(o.operation)];
+    if (o.hollow) j["hollow"] = true;
+    if (!o.enabled) j["enabled"] = false;
+    if (o.center != vec3(0.0)) j["center"] = vecJson(o.center);
+    if (o.axis != vec3(0.0, 0.0, 1.0)) j["axis"] = vecJson(o.axis);
+    if (o.angle != 0.0) j["angle"] = o.angle;
+    return j;
+}
+
 json presetToJson(const Preset& p) {
     const Formula defaults;
     const Camera camDefaults;
@@ -368,6 +432,11 @@ json presetToJson(const Preset& p) {
     for (const Node& n : p.formula.nodes) nodes.push_back(nodeToJson(n));
     nodes.push_back(nodeToJson(p.formula.estimator));
     f["nodes"] = nodes;
+    if (!p.formula.objects.empty()) {
+        json objects = json::array();
+        for (const SceneObject& o : p.formula.objects) objects.push_back(objectToJson(o));
+        f["objects"] = objects;
+    }
     j["formula"] = f;
     json c = json::object();
     c["position"] = vecJson(p.camera.position);
@@ -417,6 +486,24 @@ std::string describeFormula(const Formula& f) {
     // Numbered from 1 with the estimator last, as the editor's list and the preset errors number them.
     for (size_t k = 0; k < f.nodes.size(); ++k) describeNode(f.nodes[k], "  " + std::to_string(k + 1) + ". ");
     describeNode(f.estimator, "  " + std::to_string(f.nodes.size() + 1) + ". ");
+    for (size_t k = 0; k < f.objects.size(); ++k) {
+        const SceneObject& o = f.objects[k];
+        s << "  object " << k + 1 << ". " << o.block->id << " (" << kObjectOperationNames[int(o.operation)]
+          << (o.hollow ? ", hollow" : "") << (o.enabled ? "" : ", off") << ") at (" << o.center.x << ", " << o.center.y
+          << ", " << o.center.z << ")";
+        if (o.angle != 0.0)
+            s << ", turned " << o.angle << " degrees about (" << o.axis.x << ", " << o.axis.y << ", " << o.axis.z
+              << ")";
+        for (size_t i = 0; i < o.values.size(); ++i) {
+            const ParamDecl& d = o.block->params[i];
+            s << (i == 0 ? ": " : ", ") << d.name << " = ";
+            if (d.type == ParamType::Vec3)
+                s << "(" << o.values[i].x << ", " << o.values[i].y << ", " << o.values[i].z << ")";
+            else
+                s << o.values[i].x;
+        }
+        s << "\n";
+    }
     return s.str();
 }
 

@@ -124,11 +124,11 @@ void writeNodeSchedule(const NodeT& n, nlohmann::json& node) {
 inline nlohmann::json vecJson(const vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 // A node: its block, its schedule and the parameters that differ from their defaults (floats as
 // numbers, toggles as true/false, vectors as arrays). NodeT: Node or PlaneNode.
+// {"params": ...} with the parameters that differ from their defaults (none: {}). NodeT: a
+// Node, PlaneNode or SceneObject.
 template <class NodeT>
-nlohmann::json nodeToJson(const NodeT& n) {
-    nlohmann::json j;
-    j["block"] = n.block->id;
-    writeNodeSchedule(n, j);
+nlohmann::json paramsOnlyJson(const NodeT& n) {
+    nlohmann::json j = nlohmann::json::object();
     nlohmann::json params = nlohmann::json::object();
     for (size_t i = 0; i < n.block->params.size(); ++i) {
         const ParamDecl& d = n.block->params[i];
@@ -142,6 +142,13 @@ nlohmann::json nodeToJson(const NodeT& n) {
         }
     }
     if (!params.empty()) j["params"] = params;
+    return j;
+}
+template <class NodeT>
+nlohmann::json nodeToJson(const NodeT& n) {
+    nlohmann::json j = paramsOnlyJson(n);
+    j["block"] = n.block->id;
+    writeNodeSchedule(n, j);
     return j;
 }
 // The closing estimator at `path` runs once, after the loop.

@@ -32,6 +32,7 @@
 #include "formulas/menger_scale.hpp"
 #include "formulas/menger_smooth.hpp"
 #include "formulas/msltoe.hpp"
+#include "formulas/objects.hpp"
 #include "formulas/octahedral_fold.hpp"
 #include "formulas/plane_fold.hpp"
 #include "formulas/primitives.hpp"
@@ -141,5 +142,15 @@ constexpr std::array kBlocks{
 }  // namespace
 
 std::span<const BlockDesc> allBlocks() { return kBlocks; }
+
+namespace {
+// The kinds of object beside the fractal, in the editor's "Add object" order.
+constexpr std::array kObjects{
+    describeObject<objects::Plane>(),    describeObject<objects::Box>(),   describeObject<objects::Sphere>(),
+    describeObject<objects::Cylinder>(), describeObject<objects::Torus>(),
+};
+}  // namespace
+
+std::span<const ObjectDesc> allObjects() { return kObjects; }
 
 }  // namespace fraktal

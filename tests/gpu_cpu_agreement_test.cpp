@@ -162,6 +162,36 @@ TEST(GpuCpuAgreement, EveryBlock) {
     EXPECT_GE(toggledBlocks, 4);
 }
 
+// Objects beside the fractal: every kind, joined, intersected and carved, turned, one hollow and
+// one off, after a Menger sponge and after an escape-time bulb (whose membership they change).
+TEST(GpuCpuAgreement, ObjectsBesideTheFractal) {
+    for (const char* preset : {"menger.json", "mandelbulb.json"}) {
+        Formula f = loadPreset(test::sourceDir() / "presets" / preset).formula;
+        const ObjectOperation operations[] = {ObjectOperation::Join, ObjectOperation::Carve,
+                                              ObjectOperation::Intersect};
+        int k = 0;
+        for (const ObjectDesc& kind : allObjects()) {
+            SceneObject o = SceneObject::make(kind);
+            for (size_t i = 0; i < kind.params.size(); ++i)
+                if (kind.params[i].type != ParamType::Toggle) o.values[i] *= 0.6;
+            o.operation = operations[k % 3];
+            o.center = vec3(0.3 * k - 0.6, 0.2, -0.1 * k);
+            o.axis = vec3(1.0, 0.5 * k, 0.3);
+            o.angle = 17.0 * k;
+            o.hollow = k == 2;
+            f.objects.push_back(o);
+            ++k;
+        }
+        f.objects.push_back(f.objects.front());
+        f.objects.back().enabled = false;
+        const Agreement a = compare(f, test::randomPoints(kPoints, 2.0, 12));
+        EXPECT_EQ(a.mismatched, 0u) << preset << ": worst error " << a.worstExcess << "x the tolerance at ("
+                                    << a.worstPoint.x << ", " << a.worstPoint.y << ", " << a.worstPoint.z << ")";
+        expectFewIllConditioned(a, preset);
+        EXPECT_GE(a.compared, 10000u) << preset;
+    }
+}
+
 // add_c in Julia mode (juliabulb.json) and the same formula with the toggle off: the GPU follows
 // the CPU in both, and the two differ, so the toggle reaches the shader as the CPU reads it.
 TEST(GpuCpuAgreement, AddCJuliaModeAndItsToggle) {

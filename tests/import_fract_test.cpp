@@ -229,11 +229,11 @@ TEST(FractImport, NodeSchedulesFollowTheSequenceIterationByIteration) {
 TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
     const mb2::FractImport r = importText(
         "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 79;\nformula_weight_1 0,5;\n"
-        "primitive_torus_1_enabled true;\n[fractal_2]\n");
+        "primitive_torus_1_enabled true;\nprimitive_torus_1_radius_lpow 2;\n[fractal_2]\n");
     EXPECT_FALSE(r.faithful());
     EXPECT_TRUE(mentions(r.unsupported, "slot 2 (quaternion4d)", "no fraktal blocks")) << r.unsupported.size();
     EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "formula_weight_1 0,5: a blend"));
-    EXPECT_TRUE(mentions(r.unsupported, "main", "primitive torus 1"));
+    EXPECT_TRUE(mentions(r.unsupported, "main", "primitive torus 1: a torus measured in another norm"));
     // Values outside a block's range.
     const mb2::FractImport bulb = importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 200;\npower 40;\n");
     EXPECT_TRUE(mentions(bulb.unsupported, "slot 1 (mandelbulb)", "mandelbulb_sine.phi_offset 200 is outside"));
@@ -292,6 +292,48 @@ TEST(FractImport, LimitBoxCutsALogEstimate) {
     EXPECT_GT(distanceEstimate(f, vec3(0.0, 0.0, 0.2)), 0.0);
 }
 
+// Everything else the combine estimators cannot hold becomes the formula's objects, in file
+// order: the primitives' boolean operators (0 AND, 1 OR, 2 SUB) as intersect, join and carve, their
+// rotation as the turn Mandelbulber2 measures in (M (p - position)), "empty" as hollow; the limit
+// box intersects them all, last, whatever the DE function.
+TEST(FractImport, PrimitivesAndTheLimitBoxBecomeObjects) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 103;\nlimits_enabled true;\nlimit_min -2 -2 -1;\nlimit_max 2 2 3;\n"
+        "primitive_sphere_1_enabled true;\nprimitive_sphere_1_position 1 0 0;\nprimitive_sphere_1_radius 0,5;\n"
+        "primitive_cylinder_1_enabled true;\nprimitive_cylinder_1_rotation 0 90 0;\n"
+        "primitive_cylinder_1_height 3;\nprimitive_cylinder_1_empty true;\nprimitive_cylinder_1_boolean_operator 2;\n"
+        "primitive_torus_1_enabled true;\nprimitive_torus_1_boolean_operator 0;\nprimitive_torus_1_tube_radius 0,3;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(r.preset.formula.estimator.block->id, "pseudo_kleinian_de");
+    const std::vector<SceneObject>& objects = r.preset.formula.objects;
+    ASSERT_EQ(objects.size(), 4u);
+    std::vector<std::string> kinds;
+    for (const SceneObject& o : objects) kinds.emplace_back(o.block->id);
+    EXPECT_EQ(kinds, (std::vector<std::string>{"cylinder", "sphere", "torus", "box"}));
+    EXPECT_EQ(objects[0].operation, ObjectOperation::Carve);
+    EXPECT_TRUE(objects[0].hollow);
+    EXPECT_EQ(objects[1].operation, ObjectOperation::Join);
+    EXPECT_EQ(objects[1].center, vec3(1.0, 0.0, 0.0));
+    EXPECT_EQ(objects[2].operation, ObjectOperation::Intersect);
+    EXPECT_EQ(objects[3].operation, ObjectOperation::Intersect);
+    EXPECT_EQ(objects[3].center, vec3(0.0, 0.0, 1.0));
+    EXPECT_EQ(objects[3].values[0], vec3(2.0, 2.0, 2.0));
+    // The cylinder turned by Ry(90): its axis along x in the world.
+    const glm::dmat3 m(glm::rotate(glm::dmat4(1.0), glm::radians(90.0), vec3(0, 1, 0)));
+    for (const vec3& p : test::randomPoints(200, 2.0, 41)) {
+        const vec3 q = m * p;
+        const double mb2 = std::abs(std::max(std::abs(q.z) - 1.5, std::hypot(q.x, q.y) - 1.0));
+        EXPECT_NEAR(objects[0].distanceAt(p), mb2, 1e-9);
+    }
+    // A cone, a repeated object and one that carves the fractal from itself are named.
+    const mb2::FractImport refused = importText(
+        "[main_parameters]\nprimitive_cone_1_enabled true;\nprimitive_box_1_enabled true;\n"
+        "primitive_box_1_repeat 1 0 0;\nprimitive_sphere_1_enabled true;\nprimitive_sphere_1_boolean_operator 3;\n");
+    EXPECT_TRUE(mentions(refused.unsupported, "main", "primitive cone 1: a cone beside the fractal"));
+    EXPECT_TRUE(mentions(refused.unsupported, "main", "primitive box 1: a repeated object"));
+    EXPECT_TRUE(mentions(refused.unsupported, "main", "primitive sphere 1: boolean operator 3"));
+}
+
 // Mandelbulber2's water beside a fractal: the water combine, its frame turned as the file's
 // rotation turns it (180 degrees about x: solid above the plane through the position), its
 // height relative to the wave length; files before 2.13 name it amplitude, and up to 2.12 give it
@@ -326,7 +368,7 @@ TEST(FractImport, WaterBesideTheFractal) {
     EXPECT_DOUBLE_EQ(param(old.preset.formula.estimator, "amplitude"), 0.1);
 
     const mb2::FractImport waves = importText(water + "primitive_water_1_wave_from_objects_enable true;\n");
-    EXPECT_TRUE(mentions(waves.unsupported, "main", "primitive water 1: an object beside the fractal"));
+    EXPECT_TRUE(mentions(waves.unsupported, "main", "primitive water 1: waves from the objects"));
 }
 
 // Makin's hypercomplex set runs its own 4D orbit in the hypercomplex_mandelbrot estimator, from

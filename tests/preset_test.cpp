@@ -236,7 +236,7 @@ const BadPreset kBadPresets[] = {
     {"unknown_block.json", "formula.nodes[0].block", "block 1: unknown block 'warp_drive'"},
     {"missing_block_field.json", "formula.nodes[0].block", "missing required field"},
     {"param_out_of_range.json", "formula.nodes[0].params.limit",
-     "block 1 'box_fold': value 7 is outside the range [0, 4]"},
+     "block 1 'box_fold': value 9 is outside the range [0, 8]"},
     {"param_out_of_range_third_block.json", "formula.nodes[2].params.power",
      "block 3 'mandelbulb_phase': value 40 is outside the range [1, 32]"},
     {"escape_unbounded.json", "formula.nodes[2]",

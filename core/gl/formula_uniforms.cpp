@@ -19,6 +19,14 @@ FormulaUniforms::FormulaUniforms(GLuint program, const Formula& f) {
         }
         nodes_.push_back(std::move(locations));
     }
+    for (size_t j = 0; j < f.objects.size(); ++j) {
+        ObjectLocations o;
+        o.center = glGetUniformLocation(program, objectPlacementUniformName(int(j), "center").c_str());
+        o.turn = glGetUniformLocation(program, objectPlacementUniformName(int(j), "turn").c_str());
+        for (const ParamDecl& p : f.objects[j].block->params)
+            o.params.push_back(glGetUniformLocation(program, objectUniformName(int(j), p.name).c_str()));
+        objects_.push_back(std::move(o));
+    }
 }
 
 void FormulaUniforms::upload(const Formula& f) const {
@@ -30,8 +38,24 @@ void FormulaUniforms::upload(const Formula& f) const {
         const Node& n = k == f.nodes.size() ? f.estimator : f.nodes[k];
         for (size_t i = 0; i < nodes_[k].size(); ++i) {
             const ParamValue& v = n.values[i];
-            if (isScalar(n.block->params[i].type)) glUniform1f(nodes_[k][i], float(v.x));
-            else glUniform3f(nodes_[k][i], float(v.x), float(v.y), float(v.z));
+            if (isScalar(n.block->params[i].type))
+                glUniform1f(nodes_[k][i], float(v.x));
+            else
+                glUniform3f(nodes_[k][i], float(v.x), float(v.y), float(v.z));
+        }
+    }
+    for (size_t j = 0; j < objects_.size() && j < f.objects.size(); ++j) {
+        const SceneObject& o = f.objects[j];
+        const ObjectLocations& at = objects_[j];
+        glUniform3f(at.center, float(o.center.x), float(o.center.y), float(o.center.z));
+        const glm::mat3 turn(o.localFromWorld());
+        glUniformMatrix3fv(at.turn, 1, GL_FALSE, &turn[0][0]);
+        for (size_t i = 0; i < at.params.size(); ++i) {
+            const ParamValue& v = o.values[i];
+            if (isScalar(o.block->params[i].type))
+                glUniform1f(at.params[i], float(v.x));
+            else
+                glUniform3f(at.params[i], float(v.x), float(v.y), float(v.z));
         }
     }
 }

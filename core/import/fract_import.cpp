@@ -1488,10 +1488,13 @@ std::vector<std::pair<std::string, std::string>> enabledPrimitives(const FractFi
     return out;
 }
 
-// A cut by a box (limits_enabled) and objects beside the fractal (primitives): fraktal's combine
-// estimators join one box, sphere or plane with the fractal's linear estimate |v| - offset over
-// |dr| (Mandelbulber2's linear and IFS DE functions) or its log estimate (log_part: the log DE
-// function; the delta log one as the analytic log estimate).
+// A cut by a box (limits_enabled) and objects beside the fractal (primitives). One box, sphere or
+// plane, unrotated, or the limit box alone, beside a linear or log estimate keep to fraktal's
+// combine estimators (the fractal's linear estimate |v| - offset over |dr|, Mandelbulber2's linear
+// and IFS DE functions, or its log estimate, log_part); one water surface is the water combine.
+// Everything else becomes the formula's objects (Formula::objects), in file order, joined,
+// intersected or carved as each primitive's boolean operator says, then the limit box
+// intersecting them all (calculate_distance.cpp: the limit applies after the primitives).
 void importObjects(const FractFile& file, Reader& main, FractImport& out) {
     Formula& f = out.preset.formula;
     const auto primitives = enabledPrimitives(file);
@@ -1512,17 +1515,17 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
         f.estimator.values[size_t(f.estimator.block->paramIndex("offset"))].x = offset;
         f.estimator.values[size_t(f.estimator.block->paramIndex("log_part"))].x = logPart ? 1.0 : 0.0;
     };
+    const vec3 limitLow = main.vector("limit_min"), limitHigh = main.vector("limit_max");
     if (limits && primitives.empty() && (linear || logPart)) {
-        const vec3 lo = main.vector("limit_min"), hi = main.vector("limit_max");
-        combine("box_combine",
-                {N::f("intersect", 1.0), N::v("center", (lo + hi) * 0.5), N::v("size", glm::abs(hi - lo) * 0.5)});
+        combine("box_combine", {N::f("intersect", 1.0), N::v("center", (limitLow + limitHigh) * 0.5),
+                                N::v("size", glm::abs(limitHigh - limitLow) * 0.5)});
         return;
     }
-    if (limits)
-        main.unsupported("limits_enabled: a box that cuts the fractal" +
-                         std::string(linear || logPart ? " together with primitives"
-                                                       : " with a DE function other than linear or log"));
+    main.mustBeDefault("all_primitives_position", "the primitives moved together");
+    main.mustBeDefault("all_primitives_rotation", "the primitives turned together");
     const bool one = primitives.size() == 1 && !limits && (linear || logPart);
+    int waters = 0;
+    for (const auto& [type, index] : primitives) waters += type == "water";
     for (const auto& [type, index] : primitives) {
         const std::string key = "primitive_" + type + "_" + index + "_";
         const std::string where = "primitive " + type + " " + index;
@@ -1540,19 +1543,25 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
             if (!v) throw PresetError(file.source, "[main_parameters] " + key + name, "expected a number");
             return *v;
         };
+        auto flag = [&](const std::string& name, bool fallback) {
+            return parseBoolean(value(name, fallback ? "true" : "false")) == true;
+        };
         const bool water = type == "water";
-        const bool plain = (water || length(vectorOf("rotation", "0 0 0")) == 0.0) &&
-                           parseBoolean(value("empty", "false")) != true &&
-                           parseBoolean(value("wave_from_objects_enable", "false")) != true &&
-                           length(vectorOf("repeat", "0 0 0")) == 0.0 && !file.find("main_parameters", key + "normal");
-        if (!one || !plain || (type != "box" && type != "sphere" && type != "plane" && !water)) {
-            main.unsupported(where +
-                             ": an object beside the fractal (fraktal's combine estimators join one box, "
-                             "sphere or plane, unrotated, or one water surface, with a linear or log DE)");
+        const vec3 position = vectorOf("position", "0 0 0");
+        const vec3 rotation = vectorOf("rotation", "0 0 0");
+        if (flag("wave_from_objects_enable", false)) {
+            main.unsupported(where + ": waves from the objects");
             continue;
         }
-        const vec3 position = vectorOf("position", "0 0 0");
         if (water) {
+            // The water combine: the estimator itself, so one water surface beside a linear or log
+            // estimate, whatever else is there.
+            if (waters > 1 || !(linear || logPart)) {
+                main.unsupported(where +
+                                 ": water beside a DE function other than linear or log, or a second water "
+                                 "surface");
+                continue;
+            }
             // primitives.cpp and settings.cpp: files before 2.13 name the height `amplitude`, and
             // those up to 2.12 give it in world units (divided by the length on load).
             const double waveLength = numberOf("length", "0.1");
@@ -1560,22 +1569,102 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
             if (file.versionNumber < 2.13 - 1e-9 && file.find("main_parameters", key + "amplitude"))
                 amplitude = numberOf("amplitude", "0.2");
             if (file.versionNumber <= 2.12 + 1e-9) amplitude /= waveLength;
-            const AxisAngle turn = axisAngle(setRotation2(vectorOf("rotation", "0 0 0")));
+            const AxisAngle turn = axisAngle(setRotation2(rotation));
             const double frame = main.given("frame_no") ? main.number("frame_no") : 0.0;
             combine("water_combine", {N::v("center", position), N::v("axis", turn.axis), N::f("angle", turn.degrees),
                                       N::f("wave_length", waveLength), N::f("amplitude", amplitude),
                                       N::f("iterations", numberOf("iterations", "5")),
                                       N::f("phase", -numberOf("anim_speed", "1") * frame * 0.1)});
-        } else if (type == "sphere") {
-            combine("sphere_combine", {N::v("center", position), N::f("radius", numberOf("radius", "1"))});
-        } else if (type == "plane") {
-            // Solid below the plane through `position` with the normal (0, 0, 1) (unrotated).
-            combine("plane_combine", {N::v("normal", vec3(0, 0, 1)), N::f("height", position.z)});
-        } else {
-            // Mandelbulber2's box size is its full extent.
-            combine("box_combine", {N::v("center", position), N::v("size", vectorOf("size", "1 1 1") * 0.5)});
-            if (numberOf("rounding", "0") > 0.0) out.approximated.push_back({where, "rounded edges are drawn sharp"});
+            continue;
         }
+        const bool empty = flag("empty", false);
+        const int booleanOperator = int(std::lround(numberOf("boolean_operator", "1")));
+        if (one && length(rotation) == 0.0 && !empty && booleanOperator == 1 &&
+            length(vectorOf("repeat", "0 0 0")) == 0.0 && !file.find("main_parameters", key + "normal") &&
+            (type == "box" || type == "sphere" || type == "plane")) {
+            if (type == "sphere") {
+                combine("sphere_combine", {N::v("center", position), N::f("radius", numberOf("radius", "1"))});
+            } else if (type == "plane") {
+                // Solid below the plane through `position` with the normal (0, 0, 1) (unrotated).
+                combine("plane_combine", {N::v("normal", vec3(0, 0, 1)), N::f("height", position.z)});
+            } else {
+                // Mandelbulber2's box size is its full extent.
+                combine("box_combine", {N::v("center", position), N::v("size", vectorOf("size", "1 1 1") * 0.5)});
+                if (numberOf("rounding", "0") > 1e-9)
+                    out.approximated.push_back({where, "rounded edges are drawn sharp"});
+            }
+            continue;
+        }
+        // An object of the formula's own.
+        const ObjectDesc* kind = findObject(type);
+        if (!kind || type == "cone") {
+            main.unsupported(where + ": a " + type +
+                             " beside the fractal (fraktal's objects: plane, box, sphere, "
+                             "cylinder, torus)");
+            continue;
+        }
+        if (length(vectorOf("repeat", "0 0 0")) > 0.0) {
+            main.unsupported(where + ": a repeated object");
+            continue;
+        }
+        if (file.find("main_parameters", key + "normal")) {
+            main.unsupported(where + ": a plane given by its normal (files before 2.10)");
+            continue;
+        }
+        if (booleanOperator < 0 || booleanOperator > 2) {
+            main.unsupported(where + ": boolean operator " + std::to_string(booleanOperator) +
+                             " (the fractal carved from the object)");
+            continue;
+        }
+        if (int(f.objects.size()) >= kMaxObjects) {
+            main.unsupported(where + ": more than " + std::to_string(kMaxObjects) + " objects");
+            continue;
+        }
+        SceneObject o = SceneObject::make(*kind);
+        constexpr ObjectOperation kOperations[] = {ObjectOperation::Intersect, ObjectOperation::Join,
+                                                   ObjectOperation::Carve};
+        o.operation = kOperations[booleanOperator];
+        o.hollow = empty;
+        o.center = position;
+        // Mandelbulber2 measures at M (p - position), M = SetRotation2(rotation): the object is
+        // turned by M's inverse.
+        const AxisAngle turn = axisAngle(glm::transpose(setRotation2(rotation)));
+        o.axis = turn.axis;
+        o.angle = turn.degrees;
+        auto set = [&](std::string_view name, const vec3& v) {
+            o.values[size_t(std::find_if(kind->params.begin(), kind->params.end(),
+                                         [&](const ParamDecl& d) { return d.name == name; }) -
+                            kind->params.begin())] = v;
+        };
+        if (type == "box") {
+            set("size", vectorOf("size", "1 1 1") * 0.5);
+            set("rounding", vec3(numberOf("rounding", "0")));
+            if (empty && numberOf("rounding", "0") > 1e-9)
+                out.approximated.push_back({where, "a hollow box's rounding is left out"});
+        } else if (type == "sphere") {
+            set("radius", vec3(numberOf("radius", "1")));
+        } else if (type == "cylinder") {
+            set("radius", vec3(numberOf("radius", "1")));
+            set("height", vec3(numberOf("height", "1")));
+            set("caps", vec3(flag("caps", true) ? 1.0 : 0.0));
+        } else if (type == "torus") {
+            if (numberOf("radius_lpow", "1") != 1.0 || numberOf("tube_radius_lpow", "1") != 1.0) {
+                main.unsupported(where + ": a torus measured in another norm (radius_lpow, tube_radius_lpow)");
+                continue;
+            }
+            set("radius", vec3(numberOf("radius", "1")));
+            set("tube", vec3(numberOf("tube_radius", "0.2")));
+        }
+        if (booleanOperator == 2)
+            out.approximated.push_back({where, "carved exactly (Mandelbulber2 carves within 1.5 hit thresholds)"});
+        f.objects.push_back(std::move(o));
+    }
+    if (limits) {
+        SceneObject box = SceneObject::make(*findObject("box"));
+        box.operation = ObjectOperation::Intersect;
+        box.center = (limitLow + limitHigh) * 0.5;
+        box.values[0] = glm::abs(limitHigh - limitLow) * 0.5;
+        f.objects.push_back(std::move(box));
     }
 }
 

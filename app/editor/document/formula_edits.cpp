@@ -19,6 +19,18 @@ std::vector<const BlockDesc*> blocksIn(Category category) {
     return out;
 }
 
+bool addObject(Formula& f, const ObjectDesc& kind) {
+    if (int(f.objects.size()) >= kMaxObjects) return false;
+    f.objects.push_back(SceneObject::make(kind));
+    return true;
+}
+
+bool removeObject(Formula& f, int index) {
+    if (index < 0 || index >= int(f.objects.size())) return false;
+    f.objects.erase(f.objects.begin() + index);
+    return true;
+}
+
 std::vector<const BlockDesc*> customBlocksIn(const Formula& f, Category category) {
     std::vector<const BlockDesc*> out;
     for (const auto& b : f.customBlocks)

@@ -35,6 +35,10 @@ bool removeNode(Preset& p, int index);
 bool duplicateNode(Preset& p, int index);
 bool moveNode(Preset& p, int from, int to);
 bool setEstimator(Preset& p, const BlockDesc& estimator);
+// Objects beside the fractal: one of `kind` at the end of the list (false at kMaxObjects), or
+// object `index` removed (false out of range). They carry no animation tracks.
+bool addObject(Formula& f, const ObjectDesc& kind);
+bool removeObject(Formula& f, int index);
 // Sets parameter `param` of node `index` (nodes.size() means the estimator), clamped to the
 // declared range.
 bool setParam(Formula& f, int index, int param, const ParamValue& value);

@@ -102,6 +102,67 @@ void slowStackNotice(EditorState& s) {
                           faster.deFactor);
 }
 
+// The placement of an object, declared as parameters so that it gets the same widgets.
+constexpr ParamDecl kObjectCenter{"center", ParamType::Vec3, {0.0, 0.0, 0.0},
+                                  -100.0,   100.0,           "Where the object's frame sits."};
+constexpr ParamDecl kObjectAxis{
+    "axis", ParamType::Vec3, {0.0, 0.0, 1.0}, -1.0, 1.0, "The axis the object is turned about.", true};
+constexpr ParamDecl kObjectAngle{"angle",         ParamType::Float,
+                                 {0.0, 0.0, 0.0}, -180.0,
+                                 180.0,           "How far the object is turned about its axis, in degrees."};
+
+// Objects beside the fractal, under the parameters (a collapsed header by default, so the rows
+// above keep their places): each with its operation, shell, placement and parameters.
+void objectsSection(EditorState& s) {
+    Formula& f = s.doc.preset.formula;
+    ImGui::Spacing();
+    const std::string title = "Objects beside the fractal (" + std::to_string(f.objects.size()) + ")###objects";
+    if (!ImGui::CollapsingHeader(title.c_str())) return;
+    noteWidgetRect(s.layout, "header:Objects");
+    int remove = -1;
+    for (size_t j = 0; j < f.objects.size(); ++j) {
+        SceneObject& o = f.objects[j];
+        ImGui::PushID(int(j));
+        const std::string label = std::to_string(j + 1) + ". " + std::string(o.block->label) + " (" +
+                                  std::string(kObjectOperationNames[int(o.operation)]) + ")";
+        if (ImGui::TreeNodeEx(label.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+            ImGui::Checkbox("On", &o.enabled);
+            ImGui::SameLine();
+            ImGui::Checkbox("Hollow", &o.hollow);
+            helpMarker("Only the object's shell: its distance taken as |d|.");
+            ImGui::SameLine();
+            if (ImGui::SmallButton("Remove")) remove = int(j);
+            int operation = int(o.operation);
+            ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+            if (ImGui::Combo("Operation", &operation, "join\0intersect\0carve\0"))
+                o.operation = ObjectOperation(operation);
+            helpMarker(
+                "join: the union with what comes before; intersect: only what lies inside the object (a limit "
+                "box); carve: the object cut out.");
+            ParamValue angle(o.angle, 0.0, 0.0);
+            paramWidget(kObjectCenter, o.center, &s.paramWidgets);
+            paramWidget(kObjectAxis, o.axis, &s.paramWidgets);
+            if (paramWidget(kObjectAngle, angle, &s.paramWidgets)) o.angle = angle.x;
+            for (size_t k = 0; k < o.block->params.size(); ++k)
+                paramWidget(o.block->params[k], o.values[k], &s.paramWidgets);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (remove >= 0) removeObject(f, remove);
+    ImGui::BeginDisabled(int(f.objects.size()) >= kMaxObjects);
+    if (ImGui::Button("Add object...")) ImGui::OpenPopup("add_object");
+    ImGui::EndDisabled();
+    noteWidgetRect(s.layout, "button:Add object");
+    if (ImGui::BeginPopup("add_object")) {
+        for (const ObjectDesc& kind : allObjects()) {
+            if (ImGui::MenuItem(std::string(kind.label).c_str())) addObject(f, kind);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(kind.help).c_str());
+        }
+        ImGui::EndPopup();
+    }
+}
+
 }  // namespace
 
 void beginFormulaWindow(EditorState& s) { beginSideColumnWindow(s, "Formula", &s.panels.formula, true); }
@@ -196,6 +257,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
             s.customBlockEditor.open = true;
         }
     }
+    objectsSection(s);
     ImGui::End();
 }
 

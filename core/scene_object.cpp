@@ -1,0 +1,58 @@
+#include "core/scene_object.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace fraktal {
+
+const ObjectDesc* findObject(std::string_view id) {
+    for (const ObjectDesc& o : allObjects())
+        if (o.id == id) return &o;
+    return nullptr;
+}
+
+SceneObject SceneObject::make(const ObjectDesc& kind) {
+    SceneObject o;
+    o.block = &kind;
+    for (const ParamDecl& p : kind.params) o.values.push_back(p.defaultValue);
+    return o;
+}
+
+glm::dmat3 SceneObject::localFromWorld() const {
+    if (angle == 0.0 || length(axis) < 1e-12) return glm::dmat3(1.0);
+    const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), glm::radians(angle), normalize(axis)));
+    return glm::transpose(turn);
+}
+
+double SceneObject::distanceAt(const vec3& pos) const {
+    const double d = block->distance(localFromWorld() * (pos - center), args());
+    return hollow ? std::abs(d) : d;
+}
+
+// Mirrors fraktalObjects() in the generated GLSL (core/glsl_gen.cpp): keep the two in step.
+double combineObjects(const std::vector<SceneObject>& objects, const vec3& pos, double distance, bool& inside,
+                      bool escapeTime) {
+    for (const SceneObject& o : objects) {
+        if (!o.enabled) continue;
+        const double od = o.distanceAt(pos);
+        switch (o.operation) {
+            case ObjectOperation::Join:
+                distance = std::min(distance, od);
+                if (od <= 0.0) inside = true;
+                break;
+            case ObjectOperation::Intersect:
+                distance = std::max(distance, od);
+                if (od > 0.0) inside = false;
+                break;
+            case ObjectOperation::Carve:
+                distance = std::max(distance, -od);
+                if (od <= 0.0) inside = false;
+                break;
+        }
+    }
+    if (!escapeTime) inside = distance <= 0.0;
+    return distance;
+}
+
+}  // namespace fraktal

@@ -1,0 +1,79 @@
+// Objects beside the fractal: simple shapes joined with the fractal's estimate, cut from it or
+// intersecting it, in order, after the estimator (Mandelbulber2's primitives and its limit box).
+// Each kind declares its parameters once and its distance in GLSL and C++ side by side
+// (formulas/objects.hpp); the distance is measured in the object's own frame, placed by a centre
+// and a turn.
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "core/block.hpp"
+
+namespace fraktal {
+
+// How an object meets what comes before it: the union (joined), the intersection (the fractal
+// kept inside the object: a limit box) or the difference (the object carved out of it).
+enum class ObjectOperation { Join, Intersect, Carve };
+inline constexpr std::string_view kObjectOperationNames[] = {"join", "intersect", "carve"};
+
+// One kind of object: its parameters and its signed distance at a point of its own frame.
+// GLSL: statements over `vec3 pos` (the point in the object's frame) ending in
+// `return <distance>;`, the parameters in scope by name.
+struct ObjectDesc {
+    std::string_view id;
+    std::string_view label;
+    std::string_view help;
+    std::span<const ParamDecl> params;
+    std::string_view glsl;
+    double (*distance)(const vec3& pos, Args a) = nullptr;
+};
+
+template <class O>
+concept ObjectKind = requires(const vec3& pos, Args a) {
+    { O::id } -> std::convertible_to<std::string_view>;
+    { O::label } -> std::convertible_to<std::string_view>;
+    { O::help } -> std::convertible_to<std::string_view>;
+    { O::glsl } -> std::convertible_to<std::string_view>;
+    {std::span<const ParamDecl>(O::params)};
+    { O::distance(pos, a) } -> std::same_as<double>;
+};
+
+template <ObjectKind O>
+constexpr ObjectDesc describeObject() {
+    return ObjectDesc{O::id, O::label, O::help, std::span<const ParamDecl>(O::params), O::glsl, &O::distance};
+}
+
+// All registered kinds (formulas/registry.cpp).
+std::span<const ObjectDesc> allObjects();
+const ObjectDesc* findObject(std::string_view id);
+
+// At most this many objects per formula (each is a function and a few uniforms).
+inline constexpr int kMaxObjects = 8;
+
+struct SceneObject {
+    const ObjectDesc* block = nullptr;  // the kind (named `block` so the node readers serve it)
+    std::vector<ParamValue> values;     // one per block->params, in declaration order
+    ObjectOperation operation = ObjectOperation::Join;
+    bool hollow = false;  // |distance|: only the shell (Mandelbulber2's "empty")
+    bool enabled = true;
+    // Placement: the object's frame is turned by `angle` degrees about `axis` and moved to `center`.
+    vec3 center{0.0};
+    vec3 axis{0.0, 0.0, 1.0};
+    double angle = 0.0;
+
+    static SceneObject make(const ObjectDesc& kind);  // with default parameter values
+    Args args() const { return Args{values.data()}; }
+    // The rotation taking world directions into the object's frame (the inverse of its turn).
+    glm::dmat3 localFromWorld() const;
+    double distanceAt(const vec3& pos) const;  // in world units, hollow applied
+};
+
+// The fractal's distance and membership combined with each enabled object in order. Membership:
+// escape-time estimators keep `inside` as the flag of the orbit's boundedness, which each object
+// then sets or clears; distance estimators are inside where the combined distance is <= 0.
+double combineObjects(const std::vector<SceneObject>& objects, const vec3& pos, double distance, bool& inside,
+                      bool escapeTime);
+
+}  // namespace fraktal
