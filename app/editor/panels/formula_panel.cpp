@@ -117,8 +117,9 @@ void objectsSection(EditorState& s) {
     Formula& f = s.doc.preset.formula;
     ImGui::Spacing();
     const std::string title = "Objects beside the fractal (" + std::to_string(f.objects.size()) + ")###objects";
-    if (!ImGui::CollapsingHeader(title.c_str())) return;
+    const bool open = ImGui::CollapsingHeader(title.c_str());
     noteWidgetRect(s.layout, "header:Objects");
+    if (!open) return;
     int remove = -1;
     for (size_t j = 0; j < f.objects.size(); ++j) {
         SceneObject& o = f.objects[j];
@@ -157,6 +158,7 @@ void objectsSection(EditorState& s) {
     if (ImGui::BeginPopup("add_object")) {
         for (const ObjectDesc& kind : allObjects()) {
             if (ImGui::MenuItem(std::string(kind.label).c_str())) addObject(f, kind);
+            noteWidgetRect(s.layout, "menu:Object " + std::string(kind.label));
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(kind.help).c_str());
         }
         ImGui::EndPopup();
