@@ -121,6 +121,18 @@ struct DifsEllipsoid {
     }
 };
 
+// The grids' bars: their section and the squeeze of z, the same for both.
+inline constexpr ParamDecl kGridThickness{"thickness", ParamType::Float,      {0.005, 0.0, 0.0}, 0.0,
+                                          1.0,         "Radius of each line."};
+inline constexpr ParamDecl kGridZScale{"z_scale", ParamType::Float,           {1.0, 0.0, 0.0}, 0.01,
+                                       10.0,      "z is divided by it first."};
+inline constexpr ParamDecl kGridSquareBars =
+    toggleParam("square_bars", false, "On: bars of square section (the larger of the two offsets).");
+// A bar's distance from its offset `across` the grid and its height z, as the grids measure it.
+inline double gridBarDistance(double across, double z, double thickness, bool squareBars) {
+    return (squareBars ? std::max(std::abs(across), std::abs(z)) : length(glm::dvec2(across, z))) - thickness;
+}
+
 // A square grid of lines in the plane z = 0, `cell` apart along x and y, each line a tube of
 // radius `thickness` (or a square bar, `square_bars`), z first divided by `z_scale`
 // (Mandelbulber2's transf_difs_grid).
@@ -136,9 +148,9 @@ struct DifsGrid {
     static constexpr bool difsShape = true;
     static constexpr std::array params{
         ParamDecl{"cell", ParamType::Float, {1.0, 0.0, 0.0}, 0.01, 10.0, "Spacing of the lines along x and y."},
-        ParamDecl{"thickness", ParamType::Float, {0.005, 0.0, 0.0}, 0.0, 1.0, "Radius of each line."},
-        ParamDecl{"z_scale", ParamType::Float, {1.0, 0.0, 0.0}, 0.01, 10.0, "z is divided by it first."},
-        toggleParam("square_bars", false, "On: bars of square section (the larger of the two offsets)."),
+        kGridThickness,
+        kGridZScale,
+        kGridSquareBars,
         kDifsWScale,
         kDifsWOffset,
     };
@@ -156,9 +168,7 @@ struct DifsGrid {
         const glm::dvec2 xy(p.xyz.x, p.xyz.y);
         const glm::dvec2 offCell = glm::abs(xy - cell * glm::floor(xy / cell + 0.5));
         const double across = std::min(offCell.x, offCell.y);
-        const double d =
-            (square_bars > 0.5 ? std::max(across, std::abs(z)) : length(glm::dvec2(across, z))) - thickness;
-        recordShapeDistance(p, d, a.f(4), a.f(5));
+        recordShapeDistance(p, gridBarDistance(across, z, thickness, square_bars > 0.5), a.f(4), a.f(5));
     }
 };
 
@@ -176,9 +186,9 @@ struct DifsHexGrid {
     static constexpr bool difsShape = true;
     static constexpr std::array params{
         ParamDecl{"cell", ParamType::Float, {1.0, 0.0, 0.0}, 0.01, 10.0, "Size of the cells."},
-        ParamDecl{"thickness", ParamType::Float, {0.005, 0.0, 0.0}, 0.0, 1.0, "Radius of each line."},
-        ParamDecl{"z_scale", ParamType::Float, {1.0, 0.0, 0.0}, 0.01, 10.0, "z is divided by it first."},
-        toggleParam("square_bars", false, "On: bars of square section (the larger of the two offsets)."),
+        kGridThickness,
+        kGridZScale,
+        kGridSquareBars,
         kDifsWScale,
         kDifsWOffset,
     };
@@ -199,9 +209,7 @@ struct DifsHexGrid {
         const double offY = std::abs(p.xyz.y - cell * std::floor(p.xyz.y / cell + 0.5));
         const double offX = std::abs(p.xyz.x - cell * 1.5 / cos30 * std::floor(p.xyz.x / cell / 1.5 * cos30 + 0.5));
         const double across = std::min(std::max(offY, offX * cos30 + offY * sin30) - cell * 0.5, offY);
-        const double d =
-            (square_bars > 0.5 ? std::max(std::abs(across), std::abs(z)) : length(glm::dvec2(across, z))) - thickness;
-        recordShapeDistance(p, d, a.f(4), a.f(5));
+        recordShapeDistance(p, gridBarDistance(across, z, thickness, square_bars > 0.5), a.f(4), a.f(5));
     }
 };
 

@@ -96,18 +96,7 @@ struct HypercomplexJulia {
     return q2 < escape * escape ? 0.0 : 0.5 * (log(r) - exp2(float(i - int(orbit))) * log(escape)) * r / dq;
 )";
     static double estimate(const P4& p, const vec3&, Args a) {
-        const vec4 k(a.v3(0), a.f(1));
-        const double slice = a.f(2), orbit = a.f(3), escape = a.f(4);
-        vec4 q(p.xyz, slice);
-        double dq = abs(p.w), q2 = dot(q, q);
-        int i = 0;
-        for (; i < int(orbit) && q2 < escape * escape; ++i) {
-            dq *= 2.0 * std::sqrt(q2);
-            q = hypercomplexSquare(q) + k;
-            q2 = dot(q, q);
-        }
-        const double r = std::sqrt(q2);
-        return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
+        return juliaOrbitEstimate(p, vec4(a.v3(0), a.f(1)), a.f(2), a.f(3), a.f(4), hypercomplexSquare);
     }
 };
 

@@ -37,6 +37,23 @@ double mandelbrotOrbitEstimate(const P4& p, double slice, double orbit, double e
     return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
 }
 
+// The Julia form's own orbit, q -> square(q) + k from q = (point, slice), with dq -> 2 |q| dq (k
+// does not move with the point) and the estimate of K_n's surface as above: the CPU side of the
+// 4D Julia sets (quaternion here, hypercomplex.hpp).
+template <class Square>
+double juliaOrbitEstimate(const P4& p, const vec4& k, double slice, double orbit, double escape, Square square) {
+    vec4 q = vec4(p.xyz, slice);
+    double dq = abs(p.w), q2 = dot(q, q);
+    int i = 0;
+    for (; i < int(orbit) && q2 < escape * escape; ++i) {
+        dq *= 2.0 * std::sqrt(q2);
+        q = square(q) + k;
+        q2 = dot(q, q);
+    }
+    const double r = std::sqrt(q2);
+    return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
+}
+
 struct QuaternionJulia {
     static constexpr std::string_view id = "quaternion_julia";
     static constexpr std::string_view label = "Quaternion Julia";
@@ -80,19 +97,9 @@ struct QuaternionJulia {
     return q2 < escape * escape ? 0.0 : 0.5 * (log(r) - exp2(float(i - int(orbit))) * log(escape)) * r / dq;
 )";
     static double estimate(const P4& p, const vec3&, Args a) {
-        const vec3 constant = a.v3(0);
-        const double constant_w = a.f(1), slice = a.f(2), orbit = a.f(3), escape = a.f(4);
-        vec4 q = vec4(p.xyz, slice);
-        double dq = abs(p.w), q2 = dot(q, q);
-        int i = 0;
-        for (; i < int(orbit) && q2 < escape * escape; ++i) {
-            dq *= 2.0 * std::sqrt(q2);
-            q = vec4(q.x * q.x - dot(vec3(q.y, q.z, q.w), vec3(q.y, q.z, q.w)), 2.0 * q.x * vec3(q.y, q.z, q.w)) +
-                vec4(constant, constant_w);
-            q2 = dot(q, q);
-        }
-        double r = std::sqrt(q2);
-        return q2 < escape * escape ? 0.0 : 0.5 * (std::log(r) - std::exp2(i - int(orbit)) * std::log(escape)) * r / dq;
+        return juliaOrbitEstimate(p, vec4(a.v3(0), a.f(1)), a.f(2), a.f(3), a.f(4), [](const vec4& q) {
+            return vec4(q.x * q.x - dot(vec3(q.y, q.z, q.w), vec3(q.y, q.z, q.w)), 2.0 * q.x * vec3(q.y, q.z, q.w));
+        });
     }
 };
 
