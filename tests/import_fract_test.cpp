@@ -518,6 +518,24 @@ TEST(FractImport, FourDTransformsOnAnOrbitWhoseFourthCoordinateStaysZero) {
     EXPECT_TRUE(mentions(moved.unsupported, "slot 2 (transf_spherical_fold4d)", "centred off the origin"));
 }
 
+// A red-cyan anaglyph (stereo_mode 2) imports as the view from between the eyes, listed as
+// approximated; pairs side by side (0) or one above the other (1) are other pictures, refused.
+TEST(FractImport, RedCyanStereoIsDrawnFromBetweenTheEyes) {
+    const std::string body = "[main_parameters]\nstereo_enabled true;\nstereo_eye_distance 0,003;\n";
+    const mb2::FractImport anaglyph = importText(body + "stereo_mode 2;\n");
+    ASSERT_TRUE(anaglyph.faithful()) << anaglyph.unsupported.front().text();
+    EXPECT_TRUE(mentions(anaglyph.approximated, "camera", "stereo_mode red-cyan: one view from between the eyes"));
+    const mb2::FractImport plain = importText("[main_parameters]\n");
+    EXPECT_EQ(anaglyph.preset.camera.position, plain.preset.camera.position);
+    for (const char* mode : {"0", "1"}) {
+        const mb2::FractImport pair = importText(body + "stereo_mode " + mode + ";\n");
+        EXPECT_TRUE(mentions(pair.unsupported, "main",
+                             std::string("stereo pairs side by side or one above the "
+                                         "other (stereo_mode ") +
+                                 mode + ")"));
+    }
+}
+
 // The generalized fold box: its polyhedron's fold, the Mandelbox's sphere fold, rotation and scale.
 TEST(FractImport, GeneralizedFoldBoxIsThePolyhedralFold) {
     const mb2::FractImport r = importText(
@@ -1467,8 +1485,12 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {"examples/msltoe_donut_001.fract", ""},
         // The generalized box fold on the icosahedron.
         {km + "GeneralizedFoldBox01.fract", ""},
-        // A red-cyan anaglyph, drawn from between the eyes; a pair one above the other is refused.
-        {"examples/stereoscopic 004.fract", ""},
+        // A limit box around the pseudo-Kleinian DE: an object intersecting the estimate.
+        {"examples/monte carlo DOF 004.fract", ""},
+        // A Menger sponge with Mandelbulber2's 4D scale, its fourth coordinate 0 throughout.
+        {rp + "menger-Scale4D.fract", ""},
+        // A stereo pair one above the other is refused (a red-cyan anaglyph imports:
+        // FractImport.RedCyanStereoIsDrawnFromBetweenTheEyes).
         {rp + "menger-4D.fract", "stereo pairs side by side or one above the other"},
         // A Menger sponge on Mandelbulber2's water (the water combine, its frame turned over).
         {km + "primitive objects - water.fract", ""},
