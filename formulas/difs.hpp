@@ -33,17 +33,21 @@ inline constexpr ParamDecl kDifsWOffset{"w_offset",
                                         16.0,
                                         "Added to the divisor (Mandelbulber2's dIFS transforms: 1)."};
 
-// The torus about z: the ring of radius R, the tube of radius `thickness` about it.
-struct DifsTorus {
-    static constexpr std::string_view id = "difs_torus";
+// What every shape step declares alike: a Global identity in the "dIFS shapes" menu.
+struct DifsShapeStep {
     static constexpr std::string_view menuGroup = "dIFS shapes";
+    static constexpr Category category = Category::Transform;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
+    static constexpr bool difsShape = true;
+};
+
+// The torus about z: the ring of radius R, the tube of radius `thickness` about it.
+struct DifsTorus : DifsShapeStep {
+    static constexpr std::string_view id = "difs_torus";
     static constexpr std::string_view label = "dIFS torus";
     static constexpr std::string_view help =
         "Measures the distance to a torus about z (ring radius, tube thickness) for the dIFS estimate; the point "
         "is left as it is.";
-    static constexpr Category category = Category::Transform;
-    static constexpr DerivativeBound derivative = DerivativeBound::Global;
-    static constexpr bool difsShape = true;
     static constexpr std::array params{
         ParamDecl{"ring_radius", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 10.0, "Radius of the ring about z."},
         ParamDecl{"thickness", ParamType::Float, {0.1, 0.0, 0.0}, 0.0, 10.0, "Radius of the tube about the ring."},
@@ -63,16 +67,12 @@ struct DifsTorus {
 };
 
 // The box of half-sizes `size` about the origin: the distance outside it (0 within).
-struct DifsBox {
+struct DifsBox : DifsShapeStep {
     static constexpr std::string_view id = "difs_box";
-    static constexpr std::string_view menuGroup = "dIFS shapes";
     static constexpr std::string_view label = "dIFS box";
     static constexpr std::string_view help =
         "Measures the distance to a box about the origin (half-sizes) for the dIFS estimate; the point is left as "
         "it is.";
-    static constexpr Category category = Category::Transform;
-    static constexpr DerivativeBound derivative = DerivativeBound::Global;
-    static constexpr bool difsShape = true;
     static constexpr std::array params{
         ParamDecl{"size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.0, 10.0, "Half-sizes along x, y and z."},
         kDifsWScale,
@@ -92,16 +92,12 @@ struct DifsBox {
 
 // The ellipsoid of radii `radii` about the origin, by Inigo Quilez's bound
 // |p/r| (|p/r| - 1) / |p/r^2| (iquilezles.org, "distance functions").
-struct DifsEllipsoid {
+struct DifsEllipsoid : DifsShapeStep {
     static constexpr std::string_view id = "difs_ellipsoid";
-    static constexpr std::string_view menuGroup = "dIFS shapes";
     static constexpr std::string_view label = "dIFS ellipsoid";
     static constexpr std::string_view help =
         "Measures the distance to an ellipsoid about the origin (radii) for the dIFS estimate; the point is left "
         "as it is.";
-    static constexpr Category category = Category::Transform;
-    static constexpr DerivativeBound derivative = DerivativeBound::Global;
-    static constexpr bool difsShape = true;
     static constexpr std::array params{
         ParamDecl{"radii", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.01, 10.0, "Radii along x, y and z."},
         kDifsWScale,
@@ -136,16 +132,12 @@ inline double gridBarDistance(double across, double z, double thickness, bool sq
 // A square grid of lines in the plane z = 0, `cell` apart along x and y, each line a tube of
 // radius `thickness` (or a square bar, `square_bars`), z first divided by `z_scale`
 // (Mandelbulber2's transf_difs_grid).
-struct DifsGrid {
+struct DifsGrid : DifsShapeStep {
     static constexpr std::string_view id = "difs_grid";
-    static constexpr std::string_view menuGroup = "dIFS shapes";
     static constexpr std::string_view label = "dIFS square grid";
     static constexpr std::string_view help =
         "Measures the distance to a square grid of bars in the plane z = 0 for the dIFS estimate; the point is "
         "left as it is.";
-    static constexpr Category category = Category::Transform;
-    static constexpr DerivativeBound derivative = DerivativeBound::Global;
-    static constexpr bool difsShape = true;
     static constexpr std::array params{
         ParamDecl{"cell", ParamType::Float, {1.0, 0.0, 0.0}, 0.01, 10.0, "Spacing of the lines along x and y."},
         kGridThickness,
@@ -174,16 +166,12 @@ struct DifsGrid {
 
 // A hexagonal grid of lines in the plane z = 0 (cells `cell` across flats), as the square grid
 // (Mandelbulber2's transf_difs_hextgrid2).
-struct DifsHexGrid {
+struct DifsHexGrid : DifsShapeStep {
     static constexpr std::string_view id = "difs_hex_grid";
-    static constexpr std::string_view menuGroup = "dIFS shapes";
     static constexpr std::string_view label = "dIFS hexagonal grid";
     static constexpr std::string_view help =
         "Measures the distance to a hexagonal grid of bars in the plane z = 0 for the dIFS estimate; the point is "
         "left as it is.";
-    static constexpr Category category = Category::Transform;
-    static constexpr DerivativeBound derivative = DerivativeBound::Global;
-    static constexpr bool difsShape = true;
     static constexpr std::array params{
         ParamDecl{"cell", ParamType::Float, {1.0, 0.0, 0.0}, 0.01, 10.0, "Size of the cells."},
         kGridThickness,
