@@ -176,7 +176,8 @@ echo "compile error: $(echo "$error" | grep -m1 'node 2')"
 # viewport) still closes on a click there.
 to 100 262; wait_frames 1; xdotool mousedown 1; wait_frames 1; xdotool mouseup 1; wait_frames 2
 to 150 400; xdotool click --repeat 10 --delay 30 5; wait_frames 3
-to 58 500; wait_frames 1; xdotool mousedown 1; wait_frames 1; xdotool mouseup 1; wait_frames 4
+edit=$(q '.widgets["button:Edit GLSL"] | "\(.[0] + .[2] / 2 | floor) \(.[1] + .[3] / 2 | floor)"')
+to ${edit% *} ${edit#* }; wait_frames 1; xdotool mousedown 1; wait_frames 1; xdotool mouseup 1; wait_frames 4
 [ "$(q .blockEditorOpen)" = true ] || fail "Edit GLSL... did not open the block editor"
 drag_frames 300 70 300 640 6
 wait_frames 3

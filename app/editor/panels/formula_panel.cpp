@@ -253,10 +253,14 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
             "the surface of spiky sets (hypercomplex, power-2 bulbs), whose estimate is small far from them.");
     }
     if (selected.block->custom) {
-        if (const CustomBlock* b = findCustomBlock(f, selected.block->id); b && ImGui::Button("Edit GLSL...")) {
-            s.customBlockEditor.definition = b->definition();
-            s.customBlockEditor.error.clear();
-            s.customBlockEditor.open = true;
+        if (const CustomBlock* b = findCustomBlock(f, selected.block->id)) {
+            const bool edit = ImGui::Button("Edit GLSL...");
+            noteWidgetRect(s.layout, "button:Edit GLSL");
+            if (edit) {
+                s.customBlockEditor.definition = b->definition();
+                s.customBlockEditor.error.clear();
+                s.customBlockEditor.open = true;
+            }
         }
     }
     objectsSection(s);
