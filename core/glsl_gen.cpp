@@ -52,9 +52,9 @@ std::string nodeCall(int k, const Node& node, bool estimator, const std::string&
 // The objects beside the fractal: a function per object (its kind's body under its own #line
 // numbers, after the estimator's), then fraktalObjects(pos, d, escaped), which combines them with
 // the estimate in order; it mirrors combineObjects() in core/scene_object.cpp. `escaped` is the
-// escape-time membership's flag of an orbit outside, which an object sets or clears. Returns ""
-// when there are none (the estimate is returned as it is).
-std::string emitObjects(GlslEmitter& e, const Formula& f, std::vector<std::string>& names) {
+// escape-time membership's flag of an orbit outside, which an object sets or clears. Returns
+// whether it emitted fraktalObjects (none without objects: the estimate is returned as it is).
+bool emitObjects(GlslEmitter& e, const Formula& f, std::vector<std::string>& names) {
     std::string combine;
     const int first = int(f.nodes.size()) + 1;
     for (size_t j = 0; j < f.objects.size(); ++j) {
@@ -88,12 +88,12 @@ std::string emitObjects(GlslEmitter& e, const Formula& f, std::vector<std::strin
                 break;
         }
     }
-    if (f.objects.empty()) return "";
+    if (f.objects.empty()) return false;
     e.line("float fraktalObjects(vec3 pos, float d, inout bool escaped) {");
     e.out += combine;
     e.line("    return d;");
     e.line("}");
-    return combine.empty() ? " " : combine;
+    return true;
 }
 
 void replaceMarker(std::string& text, std::string_view marker, const std::string& with) {
@@ -168,7 +168,7 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     const int est = int(f.nodes.size());
     g.nodeNames.push_back(listedNodeName("estimator", -1, *f.estimator.block));
     emitNodeFunction(e, est, f.estimator, g.nodeNames.back(), true);
-    const std::string objects = emitObjects(e, f, g.nodeNames);
+    const bool objects = emitObjects(e, f, g.nodeNames);
 
     std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
     std::string loop, remaining;
@@ -200,10 +200,10 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     replaceMarker(rest, "//@FRAKTAL_ORBIT_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_REMAINING_DEGREE", remaining);
-    replaceMarker(rest, "//@FRAKTAL_ESTIMATE",
-                  objects.empty() ? "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";"
-                                  : "    return fraktalObjects(pos, u_deFactor * " + nodeCall(est, f.estimator, true) +
-                                        ", escaped);");
+    replaceMarker(
+        rest, "//@FRAKTAL_ESTIMATE",
+        objects ? "    return fraktalObjects(pos, u_deFactor * " + nodeCall(est, f.estimator, true) + ", escaped);"
+                : "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";");
     const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
     replaceMarker(rest, "//@FRAKTAL_MEMBERSHIP", escapeTime ? "    return !escaped;" : "    return d <= 0.0;");
     // The orbit gradient (estimators that read it): the estimate without it sets the difference

@@ -123,13 +123,7 @@ SceneObject parseObject(const ReadContext& context, const json& j, const std::st
     o.axis = r.vector<3>("axis", o.axis, -1.0, 1.0);
     if (length(o.axis) < 1e-9) r.fail("object " + std::to_string(listNumber) + ": the axis must not be zero", "axis");
     o.angle = r.number("angle", 0.0, -360.0, 360.0);
-    try {
-        readNodeParams(r, o, listNumber, "object");
-    } catch (const PresetError& e) {
-        std::string reason = e.reason();
-        if (reason.starts_with("block ")) reason = "object " + reason.substr(6);
-        throw PresetError(e.file(), e.field(), reason);
-    }
+    readNodeParams(r, o, listNumber, "object", "object");
     r.finish();
     return o;
 }

@@ -85,11 +85,12 @@ void readNodeSchedule(FieldReader& node, NodeT& n) {
 }
 // A node's "params": each of its block's declared parameters within its range (a toggle as
 // true/false, a float as a number, a vector as an array; a direction not zero), any other key
-// refused. Errors name the block as the editor's list shows it: "block N 'id': ...". `kind` says
-// what the block is in the unknown-parameter message ("block", "2D block"). NodeT: Node or
-// PlaneNode.
+// refused. Errors name the block as the editor's list shows it: "block N 'id': ..." (`listName`:
+// "object N" for an object beside the fractal). `kind` says what the block is in the
+// unknown-parameter message ("block", "2D block", "object"). NodeT: Node, PlaneNode or SceneObject.
 template <class NodeT>
-void readNodeParams(FieldReader& node, NodeT& n, size_t listNumber, const std::string& kind) {
+void readNodeParams(FieldReader& node, NodeT& n, size_t listNumber, const std::string& kind,
+                    const std::string& listName = "block") {
     if (!node.has("params")) return;
     const std::string id(n.block->id);
     try {
@@ -110,7 +111,8 @@ void readNodeParams(FieldReader& node, NodeT& n, size_t listNumber, const std::s
         params.finish("unknown parameter of " + kind + " '" + id + "' (it has: " + (known.empty() ? "none" : known) +
                       ")");
     } catch (const PresetError& e) {
-        throw PresetError(e.file(), e.field(), "block " + std::to_string(listNumber) + " '" + id + "': " + e.reason());
+        throw PresetError(e.file(), e.field(),
+                          listName + " " + std::to_string(listNumber) + " '" + id + "': " + e.reason());
     }
 }
 template <class NodeT>

@@ -4,6 +4,16 @@
 
 namespace fraktal::gl {
 
+namespace {
+// One parameter's value: a float for scalars and toggles, a vec3 for vectors.
+void uploadParam(GLint location, const ParamDecl& decl, const ParamValue& v) {
+    if (isScalar(decl.type))
+        glUniform1f(location, float(v.x));
+    else
+        glUniform3f(location, float(v.x), float(v.y), float(v.z));
+}
+}  // namespace
+
 FormulaUniforms::FormulaUniforms(GLuint program, const Formula& f) {
     iterations_ = glGetUniformLocation(program, "u_iterations");
     bailout_ = glGetUniformLocation(program, "u_bailout");
@@ -36,13 +46,7 @@ void FormulaUniforms::upload(const Formula& f) const {
     glUniform1f(boundRadius_, float(f.boundRadius));
     for (size_t k = 0; k < nodes_.size(); ++k) {
         const Node& n = k == f.nodes.size() ? f.estimator : f.nodes[k];
-        for (size_t i = 0; i < nodes_[k].size(); ++i) {
-            const ParamValue& v = n.values[i];
-            if (isScalar(n.block->params[i].type))
-                glUniform1f(nodes_[k][i], float(v.x));
-            else
-                glUniform3f(nodes_[k][i], float(v.x), float(v.y), float(v.z));
-        }
+        for (size_t i = 0; i < nodes_[k].size(); ++i) uploadParam(nodes_[k][i], n.block->params[i], n.values[i]);
     }
     for (size_t j = 0; j < objects_.size() && j < f.objects.size(); ++j) {
         const SceneObject& o = f.objects[j];
@@ -50,13 +54,7 @@ void FormulaUniforms::upload(const Formula& f) const {
         glUniform3f(at.center, float(o.center.x), float(o.center.y), float(o.center.z));
         const glm::mat3 turn(o.localFromWorld());
         glUniformMatrix3fv(at.turn, 1, GL_FALSE, &turn[0][0]);
-        for (size_t i = 0; i < at.params.size(); ++i) {
-            const ParamValue& v = o.values[i];
-            if (isScalar(o.block->params[i].type))
-                glUniform1f(at.params[i], float(v.x));
-            else
-                glUniform3f(at.params[i], float(v.x), float(v.y), float(v.z));
-        }
+        for (size_t i = 0; i < at.params.size(); ++i) uploadParam(at.params[i], o.block->params[i], o.values[i]);
     }
 }
 
