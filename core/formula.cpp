@@ -39,7 +39,7 @@ std::string Formula::structureKey() const {
     for (const SceneObject& o : objects)
         key += "+" + std::string(o.block->id) + ":" + std::string(kObjectOperationNames[int(o.operation)]) +
                (o.hollow ? ":hollow" : "") + (o.enabled ? "" : ":off");
-    if (hitInsideOnly) key += "|hit inside only";
+    if (hitRule != HitRule::Surface) key += "|hit " + std::string(kHitRuleNames[int(hitRule)]);
     // A user's block is compiled from its text: editing its GLSL or its parameter list (same id)
     // is a change of structure. Built-in blocks are fixed by their id.
     auto addCustom = [&key](const BlockDesc* b) {
@@ -115,7 +115,7 @@ double orbitValueGradient(const Formula& f, const vec3& pos, int count, double h
 }  // namespace
 
 // Mirrors formulaDE() in shaders/formula.glsl: keep the two in step.
-Evaluation evaluate(const Formula& f, const vec3& pos) {
+Evaluation evaluate(const Formula& f, const vec3& pos, double interiorWallsThreshold) {
     if (f.estimator.block->custom)
         throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation; use gl::DEProbe");
     Evaluation e;
@@ -157,6 +157,9 @@ Evaluation evaluate(const Formula& f, const vec3& pos) {
     e.orbitGradient = p.orbitGradient;
     e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
     e.inside = isInside(*f.estimator.block, e.distance, e.escaped);
+    if (f.hitRule == HitRule::InteriorWalls && interiorWallsThreshold > 0.0 &&
+        (e.inside || e.distance < 0.5 * interiorWallsThreshold))
+        e.distance = interiorWallsThreshold;
     if (!f.objects.empty())
         e.distance = combineObjects(f.objects, pos, e.distance, e.inside,
                                     f.estimator.block->membership == Membership::EscapeTime);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/block.hpp"
@@ -28,6 +29,26 @@ struct Node : IterationSchedule {
 // core/iteration_schedule.hpp.
 inline constexpr int kMaxNodes = 64;
 
+// Where a marched ray stops.
+enum class HitRule {
+    // Where the estimate falls under the hit threshold (a pixel's footprint).
+    Surface,
+    // Only where the point is inside by the estimator's membership (an escape-time orbit that stays
+    // bounded for all iterations, a distance estimate <= 0), the step crossing into it bisected back
+    // to the threshold; the estimate only sizes the steps, never less than the threshold.
+    // Mandelbulber2's iteration_threshold_mode (render_worker.cpp, calculate_distance.cpp): around
+    // spiky sets (hypercomplex, power-2 bulbs) the log estimate falls under the threshold far from
+    // the set, and this surface is the one its artists framed.
+    InsideOnly,
+    // Only in the band [0.5, 1] x threshold outside the set: a ray inside the set (by membership,
+    // or an estimate under half the threshold) never stops there but crawls on a fifth of the
+    // threshold at a time, and stops where it comes out. A camera or a cut (an intersected object)
+    // inside the set sees the walls of its inner cavities. Mandelbulber2's interior_mode
+    // (calculate_distance.cpp; RayMarching in render_worker.cpp steps to 0.8 x threshold).
+    InteriorWalls,
+};
+inline constexpr std::string_view kHitRuleNames[] = {"surface", "insideOnly", "interiorWalls"};
+
 struct Formula {
     // The loop body, in order; then the closing estimator.
     std::vector<Node> nodes;
@@ -39,14 +60,8 @@ struct Formula {
     double boundRadius = 4.0;
     // Multiplies the estimate: below 1 makes an overshooting hybrid safe (`fraktal check`).
     double deFactor = 1.0;
-    // Where a ray stops. Off: where the estimate falls under the hit threshold (a pixel's
-    // footprint). On: only where the point is inside by the estimator's membership (an escape-time
-    // orbit that stays bounded for all iterations, a distance estimate <= 0), the step crossing into
-    // it bisected back to the threshold; the estimate only sizes the steps, never less than the
-    // threshold. Mandelbulber2's iteration_threshold_mode (render_worker.cpp, calculate_distance.cpp):
-    // around spiky sets (hypercomplex, power-2 bulbs) the log estimate falls under the threshold far
-    // from the set, and this surface is the one its artists framed.
-    bool hitInsideOnly = false;
+    // Where a ray stops (HitRule).
+    HitRule hitRule = HitRule::Surface;
     // Objects beside the fractal, combined in order with the estimate after it (each joined with
     // it, intersecting it or carved from it): Mandelbulber2's primitives and limit box. Their
     // distances are exact, so the DE factor does not scale them.
@@ -98,7 +113,10 @@ inline bool jumps(const Node& n) { return n.enabled && n.block->derivativeAt(n.a
 int firstJumpingStep(const std::vector<Node>& nodes);
 
 // Throws std::logic_error for a formula that is not cpuEvaluable().
-Evaluation evaluate(const Formula& f, const vec3& pos);
+// interiorWallsThreshold: with HitRule::InteriorWalls, the hit threshold at pos while a ray is
+// marched (0 elsewhere): the set's inside, and its outside within half of it, then count as that
+// threshold, before the objects (Mandelbulber2 applies its interior mode to the fractal alone).
+Evaluation evaluate(const Formula& f, const vec3& pos, double interiorWallsThreshold = 0.0);
 inline double distanceEstimate(const Formula& f, const vec3& pos) { return evaluate(f, pos).distance; }
 
 }  // namespace fraktal

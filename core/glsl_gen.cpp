@@ -154,7 +154,10 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     // One line either way, so the template keeps its line numbers.
     replaceMarker(tmpl, "//@FRAKTAL_OPTIONS",
                   f.estimator.block->usesOrbitGradient() ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
-    replaceMarker(tmpl, "//@FRAKTAL_HIT_RULE", f.hitInsideOnly ? "#define FRAKTAL_HIT_INSIDE_ONLY" : "");
+    constexpr std::string_view kHitRuleDefines[] = {"", "#define FRAKTAL_HIT_INSIDE_ONLY",
+                                                    "#define FRAKTAL_HIT_INTERIOR_WALLS"};
+    static_assert(std::size(kHitRuleDefines) == std::size(kHitRuleNames));
+    replaceMarker(tmpl, "//@FRAKTAL_HIT_RULE", std::string(kHitRuleDefines[int(f.hitRule)]));
     const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
     if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
 
@@ -200,10 +203,11 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     replaceMarker(rest, "//@FRAKTAL_ORBIT_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
     replaceMarker(rest, "//@FRAKTAL_REMAINING_DEGREE", remaining);
+    std::string estimate = "u_deFactor * " + nodeCall(est, f.estimator, true);
+    if (f.hitRule == HitRule::InteriorWalls) estimate = "interiorWalls(" + estimate + ", escaped)";
     replaceMarker(
         rest, "//@FRAKTAL_ESTIMATE",
-        objects ? "    return fraktalObjects(pos, u_deFactor * " + nodeCall(est, f.estimator, true) + ", escaped);"
-                : "    return u_deFactor * " + nodeCall(est, f.estimator, true) + ";");
+        objects ? "    return fraktalObjects(pos, " + estimate + ", escaped);" : "    return " + estimate + ";");
     const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
     replaceMarker(rest, "//@FRAKTAL_MEMBERSHIP", escapeTime ? "    return !escaped;" : "    return d <= 0.0;");
     // The orbit gradient (estimators that read it): the estimate without it sets the difference

@@ -135,7 +135,15 @@ Formula parseFormula(const ReadContext& context, const json& j) {
     f.bailout = r.number("bailout", f.bailout, 1e-3, 1e10);
     f.boundRadius = r.number("boundRadius", f.boundRadius, 1e-3, 1e4);
     f.deFactor = r.number("deFactor", f.deFactor, 1e-3, 2.0);
-    f.hitInsideOnly = r.boolean("hitInsideOnly", f.hitInsideOnly);
+    if (r.has("hitInsideOnly")) {  // the older field, read as the rule it named
+        if (r.has("hitRule")) r.fail("give hitRule alone (hitInsideOnly is its older form)", "hitInsideOnly");
+        if (r.boolean("hitInsideOnly", false)) f.hitRule = HitRule::InsideOnly;
+    }
+    const std::string hitRule = r.string("hitRule", std::string(kHitRuleNames[int(f.hitRule)]));
+    const auto namedRule = std::find(std::begin(kHitRuleNames), std::end(kHitRuleNames), hitRule);
+    if (namedRule == std::end(kHitRuleNames))
+        r.fail("unknown hit rule \"" + hitRule + "\" (expected surface, insideOnly or interiorWalls)", "hitRule");
+    f.hitRule = HitRule(namedRule - std::begin(kHitRuleNames));
     if (r.has("customBlocks")) {
         const json& blocks = r.at("customBlocks");
         if (!blocks.is_array()) r.fail("expected an array of custom blocks", "customBlocks");
@@ -417,7 +425,7 @@ json presetToJson(const Preset& p) {
     if (p.formula.bailout != defaults.bailout) f["bailout"] = p.formula.bailout;
     if (p.formula.boundRadius != defaults.boundRadius) f["boundRadius"] = p.formula.boundRadius;
     if (p.formula.deFactor != defaults.deFactor) f["deFactor"] = p.formula.deFactor;
-    if (p.formula.hitInsideOnly) f["hitInsideOnly"] = true;
+    if (p.formula.hitRule != defaults.hitRule) f["hitRule"] = kHitRuleNames[int(p.formula.hitRule)];
     if (!p.formula.customBlocks.empty()) {
         f["customBlocks"] = json::array();
         for (const auto& b : p.formula.customBlocks) f["customBlocks"].push_back(customBlockToJson(*b));
@@ -460,7 +468,11 @@ void savePresetFile(const std::filesystem::path& path, const Preset& preset) {
 std::string describeFormula(const Formula& f) {
     std::ostringstream s;
     s << "iterations " << f.iterations << ", bailout " << f.bailout << ", bound radius " << f.boundRadius
-      << ", DE factor " << f.deFactor << (f.hitInsideOnly ? ", hits only inside" : "") << "\n";
+      << ", DE factor " << f.deFactor
+      << (f.hitRule == HitRule::InsideOnly      ? ", hits only inside"
+          : f.hitRule == HitRule::InteriorWalls ? ", hits the interior walls"
+                                                : "")
+      << "\n";
     auto describeNode = [&](const Node& n, const std::string& prefix) {
         s << prefix << n.block->id << " [" << categoryName(n.block->category) << "]";
         if (!n.enabled) s << " (disabled)";

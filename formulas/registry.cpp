@@ -40,6 +40,7 @@
 #include "formulas/quadratic_bulbs.hpp"
 #include "formulas/quaternion.hpp"
 #include "formulas/riemann_sphere.hpp"
+#include "formulas/sin_cos_max.hpp"
 #include "formulas/rotate.hpp"
 #include "formulas/scale.hpp"
 #include "formulas/sierpinski_fold.hpp"
@@ -114,6 +115,7 @@ constexpr std::array kBlocks{
     describe<DifsEllipsoid>(),
     describe<DifsGrid>(),
     describe<DifsHexGrid>(),
+    describe<SinCosMax>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

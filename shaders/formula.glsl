@@ -20,6 +20,19 @@ float potentialShare(float G) {
 // estimator returns it; each orbit starts it afresh.
 float orbitDistance;
 
+#ifdef FRAKTAL_HIT_INTERIOR_WALLS
+// Formula::hitRule InteriorWalls: the hit threshold at the point the marcher evaluates (0 in any
+// other evaluation), and the fractal's estimate as the marcher sees it, before the objects: the
+// set's inside, and its outside within half the threshold, count as the threshold (mirrors
+// evaluate() in core/formula.cpp).
+float interiorWallsThreshold = 0.0;
+bool formulaInside(float d, bool escaped);
+float interiorWalls(float d, bool escaped) {
+    float threshold = interiorWallsThreshold;
+    return threshold > 0.0 && (formulaInside(d, escaped) || d < 0.5 * threshold) ? threshold : d;
+}
+#endif
+
 //@FRAKTAL_NODES
 
 // How many of the iterations 0 .. count - 1 a node of this schedule runs on

@@ -40,8 +40,8 @@ const int REFINE_STEPS = 3;
 const float REFINE_LEVEL = 0.5;
 
 void refineHit(vec3 ro, vec3 rd, float pixelAngle, float d, inout MarchState s, inout float deEvals) {
-#ifdef FRAKTAL_HIT_INSIDE_ONLY
-    return;  // the hit is the bisected crossing into the inside; the estimate's level sets are not the surface
+#if defined(FRAKTAL_HIT_INSIDE_ONLY) || defined(FRAKTAL_HIT_INTERIOR_WALLS)
+    return;  // the hit is the rule's own (a bisected crossing, a band); the estimate's level sets are not the surface
 #endif
     for (int i = 0; i < REFINE_STEPS; ++i) {
         if (i > 0) {
@@ -93,6 +93,38 @@ void recoverOvershoot(vec3 ro, vec3 rd, float tOut, float dOut, float tIn, float
 // The marcher without the hit refinement; a hit leaves the DE at the hit point in lastD, so that
 // the refinement can follow later (the viewport skips it for a pixel that keeps a carried colour:
 // that hit point is not shaded).
+#ifdef FRAKTAL_HIT_INTERIOR_WALLS
+// Formula::hitRule InteriorWalls (why: core/formula.hpp), as Mandelbulber2 marches it (RayMarching
+// in render_worker.cpp): the estimate, where the set's inside counts as the threshold
+// (interiorWalls in formula.glsl), stops the ray below the threshold, and a step is the estimate
+// less 0.8 thresholds. From outside that lands in the hit band [0.5, 1) x threshold where the
+// estimate is exact; inside the set it is a fifth of the threshold, on to the wall where the ray
+// comes out. Neither over-relaxed nor recovered: a step that lands inside crawls on, as in
+// Mandelbulber2. A camera inside the set (threshold 0 at t = 0) sees it at once, as Mandelbulber2's
+// stalled ray does.
+void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
+    for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
+        float threshold = pixelAngle * s.t * u_detail;
+        interiorWallsThreshold = threshold;
+        float d = DE(ro + rd * s.t);
+        interiorWallsThreshold = 0.0;
+        deEvals += 1.0;
+        s.steps += 1;
+        if (d < threshold || d <= 0.0) {
+            s.lastD = max(d, 0.0);
+            s.status = MARCH_HIT;
+            break;
+        }
+        if (s.t > tEnd) {
+            s.status = MARCH_ESCAPED;
+            break;
+        }
+        s.lastD = d;
+        s.closest = min(s.closest, d / max(s.t, 1e-20));
+        s.t += d - 0.8 * threshold;
+    }
+}
+#else
 void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
     for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
         bool inside;
@@ -100,7 +132,7 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
         deEvals += 1.0;
         s.steps += 1;
 #ifdef FRAKTAL_HIT_INSIDE_ONLY
-        // Formula::hitInsideOnly: outside, the estimate never stops the ray (a step of at least the
+        // HitRule::InsideOnly: outside, the estimate never stops the ray (a step of at least the
         // threshold, Mandelbulber2's 1.01 detail sizes); inside, 0, so a step that reaches it is
         // bisected back by the overshoot recovery below and a ray that starts there hits at once.
         d = inside ? 0.0 : max(d, 1.01 * pixelAngle * s.t * u_detail);
@@ -133,6 +165,18 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
         s.closest = min(s.closest, s.lastD / max(s.t, 1e-20));
         s.t += s.omega * d;
     }
+}
+#endif
+
+// Whether a marched ray counts as a hit: it stopped on a surface, or it ran out of steps crawling
+// along a grazing one (its last estimate within 10 thresholds). With interior walls a ray out of
+// steps is still crossing the set: background, as in Mandelbulber2.
+bool countsAsHit(MarchState s, float pixelAngle) {
+#ifdef FRAKTAL_HIT_INTERIOR_WALLS
+    return s.status == MARCH_HIT;
+#else
+    return s.status == MARCH_HIT || (s.status == MARCH_MARCHING && s.lastD < 10.0 * pixelAngle * s.t * u_detail);
+#endif
 }
 
 void marchRay(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {

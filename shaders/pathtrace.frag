@@ -255,7 +255,7 @@ void main() {
         if (clipToBound(ro, rd, tStart, tEnd)) {
             s = marchStart(tStart);
             marchRay(ro, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
-            hit = s.status == MARCH_HIT || (s.status == MARCH_MARCHING && s.lastD < 10.0 * pixelAngle * s.t * u_detail);
+            hit = countsAsHit(s, pixelAngle);
         }
         if (!hit) {
             if (u_transparentBackground == 0)

@@ -113,9 +113,7 @@ void main() {
         if (clipToBound(ro, rd, tStart, tEnd)) {
             s = marchStart(tStart);
             marchRay(ro, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
-            // Out of steps: a ray crawling along a grazing surface is a hit.
-            hit = s.status == MARCH_HIT ||
-                  (s.status == MARCH_MARCHING && s.lastD < 10.0 * pixelAngle * s.t * u_detail);
+            hit = countsAsHit(s, pixelAngle);
             steps += float(s.steps);
             // The pixel's samples lie within 2 u_filterRadius pixels of each other.
             nearEdge = nearEdge || (!hit && s.closest < 2.0 * u_filterRadius * pixelAngle);

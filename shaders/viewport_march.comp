@@ -147,7 +147,7 @@ void main() {
         // is a hit; anything else is background. (With i < budget the ray has steps left, on the
         // march list.)
         if (s.status == MARCH_MARCHING && i == budget && s.steps >= u_maxSteps)
-            s.status = s.lastD < 10.0 * u_pixelAngle * s.t * u_detail ? MARCH_HIT : MARCH_ESCAPED;
+            s.status = countsAsHit(s, u_pixelAngle) ? MARCH_HIT : MARCH_ESCAPED;
     }
     if (s.status == MARCH_ESCAPED && s.t > tEnd) s.t = parkedDistance(length(ro), u_boundRadius);
     info.x = s.status;

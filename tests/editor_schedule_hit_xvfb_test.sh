@@ -7,6 +7,8 @@
 #     Ctrl+Z back to the whole loop gives the first picture again.
 #  2. Hits only inside: select the estimator, tick "Hit only inside". The document holds it, the
 #     viewport recompiles and still shows the object; Ctrl+Z takes it back.
+#  3. Interior walls: tick "Hit interior walls". The document holds that rule, and the viewport
+#     recompiles and still shows the bulb (from outside its walls are its surface).
 # Usage: editor_schedule_hit_xvfb_test.sh FRAKTAL PRESET_DIR OUT_DIR
 set -eu
 . "$(dirname "$0")/editor_xvfb_helpers.sh"
@@ -84,10 +86,10 @@ click_at "$1" "$2"
 wait_for '.widgets["checkbox:Hit only inside"] != null' true 12
 set -- $(q '.widgets["checkbox:Hit only inside"] | "\(.[0] + .[3] / 2 | floor) \(.[1] + .[3] / 2 | floor)"')
 click_at "$1" "$2"
-wait_for '.document.formula.hitInsideOnly // false' true 12
-[ "$(q '.document.formula.hitInsideOnly // false')" = true ] || fail "ticking 'Hit only inside' left the hit rule off"
+wait_for '.document.formula.hitRule // "surface"' insideOnly 12
+[ "$(q '.document.formula.hitRule // "surface"')" = insideOnly ] || fail "ticking 'Hit only inside' left the hit rule off"
 # A change of structure: the step factor is measured again, in the same undo step.
-q .undoLabel | grep -q hitInsideOnly || fail "Undo would do '$(q .undoLabel)', not the hit rule's change"
+q .undoLabel | grep -q hitRule || fail "Undo would do '$(q .undoLabel)', not the hit rule's change"
 shot inside_only
 coverage=$(convert "$out/inside_only.png" -crop "$crop" +repage -colorspace Gray -edge 1 -threshold 8% -format "%[fx:mean]" info:)
 check "$coverage > 0.03" || fail "with hits only inside the viewport shows no object (edge share $coverage)"
@@ -95,10 +97,21 @@ echo "hits only inside: edge share $coverage, difference from the plain rule $(d
 # The step factor measured after the change may land as a step of its own: at most two Ctrl+Z.
 for _ in 1 2; do
     xdotool key ctrl+z
-    wait_for '.document.formula.hitInsideOnly // false' false 12
-    [ "$(q '.document.formula.hitInsideOnly // false')" = false ] && break
+    wait_for '.document.formula.hitRule // "surface"' surface 12
+    [ "$(q '.document.formula.hitRule // "surface"')" = surface ] && break
 done
-[ "$(q '.document.formula.hitInsideOnly // false')" = false ] || fail "Ctrl+Z twice left hits only inside on"
+[ "$(q '.document.formula.hitRule // "surface"')" = surface ] || fail "Ctrl+Z twice left hits only inside on"
+
+# 3. Interior walls (Mandelbulber2's interior mode), the next checkbox: from outside the bulb the
+# walls are its surface, so the picture keeps an object; ticking it clears hits only inside.
+set -- $(q '.widgets["checkbox:Hit interior walls"] | "\(.[0] + .[3] / 2 | floor) \(.[1] + .[3] / 2 | floor)"')
+click_at "$1" "$2"
+wait_for '.document.formula.hitRule // "surface"' interiorWalls 12
+[ "$(q '.document.formula.hitRule // "surface"')" = interiorWalls ] || fail "ticking 'Hit interior walls' left the rule at '$(q '.document.formula.hitRule // "surface"')'"
+shot interior_walls
+coverage=$(convert "$out/interior_walls.png" -crop "$crop" +repage -colorspace Gray -edge 1 -threshold 8% -format "%[fx:mean]" info:)
+check "$coverage > 0.03" || fail "with interior walls the viewport shows no object (edge share $coverage)"
+echo "interior walls: edge share $coverage, difference from the plain rule $(differ undone interior_walls)"
 stop
 [ "$failures" -eq 0 ] && echo "PASS editor_schedule_hit_xvfb_test"
 exit "$failures"

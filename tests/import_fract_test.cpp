@@ -972,6 +972,44 @@ TEST(FractImport, QuadraticBulbsFollowMandelbulber2sOrbits) {
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// Graeme McLaren's sine and cosine maximum on all three axes (its own periods, the product halved,
+// each over |v| + 1), alternating with a power-2 bulb, against Mandelbulber2's
+// TransfSinAndCosMaxIteration and MandelbulbIteration written out; combo4 types 1 to 4 keep v
+// in the four ways, and only with enabledM.
+TEST(FractImport, SinAndCosMaxFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 1084;\nformula_2 2;\nN 8;\nuse_default_bailout false;\nbailout 3;\n"
+         "[fractal_1]\n"
+         "transf_function_enabledAy_false true;\ntransf_function_enabledAz_false true;\n"
+         "transf_constant_multiplierA_111 3 4 5;\ntransf_constant_multiplierB_111 5 6 7;\ntransf_scaleC_1 0,5;\n"
+         "transf_scale 0,8;\ntransf_function_enabled_false true;\n[fractal_2]\npower 2;\n",
+         {"sin_cos_max", "mandelbulb_sine", "add_c"},
+         nullptr,
+         3.0,
+         [](const vec3& z, const vec3& c, int i) {
+             if (i % 2 == 1) {  // MandelbulbIteration, power 2
+                 const double r = length(z), th = std::asin(z.z / r) * 2.0, ph = std::atan2(z.y, z.x) * 2.0;
+                 return r * r * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + c;
+             }
+             const vec3 a(3.0, 4.0, 5.0), b(5.0, 6.0, 7.0);
+             vec3 m;
+             for (int k = 0; k < 3; ++k) {
+                 const double s = std::sin(z[k] * 2.0 * M_PI / a[k]), co = std::cos(z[k] * 2.0 * M_PI / b[k]);
+                 m[k] = std::max(std::max(s, co), s * co * 0.5) / (std::abs(z[k]) + 1.0);
+             }
+             return m * 0.8;
+         }});
+    for (int type = 1; type <= 4; ++type)
+        for (const bool on : {true, false}) {
+            const mb2::FractImport r =
+                importText("[main_parameters]\nformula_1 1084;\n[fractal_1]\ncombo4 type" + std::to_string(type) +
+                           ";\ntransf_function_enabledM_false " + (on ? "true" : "false") + ";\n");
+            ASSERT_FALSE(r.preset.formula.nodes.empty());
+            const Node& n = r.preset.formula.nodes.front();
+            EXPECT_EQ(n.values[size_t(n.block->paramIndex("keep"))].x, on ? type : 0);
+        }
+}
+
 // Pseudo-Kleinian orbits stay bounded (no escape to compare): the orbit trap's least |v| over N
 // iterations against Mandelbulber2's iteration written out (`step(z, i)`, i the iteration for its
 // windows) for 2000 points; at most 1 % may differ (a fold's edge).
@@ -1290,10 +1328,34 @@ TEST(FractImport, IterationThresholdModeHitsOnlyInside) {
         const mb2::FractImport on =
             importText(std::string("[main_parameters]\n") + formula + "iteration_threshold_mode true;\n");
         ASSERT_TRUE(on.faithful()) << on.unsupported.front().text();
-        EXPECT_TRUE(on.preset.formula.hitInsideOnly);
+        EXPECT_EQ(on.preset.formula.hitRule, HitRule::InsideOnly);
         EXPECT_FALSE(mentions(on.approximated, "detail", "iteration_threshold_mode"));
         const mb2::FractImport off = importText(std::string("[main_parameters]\n") + formula);
-        EXPECT_FALSE(off.preset.formula.hitInsideOnly);
+        EXPECT_EQ(off.preset.formula.hitRule, HitRule::Surface);
+    }
+}
+
+// Mandelbulber2's interior mode is fraktal's interior walls, with its march's step limit; beside the iteration
+// threshold mode (whose hits it moves away: a ray that never stops) it is refused by name.
+TEST(FractImport, InteriorModeHitsTheInteriorWalls) {
+    for (const char* formula : {"formula_1 8;\n", ""}) {
+        SCOPED_TRACE(formula);
+        const mb2::FractImport on = importText(std::string("[main_parameters]\n") + formula + "interior_mode true;\n");
+        ASSERT_TRUE(on.faithful()) << on.unsupported.front().text();
+        EXPECT_EQ(on.preset.formula.hitRule, HitRule::InteriorWalls);
+        EXPECT_EQ(on.preset.render.maxSteps, kMaxMarchSteps);  // a crossing of the set at a fifth of a threshold a step
+        const mb2::FractImport both = importText(std::string("[main_parameters]\n") + formula +
+                                                 "interior_mode true;\niteration_threshold_mode true;\n");
+        EXPECT_FALSE(both.faithful());
+        EXPECT_TRUE(mentions(both.unsupported, "main", "interior_mode with iteration_threshold_mode"));
+        // The cut applies after the fractal's own estimate has taken the rule: an object, not a
+        // combine estimator that would take the rule with it (the cut face would be drawn).
+        const mb2::FractImport cut = importText(std::string("[main_parameters]\n") + formula +
+                                                "interior_mode true;\nlimits_enabled true;\nlimit_min -10 -10 0;\n");
+        ASSERT_TRUE(cut.faithful()) << cut.unsupported.front().text();
+        EXPECT_NE(cut.preset.formula.estimator.block->id, "box_combine");
+        ASSERT_EQ(cut.preset.formula.objects.size(), 1u);
+        EXPECT_EQ(cut.preset.formula.objects[0].operation, ObjectOperation::Intersect);
     }
 }
 

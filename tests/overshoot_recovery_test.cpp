@@ -196,7 +196,7 @@ TEST(OvershootRecovery, TheViewportsHitsLieOnTheSurface) {
     EXPECT_LE(off, surface / 20);
 }
 
-// Formula::hitInsideOnly (Mandelbulber2's iteration_threshold_mode): rays stop only where the
+// HitRule::InsideOnly (Mandelbulber2's iteration_threshold_mode): rays stop only where the
 // point is inside, the crossing bisected to within the hit threshold, never where the estimate
 // falls under it. The squaring ball at a threshold of 6 footprints: the plain march stops where
 // the potential estimate (half the distance) falls under it, about 12 footprints out; with hits
@@ -238,7 +238,7 @@ TEST(HitInsideOnly, RaysStopOnTheBoundedOrbitsSurfaceNotWhereTheEstimateIsSmall)
     for (const Renderer& r : kRenderers) {
         const BallHits plain = ballHits(p, r.depth(p));
         Preset inside = p;
-        inside.formula.hitInsideOnly = true;
+        inside.formula.hitRule = HitRule::InsideOnly;
         const BallHits b = ballHits(inside, r.depth(inside));
         std::printf(
             "%s: %d ball pixels; plain march %d of %d hits within a threshold of the surface; hits only "
@@ -259,13 +259,84 @@ TEST(HitInsideOnly, RaysStopOnTheBoundedOrbitsSurfaceNotWhereTheEstimateIsSmall)
 TEST(HitInsideOnly, TheViewportsHitsLieOnTheBoundedOrbitsSurface) {
     Preset p = solidBall();
     p.formula.deFactor = 1.0;
-    p.formula.hitInsideOnly = true;
+    p.formula.hitRule = HitRule::InsideOnly;
     p.render.detail = 6.0;
     const auto [surface, off] = settledColourPoints(p, [](const vec3& q, double threshold) {
         return length(q) - kBallRadius > 1.05 * threshold || length(q) < kBallRadius - 1e-4;
     });
     std::printf("viewport, hits only inside: %d of %d colour points off the ball's surface\n", off, surface);
     EXPECT_GT(surface, kW * kH / 2);
+    EXPECT_EQ(off, 0);
+}
+
+// Formula::hitRule InteriorWalls (Mandelbulber2's interior mode): the squaring ball cut open by an
+// intersected plane that keeps z <= 0, the cut facing the camera. With the plain rule a ray
+// through the cut stops on it; with interior walls it crawls through the set and stops where it
+// comes out, in the hit band outside the far hemisphere: between 1 and 2 thresholds out, the
+// ball's potential estimate being half the distance (at most 3 allowed for the crawl's last step).
+// The rays counted are those that cross the plane well inside the ball.
+struct CutBallHits {
+    int throughCut = 0, onCut = 0, onFarWall = 0;
+};
+
+CutBallHits cutBallHits(const Preset& p, const std::vector<float>& depth) {
+    CutBallHits c;
+    const double aspect = double(kW) / kH, pixelAngle = p.camera.pixelAngle(kH);
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const vec3 rd = p.camera.rayDirection(2.0 * (x + 0.5) / kW - 1.0, 1.0 - 2.0 * (y + 0.5) / kH, aspect);
+            const vec3 ro = p.camera.position;
+            const double tCut = -ro.z / rd.z;
+            if (!(tCut > 0.0) || length(ro + rd * tCut) > 0.9 * kBallRadius) continue;
+            ++c.throughCut;
+            const double half = dot(ro, rd), h = half * half - (dot(ro, ro) - kBallRadius * kBallRadius);
+            const double tOut = -half + std::sqrt(h);
+            const double t = depth[size_t(y) * kW + size_t(x)];
+            if (std::abs(t - tCut) <= pixelAngle * tCut * p.render.detail) ++c.onCut;
+            const double threshold = pixelAngle * tOut * p.render.detail;
+            if (t >= tOut && t <= tOut + 3.0 * threshold) ++c.onFarWall;
+        }
+    return c;
+}
+
+Preset cutBall() {
+    Preset p = solidBall();
+    p.formula.deFactor = 1.0;
+    SceneObject cut = SceneObject::make(*findObject("plane"));
+    cut.operation = ObjectOperation::Intersect;
+    p.formula.objects.push_back(cut);
+    return p;
+}
+
+TEST(InteriorWalls, ACutOpenSetShowsTheWallWhereRaysComeOut) {
+    Preset plain = cutBall();
+    Preset walls = plain;
+    walls.formula.hitRule = HitRule::InteriorWalls;
+    for (const Renderer& r : kRenderers) {
+        const CutBallHits before = cutBallHits(plain, r.depth(plain));
+        const CutBallHits after = cutBallHits(walls, r.depth(walls));
+        std::printf(
+            "%s: %d rays through the cut; plain rule %d on the cut; interior walls %d on the far wall, %d on "
+            "the cut\n",
+            r.name, after.throughCut, before.onCut, after.onFarWall, after.onCut);
+        ASSERT_GT(after.throughCut, kW * kH / 4) << r.name;
+        EXPECT_EQ(before.onCut, before.throughCut) << r.name;
+        EXPECT_EQ(after.onFarWall, after.throughCut) << r.name;
+        EXPECT_EQ(after.onCut, 0) << r.name;
+    }
+}
+
+// The viewport marches the same rule a step per pass: at rest its colour points lie on the far
+// wall (or its rim, within a threshold above the plane), none on the cut.
+TEST(InteriorWalls, TheViewportsColourPointsLieOnTheWallsNotTheCut) {
+    Preset p = cutBall();
+    p.formula.hitRule = HitRule::InteriorWalls;
+    const auto [surface, off] = settledColourPoints(p, [](const vec3& q, double threshold) {
+        const bool onSphere = length(q) >= kBallRadius - 1e-4 && length(q) <= kBallRadius + 3.0 * threshold;
+        return !onSphere || q.z > threshold;
+    });
+    std::printf("viewport, interior walls: %d of %d colour points off the far wall\n", off, surface);
+    EXPECT_GT(surface, kW * kH / 4);
     EXPECT_EQ(off, 0);
 }
 

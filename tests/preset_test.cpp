@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/plane/plane_preset.hpp"
@@ -19,7 +20,7 @@ void expectSameFormula(const Formula& a, const Formula& b, const std::string& wh
     EXPECT_EQ(a.bailout, b.bailout) << what;
     EXPECT_EQ(a.boundRadius, b.boundRadius) << what;
     EXPECT_EQ(a.deFactor, b.deFactor) << what;
-    EXPECT_EQ(a.hitInsideOnly, b.hitInsideOnly) << what;
+    EXPECT_EQ(a.hitRule, b.hitRule) << what;
     ASSERT_EQ(a.nodes.size(), b.nodes.size()) << what;
     for (size_t k = 0; k <= a.nodes.size(); ++k) {
         const Node& na = k < a.nodes.size() ? a.nodes[k] : a.estimator;
@@ -91,26 +92,46 @@ TEST(Preset, IterationWindowRoundTrips) {
     EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
 }
 
-// The hit rule is written only when on, read back exactly, and a change of structure (the
-// marcher's code differs); a value that is not true or false is refused by name.
-TEST(Preset, HitInsideOnlyRoundTrips) {
+// The hit rule is written only when not the plain surface, read back exactly, and a change of
+// structure (the marcher's code differs); an unknown rule is refused by name, and the older
+// boolean field is read as the rule it named (but not beside the new one).
+TEST(Preset, HitRuleRoundTrips) {
     Preset p = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
-    EXPECT_FALSE(presetToJson(p)["formula"].contains("hitInsideOnly"));
-    const std::string plainKey = p.formula.structureKey();
-    p.formula.hitInsideOnly = true;
-    EXPECT_EQ(presetToJson(p)["formula"]["hitInsideOnly"], true);
-    const Preset reloaded = parsePreset(serializePreset(p), "saved.json");
-    EXPECT_TRUE(reloaded.formula.hitInsideOnly);
-    EXPECT_NE(reloaded.formula.structureKey(), plainKey);
-    EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
-    nlohmann::json bad = presetToJson(p);
-    bad["formula"]["hitInsideOnly"] = "yes";
-    try {
-        parsePreset(bad.dump(), "bad.json");
-        ADD_FAILURE() << "a hit rule that is not true or false was accepted";
-    } catch (const PresetError& e) {
-        EXPECT_NE(std::string(e.what()).find("hitInsideOnly"), std::string::npos) << e.what();
+    EXPECT_FALSE(presetToJson(p)["formula"].contains("hitRule"));
+    std::set<std::string> keys{p.formula.structureKey()};
+    for (HitRule rule : {HitRule::InsideOnly, HitRule::InteriorWalls}) {
+        p.formula.hitRule = rule;
+        EXPECT_EQ(presetToJson(p)["formula"]["hitRule"], kHitRuleNames[int(rule)]);
+        const Preset reloaded = parsePreset(serializePreset(p), "saved.json");
+        EXPECT_EQ(reloaded.formula.hitRule, rule);
+        EXPECT_TRUE(keys.insert(reloaded.formula.structureKey()).second) << kHitRuleNames[int(rule)];
+        EXPECT_EQ(serializePreset(reloaded), serializePreset(p));
     }
+    auto refused = [&](const nlohmann::json& bad, const std::string& field) {
+        try {
+            parsePreset(bad.dump(), "bad.json");
+            ADD_FAILURE() << "accepted " << bad["formula"].dump();
+        } catch (const PresetError& e) {
+            EXPECT_NE(std::string(e.what()).find("bad.json"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("formula." + field), std::string::npos) << e.what();
+        }
+    };
+    nlohmann::json bad = presetToJson(p);
+    bad["formula"]["hitRule"] = "inside";
+    refused(bad, "hitRule");
+    bad["formula"]["hitRule"] = true;
+    refused(bad, "hitRule");
+    nlohmann::json older = presetToJson(p);
+    older["formula"].erase("hitRule");
+    older["formula"]["hitInsideOnly"] = true;
+    EXPECT_EQ(parsePreset(older.dump(), "older.json").formula.hitRule, HitRule::InsideOnly);
+    older["formula"]["hitInsideOnly"] = false;
+    EXPECT_EQ(parsePreset(older.dump(), "older.json").formula.hitRule, HitRule::Surface);
+    older["formula"]["hitInsideOnly"] = "yes";
+    refused(older, "hitInsideOnly");
+    older["formula"]["hitInsideOnly"] = true;
+    older["formula"]["hitRule"] = "surface";
+    refused(older, "hitInsideOnly");
 }
 
 // The camera's projection is written only when not the pinhole and read back exactly; the wide

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Mandelbulber2's own example library through `fraktal import`, proved against Mandelbulber2:
-# every example (examples/, its five artist collections) and the toolbar's one-click presets is
+# every example (examples/, its five artist collections), the toolbar's one-click presets and the
+# settings behind the formula thumbnails (formula/img/, one file a formula) is
 # imported (strictly: a file that uses what fraktal cannot express is refused, by reason), and
 # every imported one is rendered by both programs at the same small size; the silhouettes are
 # scored by the intersection over union of the two hit masks (fraktal's alpha, Mandelbulber2's
@@ -27,6 +28,7 @@ g++ -O2 -std=c++20 -I/usr/include/stb "$root/bench/import/silhouette_iou.cpp" \
 collection() {  # the collection's short name, as the reference's T8 writes it
   case "$1" in
     "$share/toolbar"*) echo toolbar ;;
+    "$share/formula"*) echo formula ;;
     *Krzysztof*) echo KM ;; *Graeme*) echo GM ;; *Robert*) echo RP ;; *Sebastian*) echo SJ ;; *Daniel*) echo DL ;;
     *) echo root ;;
   esac
@@ -56,7 +58,8 @@ peerMask() {  # FILE KEY
 }
 expressible() { grep -qxF "$1 / $2" "$root/bench/import/expressible.txt"; }
 
-printf 'collection\tfile\texpressible\tstatus\treason\tiou\tfraktal_px\tmb2_px\timport_s\n' > "$out/results.tsv"
+# missing_formula: whether the import named a formula that has no fraktal blocks (among all it named).
+printf 'collection\tfile\texpressible\tstatus\treason\tiou\tfraktal_px\tmb2_px\timport_s\tmissing_formula\n' > "$out/results.tsv"
 n=0
 while IFS= read -r -d "" -u 3 file; do
   n=$((n + 1))
@@ -74,9 +77,9 @@ while IFS= read -r -d "" -u 3 file; do
       read -r iou fpx mpx < <("$tmp/iou" "$out/img/$key.exr" "$out/img/mb_$key.png")
       status=imported
       awk -v i="$iou" 'BEGIN { exit !(i >= 0.9) }' && status=matching
-      printf '%s\t%s\t%s\t%s\t\t%s\t%s\t%s\t%s\n' "$c" "$name" "$exp" "$status" "$iou" "$fpx" "$mpx" "$took" >> "$out/results.tsv"
+      printf '%s\t%s\t%s\t%s\t\t%s\t%s\t%s\t%s\tno\n' "$c" "$name" "$exp" "$status" "$iou" "$fpx" "$mpx" "$took" >> "$out/results.tsv"
     else
-      printf '%s\t%s\t%s\trender-failed\t%s\t\t\t\t%s\n' "$c" "$name" "$exp" \
+      printf '%s\t%s\t%s\trender-failed\t%s\t\t\t\t%s\tno\n' "$c" "$name" "$exp" \
         "$(tail -1 "$tmp/render.log" "$tmp/mb.log" 2>/dev/null | tr '\t\n' '  ' | cut -c1-200)" "$took" >> "$out/results.tsv"
     fi
   else
@@ -89,11 +92,13 @@ while IFS= read -r -d "" -u 3 file; do
       status=error
       reason=$(tail -1 "$tmp/import.log" | sed 's/^fraktal: error: //' | cut -c1-160)
     fi
-    printf '%s\t%s\t%s\t%s\t%s\t\t\t\t\n' "$c" "$name" "$exp" "$status" "$reason" >> "$out/results.tsv"
+    missing=no
+    grep -q "has no fraktal blocks yet" "$tmp/import.log" && missing=yes
+    printf '%s\t%s\t%s\t%s\t%s\t\t\t\t\t%s\n' "$c" "$name" "$exp" "$status" "$reason" "$missing" >> "$out/results.tsv"
   fi
   [ $((n % 25)) -eq 0 ] && echo "$n files" >&2
 done 3< <(if [ -n "${FRACT_LIST:-}" ]; then tr '\n' '\0' < "$FRACT_LIST"; else
-  find "$share/toolbar" "$share/examples" -name "*.fract" -print0 | sort -z; fi)
+  find "$share/toolbar" "$share/examples" "$share/formula/img" -name "*.fract" -print0 | sort -z; fi)
 
 python3 "$root/bench/import/summarize.py" "$out/results.tsv" "$(( ${size%x*} * ${size#*x} ))" > "$out/summary.md"
 # The contact sheet: the 12 worst imported matches.

@@ -8,6 +8,9 @@
 # imports, spread evenly over its list: those whose object does not fill the view first (an edge to
 # measure), then views from inside. Environment: FRAKTAL_SPP (default "1 2 4"), PEER_AA (default "1 2"), TRUTH_AA (default 3:
 # both truths take 9 samples per pixel).
+# Each render is timed by the wall clock and by its CPU time (user + system, threads included): both
+# programs render on every core, and the CPU time stays comparable when something else runs beside
+# the bench. The last lines give the distribution of the CPU-time ratio.
 set -euo pipefail
 results=$1; count=${2:-12}; size=${3:-1280x720}
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -20,8 +23,13 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 g++ -O2 -std=c++20 -I"$root" -I/usr/include/stb "$root/bench/stills/coverage_error.cpp" \
   $(pkg-config --cflags --libs OpenEXR) -lstb -o "$tmp/coverage_error"
-now() { date +%s.%N; }
-seconds() { echo "$2 - $1" | bc -l | xargs printf %.2f; }
+# Runs a command, its output discarded; sets wall and cpu (seconds: elapsed, and user + system).
+timed() {
+  local report user system
+  report=$( { TIMEFORMAT='%R %U %S'; time "$@" > /dev/null 2>&1 < /dev/null; } 2>&1 )
+  read -r wall user system <<< "$report"
+  cpu=$(awk -v u="$user" -v s="$system" 'BEGIN { printf "%.2f", u + s }')
+}
 pixels=$(( 160 * 120 ))
 # collection / file of the matching imports: the partial views first, then the rest evenly spaced.
 mapfile -t partial < <(awk -F'\t' -v full=$pixels '$4 == "matching" && $8 != full { print $1 "\t" $2 }' "$results")
@@ -37,6 +45,7 @@ fi
 fractOf() {  # the settings file of collection $1, name $2
   case "$1" in
     toolbar) echo "$share/toolbar/$2.fract" ;;
+    formula) echo "$share/formula/img/$2.fract" ;;
     root) echo "$share/examples/$2.fract" ;;
     *) find "$share/examples" -path "*$(case "$1" in KM) echo Krzysztof ;; GM) echo Graeme ;; RP) echo Robert ;;
          SJ) echo Sebastian ;; DL) echo Daniel ;; esac)*" -name "$2.fract" | head -1 ;;
@@ -50,18 +59,18 @@ withSettings() {  # FILE OUT KEY=VALUE...
   local pattern; pattern=$(printf '^%s \\|' "${keys[@]}"); pattern=${pattern%\\|}
   sed "/$pattern/d" "$file" | sed "/^\[main_parameters\]/a $lines" > "$out"
 }
-echo "| scene | mandelbulber2 samples/px | mandelbulber2 s | its coverage RMSE | fraktal setting | fraktal s | fraktal coverage RMSE | mandelbulber2 / fraktal |"
+echo "| scene | mandelbulber2 samples/px | mandelbulber2 s (CPU s) | its coverage RMSE | fraktal setting | fraktal s (CPU s) | fraktal coverage RMSE | mandelbulber2 / fraktal, wall (CPU) |"
 echo "|---|---|---|---|---|---|---|---|"
+ratios=()
 for scene in "${scenes[@]}"; do
   c=${scene%%$'\t'*}; name=${scene#*$'\t'}
   fract=$(fractOf "$c" "$name")
   "$fraktal" import "$fract" -o "$tmp/s.json" -q
   "$fraktal" render "$tmp/s.json" -o "$tmp/truth.exr" --size "$size" --spp $(( truthAa * truthAa )) --adaptive-tolerance 0 -q
-  declare -A fTime=() fError=()
+  declare -A fTime=() fCpu=() fError=()
   for spp in "${fraktalSpp[@]}"; do
-    t0=$(now)
-    "$fraktal" render "$tmp/s.json" -o "$tmp/f.exr" --size "$size" --spp "$spp" -q
-    fTime[$spp]=$(seconds "$t0" "$(now)")
+    timed "$fraktal" render "$tmp/s.json" -o "$tmp/f.exr" --size "$size" --spp "$spp" -q
+    fTime[$spp]=$wall fCpu[$spp]=$cpu
     read -r fError[$spp] _ _ < <("$tmp/coverage_error" "$tmp/truth.exr" "$tmp/f.exr")
   done
   withSettings "$fract" "$tmp/truth.fract" antialiasing_enabled=true antialiasing_size=$truthAa
@@ -69,23 +78,31 @@ for scene in "${scenes[@]}"; do
     > /dev/null 2>&1 < /dev/null
   for aa in "${peerAa[@]}"; do
     withSettings "$fract" "$tmp/peer.fract" antialiasing_enabled=$([[ $aa -gt 1 ]] && echo true || echo false) antialiasing_size=$aa
-    t0=$(now)
-    HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r "$size" -o "$tmp/mb" "$tmp/peer.fract" \
-      > /dev/null 2>&1 < /dev/null
-    t=$(seconds "$t0" "$(now)")
+    timed env HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r "$size" -o "$tmp/mb" \
+      "$tmp/peer.fract"
+    t=$wall peerCpu=$cpu
     read -r peerError _ _ < <("$tmp/coverage_error" "$tmp/mb_truth.png" "$tmp/mb.png")
     best=""
     for spp in "${fraktalSpp[@]}"; do
       # awk, not bc: the errors may be printed as 1e-05.
       if awk -v a="${fError[$spp]}" -v b="$peerError" 'BEGIN { exit !(a <= b + 1e-6) }'; then
-        if [[ -z $best ]] || awk -v a="${fTime[$spp]}" -v b="${fTime[$best]}" 'BEGIN { exit !(a < b) }'; then best=$spp; fi
+        if [[ -z $best ]] || awk -v a="${fCpu[$spp]}" -v b="${fCpu[$best]}" 'BEGIN { exit !(a < b) }'; then best=$spp; fi
       fi
     done
     if [[ -n $best ]]; then
-      echo "| $c / $name | $((aa * aa)) | $t | $peerError | $best spp | ${fTime[$best]} | ${fError[$best]} | $(awk -v a="$t" -v b="${fTime[$best]}" 'BEGIN { printf "%.2f", a / b }') |"
+      ratio=$(awk -v a="$peerCpu" -v b="${fCpu[$best]}" 'BEGIN { printf "%.2f", a / b }')
+      ratios+=("$ratio $c / $name")
+      echo "| $c / $name | $((aa * aa)) | $t ($peerCpu) | $peerError | $best spp | ${fTime[$best]} (${fCpu[$best]}) | ${fError[$best]} | $(awk -v a="$t" -v b="${fTime[$best]}" 'BEGIN { printf "%.2f", a / b }') ($ratio) |"
     else
       echo "| $c / $name | $((aa * aa)) | $t | $peerError | none of spp ${fraktalSpp[*]} | | | |"
     fi
   done
-  unset fTime fError
+  unset fTime fCpu fError
 done
+# The CPU-time ratio's distribution over the rows with an equal-error fraktal setting.
+if (( ${#ratios[@]} > 0 )); then
+  printf '%s\n' "${ratios[@]}" | sort -g | awk '{ r[NR] = $1; $1 = ""; n[NR] = $0 }
+    END { m = NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2
+          printf "\nCPU-time ratio mandelbulber2 / fraktal over %d rows: median %.2f, worst %.2f (%s), best %.2f\n", NR, m, r[1], n[1], r[NR]
+          for (i = 1; i <= NR && r[i] < 1; i++) printf "fraktal slower: %s (%.2f)\n", n[i], r[i] }'
+fi

@@ -5,9 +5,10 @@ import csv
 import sys
 
 rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
-order = ["toolbar", "root", "KM", "GM", "RP", "SJ", "DL"]
+order = ["toolbar", "root", "KM", "GM", "RP", "SJ", "DL", "formula"]
 names = {"toolbar": "toolbar (one-click presets)", "root": "examples/ (team)", "KM": "Krzysztof Marczak",
-         "GM": "Graeme McLaren", "RP": "Robert Pancoast", "SJ": "Sebastian Jennen", "DL": "Daniel Luchansky"}
+         "GM": "Graeme McLaren", "RP": "Robert Pancoast", "SJ": "Sebastian Jennen", "DL": "Daniel Luchansky",
+         "formula": "formula/img (one file a formula)"}
 
 
 def full(r):
@@ -39,7 +40,9 @@ for c in order:
     subset = [r for r in rows if r["collection"] == c]
     if subset:
         line(names.get(c, c), subset)
-line("**all 422 examples**", [r for r in rows if r["collection"] != "toolbar"])
+line("**all 422 examples**", [r for r in rows if r["collection"] not in ("toolbar", "formula")])
+line("**formula/img files whose formulas fraktal has**",
+     [r for r in rows if r["collection"] == "formula" and r.get("missing_formula") != "yes"])
 line("**expressible by the reference's T3**", [r for r in rows if r["expressible"] == "yes"])
 exp = [r for r in rows if r["expressible"] == "yes"]
 print()

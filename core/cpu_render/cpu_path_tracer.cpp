@@ -193,8 +193,7 @@ struct Tracer {
         if (cpu::clipToBound(march, ro, rd, tStart, tEnd)) {
             s = cpu::marchStart(march, tStart);
             cpu::marchRay(march, ro, rd, tEnd, pixelAngle, render.maxSteps, s, deEvals);
-            hit = s.status == cpu::MarchStatus::Hit ||
-                  (s.status == cpu::MarchStatus::Marching && s.lastD < 10.0 * pixelAngle * s.t * scene.shading.detail);
+            hit = cpu::countsAsHit(march, s, pixelAngle);
         }
         float* beauty = out.at(kBeauty, x, y);
         if (!hit) {

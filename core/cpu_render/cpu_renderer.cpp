@@ -29,8 +29,7 @@ ImageStrip renderReference(const Formula& formula, const Camera& camera, const R
         if (cpu::clipToBound(scene, ro, rd, tStart, tEnd)) {
             s = cpu::marchStart(scene, tStart);
             cpu::marchRay(scene, ro, rd, tEnd, pixelAngle, render.maxSteps, s, deEvals);
-            hit = s.status == cpu::MarchStatus::Hit ||
-                  (s.status == cpu::MarchStatus::Marching && s.lastD < 10.0 * pixelAngle * s.t * shading.detail);
+            hit = cpu::countsAsHit(scene, s, pixelAngle);
         }
         vec3 color = render.transparentBackground ? vec3(0.0) : cpu::shadeBackground(scene, rd);
         float depth = 1e30f;

@@ -23,7 +23,7 @@ constexpr double kRefineLevel = 0.5;
 
 void refineHit(const Scene& scene, const vec3& ro, const vec3& rd, double pixelAngle, double d, MarchState& s,
                double& deEvals) {
-    if (scene.formula.hitInsideOnly) return;
+    if (scene.formula.hitRule != HitRule::Surface) return;
     for (int i = 0; i < kRefineSteps; ++i) {
         if (i > 0) {
             d = scene.de(ro + rd * s.t, deEvals);
@@ -62,13 +62,39 @@ void recoverOvershoot(const Scene& scene, const vec3& ro, const vec3& rd, double
     s.status = MarchStatus::Hit;
 }
 
+// Mirror of march.glsl's marchSteps for HitRule::InteriorWalls (why: there).
+void marchStepsInteriorWalls(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle,
+                             int maxSteps, MarchState& s, double& deEvals) {
+    for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
+        const double threshold = pixelAngle * s.t * scene.params.detail;
+        deEvals += 1.0;
+        const double d = evaluate(scene.formula, ro + rd * s.t, threshold).distance;
+        s.steps += 1;
+        if (d < threshold || d <= 0.0) {
+            s.lastD = std::max(d, 0.0);
+            s.status = MarchStatus::Hit;
+            break;
+        }
+        if (s.t > tEnd) {
+            s.status = MarchStatus::Escaped;
+            break;
+        }
+        s.lastD = d;
+        s.closest = std::min(s.closest, d / std::max(s.t, 1e-20));
+        s.t += d - 0.8 * threshold;
+    }
+}
+
 void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
                 MarchState& s, double& deEvals) {
+    if (scene.formula.hitRule == HitRule::InteriorWalls)
+        return marchStepsInteriorWalls(scene, ro, rd, tEnd, pixelAngle, maxSteps, s, deEvals);
     for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
         bool inside = false;
         double d = scene.deInside(ro + rd * s.t, inside, deEvals);
         s.steps += 1;
-        if (scene.formula.hitInsideOnly) d = inside ? 0.0 : std::max(d, 1.01 * pixelAngle * s.t * scene.params.detail);
+        if (scene.formula.hitRule == HitRule::InsideOnly)
+            d = inside ? 0.0 : std::max(d, 1.01 * pixelAngle * s.t * scene.params.detail);
         const double previousStep = s.omega * s.lastD;
         if (s.omega > 1.0 && std::abs(d) + s.lastD < previousStep) {
             s.t -= previousStep - s.lastD;
@@ -98,6 +124,12 @@ void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, d
               MarchState& s, double& deEvals) {
     marchSteps(scene, ro, rd, tEnd, pixelAngle, maxSteps, s, deEvals);
     if (s.status == MarchStatus::Hit) refineHit(scene, ro, rd, pixelAngle, s.lastD, s, deEvals);
+}
+
+bool countsAsHit(const Scene& scene, const MarchState& s, double pixelAngle) {
+    if (scene.formula.hitRule == HitRule::InteriorWalls) return s.status == MarchStatus::Hit;
+    return s.status == MarchStatus::Hit ||
+           (s.status == MarchStatus::Marching && s.lastD < 10.0 * pixelAngle * s.t * scene.params.detail);
 }
 
 bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd) {

@@ -33,6 +33,8 @@ struct Scene {
 MarchState marchStart(const Scene& scene, double tStart);
 void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
               MarchState& s, double& deEvals);
+// Mirror of march.glsl's countsAsHit (why: there).
+bool countsAsHit(const Scene& scene, const MarchState& s, double pixelAngle);
 bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd);
 SurfaceSample shadeSurface(const Scene& scene, const vec3& pos, const vec3& rd, double t, double pixelAngle,
                            double& deEvals);

@@ -1112,6 +1112,35 @@ void mapTransfAbsAddMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
            N::v("mirror", r.vector("transf_scale3D_111")), N::v("offset", r.vector("transf_offsetA_000"))});
 }
 
+// transf_sin_and_cos_max: each chosen axis the largest of its two waves and their product
+// (sin_cos_max), v added or multiplied back in as combo4 says when enabledM is on. Its analytic DE
+// tweak is Mandelbulber2's own estimate of the stretch; fraktal's derivative bounds it.
+void mapTransfSinAndCosMax(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    const std::string combo = r.raw("combo4");
+    int keep = 0;
+    if (r.boolean("transf_function_enabledM_false")) {
+        keep = combo == "0" || combo == "type1" ? 1
+               : combo == "type2"               ? 2
+               : combo == "type3"               ? 3
+               : combo == "type4"               ? 4
+                                                : 0;
+        if (keep == 0) r.unsupported("combo4 " + combo + ": a way of keeping v that Mandelbulber2 2.20 does not have");
+    }
+    if (r.boolean("analyticDE_enabled_false"))
+        approximated.push_back({r.where(),
+                                "analyticDE: the derivative's own factor and offset are left out (fraktal's "
+                                "derivative bounds the waves' slope)"});
+    auto on = [&](const char* key) { return r.boolean(key) ? 1.0 : 0.0; };
+    b.add("sin_cos_max",
+          {N::f("x", on("transf_function_enabledAx")), N::f("y", on("transf_function_enabledAy_false")),
+           N::f("z", on("transf_function_enabledAz_false")),
+           N::v("sin_period", r.vector("transf_constant_multiplierA_111")),
+           N::v("cos_period", r.vector("transf_constant_multiplierB_111")),
+           N::f("sin_scale", r.number("transf_scaleA_1")), N::f("cos_scale", r.number("transf_scaleB_1")),
+           N::f("product_scale", r.number("transf_scaleC_1")), N::f("divide", on("transf_function_enabled_false")),
+           N::f("scale", r.number("transf_scale")), N::f("keep", keep)});
+}
+
 // transf_spherical_inv: v + offset scaled, inverted in the unit sphere, less offset and the added
 // constant. Its conditional mode (inversion within a radius) is refused.
 void mapTransfSphericalInv(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -1226,6 +1255,7 @@ constexpr Mapping kMappings[] = {
     {1602, mapTransfDifsEllipsoid},
     {1603, mapTransfDifsHextgrid2},
     {1613, mapTransfDifsGrid},
+    {1084, mapTransfSinAndCosMax},
 };
 
 MapFn findMapping(int id) {
@@ -1503,6 +1533,9 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
     const std::string_view estimator = f.estimator.block ? f.estimator.block->id : "";
     const bool linear = estimator == "escape_linear";
     const bool logPart = estimator == "escape_log" || estimator == "escape_gradient" || estimator == "escape_potential";
+    // Interior mode changes the fractal's estimate alone, before the cut and the primitives: the
+    // objects come after it (evaluate()), where a combine estimator would mix them into it.
+    const bool combines = (linear || logPart) && f.hitRule != HitRule::InteriorWalls;
     const double offset = linear ? f.estimator.values[0].x : 0.0;
     auto combine = [&](std::string_view id, std::initializer_list<NodeBuilder::Value> values) {
         std::vector<Node> nodes;
@@ -1516,14 +1549,14 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
         f.estimator.values[size_t(f.estimator.block->paramIndex("log_part"))].x = logPart ? 1.0 : 0.0;
     };
     const vec3 limitLow = main.vector("limit_min"), limitHigh = main.vector("limit_max");
-    if (limits && primitives.empty() && (linear || logPart)) {
+    if (limits && primitives.empty() && combines) {
         combine("box_combine", {N::f("intersect", 1.0), N::v("center", (limitLow + limitHigh) * 0.5),
                                 N::v("size", glm::abs(limitHigh - limitLow) * 0.5)});
         return;
     }
     main.mustBeDefault("all_primitives_position", "the primitives moved together");
     main.mustBeDefault("all_primitives_rotation", "the primitives turned together");
-    const bool one = primitives.size() == 1 && !limits && (linear || logPart);
+    const bool one = primitives.size() == 1 && !limits && combines;
     int waters = 0;
     for (const auto& [type, index] : primitives) waters += type == "water";
     for (const auto& [type, index] : primitives) {
@@ -1873,10 +1906,21 @@ FractImport importFract(const FractFile& file) {
         p.formula.iterations = 1;
     }
     p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
-    if (main.boolean("interior_mode")) main.unsupported("interior_mode: the inside of the set drawn as a solid");
-    // Mandelbulber2 then stops only where the orbit stays bounded for N iterations: fraktal's hits
-    // only inside (Formula::hitInsideOnly), the estimate sizing the steps.
-    p.formula.hitInsideOnly = main.boolean("iteration_threshold_mode");
+    // iteration_threshold_mode: Mandelbulber2 stops only where the orbit stays bounded for N
+    // iterations, fraktal's hits only inside, the estimate sizing the steps. interior_mode: it stops
+    // only in a band just outside the set and crawls through the set, fraktal's interior walls.
+    const bool iterationThreshold = main.boolean("iteration_threshold_mode");
+    if (main.boolean("interior_mode")) {
+        if (iterationThreshold)
+            main.unsupported(
+                "interior_mode with iteration_threshold_mode: a ray that never stops (each mode "
+                "moves the other's hits away)");
+        p.formula.hitRule = HitRule::InteriorWalls;
+        // A ray crosses the set a fifth of a hit threshold a step: Mandelbulber2's own limit.
+        p.render.maxSteps = kMaxMarchSteps;
+    } else if (iterationThreshold) {
+        p.formula.hitRule = HitRule::InsideOnly;
+    }
     importObjects(file, main, out);
     if (main.boolean("constant_DE_threshold"))
         out.approximated.push_back({"detail",
@@ -1902,7 +1946,7 @@ FractImport importFract(const FractFile& file) {
     // In iteration_threshold_mode the threshold is one footprint whatever detail_level says, and a
     // step outside is at least (1.01 - 0.5) of it times DE_factor (CalcDistThresh, RayMarching):
     // fraktal's step floor and bisection tolerance, 1.01 hit thresholds, is the same length.
-    if (p.formula.hitInsideOnly) p.render.detail = std::clamp(0.5 * p.formula.deFactor, 1e-3, 100.0);
+    if (p.formula.hitRule == HitRule::InsideOnly) p.render.detail = std::clamp(0.5 * p.formula.deFactor, 1e-3, 100.0);
     importCamera(main, out);
     importLook(file, main, out);
     return out;

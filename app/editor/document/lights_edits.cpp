@@ -106,8 +106,7 @@ std::optional<vec3> surfaceUnderCursor(const Formula& formula, const Camera& cam
         double deEvals = 0.0;
         cpu::MarchState s = cpu::marchStart(scene, tStart);
         cpu::marchRay(scene, ro, rd, tEnd, pixelAngle, render.maxSteps, s, deEvals);
-        const bool hit = s.status == cpu::MarchStatus::Hit ||
-                         (s.status == cpu::MarchStatus::Marching && s.lastD < 10.0 * pixelAngle * s.t * params.detail);
+        const bool hit = cpu::countsAsHit(scene, s, pixelAngle);
         if (!hit) return std::nullopt;
         return ro + rd * s.t;
     }

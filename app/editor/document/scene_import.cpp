@@ -58,7 +58,8 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
     // measurement replaced (an object drawn by its estimate alone, nothing inside it to measure
     // against: a Menger sponge at 250 iterations) would otherwise end rays before the surface.
     Formula& f = result.preset.formula;
-    result.preset.render.maxSteps = std::clamp(int(std::ceil(256.0 / f.deFactor)), result.preset.render.maxSteps, 4096);
+    result.preset.render.maxSteps =
+        std::max(result.preset.render.maxSteps, std::min(int(std::ceil(256.0 / f.deFactor)), 4096));
     // What the import built must be a preset fraktal reads back: a value the mapping let through
     // outside a range is an error here, naming the file, not a preset that fails to load later.
     try {

@@ -165,6 +165,15 @@ void objectsSection(EditorState& s) {
     }
 }
 
+// A checkbox that sets the hit rule to `rule` when ticked and back to the plain surface when
+// cleared; its rectangle is noted as "checkbox:LABEL" for the user stories.
+void hitRuleCheckbox(EditorState& s, HitRule& hitRule, HitRule rule, const char* label, const char* help) {
+    bool on = hitRule == rule;
+    if (ImGui::Checkbox(label, &on)) hitRule = on ? rule : HitRule::Surface;
+    noteWidgetRect(s.layout, std::string("checkbox:") + label);
+    helpMarker(help);
+}
+
 }  // namespace
 
 void beginFormulaWindow(EditorState& s) { beginSideColumnWindow(s, "Formula", &s.panels.formula, true); }
@@ -245,12 +254,16 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     });
     if (estimatorSelected) {
         // Under the estimator's own parameters, so that the rows above keep their places.
-        ImGui::Checkbox("Hit only inside", &f.hitInsideOnly);
-        noteWidgetRect(s.layout, "checkbox:Hit only inside");
-        helpMarker(
-            "Rays stop only where the point is inside (the orbit stays bounded for every iteration, or the "
-            "estimate is below 0); the estimate only sizes the steps. Mandelbulber2's iteration threshold mode: "
-            "the surface of spiky sets (hypercomplex, power-2 bulbs), whose estimate is small far from them.");
+        // The hit rules other than the plain surface, each a checkbox (ticking one unticks the other).
+        hitRuleCheckbox(s, f.hitRule, HitRule::InsideOnly, "Hit only inside",
+                        "Rays stop only where the point is inside (the orbit stays bounded for every iteration, or "
+                        "the estimate is below 0); the estimate only sizes the steps. Mandelbulber2's iteration "
+                        "threshold mode: the surface of spiky sets (hypercomplex, power-2 bulbs), whose estimate is "
+                        "small far from them.");
+        hitRuleCheckbox(s, f.hitRule, HitRule::InteriorWalls, "Hit interior walls",
+                        "Rays stop only just outside the set; inside it they crawl on until they come out. A camera "
+                        "inside the set, or an object that cuts it open (intersect), shows the walls of its inner "
+                        "cavities. Mandelbulber2's interior mode; slow where rays cross much of the set.");
     }
     if (selected.block->custom) {
         if (const CustomBlock* b = findCustomBlock(f, selected.block->id)) {
