@@ -11,9 +11,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <thread>
 
 #include "core/import/fract_import.hpp"
 #include "core/import/mb2_sequence.hpp"
@@ -1556,39 +1559,55 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {rp + "menger-4D.fract", "stereo pairs side by side or one above the other"},
         // A Menger sponge on Mandelbulber2's water (the water combine, its frame turned over).
         {km + "primitive objects - water.fract", ""},
+        // Interior mode: hits only on the walls where rays come out of the set (interior walls).
+        {km + "hybrid20.fract", ""},
+        // Graeme McLaren's sine and cosine maximum (sin_cos_max) before the pseudo-Kleinian.
+        {gm + "sinCos_pseudoKl.fract", ""},
         {"examples/quaternion4D_001.fract", "slot 1 (quaternion4d): the formula quaternion4d"},
         {"examples/boolean001.fract", "boolean_operators"},
     };
+    // Two files at a time (each import's safe-step measurement and each render keep about one of
+    // the two cores busy), each in files of its own.
     const Sandbox box;
     const std::string size = "128x96";
-    for (const Expected& c : cases) {
+    auto check = [&](const Expected& c, const std::string& tag) {
         SCOPED_TRACE(c.file);
+        const auto started = std::chrono::steady_clock::now();
         const fs::path file = share / c.file;
         ASSERT_TRUE(fs::exists(file));
-        const auto imported = test::runCli("import '" + file.string() + "' -q -o '" + box.path("s.json") + "'");
+        const std::string preset = box.path(tag + ".json"), exr = box.path(tag + ".exr"), home = box.path(tag);
+        const auto imported = test::runCli("import '" + file.string() + "' -q -o '" + preset + "'");
         if (!c.refuse.empty()) {
             EXPECT_NE(imported.exitCode, 0);
             EXPECT_NE(imported.output.find(c.refuse), std::string::npos) << imported.output;
-            continue;
+            return;
         }
         ASSERT_EQ(imported.exitCode, 0) << imported.output;
-        const auto rendered = test::runCli("render '" + box.path("s.json") + "' --size " + size + " --spp 1 -q -o '" +
-                                           box.path("f.exr") + "'");
+        const auto rendered = test::runCli("render '" + preset + "' --size " + size + " --spp 1 -q -o '" + exr + "'");
         ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
-        const std::string peer = "HOME='" + box.dir.string() +
-                                 "' QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r " + size + " -o '" +
-                                 box.path("mb") + "' '" + peerSettings(file, box.path("peer.fract")) +
-                                 "' > /dev/null 2>&1 < /dev/null";
-        fs::remove(box.path("mb.png"));
+        fs::create_directories(home);
+        const std::string peer = "HOME='" + home + "' QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r " +
+                                 size + " -o '" + box.path(tag + "_mb") + "' '" +
+                                 peerSettings(file, box.path(tag + "_peer.fract")) + "' > /dev/null 2>&1 < /dev/null";
         ASSERT_EQ(std::system(peer.c_str()), 0);
-        const Mask ours = exrMask(box.path("f.exr")), theirs = pngAlphaMask(box.path("mb.png"));
+        const Mask ours = exrMask(exr), theirs = pngAlphaMask(box.path(tag + "_mb.png"));
         ASSERT_EQ(theirs.width, 128);
         ASSERT_EQ(ours.hit.size(), theirs.hit.size());
         long covered = 0;
         for (bool h : theirs.hit) covered += h;
         EXPECT_GT(covered, 128 * 96 / 20) << "Mandelbulber2 shows almost nothing: no silhouette to compare";
-        EXPECT_GE(intersectionOverUnion(ours, theirs), c.minIou);
-    }
+        const double iou = intersectionOverUnion(ours, theirs);
+        EXPECT_GE(iou, c.minIou);
+        std::printf("%s: IoU %.3f (%.1f s)\n", c.file.c_str(), iou,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    };
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t k = next++; k < cases.size(); k = next++) check(cases[k], "case" + std::to_string(k));
+    };
+    std::thread other(worker);
+    worker();
+    other.join();
 }
 
 }  // namespace
