@@ -247,6 +247,17 @@ std::string FieldReader::string(const std::string& key, const std::string& fallb
     return s;
 }
 
+int FieldReader::choice(const std::string& key, std::span<const std::string_view> names, int fallback,
+                        const std::string& what, const std::string& prefix) {
+    const std::string name = string(key, std::string(names[size_t(fallback)]));
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return int(i);
+    std::string expected;
+    for (size_t i = 0; i < names.size(); ++i)
+        expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
+    fail(prefix + "unknown " + what + " \"" + name + "\" (expected " + expected + ")", key);
+}
+
 void FieldReader::finish(const std::string& reason) const {
     for (const auto& [key, value] : object_.items()) {
         if (seen_.count(key)) continue;

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -111,6 +112,10 @@ class FieldReader {
     // parameters had an on/off kind. Anything else is refused, naming the value.
     bool toggle(const std::string& key, bool fallback);
     std::string string(const std::string& key, const std::string& fallback, size_t maxLength = kMaxStringBytes);
+    // The index in `names` of the name at key (`fallback` when it is absent). Any other string
+    // fails: "PREFIXunknown WHAT "x" (expected a, b or c)".
+    int choice(const std::string& key, std::span<const std::string_view> names, int fallback, const std::string& what,
+               const std::string& prefix = {});
     template <int N>
     glm::vec<N, double> vector(const std::string& key, const glm::vec<N, double>& fallback, double lo, double hi) {
         return has(key) ? checkVector<N>(at(key), child(key), lo, hi) : fallback;

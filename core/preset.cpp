@@ -110,13 +110,8 @@ SceneObject parseObject(const ReadContext& context, const json& j, const std::st
                "object");
     }
     SceneObject o = SceneObject::make(*kind);
-    const std::string operation = r.string("operation", std::string(kObjectOperationNames[0]));
-    const auto named = std::find(std::begin(kObjectOperationNames), std::end(kObjectOperationNames), operation);
-    if (named == std::end(kObjectOperationNames))
-        r.fail("object " + std::to_string(listNumber) + ": unknown operation \"" + operation +
-                   "\" (expected join, intersect or carve)",
-               "operation");
-    o.operation = ObjectOperation(named - std::begin(kObjectOperationNames));
+    o.operation = ObjectOperation(
+        r.choice("operation", kObjectOperationNames, 0, "operation", "object " + std::to_string(listNumber) + ": "));
     o.hollow = r.boolean("hollow", false);
     o.enabled = r.boolean("enabled", true);
     o.center = r.vector<3>("center", o.center, -1e4, 1e4);
@@ -139,11 +134,7 @@ Formula parseFormula(const ReadContext& context, const json& j) {
         if (r.has("hitRule")) r.fail("give hitRule alone (hitInsideOnly is its older form)", "hitInsideOnly");
         if (r.boolean("hitInsideOnly", false)) f.hitRule = HitRule::InsideOnly;
     }
-    const std::string hitRule = r.string("hitRule", std::string(kHitRuleNames[int(f.hitRule)]));
-    const auto namedRule = std::find(std::begin(kHitRuleNames), std::end(kHitRuleNames), hitRule);
-    if (namedRule == std::end(kHitRuleNames))
-        r.fail("unknown hit rule \"" + hitRule + "\" (expected surface, insideOnly or interiorWalls)", "hitRule");
-    f.hitRule = HitRule(namedRule - std::begin(kHitRuleNames));
+    f.hitRule = HitRule(r.choice("hitRule", kHitRuleNames, int(f.hitRule), "hit rule"));
     if (r.has("customBlocks")) {
         const json& blocks = r.at("customBlocks");
         if (!blocks.is_array()) r.fail("expected an array of custom blocks", "customBlocks");
@@ -206,12 +197,7 @@ Camera parseCamera(const ReadContext& context, const json& j, ThinLens& lens) {
     c.position = r.requiredVector<3>("position", -1e4, 1e4);
     c.target = r.requiredVector<3>("target", -1e4, 1e4);
     c.up = r.vector<3>("up", c.up, -1e4, 1e4);
-    const std::string projection = r.string("projection", std::string(kProjectionNames[0]));
-    const auto named = std::find(std::begin(kProjectionNames), std::end(kProjectionNames), projection);
-    if (named == std::end(kProjectionNames))
-        r.fail("unknown projection \"" + projection + "\" (expected perspective, fisheye or equirectangular)",
-               "projection");
-    c.projection = Projection(named - std::begin(kProjectionNames));
+    c.projection = Projection(r.choice("projection", kProjectionNames, 0, "projection"));
     // A pinhole sees less than half the sphere; the wide projections up to all of it.
     c.fovY = r.number("fovY", c.fovY, 1.0, c.projection == Projection::Perspective ? 170.0 : 360.0);
     c.flipVertical = r.boolean("flipVertical", c.flipVertical);

@@ -207,12 +207,17 @@ struct BallHits {
     int withinThreshold = 0;  // hits whose depth lies in [exact - threshold, exact]
 };
 
+// The direction of pixel (x, y)'s centre ray.
+vec3 pixelRay(const Preset& p, int x, int y) {
+    return p.camera.rayDirection(2.0 * (x + 0.5) / kW - 1.0, 1.0 - 2.0 * (y + 0.5) / kH, double(kW) / kH);
+}
+
 BallHits ballHits(const Preset& p, const std::vector<float>& depth) {
     BallHits b;
-    const double aspect = double(kW) / kH, pixelAngle = p.camera.pixelAngle(kH);
+    const double pixelAngle = p.camera.pixelAngle(kH);
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
-            const vec3 rd = p.camera.rayDirection(2.0 * (x + 0.5) / kW - 1.0, 1.0 - 2.0 * (y + 0.5) / kH, aspect);
+            const vec3 rd = pixelRay(p, x, y);
             const vec3 ro = p.camera.position;
             const double half = dot(ro, rd), h = half * half - (dot(ro, ro) - kBallRadius * kBallRadius);
             const bool ball = h > 0.0;
@@ -281,10 +286,10 @@ struct CutBallHits {
 
 CutBallHits cutBallHits(const Preset& p, const std::vector<float>& depth) {
     CutBallHits c;
-    const double aspect = double(kW) / kH, pixelAngle = p.camera.pixelAngle(kH);
+    const double pixelAngle = p.camera.pixelAngle(kH);
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
-            const vec3 rd = p.camera.rayDirection(2.0 * (x + 0.5) / kW - 1.0, 1.0 - 2.0 * (y + 0.5) / kH, aspect);
+            const vec3 rd = pixelRay(p, x, y);
             const vec3 ro = p.camera.position;
             const double tCut = -ro.z / rd.z;
             if (!(tCut > 0.0) || length(ro + rd * tCut) > 0.9 * kBallRadius) continue;
