@@ -39,6 +39,11 @@ struct P4 {
     // (Mandelbulber2's start) until a shape step runs. GLSL: the global `orbitDistance`, which
     // formulaEval resets.
     double orbitDistance = 1000.0;
+    // The varying scale's running offset (formulas/scale_vary.hpp; Mandelbulber2's
+    // aux.actualScaleA): 0 when the orbit starts, changed by each scale_vary step that updates it,
+    // shared by all of them as Mandelbulber2 shares it between the formulas of a hybrid. GLSL: the
+    // global `varyScale`, which formulaEval resets.
+    double varyScale = 0.0;
 };
 
 using glm::abs;

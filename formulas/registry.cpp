@@ -40,10 +40,11 @@
 #include "formulas/quadratic_bulbs.hpp"
 #include "formulas/quaternion.hpp"
 #include "formulas/riemann_sphere.hpp"
-#include "formulas/sin_cos_max.hpp"
 #include "formulas/rotate.hpp"
 #include "formulas/scale.hpp"
+#include "formulas/scale_vary.hpp"
 #include "formulas/sierpinski_fold.hpp"
+#include "formulas/sin_cos_max.hpp"
 #include "formulas/smooth_box_fold.hpp"
 #include "formulas/sphere_fold.hpp"
 #include "formulas/sphere_invert.hpp"
@@ -116,6 +117,7 @@ constexpr std::array kBlocks{
     describe<DifsGrid>(),
     describe<DifsHexGrid>(),
     describe<SinCosMax>(),
+    describe<ScaleVary>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -29,8 +29,24 @@ cmake --build build-asan --parallel "$(nproc)" --target fraktal_tests fraktal
 # comparison of imported Mandelbulber2 files with mandelbulber2's own renders (the import's code
 # runs under the sanitizers in the other import tests).
 release_only='CliRender.LargeImagePeakMemoryIsBounded:SoakViewport.*:SafeStep.RandomStacksWithTheCheckedFactorNeverOvershoot:ImportVsMandelbulber2.*'
-ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build-asan/tests/fraktal_tests --gtest_brief=1 \
-  --gtest_filter="-$release_only"
+# Shards side by side, two a core (the tests already run side by side under ctest; gtest deals the
+# tests out by number, and with one shard a core the slow ones left one shard running 3 minutes
+# after the other): each shard's output is printed whole once it ends, and any failing shard fails
+# the run.
+shards=$((2 * $(nproc)))
+shard_pids=()
+for ((shard = 0; shard < shards; shard++)); do
+  GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    build-asan/tests/fraktal_tests --gtest_brief=1 --gtest_filter="-$release_only" >"build-asan/shard$shard.log" 2>&1 &
+  shard_pids+=($!)
+done
+asan_failed=0
+for ((shard = 0; shard < shards; shard++)); do
+  wait "${shard_pids[$shard]}" || asan_failed=1
+  echo "-- shard $((shard + 1)) of $shards"
+  cat "build-asan/shard$shard.log"
+done
+[ "$asan_failed" = 0 ] || { echo "tests under AddressSanitizer + UBSan failed" >&2; exit 1; }
 echo "== the command line under LeakSanitizer"
 scripts/cli_leak_check.sh build-asan/app/fraktal
 

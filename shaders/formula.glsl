@@ -19,6 +19,9 @@ float potentialShare(float G) {
 // The dIFS shapes' running least distance (P4::orbitDistance): the shape steps lower it, the dIFS
 // estimator returns it; each orbit starts it afresh.
 float orbitDistance;
+// The varying scale's running offset (P4::varyScale): the scale_vary steps read and change it;
+// each orbit starts it at 0.
+float varyScale;
 
 #ifdef FRAKTAL_HIT_INTERIOR_WALLS
 // Formula::hitRule InteriorWalls: the hit threshold at the point the marcher evaluates (0 in any
@@ -54,6 +57,7 @@ float orbitValue(vec3 pos, int count) {
     vec3 c = pos;
     float degree = 1.0;
     orbitDistance = 1000.0;
+    varyScale = 0.0;
     for (int i = 0; i < count; ++i) {
 //@FRAKTAL_ORBIT_LOOP
     }
@@ -79,6 +83,7 @@ float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped)
     float degree = 1.0;  // the power steps' degrees multiplied (P4::degree on the CPU)
     trap = vec4(1e20);
     orbitDistance = 1000.0;
+    varyScale = 0.0;
     iterations = 0;
     escaped = false;
     float bailout2 = u_bailout * u_bailout;

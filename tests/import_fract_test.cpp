@@ -518,7 +518,18 @@ TEST(FractImport, FourDTransformsOnAnOrbitWhoseFourthCoordinateStaysZero) {
     EXPECT_EQ(scales, 2);
 
     const mb2::FractImport moved = importText(menger + "1042;\n[fractal_2]\ntransf_offset_0000 0 0 0 0,1;\n");
-    EXPECT_TRUE(mentions(moved.unsupported, "slot 2 (transf_spherical_fold4d)", "centred off the origin"));
+    EXPECT_TRUE(mentions(moved.unsupported, "slot 2 (transf_spherical_fold4d)", "moves w off 0"));
+    // An offset in x, y and z is the sphere fold's own.
+    const mb2::FractImport offCentre = importText(menger + "1042;\n[fractal_2]\ntransf_offset_0000 0,1 0 -0,2 0;\n");
+    ASSERT_TRUE(offCentre.faithful()) << offCentre.unsupported.front().text();
+    int sphereFolds = 0;
+    for (const Node& k : offCentre.preset.formula.nodes)
+        if (k.block->id == "sphere_fold") {
+            ++sphereFolds;
+            EXPECT_DOUBLE_EQ(param(k, "offset", 0), 0.1);
+            EXPECT_DOUBLE_EQ(param(k, "offset", 2), -0.2);
+        }
+    EXPECT_EQ(sphereFolds, 1);
 }
 
 // A red-cyan anaglyph (stereo_mode 2) imports as the view from between the eyes, listed as
@@ -930,6 +941,24 @@ TEST(FractImport, MandelboxMengerAndAboxModKaliV2FollowMandelbulber2sOrbits) {
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// mandelbox_offset: the sphere fold's radii measured from the origin, its scaling about -offset
+// (Mandelbulber2's Mandelbox, and the 4D spherical fold's transf_offset_0000 whose w stays 0).
+TEST(FractImport, SphereFoldOffTheOriginFollowsMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 8;\nN 10;\n[fractal_1]\nmandelbox_offset 0,2 -0,1 0,3;\n",
+         {"box_fold", "sphere_fold", "scale", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             const vec3 offset(0.2, -0.1, 0.3);
+             vec3 z = glm::clamp(v, -1.0, 1.0) * 2.0 - v;
+             const double r2 = dot(z, z);
+             z = (z + offset) * (r2 < 0.25 ? 4.0 : r2 < 1.0 ? 1.0 / r2 : 1.0) - offset;
+             return z * 2.0 + c;
+         },
+         5.0},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 // Buddhi's Mandelbulb 2, lkmitch's quadratic and the buffalo bulb (z's abs before, x's after,
 // z not mirrored).
 TEST(FractImport, QuadraticBulbsFollowMandelbulber2sOrbits) {
@@ -1229,7 +1258,7 @@ TEST(FractImport, DiagonalFoldSwapsArePlaneFolds) {
 }
 
 // box_fold_bulb_pow2_v2: each part in its window (fold B, sphere fold S, scale C, power A), the
-// power's z times the z factor; a sphere fold off the origin is refused.
+// power's z times the z factor; the sphere fold's offset is mandelbox_offset.
 TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {
     const mb2::FractImport r = importText(
         "[main_parameters]\nformula_1 125;\n[fractal_1]\ntransf_addition_constant_111 0,5 1 1;\n"
@@ -1237,15 +1266,17 @@ TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {
         "transf_stop_iterations_C 12;\nboxfold_bulbpow2_z_factor 20;\n");
     ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
     const Formula& f = r.preset.formula;
-    EXPECT_EQ(blockIds(f), (std::vector<std::string>{"box_fold_axes", "sphere_fold", "scale", "mandelbulb_sine",
+    EXPECT_EQ(blockIds(f), (std::vector<std::string>{"box_fold_axes", "sphere_fold", "scale_vary", "mandelbulb_sine",
                                                      "axis_scale", "add_c"}));
     EXPECT_EQ(f.nodes[2].stop, 12);
     EXPECT_EQ(f.nodes[3].start, 8);
     EXPECT_EQ(f.nodes[3].stop, 9);
     EXPECT_EQ(f.nodes[4].values[0], vec3(1.0, 1.0, -20.0));
+    EXPECT_EQ(f.nodes[1].values[2], vec3(0.0));
     const mb2::FractImport off =
         importText("[main_parameters]\nformula_1 125;\n[fractal_1]\nmandelbox_offset 0 0 0,2;\n");
-    EXPECT_TRUE(mentions(off.unsupported, "slot 1 (box_fold_bulb_pow2_v2)", "centred off the origin"));
+    ASSERT_TRUE(off.faithful()) << off.unsupported.front().text();
+    EXPECT_EQ(off.preset.formula.nodes[1].values[2], vec3(0.0, 0.0, 0.2));
     // V3 adds the octahedral fold with |x| and a scale about offset_100 (window D); a scale that
     // varies with the iteration is refused.
     const mb2::FractImport v3 = importText(
@@ -1253,13 +1284,59 @@ TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {
         "transf_stop_iterations_D 5;\n");
     ASSERT_TRUE(v3.faithful()) << v3.unsupported.front().text();
     EXPECT_EQ(blockIds(v3.preset.formula),
-              (std::vector<std::string>{"box_fold", "sphere_fold", "scale", "octahedral_fold", "plane_fold", "scale",
-                                        "mandelbulb_sine", "axis_scale", "add_c"}));
+              (std::vector<std::string>{"box_fold", "sphere_fold", "scale_vary", "octahedral_fold", "plane_fold",
+                                        "scale", "mandelbulb_sine", "axis_scale", "add_c"}));
     EXPECT_EQ(v3.preset.formula.nodes[5].stop, 5);
     EXPECT_EQ(v3.preset.formula.nodes[5].values[0].x, 1.5);
-    const mb2::FractImport varying =
-        importText("[main_parameters]\nformula_1 126;\n[fractal_1]\ntransf_scale_vary_0 0,1;\n");
-    EXPECT_TRUE(mentions(varying.unsupported, "slot 1 (box_fold_bulb_pow2_v3)", "varies with the iteration"));
+}
+
+// The scale that varies with the iteration (Mandelbulber2's aux.actualScaleA): the offset a starts
+// at 0, the scale is a + s, and a moves by vary (|a| - limit) in the update window only; with the
+// reset option a becomes -vary (|a| - limit). box_fold_bulb_pow2_v2 with its power left out
+// (window A empty), and amazing_surf_mod2, whose option F turns the update on.
+TEST(FractImport, VaryingScaleFollowsMandelbulber2sOrbits) {
+    static auto v2Step = [](const vec3& v, const vec3& c, int i, double vary, bool reset) {
+        static double a = 0.0;
+        if (i == 0) a = 0.0;
+        vec3 z = glm::abs(v + 1.0) - glm::abs(v - 1.0) - v;
+        const double rr = dot(z, z);
+        z *= rr < 0.25 ? 4.0 : rr < 1.0 ? 1.0 / rr : 1.0;
+        z *= a + 2.5;
+        if (i >= 2 && i < 6) {
+            const double change = vary * (std::abs(a) - 0.5);
+            a = reset ? -change : a - change;
+        }
+        return z + c;
+    };
+    const OrbitCase cases[] = {
+        {"formula_1 125;\nN 9;\n[fractal_1]\ntransf_scale 2,5;\ntransf_scale_vary_0 0,3;\ntransf_scaleB_1 0,5;\n"
+         "transf_start_iterations_X 2;\ntransf_stop_iterations_X 6;\ntransf_stop_iterations_A 0;\n",
+         {"box_fold", "sphere_fold", "scale_vary", "scale_vary", "scale_vary", "add_c"},
+         nullptr,
+         5.0,
+         [](const vec3& v, const vec3& c, int i) { return v2Step(v, c, i, 0.3, false); }},
+        {"formula_1 125;\nN 9;\n[fractal_1]\ntransf_scale 2,5;\ntransf_scale_vary_0 -0,4;\ntransf_scaleB_1 0,5;\n"
+         "transf_start_iterations_X 2;\ntransf_stop_iterations_X 6;\ntransf_stop_iterations_A 0;\n"
+         "transf_function_enabledM_false true;\n",
+         {"box_fold", "sphere_fold", "scale_vary", "scale_vary", "scale_vary", "add_c"},
+         nullptr,
+         5.0,
+         [](const vec3& v, const vec3& c, int i) { return v2Step(v, c, i, -0.4, true); }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+    // Without the option F amazing_surf_mod2 reads a, which nothing moves: a plain scale.
+    const std::string surf = "[main_parameters]\nformula_1 132;\n[fractal_1]\ntransf_scale_vary_0 0,2;\n";
+    const mb2::FractImport still = importText(surf);
+    ASSERT_TRUE(still.faithful()) << still.unsupported.front().text();
+    const mb2::FractImport varies = importText(surf + "transf_function_enabledF_false true;\n");
+    ASSERT_TRUE(varies.faithful()) << varies.unsupported.front().text();
+    auto updates = [](const Formula& f) {
+        int n = 0;
+        for (const Node& k : f.nodes) n += k.block->id == "scale_vary" && param(k, "update") > 0.5;
+        return n;
+    };
+    EXPECT_EQ(updates(still.preset.formula), 0);
+    EXPECT_EQ(updates(varies.preset.formula), 1);
 }
 
 // Mandelbulber2's fish eye and equirectangular cameras: fraktal's projections, 180 x fov degrees
@@ -1298,7 +1375,8 @@ TEST(FractImport, AmazingSurfMod2FoldsPerAxisInItsWindows) {
         "[main_parameters]\nformula_1 132;\n[fractal_1]\ntransf_addition_constant_111 1 0,5 2;\n"
         "transf_start_iterations_M 3;\n");
     ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
-    EXPECT_EQ(blockIds(r.preset.formula), (std::vector<std::string>{"box_fold_axes", "sphere_fold", "scale", "add_c"}));
+    EXPECT_EQ(blockIds(r.preset.formula),
+              (std::vector<std::string>{"box_fold_axes", "sphere_fold", "scale_vary", "add_c"}));
     const Node& fold = r.preset.formula.nodes[0];
     EXPECT_EQ(fold.values[0], vec3(1.0, 0.5, 1.0));  // z unfolded: its limit unused
     EXPECT_EQ(param(fold, "fold_z"), 0.0);

@@ -238,6 +238,32 @@ void inWindow(Reader& r, NodeBuilder& b, const std::string& start, const std::st
     b.within(r.integer("transf_start_iterations_" + start), r.integer("transf_stop_iterations_" + stop), steps);
 }
 
+// A scale that reads the orbit's varying offset a (Mandelbulber2's aux.actualScaleA; formulas/
+// scale_vary.hpp): a + scale in window `scaleWindow`. Where the formula varies it (transf_scale_vary_0
+// not 0 and `varies`), a moves by vary (|a| - limit) after the scale in window `updateWindow` (reset
+// to -vary (|a| - limit) with transf_function_enabledM_false). a is 0 until a step varies it, so
+// a file whose formulas never vary it draws as with a plain scale.
+void varyingScale(Reader& r, NodeBuilder& b, double scale, const std::string& scaleWindow,
+                  const std::string& updateWindow, bool varies, const std::string& limitKey) {
+    const int from = r.integer("transf_start_iterations_" + scaleWindow);
+    const int to = r.integer("transf_stop_iterations_" + scaleWindow);
+    const double vary = varies ? r.number("transf_scale_vary_0") : 0.0;
+    auto steps = [&](int start, int stop, bool update) {
+        if (start >= stop) return;
+        b.within(start, stop, [&] {
+            b.add("scale_vary", {N::f("scale", scale), N::f("vary", vary), N::f("limit", r.number(limitKey)),
+                                 N::f("update", update ? 1.0 : 0.0),
+                                 N::f("reset", r.boolean("transf_function_enabledM_false") ? 1.0 : 0.0)});
+        });
+    };
+    const int updateFrom = std::max(from, r.integer("transf_start_iterations_" + updateWindow));
+    const int updateTo = std::min(to, r.integer("transf_stop_iterations_" + updateWindow));
+    if (vary == 0.0 || updateFrom >= updateTo) return steps(from, to, false);
+    steps(from, updateFrom, false);
+    steps(updateFrom, updateTo, true);
+    steps(updateTo, to, false);
+}
+
 // The pseudo-Kleinian formulas' prism fold in window P .. P1.
 void prismFold(Reader& r, NodeBuilder& b) {
     if (!r.boolean("transf_function_enabledP_false")) return;
@@ -317,8 +343,11 @@ void boxFoldScaledZ(Reader& r, NodeBuilder& b) {
 
 // The sphere fold's inner radius: Mandelbulber2 files use 0 on purpose (no inner scaling), below
 // fraktal's range, which starts at 0.001: that draws the same (an inner ball of radius 0.001).
-void sphereFold(NodeBuilder& b, double minRadius, double fixedRadius) {
-    b.add("sphere_fold", {N::f("min_radius", std::max(minRadius, 0.001)), N::f("fixed_radius", fixedRadius)});
+// `offset` is Mandelbulber2's mandelbox_offset (the scaling about -offset, the radii from the
+// origin), which only the formulas that read it pass.
+void sphereFold(NodeBuilder& b, double minRadius, double fixedRadius, const vec3& offset = vec3(0.0)) {
+    b.add("sphere_fold",
+          {N::f("min_radius", std::max(minRadius, 0.001)), N::f("fixed_radius", fixedRadius), N::v("offset", offset)});
 }
 
 void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
@@ -326,7 +355,6 @@ void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     if (std::abs(value - 2.0 * limit) > 1e-9)
         r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
                       ": fraktal's box fold reflects at the limit (value = 2 x limit)");
-    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     if (r.boolean("mandelbox_rotations_enabled")) {
         // Each axis folds in tilted frames: at +limit in the frame R0 (mandelbox_rotation_neg_N),
         // else at -limit in R1 (_pos_N). The plane x . R0^T e = limit and then x . R1^T e = -limit;
@@ -346,7 +374,8 @@ void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     } else {
         b.add("box_fold", {N::f("limit", limit)});
     }
-    sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+    sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"),
+               r.vector("mandelbox_offset"));
     if (r.boolean("mandelbox_main_rotation_enabled")) b.rotation(setRotation2(r.vector("mandelbox_rotation_main")));
     b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
 }
@@ -379,12 +408,12 @@ void mapAboxMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 // mandelbox_solid, then the Mandelbox's sphere fold, main rotation and scale.
 void mapGeneralizedFoldBox(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("mandelbox_melt", "a melted generalized fold (the reflection eased within the melt layer)");
-    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     const int type = r.integer("mandelbox_generalized_fold_type");
     if (type < 0 || type > 7)
         r.unsupported("mandelbox_generalized_fold_type " + std::to_string(type) + ": Mandelbulber2 has types 0 to 7");
     b.add("generalized_box_fold", {N::f("type", type), N::f("solid", r.number("mandelbox_solid"))});
-    sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+    sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"),
+               r.vector("mandelbox_offset"));
     if (r.boolean("mandelbox_main_rotation_enabled")) b.rotation(setRotation2(r.vector("mandelbox_rotation_main")));
     b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
 }
@@ -575,9 +604,26 @@ void mapAboxVsIcen1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approxim
 }
 
 // The sphere fold of squared radii transf_minR2_p25 (inner) and transf_maxR2_1 (fixed).
-void squaredRadiiSphereFold(Reader& r, NodeBuilder& b) {
+void squaredRadiiSphereFold(Reader& r, NodeBuilder& b, const vec3& offset = vec3(0.0)) {
     sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
-               std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
+               std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)), offset);
+}
+
+// Mandelbulber2's "addCpixel" section of a formula (transf_addCpixel_enabled_false): c times
+// transf_constant_multiplier_111 per axis, in the iteration window `window`, c's axes in
+// mandelbulbMulti_order_of_xyz (xyz, or yxz as add_c_axes' swap_xy). Its "alternate" form, which
+// keeps the reordered c for the next iteration, is refused.
+void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window) {
+    if (!r.boolean("transf_addCpixel_enabled_false")) return;
+    r.mustBeDefault("transf_alternate_enabled_false", "c's axes reordered anew each iteration");
+    const std::string order = r.raw("mandelbulbMulti_order_of_xyz");
+    const bool swapXy = order == "2" || order == "yxz";
+    if (!swapXy && order != "0" && order != "xyz")
+        return r.unsupported("mandelbulbMulti_order_of_xyz " + order + ": c's axes in an order other than xyz or yxz");
+    inWindow(r, b, window, window, [&] {
+        b.add("add_c_axes", {N::v("weights", r.vector("transf_constant_multiplier_111")), N::f("julia", 0.0),
+                             N::f("swap_xy", swapXy ? 1.0 : 0.0)});
+    });
 }
 
 // Tom Lowe's box in DarkBeam's and mclarekin's form: each part runs in its own iteration window
@@ -586,9 +632,7 @@ void squaredRadiiSphereFold(Reader& r, NodeBuilder& b) {
 void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and z");
     r.mustBeDefault("transf_function_enabledy_false", "a sphere fold radius that varies with the iteration");
-    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
-    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c");
     const vec3 limit = r.vector("transf_addition_constant_111");
     const bool foldZ = r.boolean("transf_function_enabled");
     const int foldStart = r.integer("transf_start_iterations_B"), foldStop = r.integer("transf_stop_iterations_B");
@@ -609,22 +653,22 @@ void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     } else {
         fold(foldStart, foldStop);
     }
-    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
+    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b, r.vector("mandelbox_offset")); });
     inWindow(r, b, "A", "A", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
     additionConstant(r, b);
+    extraMultipleOfC(r, b, "E");
     windowedRotation(r, b, "transf_rotation_enabled", "_R");
     if (r.number("transf_scaleG_1") != 1.0)
         inWindow(r, b, "C", "C1", [&] { b.add("scale", {N::f("scale", r.number("transf_scaleG_1"))}); });
 }
 
 // box_fold_bulb_pow2_v2: Tglad's fold per axis (window B), the sphere fold of squared radii
-// (window S), the scale (window C), then White's power 2 with z times the z factor (window A).
+// (window S), the scale (window C; varying, its offset moved in window X), then White's power 2
+// with z times the z factor (window A).
 void mapBoxFoldBulbPow2V2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
-    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
-    r.mustBeDefault("transf_scale_vary_0", "a scale that varies with the iteration");
     inWindow(r, b, "B", "B", [&] { tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated); });
-    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
-    inWindow(r, b, "C", "C", [&] { b.add("scale", {N::f("scale", r.number("transf_scale"))}); });
+    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b, r.vector("mandelbox_offset")); });
+    varyingScale(r, b, r.number("transf_scale"), "C", "X", true, "transf_scaleB_1");
     inWindow(r, b, "A", "A", [&] { whitePower2TimesZFactor(r, b); });
 }
 
@@ -664,11 +708,11 @@ void mapPseudoKleinianMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
 // option, c times the B multiplier.
 void mapMandelboxMenger(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("mandelbox_rotations_enabled", "the box fold in tilted frames");
-    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, its axes reordered");
     boxFoldScaledZ(r, b);
     inWindow(r, b, "B", "B", [&] {
-        sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+        sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"),
+                   r.vector("mandelbox_offset"));
     });
     if (r.boolean("mandelbox_main_rotation_enabled"))
         inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
@@ -724,15 +768,13 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
 
 // box_fold_bulb_pow2_v3: V2's parts (fold B, sphere fold S, scale C), then Benesi's box fold (TM),
 // the octahedral fold with |x| and the scale about offset_100 (D), the rotation (R), before the
-// power (A). Its first-iteration sphere inversion, Menger fold and varying scale are refused.
+// power (A). Its first-iteration sphere inversion and Menger fold are refused.
 void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("transf_sphere_inversion_enabled_false", "a first-iteration sphere inversion");
-    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
-    r.mustBeDefault("transf_scale_vary_0", "a scale that varies with the iteration");
     r.mustBeDefault("transf_function_enabledF_false", "the Menger fold after an offset abs");
     inWindow(r, b, "B", "B", [&] { tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated); });
-    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b); });
-    inWindow(r, b, "C", "C", [&] { b.add("scale", {N::f("scale", r.number("transf_scale"))}); });
+    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b, r.vector("mandelbox_offset")); });
+    varyingScale(r, b, r.number("transf_scale"), "C", "X", true, "transf_scaleB_1");
     if (r.boolean("transf_function_enabledX_false"))
         b.within(r.integer("transf_start_iterationsTM"), r.integer("transf_stop_iterationsTM_1"), [&] {
             b.add("benesi_box_fold", {N::v("scale", r.vector("transf_scale3D_333")),
@@ -749,8 +791,8 @@ void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
 }
 
 // Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
-// when enabled, the offset, then the sphere fold (window M) and scale (window S), the main
-// rotation (window R); +c.
+// when enabled, the offset, then the sphere fold (window M) and scale (window S; varying with
+// transf_function_enabledF_false, its offset moved in window Y), the main rotation (window R); +c.
 void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c");
     r.mustBeDefault("transf_function_enabledCx_false", "an inverted c");
@@ -760,7 +802,6 @@ void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& appr
     r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and y");
     r.mustBeDefault("transf_function_enabledBz_false", "the curved offset");
     r.mustBeDefault("transf_function_enabled_false", "the cylinder fold");
-    r.mustBeDefault("mandelbox_offset", "a sphere fold centred off the origin");
     const std::string type = r.raw("aSurf3Folds_order_of_folds_1");
     const bool foldXy = r.boolean("transf_function_enabledAx"), foldZ = r.boolean("transf_function_enabledAx_false");
     if (foldXy && type != "0" && type != "type1")
@@ -772,8 +813,9 @@ void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& appr
     if (foldXy) inWindow(r, b, "A", "A", [&] { tgladFold(r, b, limit, foldZ, approximated); });
     additionConstant(r, b);
     if (r.boolean("transf_function_enabledAy")) {
-        inWindow(r, b, "M", "M", [&] { squaredRadiiSphereFold(r, b); });
-        inWindow(r, b, "S", "S", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
+        inWindow(r, b, "M", "M", [&] { squaredRadiiSphereFold(r, b, r.vector("mandelbox_offset")); });
+        varyingScale(r, b, r.number("mandelbox_scale"), "S", "Y", r.boolean("transf_function_enabledF_false"),
+                     "transf_scaleC_1");
     }
     if (r.boolean("mandelbox_main_rotation_enabled"))
         inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
@@ -955,8 +997,9 @@ void mapTransfScale4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("scale", {N::f("scale", r.number("transf_scale"))});
 }
 void mapTransfSphericalFold4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    r.mustBeDefault("transf_offset_0000", "a sphere fold centred off the origin");
-    squaredRadiiSphereFold(r, b);
+    const auto offset = r.vector4("transf_offset_0000");
+    if (offset.w != 0.0) r.unsupported("transf_offset_0000's w " + fmt(offset.w) + ": a fold that moves w off 0");
+    squaredRadiiSphereFold(r, b, vec3(offset));
 }
 // z times transf_scale, plus z times transf_offset on iteration transf_int_A and times
 // transf_offset_0 on transf_int_B: the scale, and on those iterations a scale by the ratio.

@@ -1,0 +1,52 @@
+#pragma once
+#include "core/block.hpp"
+
+namespace fraktal::blocks {
+
+// A scale that varies with the iteration (Mandelbulber2's "scale vary", DarkBeam's: aux.actualScaleA
+// in fractal_formulas.cpp, e.g. BoxFoldBulbPow2V2Iteration). The orbit carries an offset a
+// (P4::varyScale; GLSL: varyScale), 0 when it starts. Each step scales by a + scale, then, when it
+// updates, moves a by vary (|a| - limit), so that the scale drifts from `scale` towards
+// scale + limit (for 0 < vary < 1) over the iterations. With `reset` a becomes -vary (|a| - limit)
+// instead (Mandelbulber2's option M). The offset does not depend on the point: at one iteration
+// every point is scaled alike, so the running scale gains |a + scale| (a Global factor, as the
+// plain scale's).
+struct ScaleVary {
+    static constexpr std::string_view id = "scale_vary";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "Scale, varying";
+    static constexpr std::string_view help =
+        "Scale by a factor that drifts with the iteration: by a + scale, then a moves by vary (|a| - limit); a "
+        "starts at 0 for each orbit and is shared by all such steps.";
+    static constexpr Category category = Category::Transform;
+    static constexpr DerivativeBound derivative = DerivativeBound::Global;
+    static constexpr std::array params{
+        ParamDecl{"scale", ParamType::Float, {2.0, 0.0, 0.0}, -4.0, 4.0, "The scale while the offset a is 0."},
+        ParamDecl{"vary", ParamType::Float, {0.1, 0.0, 0.0}, -2.0, 2.0, "How far a moves each update."},
+        ParamDecl{"limit", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "The |a| at which a stops moving."},
+        toggleParam("update", true, "On: this step moves a after scaling; off: it only reads it."),
+        toggleParam("reset", false, "On: a becomes -vary (|a| - limit) rather than moving by it."),
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float s = varyScale + scale;
+    p.xyz *= s;
+    p.w *= abs(s);
+    if (update > 0.5) {
+        float change = vary * (abs(varyScale) - limit);
+        varyScale = reset > 0.5 ? -change : varyScale - change;
+    }
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double scale = a.f(0), vary = a.f(1), limit = a.f(2), update = a.f(3), reset = a.f(4);
+        double s = p.varyScale + scale;
+        p.xyz *= s;
+        p.w *= abs(s);
+        if (update > 0.5) {
+            double change = vary * (abs(p.varyScale) - limit);
+            p.varyScale = reset > 0.5 ? -change : p.varyScale - change;
+        }
+    }
+};
+
+}  // namespace fraktal::blocks
