@@ -118,6 +118,7 @@ constexpr std::array kBlocks{
     describe<DifsHexGrid>(),
     describe<SinCosMax>(),
     describe<ScaleVary>(),
+    describe<DifsCylinder>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -10,7 +10,8 @@ namespace fraktal::blocks {
 // scale + limit (for 0 < vary < 1) over the iterations. With `reset` a becomes -vary (|a| - limit)
 // instead (Mandelbulber2's option M). The offset does not depend on the point: at one iteration
 // every point is scaled alike, so the running scale gains |a + scale| (a Global factor, as the
-// plain scale's).
+// plain scale's). The scaling is about `center` (Mandelbulber2's dIFS formulas take their
+// "reverse offsets" off before the scale and put them back after).
 struct ScaleVary {
     static constexpr std::string_view id = "scale_vary";
     static constexpr std::string_view menuGroup = "Mandelbulber2";
@@ -26,11 +27,12 @@ struct ScaleVary {
         ParamDecl{"limit", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "The |a| at which a stops moving."},
         toggleParam("update", true, "On: this step moves a after scaling; off: it only reads it."),
         toggleParam("reset", false, "On: a becomes -vary (|a| - limit) rather than moving by it."),
+        ParamDecl{"center", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Fixed point of the scaling."},
     };
 
     static constexpr std::string_view glsl = R"(
     float s = varyScale + scale;
-    p.xyz *= s;
+    p.xyz = (p.xyz - center) * s + center;
     p.w *= abs(s);
     if (update > 0.5) {
         float change = vary * (abs(varyScale) - limit);
@@ -39,8 +41,9 @@ struct ScaleVary {
 )";
     static void apply(P4& p, const vec3&, Args a) {
         const double scale = a.f(0), vary = a.f(1), limit = a.f(2), update = a.f(3), reset = a.f(4);
+        const vec3 center = a.v3(5);
         double s = p.varyScale + scale;
-        p.xyz *= s;
+        p.xyz = (p.xyz - center) * s + center;
         p.w *= abs(s);
         if (update > 0.5) {
             double change = vary * (abs(p.varyScale) - limit);

@@ -23,6 +23,12 @@ float orbitDistance;
 // each orbit starts it at 0.
 float varyScale;
 
+// A dIFS shape step's divisor (difsDivisor in formulas/difs.hpp): |p.w| times the step's scale,
+// the varying one with wVary, plus wOffset.
+float difsDivisor(float w, float wScale, float wOffset, float wVary) {
+    return abs(w) * abs(wScale + (wVary > 0.5 ? varyScale : 0.0)) + wOffset;
+}
+
 #ifdef FRAKTAL_HIT_INTERIOR_WALLS
 // Formula::hitRule InteriorWalls: the hit threshold at the point the marcher evaluates (0 in any
 // other evaluation), and the fractal's estimate as the marcher sees it, before the objects: the

@@ -483,6 +483,74 @@ TEST(FractImport, DifsShapesCloseWithTheLeastShapeDistance) {
     EXPECT_TRUE(mentions(delta.unsupported, "main", "the dIFS DE function with the delta DE method"));
 }
 
+// Mandelbulber2's dIFS cylinder and sphere formulas: the shape measured where each iteration
+// starts, then |x| and |y|, the diagonal fold, the scale about the reverse offsets (x and y less 2)
+// varying with option K, offset_001. A point is inside where some shape distance along its orbit
+// is negative, whatever the divisors: fraktal's membership follows a replica of
+// DIFSCylinderIteration and DIFSSphereIteration (fractal_formulas.cpp) on random points, and the
+// first iteration's estimate is Mandelbulber2's, the shape over DE |s| + 1.
+TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
+    struct Case {
+        const char* body;
+        double (*shape)(const vec3& z, int i);  // the shape's distance at the iteration's start
+        double vary, limit;
+    };
+    const Case cases[] = {
+        {"formula_1 603;\nN 6;\n[fractal_1]\ntransf_radius_1 0,6;\ntransf_offsetA_1 1,5;\ntransf_scale_0 0,1;\n"
+         "transf_function_enabledM_false true;\ntransf_stop_iterations_M 3;\ntransf_function_enabledK_false true;\n"
+         "transf_scale_vary_0 0,3;\ntransf_scaleC_1 0,5;\ntransf_function_enabled_false true;\n"
+         "transf_function_enabledCx_false true;\n",
+         [](const vec3& z, int i) {
+             const double radial = length(glm::dvec2(z.x, z.y)), capped = std::abs(z.z) - 1.5;
+             const double side = radial - 0.6 + 0.1 * (i < 3 ? z.z : std::abs(z.z));
+             return length(glm::dvec2(std::max(side, 0.0), std::max(capped, 0.0))) +
+                    std::min(std::max(side, capped), 0.0);
+         },
+         0.3, 0.5},
+        {"formula_1 604;\nN 6;\n[fractal_1]\ntransf_offsetR_1 0,8;\ntransf_scale_2 2,35;\n",
+         [](const vec3& z, int) { return length(z) - 0.8; }, 0.0, 1.0},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.body);
+        const mb2::FractImport r = importText(std::string("[main_parameters]\n") + c.body);
+        ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+        const Formula& f = r.preset.formula;
+        EXPECT_EQ(f.estimator.block->id, "difs");
+        const bool sphere = std::string(c.body).find("604") != std::string::npos;
+        const double s = sphere ? 2.35 : 2.0;
+        std::mt19937 random(9);
+        std::uniform_real_distribution<double> u(-1.5, 1.5);
+        int inside = 0, differ = 0;
+        const int points = 2000;
+        for (int k = 0; k < points; ++k) {
+            const vec3 point(u(random), u(random), u(random));
+            vec3 z = point;
+            double de = 1.0, a = 0.0, dist = 1000.0;
+            for (int i = 0; i < f.iterations; ++i) {
+                const vec3 start = z;
+                z = vec3(std::abs(z.x), std::abs(z.y), z.z);
+                if (!sphere && z.x > z.y) std::swap(z.x, z.y);
+                const double use = a + s;
+                z = (z - vec3(2.0, 2.0, 0.0)) * use + vec3(2.0, 2.0, 0.0) + vec3(0.0, 0.0, 1.0);
+                de = de * std::abs(use) + 1.0;
+                a -= c.vary * (std::abs(a) - c.limit);
+                dist = std::min(dist, c.shape(start, i) / de);
+                if (length(z) > f.bailout) break;
+            }
+            inside += dist <= 0.0;
+            differ += evaluate(f, point).inside != (dist <= 0.0);
+        }
+        std::printf("%s: %d of %d inside, %d differ\n", f.nodes.front().block->id.data(), inside, points, differ);
+        EXPECT_LE(differ, points / 100);
+        EXPECT_GT(inside, points / 100);
+        EXPECT_LT(inside, points - points / 100);
+        Formula one = f;
+        one.iterations = 1;
+        const vec3 x(0.9, -0.4, 1.8);
+        EXPECT_NEAR(distanceEstimate(one, x), c.shape(x, 0) / (s + 1.0) * one.deFactor, 1e-12);
+    }
+}
+
 // Mandelbulber2's 4D transforms after a 3D formula: with the fourth coordinate 0 throughout they
 // are 3D steps (Tglad's fold per axis with a negative limit, the conditional abs add, the weight
 // on chosen iterations as a scale there); one that would move w off 0 is refused.
@@ -1391,6 +1459,19 @@ TEST(FractImport, AmazingSurfMod2FoldsPerAxisInItsWindows) {
     const mb2::FractImport other =
         importText("[main_parameters]\nformula_1 132;\n[fractal_1]\naSurf3Folds_order_of_folds_1 type2;\n");
     EXPECT_TRUE(mentions(other.unsupported, "slot 1 (amazing_surf_mod2)", "a fold other than Tglad's"));
+    // Its extra multiple of c comes first, per axis, in window H; turned by transf_rotation it is
+    // refused.
+    const std::string extraC =
+        "[main_parameters]\nformula_1 132;\n[fractal_1]\ntransf_addCpixel_enabled_false true;\n"
+        "transf_constant_multiplier_111 0 0 -0,3;\ntransf_stop_iterations_H 4;\n";
+    const mb2::FractImport added = importText(extraC);
+    ASSERT_TRUE(added.faithful()) << added.unsupported.front().text();
+    const Node& first = added.preset.formula.nodes[0];
+    EXPECT_EQ(first.block->id, "add_c_axes");
+    EXPECT_EQ(first.values[0], vec3(0.0, 0.0, -0.3));
+    EXPECT_EQ(first.stop, 4);
+    const mb2::FractImport turned = importText(extraC + "transf_rotation_enabled true;\n");
+    EXPECT_TRUE(mentions(turned.unsupported, "slot 1 (amazing_surf_mod2)", "c turned"));
 }
 
 // What changes the image a little is imported and listed, not refused.

@@ -152,7 +152,9 @@ class NodeBuilder {
         std::string_view name;
         vec3 v;
     };
-    void add(std::string_view blockId, std::initializer_list<Value> values) {
+    using Values = std::vector<Value>;
+    void add(std::string_view blockId, std::initializer_list<Value> values) { add(blockId, Values(values)); }
+    void add(std::string_view blockId, const Values& values) {
         const BlockDesc* block = findBlock(blockId);
         if (!block) throw std::logic_error("no block " + std::string(blockId));
         Node n = Node::make(*block);
@@ -790,11 +792,14 @@ void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
     inWindow(r, b, "A", "A", [&] { whitePower2TimesZFactor(r, b); });
 }
 
-// Amazing Surf mod 2 with its first fold (type 1: Tglad's fold of x and y) in window A, z's fold
+// Amazing Surf mod 2 with its extra multiple of c (window H) first, its first fold (type 1: Tglad's
+// fold of x and y) in window A, z's fold
 // when enabled, the offset, then the sphere fold (window M) and scale (window S; varying with
 // transf_function_enabledF_false, its offset moved in window Y), the main rotation (window R); +c.
 void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
-    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c");
+    if (r.boolean("transf_addCpixel_enabled_false"))
+        r.mustBeDefault("transf_rotation_enabled",
+                        "c turned (transf_rotation) before the extra multiple of it is added");
     r.mustBeDefault("transf_function_enabledCx_false", "an inverted c");
     r.mustBeDefault("transf_function_enabledAy_false", "a second xy fold");
     r.mustBeDefault("transf_function_enabledAz_false", "a third xy fold");
@@ -810,6 +815,7 @@ void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& appr
     const int start = r.integer("transf_start_iterations_A"), stop = r.integer("transf_stop_iterations_A");
     if (foldZ && (!foldXy || start > 0 || stop < 250))
         r.unsupported("transf_function_enabledAx_false: z's fold apart from the xy fold's window");
+    extraMultipleOfC(r, b, "H");
     if (foldXy) inWindow(r, b, "A", "A", [&] { tgladFold(r, b, limit, foldZ, approximated); });
     additionConstant(r, b);
     if (r.boolean("transf_function_enabledAy")) {
@@ -1090,6 +1096,146 @@ void mapTransfDifsHextgrid2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
     difsGrid(r, b, "difs_hex_grid", false);
 }
 
+// ---- Mandelbulber2's dIFS formulas (difs_cylinder, difs_sphere: DIFSCylinderIteration and
+// DIFSSphereIteration in fractal_formulas.cpp). Each iteration measures its shape at the point it
+// starts from, over the derivative after its scale (DE |s| + 1; fraktal's running derivative
+// carries the product of the scales without the added ones), then folds |x|, |y| (|z|) and, with
+// transf_function_enabled_false, shifts by box offsets and folds across diagonals and offset
+// planes; then scales about the "reverse offsets" (x by offsetE, y by offsetF) in window S, the
+// scale varying with option K; adds offset_001 and turns (option R). Every part has its window. ----
+
+// The stretches of [from, to) over which each window of `windows` (suffixes of
+// transf_start/stop_iterations_) either covers all or none: steps(start, stop, covered), covered[k]
+// for windows[k].
+template <class Steps>
+void acrossWindows(Reader& r, int from, int to, const std::vector<std::string>& windows, Steps&& steps) {
+    std::vector<int> cuts{from, to};
+    for (const std::string& w : windows)
+        for (const char* edge : {"transf_start_iterations_", "transf_stop_iterations_"})
+            if (const int at = r.integer(edge + w); at > from && at < to) cuts.push_back(at);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    auto coveredAt = [&](int i) {
+        std::vector<bool> covered;
+        for (const std::string& w : windows)
+            covered.push_back(i >= r.integer("transf_start_iterations_" + w) &&
+                              i < r.integer("transf_stop_iterations_" + w));
+        return covered;
+    };
+    for (size_t k = 0; k + 1 < cuts.size();) {
+        const std::vector<bool> covered = coveredAt(cuts[k]);
+        size_t end = k + 1;
+        while (end + 1 < cuts.size() && coveredAt(cuts[end]) == covered) ++end;
+        steps(cuts[k], cuts[end], covered);
+        k = end;
+    }
+}
+
+// Whether the dIFS formula's scale varies (option K with a vary other than 0), and its scale.
+bool difsScaleVaries(Reader& r) {
+    return r.boolean("transf_function_enabledK_false") && r.number("transf_scale_vary_0") != 0.0;
+}
+
+// A shape step (`block`, its own parameters `shape`) in the formula's window, split by window S
+// (whether its scale, and so DE |s| + 1, counts) and by the windows of its options (`options`:
+// each a toggle of the block, its flag and window).
+struct DifsOption {
+    const char* param;
+    const char* flag;
+    const char* window;
+};
+void difsShape(Reader& r, NodeBuilder& b, std::string_view block, const NodeBuilder::Values& shape,
+               const std::vector<DifsOption>& options) {
+    const double scale = r.number("transf_scale_2");
+    if (scale < 0.01) return r.unsupported("transf_scale_2 " + fmt(scale) + ": a dIFS scale below 0.01");
+    std::vector<std::string> windows{"S"};
+    for (const DifsOption& o : options) windows.push_back(o.window);
+    const bool varies = difsScaleVaries(r);
+    acrossWindows(
+        r, r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), windows,
+        [&](int start, int stop, const std::vector<bool>& covered) {
+            b.within(start, stop, [&] {
+                NodeBuilder::Values values(shape.begin(), shape.end());
+                values.push_back(N::f("w_scale", covered[0] ? scale : 1.0));
+                values.push_back(N::f("w_offset", covered[0] ? 1.0 : 0.0));
+                values.push_back(N::f("w_vary", covered[0] && varies ? 1.0 : 0.0));
+                for (size_t k = 0; k < options.size(); ++k)
+                    values.push_back(N::f(options[k].param, r.boolean(options[k].flag) && covered[k + 1] ? 1.0 : 0.0));
+                b.add(block, values);
+            });
+        });
+}
+
+// The folds before the scale. The sphere's box offsets are transf_addition_constantA_111 under
+// options A and B, its second diagonal fold swaps x and y again after the offset folds; the
+// cylinder's are transf_addition_constant_111 under Bx and By, its second diagonal fold swaps x
+// and z before them.
+void difsFolds(Reader& r, NodeBuilder& b, bool sphere) {
+    auto fold = [&](const char* flag, const std::string& window, const vec3& normal, double offset) {
+        if (!r.boolean(flag)) return;
+        inWindow(r, b, window, window, [&] { b.add("plane_fold", {N::v("normal", normal), N::f("offset", offset)}); });
+    };
+    fold("transf_function_enabledAx", "X", vec3(1.0, 0.0, 0.0), 0.0);
+    fold("transf_function_enabledAy", "Y", vec3(0.0, 1.0, 0.0), 0.0);
+    fold("transf_function_enabledAz_false", "Z", vec3(0.0, 0.0, 1.0), 0.0);
+    if (!r.boolean("transf_function_enabled_false")) return;
+    const vec3 box = r.vector(sphere ? "transf_addition_constantA_111" : "transf_addition_constant_111");
+    auto shift = [&](const char* flag, const std::string& window, const vec3& by) {
+        if (r.boolean(flag)) inWindow(r, b, window, window, [&] { b.add("translate", {N::v("offset", -by)}); });
+    };
+    shift(sphere ? "transf_function_enabledA_false" : "transf_function_enabledBx_false", "A", vec3(box.x, box.y, 0.0));
+    shift(sphere ? "transf_function_enabledB_false" : "transf_function_enabledBy_false", "B", box);
+    r.mustBeDefault("transf_function_enabledP_false", "the polygonal fold");
+    fold("transf_function_enabledCx_false", "Cx", vec3(-1.0, 1.0, 0.0), 0.0);
+    if (!sphere) fold("transf_function_enabledCy_false", "Cy", vec3(-1.0, 0.0, 1.0), 0.0);
+    fold("transf_function_enabledC_false", "C", vec3(1.0, 0.0, 0.0), r.number("transf_offsetC_0"));
+    fold("transf_function_enabledD_false", "D", vec3(0.0, 1.0, 0.0), r.number("transf_offsetD_0"));
+    if (sphere) fold("transf_function_enabledCy_false", "Cy", vec3(-1.0, 1.0, 0.0), 0.0);
+}
+
+// The scale about the reverse offsets (window S; x's offset in window E, y's in F), varying in
+// window K with option K; then offset_001 and the turn.
+void difsScaleAndTurn(Reader& r, NodeBuilder& b) {
+    const bool varies = difsScaleVaries(r);
+    const double e = r.number("transf_offsetE_2"), f = r.number("transf_offsetF_2");
+    acrossWindows(r, r.integer("transf_start_iterations_S"), r.integer("transf_stop_iterations_S"), {"E", "F", "K"},
+                  [&](int start, int stop, const std::vector<bool>& covered) {
+                      b.within(start, stop, [&] {
+                          b.add("scale_vary", {N::f("scale", r.number("transf_scale_2")),
+                                               N::f("vary", varies ? r.number("transf_scale_vary_0") : 0.0),
+                                               N::f("limit", r.number("transf_scaleC_1")),
+                                               N::f("update", varies && covered[2] ? 1.0 : 0.0),
+                                               N::v("center", vec3(covered[0] ? e : 0.0, covered[1] ? f : 0.0, 0.0))});
+                      });
+                  });
+    const vec3 offset = r.vector("transf_offset_001");
+    if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+}
+
+void mapDifsCylinder(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledI_false", "the torus beside the cylinder");
+    difsShape(r, b, "difs_cylinder",
+              {N::f("radius", r.number("transf_radius_1")), N::f("height", r.number("transf_offsetA_1")),
+               N::f("cone", r.number("transf_scale_0")), N::f("round", r.number("transf_offsetR_0")),
+               N::f("swap_xz", r.boolean("transf_function_enabledSw_false") ? 1.0 : 0.0)},
+              {{"signed_z", "transf_function_enabledM_false", "M"},
+               {"squared_z", "transf_function_enabledT_false", "T"},
+               {"flat_tops", "transf_function_enabledN_false", "N"},
+               {"rings", "transf_function_enabledO_false", "O"}});
+    difsFolds(r, b, false);
+    difsScaleAndTurn(r, b);
+}
+
+void mapDifsSphere(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabled4d_false", "the sphere measured in 4D");
+    r.mustBeDefault("transf_function_enabledT_false", "the torus beside the sphere");
+    const double radius = r.number("transf_offsetR_1");
+    difsShape(r, b, "difs_ellipsoid", {N::v("radii", vec3(radius))}, {});
+    difsFolds(r, b, true);
+    difsScaleAndTurn(r, b);
+}
+
 // msltoe's sym2 mod and eiffie's variant share their parameters.
 void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
@@ -1298,6 +1444,8 @@ constexpr Mapping kMappings[] = {
     {1602, mapTransfDifsEllipsoid},
     {1603, mapTransfDifsHextgrid2},
     {1613, mapTransfDifsGrid},
+    {603, mapDifsCylinder},
+    {604, mapDifsSphere},
     {1084, mapTransfSinAndCosMax},
 };
 
