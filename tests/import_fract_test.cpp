@@ -1722,6 +1722,11 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {km + "hybrid20.fract", ""},
         // Graeme McLaren's sine and cosine maximum (sin_cos_max) before the pseudo-Kleinian.
         {gm + "sinCos_pseudoKl.fract", ""},
+        // A sphere fold off the origin, a scale varying with the iteration and an extra multiple of
+        // c (amazing_surf_mod2 twice).
+        {gm + "asurf_fakelights_backgroundl.fract", ""},
+        // Mandelbulber2's dIFS cylinder formula: the shape measured along the orbit.
+        {"formula/img/difs_cylinder.fract", ""},
         {"examples/quaternion4D_001.fract", "slot 1 (quaternion4d): the formula quaternion4d"},
         {"examples/boolean001.fract", "boolean_operators"},
     };
