@@ -549,6 +549,16 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
         const vec3 x(0.9, -0.4, 1.8);
         EXPECT_NEAR(distanceEstimate(one, x), c.shape(x, 0) / (s + 1.0) * one.deFactor, 1e-12);
     }
+    // Option I measures a torus beside the cylinder, in its own window.
+    const mb2::FractImport torus = importText(
+        "[main_parameters]\nformula_1 603;\n[fractal_1]\ntransf_function_enabledI_false true;\n"
+        "transf_start_iterations_I 2;\ntransf_offsetT_1 0,7;\n");
+    ASSERT_TRUE(torus.faithful()) << torus.unsupported.front().text();
+    const Node& ring = torus.preset.formula.nodes.front();
+    EXPECT_EQ(ring.block->id, "difs_torus");
+    EXPECT_EQ(ring.start, 2);
+    EXPECT_EQ(param(ring, "ring_radius"), 0.7);
+    EXPECT_EQ(param(ring, "w_scale"), 2.0);
 }
 
 // Mandelbulber2's 4D transforms after a 3D formula: with the fourth coordinate 0 throughout they

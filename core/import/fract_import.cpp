@@ -1136,23 +1136,23 @@ bool difsScaleVaries(Reader& r) {
     return r.boolean("transf_function_enabledK_false") && r.number("transf_scale_vary_0") != 0.0;
 }
 
-// A shape step (`block`, its own parameters `shape`) in the formula's window, split by window S
-// (whether its scale, and so DE |s| + 1, counts) and by the windows of its options (`options`:
-// each a toggle of the block, its flag and window).
+// A shape step (`block`, its own parameters `shape`) in the window of `suffix` (transf_start/
+// stop_iterations + suffix), split by window S (whether its scale, and so DE |s| + 1, counts) and
+// by the windows of its options (`options`: each a toggle of the block, its flag and window).
 struct DifsOption {
     const char* param;
     const char* flag;
     const char* window;
 };
 void difsShape(Reader& r, NodeBuilder& b, std::string_view block, const NodeBuilder::Values& shape,
-               const std::vector<DifsOption>& options) {
+               const std::vector<DifsOption>& options, const std::string& suffix = "") {
     const double scale = r.number("transf_scale_2");
     if (scale < 0.01) return r.unsupported("transf_scale_2 " + fmt(scale) + ": a dIFS scale below 0.01");
     std::vector<std::string> windows{"S"};
     for (const DifsOption& o : options) windows.push_back(o.window);
     const bool varies = difsScaleVaries(r);
     acrossWindows(
-        r, r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), windows,
+        r, r.integer("transf_start_iterations" + suffix), r.integer("transf_stop_iterations" + suffix), windows,
         [&](int start, int stop, const std::vector<bool>& covered) {
             b.within(start, stop, [&] {
                 NodeBuilder::Values values(shape.begin(), shape.end());
@@ -1213,8 +1213,15 @@ void difsScaleAndTurn(Reader& r, NodeBuilder& b) {
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
 }
 
+// The cylinder and, with option I, the torus beside it (in window I; its axes exchanged with
+// option J, refused).
 void mapDifsCylinder(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    r.mustBeDefault("transf_function_enabledI_false", "the torus beside the cylinder");
+    if (r.boolean("transf_function_enabledI_false")) {
+        r.mustBeDefault("transf_function_enabledJ_false", "the torus about x");
+        difsShape(r, b, "difs_torus",
+                  {N::f("ring_radius", r.number("transf_offsetT_1")), N::f("thickness", r.number("transf_offset_05"))},
+                  {}, "_I");
+    }
     difsShape(r, b, "difs_cylinder",
               {N::f("radius", r.number("transf_radius_1")), N::f("height", r.number("transf_offsetA_1")),
                N::f("cone", r.number("transf_scale_0")), N::f("round", r.number("transf_offsetR_0")),
