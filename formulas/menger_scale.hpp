@@ -16,7 +16,7 @@ struct MengerScale {
     static constexpr std::string_view jump = "its map jumps where it shifts z back above the middle layer";
     static constexpr std::array params{
         ParamDecl{"scale", ParamType::Float, {3.0, 0.0, 0.0}, -4.0, 4.0, "Scale s per iteration."},
-        ParamDecl{"offset", ParamType::Vec3, {1.0, 1.0, 1.0}, -10.0, 10.0, "Corner the scaling keeps fixed."},
+        ParamDecl{"offset", ParamType::Vec3, {1.0, 1.0, 1.0}, -20.0, 20.0, "Corner the scaling keeps fixed."},
     };
 
     static constexpr std::string_view glsl = R"(

@@ -7,10 +7,10 @@ namespace fraktal::blocks {
 // ring of radius R about z is cut into `sections` sectors; outside a thin tube about the ring
 // (t = (R - rho)^2 + z^2 - thickness^2 > 0.03) the point's sector is turned onto +x, the sector's
 // ring point moved to the origin, and the result scaled by `factor` with y and z swapped (each
-// sector's piece of the ring holds the whole again); inside the tube it is divided by t. Mandelbulber2 estimates its distance by
-// differences (escape_linear_gradient); the running derivative here bounds the step's Jacobian,
-// |factor| outside the tube and, for v / t inside, 1 / |t| + |v| |grad t| / t^2 with
-// |grad t| = 2 sqrt(t + thickness^2). The map jumps between sectors and at the tube's edge.
+// sector's piece of the ring holds the whole again); inside the tube it is divided by t. Mandelbulber2 estimates its
+// distance by differences (escape_linear_gradient); the running derivative here bounds the step's Jacobian, |factor|
+// outside the tube and, for v / t inside, 1 / |t| + |v| |grad t| / t^2 with |grad t| = 2 sqrt(t + thickness^2). The map
+// jumps between sectors and at the tube's edge.
 struct MsltoeDonut {
     static constexpr std::string_view id = "msltoe_donut";
     static constexpr std::string_view menuGroup = "Mandelbulber2";

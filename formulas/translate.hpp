@@ -11,7 +11,7 @@ struct Translate {
     static constexpr Category category = Category::Transform;
     static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
-        ParamDecl{"offset", ParamType::Vec3, {0.0, 0.0, 0.0}, -10.0, 10.0, "Offset added to p."},
+        ParamDecl{"offset", ParamType::Vec3, {0.0, 0.0, 0.0}, -20.0, 20.0, "Offset added to p."},
     };
 
     static constexpr std::string_view glsl = R"(
