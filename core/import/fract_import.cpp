@@ -240,6 +240,34 @@ void inWindow(Reader& r, NodeBuilder& b, const std::string& start, const std::st
     b.within(r.integer("transf_start_iterations_" + start), r.integer("transf_stop_iterations_" + stop), steps);
 }
 
+// The stretches of [from, to) over which each window of `windows` (suffixes of
+// transf_start/stop_iterations_) either covers all or none: steps(start, stop, covered), covered[k]
+// for windows[k]. Nothing where the range is empty.
+template <class Steps>
+void acrossWindows(Reader& r, int from, int to, const std::vector<std::string>& windows, Steps&& steps) {
+    if (from >= to) return;
+    std::vector<int> cuts{from, to};
+    for (const std::string& w : windows)
+        for (const char* edge : {"transf_start_iterations_", "transf_stop_iterations_"})
+            if (const int at = r.integer(edge + w); at > from && at < to) cuts.push_back(at);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    auto coveredAt = [&](int i) {
+        std::vector<bool> covered;
+        for (const std::string& w : windows)
+            covered.push_back(i >= r.integer("transf_start_iterations_" + w) &&
+                              i < r.integer("transf_stop_iterations_" + w));
+        return covered;
+    };
+    for (size_t k = 0; k + 1 < cuts.size();) {
+        const std::vector<bool> covered = coveredAt(cuts[k]);
+        size_t end = k + 1;
+        while (end + 1 < cuts.size() && coveredAt(cuts[end]) == covered) ++end;
+        steps(cuts[k], cuts[end], covered);
+        k = end;
+    }
+}
+
 // A scale that reads the orbit's varying offset a (Mandelbulber2's aux.actualScaleA; formulas/
 // scale_vary.hpp): a + scale in window `scaleWindow`. Where the formula varies it (transf_scale_vary_0
 // not 0 and `varies`), a moves by vary (|a| - limit) after the scale in window `updateWindow` (reset
@@ -247,23 +275,17 @@ void inWindow(Reader& r, NodeBuilder& b, const std::string& start, const std::st
 // a file whose formulas never vary it draws as with a plain scale.
 void varyingScale(Reader& r, NodeBuilder& b, double scale, const std::string& scaleWindow,
                   const std::string& updateWindow, bool varies, const std::string& limitKey) {
-    const int from = r.integer("transf_start_iterations_" + scaleWindow);
-    const int to = r.integer("transf_stop_iterations_" + scaleWindow);
     const double vary = varies ? r.number("transf_scale_vary_0") : 0.0;
-    auto steps = [&](int start, int stop, bool update) {
-        if (start >= stop) return;
-        b.within(start, stop, [&] {
-            b.add("scale_vary", {N::f("scale", scale), N::f("vary", vary), N::f("limit", r.number(limitKey)),
-                                 N::f("update", update ? 1.0 : 0.0),
-                                 N::f("reset", r.boolean("transf_function_enabledM_false") ? 1.0 : 0.0)});
+    const std::vector<std::string> windows = vary == 0.0 ? std::vector<std::string>{} : std::vector{updateWindow};
+    acrossWindows(
+        r, r.integer("transf_start_iterations_" + scaleWindow), r.integer("transf_stop_iterations_" + scaleWindow),
+        windows, [&](int start, int stop, const std::vector<bool>& covered) {
+            b.within(start, stop, [&] {
+                b.add("scale_vary", {N::f("scale", scale), N::f("vary", vary), N::f("limit", r.number(limitKey)),
+                                     N::f("update", !covered.empty() && covered[0] ? 1.0 : 0.0),
+                                     N::f("reset", r.boolean("transf_function_enabledM_false") ? 1.0 : 0.0)});
+            });
         });
-    };
-    const int updateFrom = std::max(from, r.integer("transf_start_iterations_" + updateWindow));
-    const int updateTo = std::min(to, r.integer("transf_stop_iterations_" + updateWindow));
-    if (vary == 0.0 || updateFrom >= updateTo) return steps(from, to, false);
-    steps(from, updateFrom, false);
-    steps(updateFrom, updateTo, true);
-    steps(updateTo, to, false);
 }
 
 // The pseudo-Kleinian formulas' prism fold in window P .. P1.
@@ -1104,34 +1126,7 @@ void mapTransfDifsHextgrid2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
 // planes; then scales about the "reverse offsets" (x by offsetE, y by offsetF) in window S, the
 // scale varying with option K; adds offset_001 and turns (option R). Every part has its window. ----
 
-// The stretches of [from, to) over which each window of `windows` (suffixes of
-// transf_start/stop_iterations_) either covers all or none: steps(start, stop, covered), covered[k]
-// for windows[k].
-template <class Steps>
-void acrossWindows(Reader& r, int from, int to, const std::vector<std::string>& windows, Steps&& steps) {
-    std::vector<int> cuts{from, to};
-    for (const std::string& w : windows)
-        for (const char* edge : {"transf_start_iterations_", "transf_stop_iterations_"})
-            if (const int at = r.integer(edge + w); at > from && at < to) cuts.push_back(at);
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-    auto coveredAt = [&](int i) {
-        std::vector<bool> covered;
-        for (const std::string& w : windows)
-            covered.push_back(i >= r.integer("transf_start_iterations_" + w) &&
-                              i < r.integer("transf_stop_iterations_" + w));
-        return covered;
-    };
-    for (size_t k = 0; k + 1 < cuts.size();) {
-        const std::vector<bool> covered = coveredAt(cuts[k]);
-        size_t end = k + 1;
-        while (end + 1 < cuts.size() && coveredAt(cuts[end]) == covered) ++end;
-        steps(cuts[k], cuts[end], covered);
-        k = end;
-    }
-}
-
-// Whether the dIFS formula's scale varies (option K with a vary other than 0), and its scale.
+// Whether the dIFS formula's scale varies (option K with a vary other than 0).
 bool difsScaleVaries(Reader& r) {
     return r.boolean("transf_function_enabledK_false") && r.number("transf_scale_vary_0") != 0.0;
 }
