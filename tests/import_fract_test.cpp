@@ -971,6 +971,19 @@ TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {
              z = vec3(3.0 * z.x - 2.0, 3.0 * z.y - 2.0, 3.0 * z.z);
              return vec3(glm::sign(z.x) * 0.2 + z.x, z.y, z.z);
          }},
+        // Option F's offset abs in place of the rounded one.
+        {"formula_1 114;\nN 5;\n[fractal_1]\ntransf_function_enabled false;\ntransf_function_enabledF_false true;\n"
+         "transf_offset 0,3;\n",
+         {"menger_smooth"},
+         [](const vec3& v, const vec3&) {
+             const double k = 0.005;
+             vec3 z = glm::abs(v) + 0.3;
+             smoothSort(z.x, z.y, 0.5, k);
+             smoothSort(z.x, z.z, 0.5, k);
+             smoothSort(z.y, z.z, 0.5, k);
+             z.z = -std::sqrt((z.z - 1.0 / 3.0) * (z.z - 1.0 / 3.0) + k) + 1.0 / 3.0;
+             return vec3(3.0 * z.x - 2.0, 3.0 * z.y - 2.0, 3.0 * z.z);
+         }},
     };
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }

@@ -1258,19 +1258,24 @@ void mapMengerSmooth(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 
 // Its mod 1: the abs rounded by its own amount, each sort by its own, weighted; the corner given
 // as (o.x (s - 1), o.y (s - 1)) and z's fold centre as o.z / 3; then the rotation (window R) and
-// the box offset sign(v) a + v (window A: abs_add_conditional with multiplier 2).
+// the box offset sign(v) a + v (window A: abs_add_conditional with multiplier 2). Option F adds
+// an offset after an abs: after the rounded abs, whose values are positive, the abs is the same;
+// without the rounded abs it is the plain one.
 void mapMengerSmoothMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    r.mustBeDefault("transf_function_enabledF_false", "an abs with an added offset");
     r.mustBeDefault("transf_function_enabledz_false", "iteration weights");
-    if (!r.boolean("transf_function_enabled"))
-        r.unsupported("transf_function_enabled false: a Menger step without its abs");
+    const bool roundedAbs = r.boolean("transf_function_enabled"),
+               offsetAbs = r.boolean("transf_function_enabledF_false");
+    if (!roundedAbs && !offsetAbs)
+        r.unsupported(
+            "transf_function_enabled and transf_function_enabledF_false false: a Menger step without its abs");
     const double s = r.number("transf_scale_3"), k = r.number("transf_offset_0005");
     if (std::abs(s - 1.0) < 1e-9) return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
     const vec3 corner = r.vector("transf_constant_multiplier_221");
     b.add("menger_smooth",
           {N::f("scale", s),
            N::v("offset", vec3(corner.x / (s - 1.0), corner.y / (s - 1.0), corner.z * s / (3.0 * (s - 1.0)))),
-           N::f("abs_smoothness", r.number("transf_offset_0")),
+           N::f("abs_smoothness", roundedAbs ? r.number("transf_offset_0") : 0.0),
+           N::f("abs_offset", offsetAbs ? r.number("transf_offset") : 0.0),
            N::v("sort_smoothness", k * r.vector("transf_constant_multiplier_111")), N::f("fold_smoothness", k),
            N::f("sort_weight", r.number("transf_scale_05"))});
     windowedRotation(r, b, "transf_rotation_enabled", "_R");
