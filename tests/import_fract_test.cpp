@@ -1379,6 +1379,35 @@ TEST(FractImport, BoxFoldBulbPow2V2RunsEachPartInItsWindow) {
                                         "scale", "mandelbulb_sine", "axis_scale", "add_c"}));
     EXPECT_EQ(v3.preset.formula.nodes[5].stop, 5);
     EXPECT_EQ(v3.preset.formula.nodes[5].values[0].x, 1.5);
+    // Its option F, a Menger step on an offset abs that shifts z only above 1, follows
+    // Mandelbulber2's orbits (the power left out); the step that always shifts z is refused.
+    const OrbitCase menger{
+        "formula_1 126;\nN 6;\n[fractal_1]\ntransf_scale 2;\ntransf_function_enabledF_false true;\n"
+        "transf_addition_constantA_000 0,1 0 -0,2;\ntransf_constant_multiplier_111 1 0,8 1;\n"
+        "transf_stop_iterations_A 0;\n",
+        {"box_fold", "sphere_fold", "scale_vary", "translate", "menger_rotate", "add_c"},
+        nullptr,
+        3.0,
+        [](const vec3& v, const vec3& c, int) {
+            vec3 z = glm::abs(v + 1.0) - glm::abs(v - 1.0) - v;
+            const double rr = dot(z, z);
+            z *= (rr < 0.25 ? 4.0 : rr < 1.0 ? 1.0 / rr : 1.0) * 2.0;
+            z = glm::abs(z + vec3(0.1, 0.0, -0.2));
+            if (z.x < z.y) std::swap(z.x, z.y);
+            if (z.x < z.z) std::swap(z.x, z.z);
+            if (z.y < z.z) std::swap(z.y, z.z);
+            z *= 3.0;
+            z.x -= 2.0;
+            z.y -= 1.6;
+            if (z.z > 1.0) z.z -= 2.0;
+            return z + c;
+        }};
+    expectOrbitsFollowMandelbulber2(menger);
+    const mb2::FractImport always = importText(
+        "[main_parameters]\nformula_1 126;\n[fractal_1]\ntransf_function_enabledF_false true;\n"
+        "transf_function_enabled false;\n");
+    ASSERT_FALSE(always.faithful());
+    EXPECT_NE(always.unsupported.front().text().find("shifts z at every point"), std::string::npos);
 }
 
 // The scale that varies with the iteration (Mandelbulber2's aux.actualScaleA): the offset a starts

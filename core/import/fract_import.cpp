@@ -335,13 +335,14 @@ void pseudoKleinianFolds(Reader& r, NodeBuilder& b) {
 }
 
 // A Menger step of Mandelbulber2's formulas (abs, sort, scale transf_scale_3, x and y less twice the
-// corner transf_constant_multiplierA_111, z only above 1): menger_rotate about corner 2 c / (s - 1).
-// False, with the reason named, where fraktal's step cannot hold it.
-bool mengerStepWithCorner(Reader& r, double& scale, vec3& offset) {
+// corner, transf_constant_multiplierA_111 unless named, z only above 1): menger_rotate about corner
+// 2 c / (s - 1). False, with the reason named, where fraktal's step cannot hold it.
+bool mengerStepWithCorner(Reader& r, double& scale, vec3& offset,
+                          const std::string& cornerKey = "transf_constant_multiplierA_111") {
     scale = r.number("transf_scale_3");
-    const vec3 corner = r.vector("transf_constant_multiplierA_111");
+    const vec3 corner = r.vector(cornerKey);
     if (std::abs(corner.z - 1.0) > 1e-9)
-        r.unsupported("transf_constant_multiplierA_111.z " + fmt(corner.z) + ": the z shift's threshold stays at 1");
+        r.unsupported(cornerKey + ".z " + fmt(corner.z) + ": the z shift's threshold stays at 1");
     if (std::abs(scale - 1.0) < 1e-9) {
         r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
         return false;
@@ -791,11 +792,14 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
 }
 
 // box_fold_bulb_pow2_v3: V2's parts (fold B, sphere fold S, scale C), then Benesi's box fold (TM),
-// the octahedral fold with |x| and the scale about offset_100 (D), the rotation (R), before the
-// power (A). Its first-iteration sphere inversion and Menger fold are refused.
+// the octahedral fold with |x| and the scale about offset_100 (D), the rotation (R), the Menger
+// step of an offset abs (F in window M: |v + a|, then the step about transf_constant_multiplier_111,
+// z shifted only above 1 unless transf_function_enabled is false), before the power (A). Its
+// first-iteration sphere inversion, and the Menger step that always shifts z, are refused.
 void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("transf_sphere_inversion_enabled_false", "a first-iteration sphere inversion");
-    r.mustBeDefault("transf_function_enabledF_false", "the Menger fold after an offset abs");
+    if (r.boolean("transf_function_enabledF_false"))
+        r.mustBeDefault("transf_function_enabled", "a Menger step that shifts z at every point (not only above 1)");
     inWindow(r, b, "B", "B", [&] { tgladFold(r, b, r.vector("transf_addition_constant_111"), true, approximated); });
     inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b, r.vector("mandelbox_offset")); });
     varyingScale(r, b, r.number("transf_scale"), "C", "X", true, "transf_scaleB_1");
@@ -811,6 +815,15 @@ void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
             b.add("scale", {N::f("scale", r.number("transf_scaleA_2")), N::v("center", r.vector("transf_offset_100"))});
         });
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    if (r.boolean("transf_function_enabledF_false"))
+        inWindow(r, b, "M", "M", [&] {
+            double s = 0.0;
+            vec3 offset(0.0);
+            if (!mengerStepWithCorner(r, s, offset, "transf_constant_multiplier_111")) return;
+            const vec3 add = r.vector("transf_addition_constantA_000");
+            if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+            b.add("menger_rotate", {N::f("scale", s), N::v("offset", offset)});
+        });
     inWindow(r, b, "A", "A", [&] { whitePower2TimesZFactor(r, b); });
 }
 
