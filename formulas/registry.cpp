@@ -4,6 +4,7 @@
 #include "formulas/abs_fold.hpp"
 #include "formulas/add_c.hpp"
 #include "formulas/add_c_axes.hpp"
+#include "formulas/add_c_symmetric.hpp"
 #include "formulas/aexion.hpp"
 #include "formulas/amazing_surf.hpp"
 #include "formulas/axis_scale.hpp"
@@ -119,6 +120,7 @@ constexpr std::array kBlocks{
     describe<SinCosMax>(),
     describe<ScaleVary>(),
     describe<DifsCylinder>(),
+    describe<AddCSymmetric>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -1028,6 +1028,23 @@ TEST(FractImport, MandelboxMengerAndAboxModKaliV2FollowMandelbulber2sOrbits) {
              z = vec3(z.x, std::cos(a) * z.y - std::sin(a) * z.z, std::sin(a) * z.y + std::cos(a) * z.z);
              return z + vec3(0.1, 0.0, 0.0) + c;
          }},
+        // The multiple of c signed by the point from iteration 2 (window C), c's abs on x and z.
+        {"formula_1 135;\nN 6;\n[fractal_1]\ntransf_scale_015 2;\ntransf_addCpixel_enabled_false true;\n"
+         "transf_constant_multiplier_000 0,2 -0,3 0,1;\ntransf_function_enabledy false;\n"
+         "transf_start_iterations_C 2;\n",
+         {"abs_fold", "scale", "translate", "sphere_fold", "scale", "add_c_symmetric", "add_c"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3& c, int i) {
+             vec3 z = vec3(0.5) - glm::abs(v);
+             const double rr = dot(z, z);
+             z *= 2.0 * (rr < 0.25 ? 4.0 : rr < 1.0 ? 1.0 / rr : 1.0);
+             if (i >= 2) {
+                 const vec3 k = vec3(std::abs(c.x), c.y, std::abs(c.z)) * vec3(0.2, -0.3, 0.1);
+                 z += vec3(glm::sign(z.x) * k.x, glm::sign(z.y) * k.y, glm::sign(z.z) * k.z);
+             }
+             return z + c;
+         }},
     };
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }

@@ -651,6 +651,21 @@ void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window) {
     });
 }
 
+// The multiple of c signed by the point (transf_addCpixel_enabled_false: Mandelbulber2's "add
+// Cpixel symmetrical"): v + sign(v) k, k = c times `weights` per axis with c's abs taken on the
+// axes transf_function_enabledx/y/z name; in `window` when one is given.
+void symmetricMultipleOfC(Reader& r, NodeBuilder& b, const std::string& weights, const std::string& window = "") {
+    if (!r.boolean("transf_addCpixel_enabled_false")) return;
+    const vec3 absAxes(r.boolean("transf_function_enabledx") ? 1.0 : 0.0,
+                       r.boolean("transf_function_enabledy") ? 1.0 : 0.0,
+                       r.boolean("transf_function_enabledz") ? 1.0 : 0.0);
+    auto add = [&] { b.add("add_c_symmetric", {N::v("weights", r.vector(weights)), N::v("abs_axes", absAxes)}); };
+    if (window.empty())
+        add();
+    else
+        inWindow(r, b, window, window, add);
+}
+
 // Tom Lowe's box in DarkBeam's and mclarekin's form: each part runs in its own iteration window
 // (transf_start/stop_iterations_B fold, _S sphere fold, _A scale, _R rotation, _C tweak scale).
 // The fold's parabolic softening (window D .. D1) is the soft box fold where the windows meet.
@@ -700,10 +715,9 @@ void mapBoxFoldBulbPow2V2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
 // The pseudo-Kleinian mod 2, each part in its window: the rotation (R), Benesi's T1 (T) and
 // box fold (D to TM), the clamp-style pseudo-Kleinian fold (C) and its conditional form (B, the
 // same map), the added constant, then the box fold at offsetA with its parabolic softening (F; the
-// softening in window A only).
+// softening in window A only), and the multiple of c signed by the point (offsetF_000).
 void mapPseudoKleinianMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_function_enabledS_false", "the sphere fold with a radius that varies with the iteration");
-    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
     prismFold(r, b);
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
     benesiFolds(r, b, "transf_start_iterations_T");
@@ -725,6 +739,7 @@ void mapPseudoKleinianMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
             fold(start, stop, vec3(0.0));
         }
     }
+    symmetricMultipleOfC(r, b, "transf_offsetF_000");
 }
 
 // The Mandelbox then Menger steps (Mandelbulber2's mandelbox_menger), each part in its window: the
@@ -893,9 +908,9 @@ void mapAboxModKali(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 
 // Its V2: a - |v| on x and y (and z unless transf_function_enabledM is off), the sphere fold of
 // squared radii minR2 and maxR2 times scale_015, then the added constant on both sides of the
-// rotation (window start .. stop), as Mandelbulber2 adds it twice.
+// rotation (window start .. stop), as Mandelbulber2 adds it twice, and the multiple of c signed by
+// the point (window C).
 void mapAboxModKaliV2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
-    r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c, signed by the point");
     r.mustBeDefault("transf_function_enabledS_false", "signs restored from the point before the fold");
     const vec3 a = r.vector("transf_addition_constant_0555");
     if (r.boolean("transf_function_enabledM")) {
@@ -915,6 +930,7 @@ void mapAboxModKaliV2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
         b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"),
                  [&] { b.rotation(setRotation2(r.vector("transf_rotation"))); });
     additionConstant(r, b);
+    symmetricMultipleOfC(r, b, "transf_constant_multiplier_000", "C");
 }
 
 // msltoe's Riemann spheres: the rotation before the step (the first and V2), V1's inside it.
