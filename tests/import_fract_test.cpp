@@ -1528,19 +1528,45 @@ TEST(FractImport, AmazingSurfMod2FoldsPerAxisInItsWindows) {
     const mb2::FractImport other =
         importText("[main_parameters]\nformula_1 132;\n[fractal_1]\naSurf3Folds_order_of_folds_1 type2;\n");
     EXPECT_TRUE(mentions(other.unsupported, "slot 1 (amazing_surf_mod2)", "a fold other than Tglad's"));
-    // Its extra multiple of c comes first, per axis, in window H; turned by transf_rotation it is
-    // refused.
+    // A second and third xy fold, each in its window (B, C), after the first.
+    const mb2::FractImport three = importText(
+        "[main_parameters]\nformula_1 132;\n[fractal_1]\ntransf_function_enabledAy_false true;\n"
+        "transf_stop_iterations_B 5;\ntransf_function_enabledAz_false true;\ntransf_start_iterations_C 2;\n");
+    ASSERT_TRUE(three.faithful()) << three.unsupported.front().text();
+    EXPECT_EQ(blockIds(three.preset.formula),
+              (std::vector<std::string>{"box_fold_axes", "box_fold_axes", "box_fold_axes", "sphere_fold", "scale_vary",
+                                        "add_c"}));
+    EXPECT_EQ(three.preset.formula.nodes[1].stop, 5);
+    EXPECT_EQ(three.preset.formula.nodes[2].start, 2);
+    // Its extra multiple of c comes first, per axis, in window H; turned by transf_rotation in
+    // window G.
     const std::string extraC =
         "[main_parameters]\nformula_1 132;\n[fractal_1]\ntransf_addCpixel_enabled_false true;\n"
         "transf_constant_multiplier_111 0 0 -0,3;\ntransf_stop_iterations_H 4;\n";
-    const mb2::FractImport added = importText(extraC);
-    ASSERT_TRUE(added.faithful()) << added.unsupported.front().text();
-    const Node& first = added.preset.formula.nodes[0];
+    const mb2::FractImport extra = importText(extraC);
+    ASSERT_TRUE(extra.faithful()) << extra.unsupported.front().text();
+    const Node& first = extra.preset.formula.nodes[0];
     EXPECT_EQ(first.block->id, "add_c_axes");
     EXPECT_EQ(first.values[0], vec3(0.0, 0.0, -0.3));
     EXPECT_EQ(first.stop, 4);
-    const mb2::FractImport turned = importText(extraC + "transf_rotation_enabled true;\n");
-    EXPECT_TRUE(mentions(turned.unsupported, "slot 1 (amazing_surf_mod2)", "c turned"));
+    const mb2::FractImport turned =
+        importText(extraC + "transf_rotation_enabled true;\ntransf_rotation 30 0 0;\ntransf_start_iterations_G 2;\n");
+    ASSERT_TRUE(turned.faithful()) << turned.unsupported.front().text();
+    EXPECT_EQ(blockIds(turned.preset.formula), (std::vector<std::string>{"add_c_axes", "add_c_axes", "box_fold_axes",
+                                                                         "sphere_fold", "scale_vary", "add_c"}));
+    const Node &plain = turned.preset.formula.nodes[0], &turning = turned.preset.formula.nodes[1];
+    EXPECT_EQ(plain.stop, 2);
+    EXPECT_EQ(param(plain, "turn_angle"), 0.0);
+    EXPECT_EQ(turning.start, 2);
+    EXPECT_EQ(turning.stop, 4);
+    // The turned c is Mandelbulber2's rotationMatrix applied to c (SetRotation2 of 30 degrees
+    // about x), times the multiplier.
+    const vec3 c(0.3, -0.7, 0.4);
+    P4 added{vec3(0.0), 1.0};
+    turning.block->apply(added, c, turning.args());
+    const vec3 turnedC = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(30.0), vec3(1, 0, 0))) * c;
+    EXPECT_NEAR(added.xyz.z, -0.3 * turnedC.z, 1e-12);
+    EXPECT_NEAR(added.xyz.x, 0.0, 1e-12);
 }
 
 // What changes the image a little is imported and listed, not refused.

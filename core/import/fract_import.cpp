@@ -636,19 +636,30 @@ void squaredRadiiSphereFold(Reader& r, NodeBuilder& b, const vec3& offset = vec3
 
 // Mandelbulber2's "addCpixel" section of a formula (transf_addCpixel_enabled_false): c times
 // transf_constant_multiplier_111 per axis, in the iteration window `window`, c's axes in
-// mandelbulbMulti_order_of_xyz (xyz, or yxz as add_c_axes' swap_xy). Its "alternate" form, which
-// keeps the reordered c for the next iteration, is refused.
-void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window) {
+// mandelbulbMulti_order_of_xyz (xyz, or yxz as add_c_axes' swap_xy). Where `turnWindow` is given
+// and transf_rotation_enabled is on, c is turned by transf_rotation on that window's iterations
+// first (amazing_surf_mod2). Its "alternate" form, which keeps the reordered c for the next
+// iteration, is refused.
+void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window, const std::string& turnWindow = "") {
     if (!r.boolean("transf_addCpixel_enabled_false")) return;
     r.mustBeDefault("transf_alternate_enabled_false", "c's axes reordered anew each iteration");
     const std::string order = r.raw("mandelbulbMulti_order_of_xyz");
     const bool swapXy = order == "2" || order == "yxz";
     if (!swapXy && order != "0" && order != "xyz")
         return r.unsupported("mandelbulbMulti_order_of_xyz " + order + ": c's axes in an order other than xyz or yxz");
-    inWindow(r, b, window, window, [&] {
-        b.add("add_c_axes", {N::v("weights", r.vector("transf_constant_multiplier_111")), N::f("julia", 0.0),
-                             N::f("swap_xy", swapXy ? 1.0 : 0.0)});
-    });
+    const bool turns = !turnWindow.empty() && r.boolean("transf_rotation_enabled");
+    const AxisAngle turn = turns ? axisAngle(setRotation2(r.vector("transf_rotation"))) : AxisAngle{};
+    acrossWindows(r, r.integer("transf_start_iterations_" + window), r.integer("transf_stop_iterations_" + window),
+                  turns ? std::vector{turnWindow} : std::vector<std::string>{},
+                  [&](int start, int stop, const std::vector<bool>& covered) {
+                      const bool turned = !covered.empty() && covered[0];
+                      b.within(start, stop, [&] {
+                          b.add("add_c_axes", {N::v("weights", r.vector("transf_constant_multiplier_111")),
+                                               N::f("julia", 0.0), N::f("swap_xy", swapXy ? 1.0 : 0.0),
+                                               N::v("turn_axis", turned ? turn.axis : vec3(0, 0, 1)),
+                                               N::f("turn_angle", turned ? turn.degrees : 0.0)});
+                      });
+                  });
 }
 
 // The multiple of c signed by the point (transf_addCpixel_enabled_false: Mandelbulber2's "add
@@ -842,31 +853,36 @@ void mapBoxFoldBulbPow2V3(Reader& r, NodeBuilder& b, std::vector<ImportItem>& ap
     inWindow(r, b, "A", "A", [&] { whitePower2TimesZFactor(r, b); });
 }
 
-// Amazing Surf mod 2 with its extra multiple of c (window H) first, its first fold (type 1: Tglad's
-// fold of x and y) in window A, z's fold
-// when enabled, the offset, then the sphere fold (window M) and scale (window S; varying with
+// Amazing Surf mod 2 with its extra multiple of c (window H; c turned by transf_rotation in window
+// G) first, its xy folds (type 1: Tglad's fold of x and y) in windows A, B and C, z's fold when
+// enabled, the offset, then the sphere fold (window M) and scale (window S; varying with
 // transf_function_enabledF_false, its offset moved in window Y), the main rotation (window R); +c.
 void mapAmazingSurfMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
-    if (r.boolean("transf_addCpixel_enabled_false"))
-        r.mustBeDefault("transf_rotation_enabled",
-                        "c turned (transf_rotation) before the extra multiple of it is added");
     r.mustBeDefault("transf_function_enabledCx_false", "an inverted c");
-    r.mustBeDefault("transf_function_enabledAy_false", "a second xy fold");
-    r.mustBeDefault("transf_function_enabledAz_false", "a third xy fold");
     r.mustBeDefault("transf_function_enabledCz_false", "the soft (parabolic) fold");
     r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and y");
     r.mustBeDefault("transf_function_enabledBz_false", "the curved offset");
     r.mustBeDefault("transf_function_enabled_false", "the cylinder fold");
-    const std::string type = r.raw("aSurf3Folds_order_of_folds_1");
     const bool foldXy = r.boolean("transf_function_enabledAx"), foldZ = r.boolean("transf_function_enabledAx_false");
-    if (foldXy && type != "0" && type != "type1")
-        r.unsupported("aSurf3Folds_order_of_folds_1 " + type + ": a fold other than Tglad's");
     const vec3 limit = r.vector("transf_addition_constant_111");
     const int start = r.integer("transf_start_iterations_A"), stop = r.integer("transf_stop_iterations_A");
     if (foldZ && (!foldXy || start > 0 || stop < 250))
-        r.unsupported("transf_function_enabledAx_false: z's fold apart from the xy fold's window");
-    extraMultipleOfC(r, b, "H");
-    if (foldXy) inWindow(r, b, "A", "A", [&] { tgladFold(r, b, limit, foldZ, approximated); });
+        r.unsupported("transf_function_enabledAx_false: z's fold apart from the first xy fold's window");
+    extraMultipleOfC(r, b, "H", "G");
+    // Up to three xy folds, each in its window; z's fold, after them in Mandelbulber2, touches z
+    // alone and goes with the first (which then runs on every iteration).
+    struct XyFold {
+        const char *enabled, *window, *type;
+    };
+    for (const XyFold& fold : {XyFold{"transf_function_enabledAx", "A", "aSurf3Folds_order_of_folds_1"},
+                               XyFold{"transf_function_enabledAy_false", "B", "aSurf3Folds_order_of_folds_2"},
+                               XyFold{"transf_function_enabledAz_false", "C", "aSurf3Folds_order_of_folds_3"}}) {
+        if (!r.boolean(fold.enabled)) continue;
+        if (const std::string type = r.raw(fold.type); type != "0" && type != "type1")
+            r.unsupported(std::string(fold.type) + " " + type + ": a fold other than Tglad's");
+        const bool withZ = foldZ && fold.window == std::string("A");
+        inWindow(r, b, fold.window, fold.window, [&] { tgladFold(r, b, limit, withZ, approximated); });
+    }
     additionConstant(r, b);
     if (r.boolean("transf_function_enabledAy")) {
         inWindow(r, b, "M", "M", [&] { squaredRadiiSphereFold(r, b, r.vector("mandelbox_offset")); });
