@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <random>
 
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/formula_fit.hpp"
@@ -82,6 +83,43 @@ TEST(EditorFormulaFit, BoundHoldsAFlatObjectsRim) {
     const double bound = fittedBoundRadius(cpuDistance(surf), 21.0, 99.0);
     std::printf("amazing_surf: the sheet reaches %.3f, the fitted bound is %.3f\n", reach, bound);
     EXPECT_GT(reach, 8.0);
+    EXPECT_GE(bound, reach);
+    EXPECT_LT(bound, 1.3 * reach);
+}
+
+// An object small in a wide search sphere: an imported view range (Mandelbulber2's
+// view_distance_max, 50) about the power-2 sine bulb of its toolbar, whose hairs reach about 2.
+// The first grid's cells (4 units wide) miss them; the bound must still hold every point a ray
+// meets (found here by 2000 rays from all sides, each marched down the DE to a thousandth, not
+// by the fit's probes), or the marcher clips the hairs.
+TEST(EditorFormulaFit, BoundHoldsASmallObjectInAWideSearch) {
+    const Formula bulb = parsePreset(R"({"format": "fraktal-preset", "version": 3,
+        "camera": {"position": [0, -3, 1], "target": [0, 0, 0], "up": [0, 0, 1], "fovY": 50},
+        "formula": {"iterations": 250, "bailout": 10.0,
+        "nodes": [{"block": "mandelbulb_sine", "params": {"power": 2.0, "phi_offset": 90.0, "theta_offset": 90.0}},
+                  {"block": "add_c"}, {"block": "escape_log"}]}})",
+                                     "power-2 bulb")
+                             .formula;
+    const DistanceAt de = cpuDistance(bulb);
+    std::mt19937 random(3);
+    std::normal_distribution<double> gauss;
+    auto direction = [&] { return normalize(vec3(gauss(random), gauss(random), gauss(random))); };
+    double reach = 0.0;
+    for (int ray = 0; ray < 2000; ++ray) {
+        const vec3 from = direction() * 3.0, dir = normalize(direction() * 1.5 - from);
+        double t = 0.0;
+        for (int step = 0; step < 500 && t < 6.0; ++step) {
+            const double d = de(from + dir * t);
+            if (d < 1e-3) {
+                reach = std::max(reach, length(from + dir * t));
+                break;
+            }
+            t += d;
+        }
+    }
+    const double bound = fittedBoundRadius(de, 50.0, 60.0);
+    std::printf("power-2 sine bulb: rays meet it out to %.3f, the fitted bound is %.3f\n", reach, bound);
+    EXPECT_GT(reach, 1.8);
     EXPECT_GE(bound, reach);
     EXPECT_LT(bound, 1.3 * reach);
 }

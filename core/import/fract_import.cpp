@@ -980,12 +980,20 @@ void mapJosKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 
 // x's multiplier is transf_scale3D_000's x, y's and z's transf_offset_000's (as Mandelbulber2
 // reads them).
-void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+// Mandelbulber2's transforms multiply its running derivative by analyticDE_scale_1 (a "DE tweak"
+// with no map behind it): fraktal's running derivative bounds the map, so the factor is left out
+// and listed (its surface at the same hit threshold is then thicker where the factor is below 1).
+void derivativeTweakLeftOut(Reader& r, std::vector<ImportItem>& approximated) {
+    if (r.number("analyticDE_scale_1") != 1.0)
+        approximated.push_back({r.where(), "analyticDE_scale_1: the derivative's own factor is left out"});
+}
+void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     const vec3 axes(r.boolean("transf_function_enabledx"), r.boolean("transf_function_enabledy"),
                     r.boolean("transf_function_enabledz"));
     const vec3 offset = r.vector("transf_offset_000");
     b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", r.vector("transf_offset_111")),
                                   N::v("multiplier", vec3(r.vector("transf_scale3D_000").x, offset.y, offset.z))});
+    derivativeTweakLeftOut(r, approximated);
 }
 
 void mapMandelbulb2(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("mandelbulb2", {}); }
@@ -1119,8 +1127,7 @@ void mapTransfAbsAddConditional4d(Reader& r, NodeBuilder& b, std::vector<ImportI
                     r.boolean("transf_function_enabledz"));
     b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", vec3(r.vector4("transf_offset_1111"))),
                                   N::v("multiplier", vec3(r.vector4("transf_scale_0000")))});
-    if (r.number("analyticDE_scale_1") != 1.0)
-        approximated.push_back({r.where(), "analyticDE_scale_1: the derivative's own factor is left out"});
+    derivativeTweakLeftOut(r, approximated);
 }
 
 // ---- dIFS: shape steps whose least distance along the orbit is the estimate (formulas/difs.hpp) ----

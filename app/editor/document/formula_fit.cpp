@@ -166,22 +166,30 @@ double fittedBoundRadius(const DistanceAt& de, double searchRadius, double fallb
     for (const vec3& h : hits) extent = std::max(extent, length(h));
     // The probes pass through the origin, so they meet a flat object (a sheet) at its rim only
     // where they lie in its plane: the Amazing Surf's were seen out to 6.1 where its sheet
-    // reaches 8.4. Cells of a grid over the search sphere whose DE leaves room for surface
-    // inside them (under the half-diagonal) and that reach beyond the probes' extent are
-    // followed down the DE to the surface there.
-    const int cells = 24;
-    const double cell = 2.0 * searchRadius / cells, halfDiagonal = cell * std::sqrt(3.0) / 2.0;
-    const double epsilon = searchRadius * 1e-4;
-    for (int i = 0; i < cells; ++i)
-        for (int j = 0; j < cells; ++j)
-            for (int k = 0; k < cells; ++k) {
-                const vec3 centre = (vec3(i, j, k) + 0.5) * cell - searchRadius;
-                const double r = length(centre);
-                if (r > searchRadius || r + halfDiagonal <= extent || !(de(centre) < halfDiagonal)) continue;
-                if (const std::optional<vec3> s = surfaceNear(de, centre, epsilon);
-                    s && length(*s - centre) < 2.0 * cell)
-                    extent = std::max(extent, length(*s));
-            }
+    // reaches 8.4. Cells of a grid over a sphere whose DE leaves room for surface inside them
+    // (under the half-diagonal) and that reach beyond the extent found so far are followed down
+    // the DE to the surface there.
+    auto followGrid = [&](double gridRadius) {
+        const int cells = 24;
+        const double cell = 2.0 * gridRadius / cells, halfDiagonal = cell * std::sqrt(3.0) / 2.0;
+        const double epsilon = gridRadius * 1e-4;
+        for (int i = 0; i < cells; ++i)
+            for (int j = 0; j < cells; ++j)
+                for (int k = 0; k < cells; ++k) {
+                    const vec3 centre = (vec3(i, j, k) + 0.5) * cell - gridRadius;
+                    const double r = length(centre);
+                    if (r > gridRadius || r + halfDiagonal <= extent || !(de(centre) < halfDiagonal)) continue;
+                    if (const std::optional<vec3> s = surfaceNear(de, centre, epsilon);
+                        s && length(*s - centre) < 2.0 * cell)
+                        extent = std::max(extent, length(*s));
+                }
+    };
+    followGrid(searchRadius);
+    // Over a search sphere many times the object (an imported view range of 50 about a bulb of
+    // radius 2) the cells are wider than the object's hairs and their DE's surface too fine for
+    // a follow from a cell's centre: the power-2 bulb of Mandelbulber2's toolbar was seen out to
+    // 1.56 where it reaches 1.96. A second grid over twice the extent found looks again there.
+    if (2.0 * extent < 0.5 * searchRadius) followGrid(2.0 * extent);
     // Surface out at the search sphere: unbounded (e.g. a fold without its scale yet), no fit.
     if (extent > 0.9 * searchRadius) return fallback;
     // The probes see the outermost surface along their rays; between them it may reach further.

@@ -45,11 +45,14 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
     if (result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) fitBound(result.preset);
     if (options.measure && result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) {
         const EstimatorMeasurement m = measureSafeStep(result.preset.formula, result.preset.camera);
-        if (m.report.samples > 0 && m.hasFactor)
+        if (hasSafeStepFactor(m))
             // The measured factor replaces the file's DE_factor: Mandelbulber2's artists lower that
             // for its own estimate (0.05 in its fog examples), and at a twentieth of the safe step
             // a ray runs out of steps before it meets the surface.
-            // The hit threshold applies to the scaled estimate (fract_import.cpp): it follows.
+            // The hit threshold applies to the scaled estimate (fract_import.cpp): it follows,
+            // also where nothing was measured and the factor becomes 1 (formula/img
+            // amazing_surf_mod2 at DE_factor 0.18 had kept its threshold, a fifth of
+            // Mandelbulber2's, and drew holes through its sheet).
             result.preset.render.detail =
                 std::clamp(result.preset.render.detail * m.factor / result.preset.formula.deFactor, 1e-3, 100.0);
         result.preset.formula.deFactor = m.factor;
