@@ -988,6 +988,46 @@ TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// Knighty's cross Menger KIFS: the mirrors, y about 1/2, the scale about (sqrt(3)/2, 3/2, 3/2),
+// the offset and option P's x abs with its offsets.
+vec3 mengerCrossStep(const vec3& v, bool absX) {
+    const double s34 = std::sqrt(3.0) / 2.0, s12 = std::sqrt(0.5);
+    vec3 z(absX ? std::abs(v.x) : v.x, std::abs(v.y), std::abs(v.z));
+    double l = z.x * s34 - z.y * 0.5;
+    if (l < 0.0) {
+        z.x -= s34 * (2.0 * l);
+        z.y -= -l;
+    }
+    if (z.y < 0.0) z.y = -z.y;
+    l = (-z.y + z.z) * s12;
+    if (l < 0.0) {
+        z.y -= -s12 * (2.0 * l);
+        z.z -= s12 * (2.0 * l);
+    }
+    if (z.y < 0.5) z.y -= 2.0 * (z.y - 0.5);
+    return z * 3.0 - vec3(s34, 1.5, 1.5) * 2.0;
+}
+TEST(FractImport, MengerCrossKifsFollowsMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 98;\nN 5;\n",
+         {"plane_fold", "plane_fold", "plane_fold", "plane_fold", "plane_fold", "plane_fold", "scale"},
+         [](const vec3& v, const vec3&) { return mengerCrossStep(v, false); }},
+        {"formula_1 98;\nN 5;\n[fractal_1]\ntransf_function_enabledz_false true;\ntransf_offset_000 0,1 0 -0,2;\n"
+         "transf_function_enabledP_false true;\ntransf_offset 0,3;\ntransf_offset_0 -0,1;\n",
+         {"plane_fold", "plane_fold", "plane_fold", "plane_fold", "plane_fold", "plane_fold", "plane_fold", "scale",
+          "translate", "translate", "plane_fold", "translate"},
+         [](const vec3& v, const vec3&) {
+             vec3 z = mengerCrossStep(v, true) + vec3(0.1, 0.0, -0.2);
+             z.x = std::abs(z.x + 0.3) - 0.1;
+             return z;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+    const mb2::FractImport before =
+        importText("[main_parameters]\nformula_1 98;\n[fractal_1]\ntransf_function_enabled_false true;\n");
+    EXPECT_TRUE(mentions(before.unsupported, "slot 1 (menger_cross_kifs)", "the cross step before"));
+}
+
 // Mandelbulber2's Mandelbox then Menger (two Menger steps an iteration from iteration 1, each
 // adding c) and the abox mod Kali V2 with z left unfolded (its constant added before and after
 // the rotation).

@@ -191,17 +191,19 @@ class NodeBuilder {
     }
 
     // The nodes `steps` adds run only on iterations [start, stop) (a formula's own window,
-    // transf_start/stop_iterations): none when the window is empty.
+    // transf_start/stop_iterations), within the window already open: none when the two do not
+    // meet.
     template <class Steps>
     void within(int start, int stop, Steps&& steps) {
-        start = std::max(start, 0);
-        stop = std::min(stop, kMaxIterations);
+        start = std::max(start, windowStart_);
+        stop = std::min(stop, windowStop_);
         if (start >= stop) return;
+        const int outerStart = windowStart_, outerStop = windowStop_;
         windowStart_ = start;
         windowStop_ = stop;
         steps();
-        windowStart_ = 0;
-        windowStop_ = kMaxIterations;
+        windowStart_ = outerStart;
+        windowStop_ = outerStop;
     }
 
    private:
@@ -1299,6 +1301,44 @@ void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
 void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "msltoe_sym2_mod"); }
 void mapEiffieMsltoe(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "eiffie_msltoe"); }
 
+// Knighty's cross Menger KIFS (MengerCrossKIFSIteration) in window A: |y| and |z| (|x| with
+// transf_function_enabledz_false), the mirror across the plane at 30 degrees to x, |y| again, y
+// and z sorted, y mirrored about 1/2, with option x the point mirrored through the edge offset_222,
+// then the scale transf_scale_3 about (sqrt(3)/2, 3/2, 3/2), the offset, option P's x abs with
+// offsets, and the rotation transf_rotation2 in window R. Each mirror is a plane fold; the step
+// before it (transf_function_enabled_false) is refused.
+void mapMengerCrossKifs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabled_false", "the cross step before the cross Menger step");
+    if (!r.boolean("transf_function_enabled")) return;
+    inWindow(r, b, "A", "A", [&] {
+        auto mirror = [&](const vec3& normal, double offset) {
+            b.add("plane_fold", {N::v("normal", normal), N::f("offset", offset)});
+        };
+        mirror(vec3(0, 1, 0), 0.0);
+        mirror(vec3(0, 0, 1), 0.0);
+        if (r.boolean("transf_function_enabledz_false")) mirror(vec3(1, 0, 0), 0.0);
+        mirror(vec3(std::sqrt(3.0) / 2.0, -0.5, 0.0), 0.0);
+        mirror(vec3(0, 1, 0), 0.0);
+        mirror(vec3(0, -1, 1), 0.0);
+        mirror(vec3(0, 1, 0), 0.5);
+        if (r.boolean("transf_function_enabledx_false")) {
+            b.add("scale", {N::f("scale", -1.0)});
+            b.add("translate", {N::v("offset", r.vector("transf_offset_222"))});
+        }
+        b.add("scale",
+              {N::f("scale", r.number("transf_scale_3")), N::v("center", vec3(std::sqrt(3.0) / 2.0, 1.5, 1.5))});
+        const vec3 offset = r.vector("transf_offset_000");
+        if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+        if (r.boolean("transf_function_enabledP_false")) {
+            b.add("translate", {N::v("offset", vec3(r.number("transf_offset"), 0.0, 0.0))});
+            mirror(vec3(1, 0, 0), 0.0);
+            b.add("translate", {N::v("offset", vec3(r.number("transf_offset_0"), 0.0, 0.0))});
+        }
+        if (r.boolean("transf_function_enabledR_false"))
+            inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("transf_rotation2"))); });
+    });
+}
+
 // The smooth Menger sponge, its rotation in window R.
 void mapMengerSmooth(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_function_enabledz_false", "iteration weights");
@@ -1480,6 +1520,7 @@ constexpr Mapping kMappings[] = {
     {113, mapMengerSmooth},
     {114, mapMengerSmoothMod1},
     {117, mapPseudoKleinianMod2},
+    {98, mapMengerCrossKifs},
     {101, mapPseudoKleinianStdDE},
     {91, mapMandelboxMenger},
     {135, mapAboxModKaliV2},
