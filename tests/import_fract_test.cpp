@@ -1007,6 +1007,54 @@ vec3 mengerCrossStep(const vec3& v, bool absX) {
     if (z.y < 0.5) z.y -= 2.0 * (z.y - 0.5);
     return z * 3.0 - vec3(s34, 1.5, 1.5) * 2.0;
 }
+// Mandelbulber2's Sierpinski tetrahedron: the full tetra fold, and the reversed one after it.
+vec3 tetraFold(vec3 z, bool reversed) {
+    auto sort = [&] {
+        if (z.x - z.y < 0.0) std::swap(z.x, z.y);
+        if (z.x - z.z < 0.0) std::swap(z.x, z.z);
+        if (z.y - z.z < 0.0) std::swap(z.y, z.z);
+    };
+    auto sums = [&] {
+        if (z.x + z.y < 0.0) z = vec3(-z.y, -z.x, z.z);
+        if (z.x + z.z < 0.0) z = vec3(-z.z, z.y, -z.x);
+        if (z.y + z.z < 0.0) z = vec3(z.x, -z.z, -z.y);
+    };
+    if (reversed) {
+        sums();
+        sort();
+    } else {
+        sort();
+        sums();
+    }
+    return z;
+}
+TEST(FractImport, Sierpinski3dFollowsMandelbulber2sOrbits) {
+    const std::vector<std::string> folds(6, "plane_fold");
+    std::vector<std::string> both(12, "plane_fold");
+    const OrbitCase cases[] = {
+        {"formula_1 110;\nN 6;\n",
+         [&] {
+             std::vector<std::string> ids = folds;
+             ids.insert(ids.end(), {"scale", "translate"});
+             return ids;
+         }(),
+         [](const vec3& v, const vec3&) { return tetraFold(v, false) * 2.0 - vec3(1.0); }},
+        {"formula_1 110;\nN 6;\n[fractal_1]\ntransf_function_enabled_false true;\ntransf_scaleA_2 1,8;\n"
+         "transf_offset_111 1 0,8 1;\ntransf_start_iterations_C 2;\n",
+         [&] {
+             std::vector<std::string> ids = both;
+             ids.insert(ids.end(), {"scale", "translate"});
+             return ids;
+         }(),
+         nullptr, 1.5,
+         [](const vec3& v, const vec3&, int i) {
+             const vec3 z = tetraFold(tetraFold(v, false), true) * 1.8;
+             return i >= 2 ? z - vec3(1.0, 0.8, 1.0) : z;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 TEST(FractImport, MengerCrossKifsFollowsMandelbulber2sOrbits) {
     const OrbitCase cases[] = {
         {"formula_1 98;\nN 5;\n",

@@ -1301,6 +1301,27 @@ void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
 void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "msltoe_sym2_mod"); }
 void mapEiffieMsltoe(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "eiffie_msltoe"); }
 
+// The Sierpinski tetrahedron of Mandelbulber2 (Sierpinski3dIteration): the full tetra fold (the
+// sort x >= y >= z, then the mirrors across x + y = 0, x + z = 0 and y + z = 0; with
+// transf_function_enabled_false the reversed one after it, mirrors first), the scale
+// transf_scaleA_2, less offset_111 in window C, the rotation in window R. Each mirror and swap is
+// a plane fold. With analyticDE_enabled_false the derivative's own factor and offset are listed.
+void mapSierpinski3d(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    auto mirrors = [&](const std::vector<vec3>& normals) {
+        for (const vec3& n : normals) b.add("plane_fold", {N::v("normal", n), N::f("offset", 0.0)});
+    };
+    const std::vector<vec3> sort{vec3(1, -1, 0), vec3(1, 0, -1), vec3(0, 1, -1)};
+    const std::vector<vec3> sums{vec3(1, 1, 0), vec3(1, 0, 1), vec3(0, 1, 1)};
+    if (r.boolean("transf_function_enabled")) mirrors(sort), mirrors(sums);
+    if (r.boolean("transf_function_enabled_false")) mirrors(sums), mirrors(sort);
+    b.add("scale", {N::f("scale", r.number("transf_scaleA_2"))});
+    inWindow(r, b, "C", "C", [&] { b.add("translate", {N::v("offset", -r.vector("transf_offset_111"))}); });
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    if (r.boolean("analyticDE_enabled_false") &&
+        (r.number("analyticDE_scale_1") != 1.0 || r.number("analyticDE_offset_0") != 0.0))
+        approximated.push_back({r.where(), "analyticDE: the derivative's own factor and offset are left out"});
+}
+
 // Knighty's cross Menger KIFS (MengerCrossKIFSIteration) in window A: |y| and |z| (|x| with
 // transf_function_enabledz_false), the mirror across the plane at 30 degrees to x, |y| again, y
 // and z sorted, y mirrored about 1/2, with option x the point mirrored through the edge offset_222,
@@ -1521,6 +1542,7 @@ constexpr Mapping kMappings[] = {
     {114, mapMengerSmoothMod1},
     {117, mapPseudoKleinianMod2},
     {98, mapMengerCrossKifs},
+    {110, mapSierpinski3d},
     {101, mapPseudoKleinianStdDE},
     {91, mapMandelboxMenger},
     {135, mapAboxModKaliV2},
