@@ -1007,6 +1007,35 @@ vec3 mengerCrossStep(const vec3& v, bool absX) {
     if (z.y < 0.5) z.y -= 2.0 * (z.y - 0.5);
     return z * 3.0 - vec3(s34, 1.5, 1.5) * 2.0;
 }
+// The fold box mod 1: the general box fold, the box fold with z's limit scaled (from iteration
+// 2), the Mandelbox sphere fold and the scale, then + c.
+TEST(FractImport, FoldBoxMod1FollowsMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 59;\nN 10;\n[fractal_1]\nmandelbox_scale -2,5;\ntransf_addition_constant_111 1 1 0;\n"
+         "transf_addition_constantA_111 1 0,8 0;\ntransf_scale3D_111 0,7 0,7 0,7;\ntransf_function_enabled_false "
+         "true;\n"
+         "transf_scale_1 0,51;\ntransf_start_iterations_A 2;\n",
+         {"box_fold_general", "box_fold_axes", "sphere_fold", "scale", "add_c"},
+         nullptr,
+         3.0,
+         [](const vec3& v, const vec3& c, int i) {
+             vec3 z = glm::abs(v + vec3(1.0, 1.0, 0.0)) - glm::abs(v - vec3(1.0, 0.8, 0.0)) - v * 0.7;
+             if (i >= 2) {
+                 const vec3 limit(1.0, 1.0, 0.51);
+                 for (int k = 0; k < 3; ++k)
+                     if (std::abs(z[k]) > limit[k]) z[k] = glm::sign(z[k]) * 2.0 * limit[k] - z[k];
+             }
+             const double r2 = dot(z, z);
+             z *= r2 < 0.25 ? 4.0 : r2 < 1.0 ? 1.0 / r2 : 1.0;
+             return z * -2.5 + c;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+    const mb2::FractImport halfFold =
+        importText("[main_parameters]\nformula_1 59;\n[fractal_1]\ntransf_function_enabledAy false;\n");
+    EXPECT_TRUE(mentions(halfFold.unsupported, "slot 1 (fold_box_mod1)", "one of its limits left out"));
+}
+
 // Mandelbulber2's Sierpinski tetrahedron: the full tetra fold, and the reversed one after it.
 vec3 tetraFold(vec3 z, bool reversed) {
     auto sort = [&] {

@@ -1301,6 +1301,39 @@ void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
 void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "msltoe_sym2_mod"); }
 void mapEiffieMsltoe(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "eiffie_msltoe"); }
 
+// The fold box mod 1 (FoldBoxMod1Iteration), each part in its window: the general box fold
+// |v + a| - |v - b| - m v per axis (transf_start/stop_iterations), the box fold with z's limit
+// times transf_scale_1 (option A), the Mandelbox sphere fold (B), the scale (varying in window D
+// with option X, plain elsewhere) and the main rotation (C). A box fold with one of its limits
+// left out is refused.
+void mapFoldBoxMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    for (const char* axis : {"transf_function_enabledx", "transf_function_enabledy", "transf_function_enabledz",
+                             "transf_function_enabledAx", "transf_function_enabledAy", "transf_function_enabledAz"})
+        if (!r.boolean(axis)) r.unsupported(std::string(axis) + " false: a box fold with one of its limits left out");
+    b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), [&] {
+        b.add("box_fold_general", {N::v("low", r.vector("transf_addition_constant_111")),
+                                   N::v("high", r.vector("transf_addition_constantA_111")),
+                                   N::v("mirror", r.vector("transf_scale3D_111"))});
+    });
+    if (r.boolean("transf_function_enabled_false")) boxFoldScaledZ(r, b);
+    inWindow(r, b, "B", "B", [&] {
+        sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"));
+    });
+    const double scale = r.number("mandelbox_scale");
+    const bool varies = r.boolean("transf_function_enabledX_false");
+    acrossWindows(r, 0, kMaxIterations, varies ? std::vector<std::string>{"D"} : std::vector<std::string>{},
+                  [&](int start, int stop, const std::vector<bool>& covered) {
+                      b.within(start, stop, [&] {
+                          if (covered.empty() || !covered[0]) return b.add("scale", {N::f("scale", scale)});
+                          b.add("scale_vary", {N::f("scale", scale), N::f("vary", r.number("transf_scale_vary_0")),
+                                               N::f("limit", r.number("transf_scaleB_1")), N::f("update", 1.0),
+                                               N::f("reset", r.boolean("transf_function_enabledM_false") ? 1.0 : 0.0)});
+                      });
+                  });
+    if (r.boolean("mandelbox_main_rotation_enabled"))
+        inWindow(r, b, "C", "C", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
+}
+
 // The Sierpinski tetrahedron of Mandelbulber2 (Sierpinski3dIteration): the full tetra fold (the
 // sort x >= y >= z, then the mirrors across x + y = 0, x + z = 0 and y + z = 0; with
 // transf_function_enabled_false the reversed one after it, mirrors first), the scale
@@ -1543,6 +1576,7 @@ constexpr Mapping kMappings[] = {
     {117, mapPseudoKleinianMod2},
     {98, mapMengerCrossKifs},
     {110, mapSierpinski3d},
+    {59, mapFoldBoxMod1},
     {101, mapPseudoKleinianStdDE},
     {91, mapMandelboxMenger},
     {135, mapAboxModKaliV2},
