@@ -36,6 +36,7 @@
 #include "formulas/objects.hpp"
 #include "formulas/octahedral_fold.hpp"
 #include "formulas/plane_fold.hpp"
+#include "formulas/platonic_solid.hpp"
 #include "formulas/primitives.hpp"
 #include "formulas/pseudo_kleinian.hpp"
 #include "formulas/quadratic_bulbs.hpp"
@@ -121,6 +122,7 @@ constexpr std::array kBlocks{
     describe<ScaleVary>(),
     describe<DifsCylinder>(),
     describe<AddCSymmetric>(),
+    describe<PlatonicSolid>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

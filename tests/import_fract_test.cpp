@@ -1007,6 +1007,49 @@ vec3 mengerCrossStep(const vec3& v, bool absX) {
     if (z.y < 0.5) z.y -= 2.0 * (z.y - 0.5);
     return z * 3.0 - vec3(s34, 1.5, 1.5) * 2.0;
 }
+// The platonic solid transform: v times A theta(F v) + rho sqrt(|v|), Mandelbulber2's
+// TransfPlatonicSolidIteration with aux.r = |v|, in its first mode and its second.
+TEST(FractImport, PlatonicSolidScalesByMandelbulber2sWave) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 56;\nformula_2 7;\n[fractal_1]\n"
+        "platonic_solid_frequency 0,3;\nplatonic_solid_amplitude 1,9;\nplatonic_solid_rhoMul 0,7;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Node* step = nullptr;
+    for (const Node& n : r.preset.formula.nodes)
+        if (n.block->id == "platonic_solid") step = &n;
+    ASSERT_NE(step, nullptr);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> u(-3.0, 3.0);
+    for (int k = 0; k < 100; ++k) {
+        const vec3 v(u(random), u(random), u(random));
+        const double f = 0.3, theta = std::cos(f * v.x) * std::sin(f * v.y) + std::cos(f * v.y) * std::sin(f * v.z) +
+                                      std::cos(f * v.z) * std::sin(f * v.x);
+        const vec3 expected = v * (theta * 1.9 + std::sqrt(length(v)) * 0.7);
+        P4 p{v, 1.0};
+        step->block->apply(p, v, step->args());
+        EXPECT_NEAR(length(p.xyz - expected), 0.0, 1e-12);
+    }
+    // Its second mode: sqrt(r) blended towards r by transf_scale_1 (option Ax), the wave's abs (Az).
+    const mb2::FractImport second = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 56;\nformula_2 7;\n[fractal_1]\n"
+        "transf_function_enabled_false true;\ntransf_function_enabledy_false true;\n"
+        "transf_function_enabledAx_false true;\ntransf_function_enabledAz_false true;\ntransf_scale_1 0,4;\n"
+        "platonic_solid_rhoMul 0,7;\n");
+    ASSERT_TRUE(second.faithful()) << second.unsupported.front().text();
+    const Node& blended = second.preset.formula.nodes.front();
+    ASSERT_EQ(blended.block->id, "platonic_solid");
+    for (int k = 0; k < 100; ++k) {
+        const vec3 v(u(random), u(random), u(random));
+        const double theta =
+            std::abs(std::cos(v.x) * std::sin(v.y) + std::cos(v.y) * std::sin(v.z) + std::cos(v.z) * std::sin(v.x));
+        const double rho = std::sqrt(length(v)) + (length(v) - std::sqrt(length(v))) * 0.4;
+        const vec3 expected = v * (theta + rho * 0.7);
+        P4 p{v, 1.0};
+        blended.block->apply(p, v, blended.args());
+        EXPECT_NEAR(length(p.xyz - expected), 0.0, 1e-12);
+    }
+}
+
 // The fold box mod 1: the general box fold, the box fold with z's limit scaled (from iteration
 // 2), the Mandelbox sphere fold and the scale, then + c.
 TEST(FractImport, FoldBoxMod1FollowsMandelbulber2sOrbits) {

@@ -1301,6 +1301,33 @@ void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
 void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "msltoe_sym2_mod"); }
 void mapEiffieMsltoe(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "eiffie_msltoe"); }
 
+// The platonic solid transform: v times A theta(F v) + rhoMul rho (platonic_solid). Its first
+// mode takes rho = sqrt(r); its second (transf_function_enabled_false) sums sqrt(r), r and r^2 as
+// options x, y and z say, or blends the first two (Ax) or the last two (Ay) by transf_scale_1, and
+// takes the wave's abs with Az. Its derivative's own factor (analyticDE_scale_1) is listed.
+void mapTransfPlatonicSolid(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    const double mul = r.number("platonic_solid_rhoMul");
+    vec3 weights(1.0, 0.0, 0.0);  // of sqrt(r), r, r^2
+    bool absWave = false;
+    if (r.boolean("transf_function_enabled_false")) {
+        const vec3 on(r.boolean("transf_function_enabledx"), r.boolean("transf_function_enabledy_false"),
+                      r.boolean("transf_function_enabledz_false"));
+        const double blend = r.number("transf_scale_1");
+        if (r.boolean("transf_function_enabledAx_false"))
+            weights = vec3(on.x * (1.0 - blend), on.y * blend, 0.0);
+        else if (r.boolean("transf_function_enabledAy_false"))
+            weights = vec3(0.0, on.y * (1.0 - blend), on.z * blend);
+        else
+            weights = on;
+        absWave = r.boolean("transf_function_enabledAz_false");
+    }
+    b.add("platonic_solid",
+          {N::f("frequency", r.number("platonic_solid_frequency")),
+           N::f("amplitude", r.number("platonic_solid_amplitude")), N::f("abs_wave", absWave ? 1.0 : 0.0),
+           N::f("root", mul * weights.x), N::f("linear", mul * weights.y), N::f("square", mul * weights.z)});
+    derivativeTweakLeftOut(r, approximated);
+}
+
 // The fold box mod 1 (FoldBoxMod1Iteration), each part in its window: the general box fold
 // |v + a| - |v - b| - m v per axis (transf_start/stop_iterations), the box fold with z's limit
 // times transf_scale_1 (option A), the Mandelbox sphere fold (B), the scale (varying in window D
@@ -1577,6 +1604,7 @@ constexpr Mapping kMappings[] = {
     {98, mapMengerCrossKifs},
     {110, mapSierpinski3d},
     {59, mapFoldBoxMod1},
+    {56, mapTransfPlatonicSolid},
     {101, mapPseudoKleinianStdDE},
     {91, mapMandelboxMenger},
     {135, mapAboxModKaliV2},
