@@ -31,9 +31,11 @@ struct AddCAxes {
     static constexpr std::string_view glsl = R"(
     vec3 k = julia > 0.5 ? julia_c : c;
     if (swap_xy > 0.5) k = k.yxz;
-    vec3 n = normalize(turn_axis);
-    float s = sin(radians(turn_angle)), co = cos(radians(turn_angle));
-    k = k * co + cross(n, k) * s + n * dot(n, k) * (1.0 - co);
+    if (turn_angle != 0.0) {  // a uniform branch: the unturned constant costs no sine each step
+        vec3 n = normalize(turn_axis);
+        float s = sin(radians(turn_angle)), co = cos(radians(turn_angle));
+        k = k * co + cross(n, k) * s + n * dot(n, k) * (1.0 - co);
+    }
     p.xyz += julia > 0.5 ? k : k * weights;
     p.w += julia > 0.5 ? 0.0 : max(abs(weights.x), max(abs(weights.y), abs(weights.z)));
 )";
@@ -42,9 +44,11 @@ struct AddCAxes {
         const double julia = a.f(1), swap_xy = a.f(3), turn_angle = a.f(5);
         vec3 k = julia > 0.5 ? julia_c : c;
         if (swap_xy > 0.5) k = vec3(k.y, k.x, k.z);
-        vec3 n = normalize(turn_axis);
-        double s = sin(glm::radians(turn_angle)), co = cos(glm::radians(turn_angle));
-        k = k * co + glm::cross(n, k) * s + n * dot(n, k) * (1.0 - co);
+        if (turn_angle != 0.0) {  // a uniform branch: the unturned constant costs no sine each step
+            vec3 n = normalize(turn_axis);
+            double s = sin(glm::radians(turn_angle)), co = cos(glm::radians(turn_angle));
+            k = k * co + glm::cross(n, k) * s + n * dot(n, k) * (1.0 - co);
+        }
         p.xyz += julia > 0.5 ? k : k * weights;
         p.w += julia > 0.5 ? 0.0 : max(abs(weights.x), max(abs(weights.y), abs(weights.z)));
     }

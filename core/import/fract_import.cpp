@@ -222,6 +222,12 @@ void windowedRotation(Reader& r, NodeBuilder& b, const std::string& enabled, con
              [&] { b.rotation(setRotation2(r.vector("transf_rotation"))); });
 }
 
+// The axes transf_function_enabledx/y/z turn on, as 1 or 0 per axis.
+vec3 enabledAxes(Reader& r) {
+    return vec3(r.boolean("transf_function_enabledx"), r.boolean("transf_function_enabledy"),
+                r.boolean("transf_function_enabledz"));
+}
+
 // transf_addition_constant, added after the formula's step (nothing when it is zero).
 void additionConstant(Reader& r, NodeBuilder& b) {
     const vec3 add = r.vector("transf_addition_constant");
@@ -270,6 +276,14 @@ void acrossWindows(Reader& r, int from, int to, const std::vector<std::string>& 
     }
 }
 
+// One scale_vary step: scale, vary and the limit at `limitKey`, whether it moves the offset, and
+// Mandelbulber2's option M (transf_function_enabledM_false) as its reset.
+void scaleVaryNode(Reader& r, NodeBuilder& b, double scale, double vary, const std::string& limitKey, bool update) {
+    b.add("scale_vary",
+          {N::f("scale", scale), N::f("vary", vary), N::f("limit", r.number(limitKey)),
+           N::f("update", update ? 1.0 : 0.0), N::f("reset", r.boolean("transf_function_enabledM_false") ? 1.0 : 0.0)});
+}
+
 // A scale that reads the orbit's varying offset a (Mandelbulber2's aux.actualScaleA; formulas/
 // scale_vary.hpp): a + scale in window `scaleWindow`. Where the formula varies it (transf_scale_vary_0
 // not 0 and `varies`), a moves by vary (|a| - limit) after the scale in window `updateWindow` (reset
@@ -282,11 +296,7 @@ void varyingScale(Reader& r, NodeBuilder& b, double scale, const std::string& sc
     acrossWindows(
         r, r.integer("transf_start_iterations_" + scaleWindow), r.integer("transf_stop_iterations_" + scaleWindow),
         windows, [&](int start, int stop, const std::vector<bool>& covered) {
-            b.within(start, stop, [&] {
-                b.add("scale_vary", {N::f("scale", scale), N::f("vary", vary), N::f("limit", r.number(limitKey)),
-                                     N::f("update", !covered.empty() && covered[0] ? 1.0 : 0.0),
-                                     N::f("reset", r.boolean("transf_function_enabledM_false") ? 1.0 : 0.0)});
-            });
+            b.within(start, stop, [&] { scaleVaryNode(r, b, scale, vary, limitKey, !covered.empty() && covered[0]); });
         });
 }
 
@@ -669,10 +679,9 @@ void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window, cons
 // axes transf_function_enabledx/y/z name; in `window` when one is given.
 void symmetricMultipleOfC(Reader& r, NodeBuilder& b, const std::string& weights, const std::string& window = "") {
     if (!r.boolean("transf_addCpixel_enabled_false")) return;
-    const vec3 absAxes(r.boolean("transf_function_enabledx") ? 1.0 : 0.0,
-                       r.boolean("transf_function_enabledy") ? 1.0 : 0.0,
-                       r.boolean("transf_function_enabledz") ? 1.0 : 0.0);
-    auto add = [&] { b.add("add_c_symmetric", {N::v("weights", r.vector(weights)), N::v("abs_axes", absAxes)}); };
+    auto add = [&] {
+        b.add("add_c_symmetric", {N::v("weights", r.vector(weights)), N::v("abs_axes", enabledAxes(r))});
+    };
     if (window.empty())
         add();
     else
@@ -990,8 +999,7 @@ void derivativeTweakLeftOut(Reader& r, std::vector<ImportItem>& approximated) {
         approximated.push_back({r.where(), "analyticDE_scale_1: the derivative's own factor is left out"});
 }
 void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
-    const vec3 axes(r.boolean("transf_function_enabledx"), r.boolean("transf_function_enabledy"),
-                    r.boolean("transf_function_enabledz"));
+    const vec3 axes = enabledAxes(r);
     const vec3 offset = r.vector("transf_offset_000");
     b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", r.vector("transf_offset_111")),
                                   N::v("multiplier", vec3(r.vector("transf_scale3D_000").x, offset.y, offset.z))});
@@ -1125,8 +1133,7 @@ void mapTransfAbsAddTgladFold4d(Reader& r, NodeBuilder& b, std::vector<ImportIte
     }
 }
 void mapTransfAbsAddConditional4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
-    const vec3 axes(r.boolean("transf_function_enabledx"), r.boolean("transf_function_enabledy"),
-                    r.boolean("transf_function_enabledz"));
+    const vec3 axes = enabledAxes(r);
     b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", vec3(r.vector4("transf_offset_1111"))),
                                   N::v("multiplier", vec3(r.vector4("transf_scale_0000")))});
     derivativeTweakLeftOut(r, approximated);
@@ -1352,9 +1359,7 @@ void mapFoldBoxMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
                   [&](int start, int stop, const std::vector<bool>& covered) {
                       b.within(start, stop, [&] {
                           if (covered.empty() || !covered[0]) return b.add("scale", {N::f("scale", scale)});
-                          b.add("scale_vary", {N::f("scale", scale), N::f("vary", r.number("transf_scale_vary_0")),
-                                               N::f("limit", r.number("transf_scaleB_1")), N::f("update", 1.0),
-                                               N::f("reset", r.boolean("transf_function_enabledM_false") ? 1.0 : 0.0)});
+                          scaleVaryNode(r, b, scale, r.number("transf_scale_vary_0"), "transf_scaleB_1", true);
                       });
                   });
     if (r.boolean("mandelbox_main_rotation_enabled"))
@@ -1372,8 +1377,14 @@ void mapSierpinski3d(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approxi
     };
     const std::vector<vec3> sort{vec3(1, -1, 0), vec3(1, 0, -1), vec3(0, 1, -1)};
     const std::vector<vec3> sums{vec3(1, 1, 0), vec3(1, 0, 1), vec3(0, 1, 1)};
-    if (r.boolean("transf_function_enabled")) mirrors(sort), mirrors(sums);
-    if (r.boolean("transf_function_enabled_false")) mirrors(sums), mirrors(sort);
+    if (r.boolean("transf_function_enabled")) {
+        mirrors(sort);
+        mirrors(sums);
+    }
+    if (r.boolean("transf_function_enabled_false")) {
+        mirrors(sums);
+        mirrors(sort);
+    }
     b.add("scale", {N::f("scale", r.number("transf_scaleA_2"))});
     inWindow(r, b, "C", "C", [&] { b.add("translate", {N::v("offset", -r.vector("transf_offset_111"))}); });
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
