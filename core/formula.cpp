@@ -28,6 +28,10 @@ Node Node::make(const BlockDesc& block) {
     return n;
 }
 
+vec3 FractalPlacement::localFromWorld(const vec3& world) const {
+    return scale * (Placement::localFromWorld() * repeatCell(world - center, repeat));
+}
+
 std::string Formula::structureKey() const {
     std::string key;
     for (const Node& n : nodes) {
@@ -51,7 +55,26 @@ std::string Formula::structureKey() const {
     };
     for (const Node& n : nodes) addCustom(n.block);
     addCustom(estimator.block);
+    // A combined fractal's structure, operation and whether it is on are compiled in; its
+    // placement, like the first one's, is uniforms.
+    for (const CombinedFractal& c : fractals)
+        key += "|&" + std::string(kObjectOperationNames[int(c.operation)]) + (c.enabled ? "" : ":off") + "(" +
+               c.formula.structureKey() + ")";
     return key;
+}
+
+bool Formula::membershipIsFlag() const {
+    return !fractals.empty() || estimator.block->membership == Membership::EscapeTime;
+}
+
+Formula Formula::fractalAlone(size_t index) const {
+    Formula alone = fractalAt(index);
+    alone.fractals.clear();
+    alone.boundRadius = boundRadius;
+    alone.hitRule = hitRule;
+    alone.customBlocks = customBlocks;
+    alone.objects = objects;
+    return alone;
 }
 
 bool canBoundEscape(const std::vector<Node>& nodes) {
@@ -78,6 +101,8 @@ int firstJumpingStep(const std::vector<Node>& nodes) {
 bool Formula::cpuEvaluable() const {
     for (const Node& n : nodes)
         if (n.block->custom) return false;
+    for (const CombinedFractal& c : fractals)
+        if (!c.formula.cpuEvaluable()) return false;
     return !estimator.block->custom;
 }
 
@@ -112,10 +137,10 @@ double orbitValueGradient(const Formula& f, const vec3& pos, int count, double h
     return length(g) / (4.0 * h);
 }
 
-}  // namespace
-
-// Mirrors formulaDE() in shaders/formula.glsl: keep the two in step.
-Evaluation evaluate(const Formula& f, const vec3& pos, double interiorWallsThreshold) {
+// One fractal at a point of its own frame, its placement aside: the orbit and the estimate
+// times its DE factor, under the hit rule `rule`. Mirrors fractalEval() in
+// shaders/formula_fractal.glsl: keep the two in step.
+Evaluation evaluateFractal(const Formula& f, const vec3& pos, HitRule rule, double hitThreshold) {
     if (f.estimator.block->custom)
         throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation; use gl::DEProbe");
     Evaluation e;
@@ -157,12 +182,65 @@ Evaluation evaluate(const Formula& f, const vec3& pos, double interiorWallsThres
     e.orbitGradient = p.orbitGradient;
     e.distance = f.estimator.block->estimate(p, c, f.estimator.args()) * f.deFactor;
     e.inside = isInside(*f.estimator.block, e.distance, e.escaped);
-    if (f.hitRule == HitRule::InteriorWalls && interiorWallsThreshold > 0.0 &&
-        (e.inside || e.distance < 0.5 * interiorWallsThreshold))
-        e.distance = interiorWallsThreshold;
-    if (!f.objects.empty())
-        e.distance = combineObjects(f.objects, pos, e.distance, e.inside,
-                                    f.estimator.block->membership == Membership::EscapeTime);
+    if (rule == HitRule::InteriorWalls && hitThreshold > 0.0 && (e.inside || e.distance < 0.5 * hitThreshold))
+        e.distance = hitThreshold;
+    return e;
+}
+
+// A fractal at a world point: in its placed frame, the estimate back in world units (the
+// threshold, a world length, taken into the frame and back).
+Evaluation evaluatePlaced(const Formula& f, const vec3& world, HitRule rule, double hitThreshold) {
+    if (f.placement.identity()) return evaluateFractal(f, world, rule, hitThreshold);
+    const double scale = f.placement.scale;
+    Evaluation e = evaluateFractal(f, f.placement.localFromWorld(world), rule, hitThreshold * std::abs(scale));
+    e.distance /= scale;
+    return e;
+}
+
+}  // namespace
+
+// Mirrors formulaEval() in the generated GLSL (shaders/formula.glsl, core/glsl_gen.cpp): keep the
+// two in step.
+Evaluation evaluate(const Formula& f, const vec3& pos, double hitThreshold) {
+    Evaluation e = evaluatePlaced(f, pos, f.hitRule, hitThreshold);
+    for (const CombinedFractal& c : f.fractals) {
+        if (!c.enabled) continue;
+        const Evaluation o = evaluatePlaced(c.formula, pos, f.hitRule, hitThreshold);
+        const bool inside = e.inside;
+        bool taken = false;
+        switch (c.operation) {
+            case ObjectOperation::Join:
+                taken = o.distance < e.distance;
+                e.distance = std::min(e.distance, o.distance);
+                e.inside = inside || o.inside;
+                break;
+            case ObjectOperation::Intersect:
+                taken = o.distance > e.distance;
+                e.distance = std::max(e.distance, o.distance);
+                e.inside = inside && o.inside;
+                break;
+            case ObjectOperation::Carve: {
+                // A distance estimator's estimate is signed; an escape-time one's is no distance
+                // inside its set (why: evaluate() in core/formula.hpp).
+                const double cut = c.formula.estimator.block->membership == Membership::EscapeTime && o.inside
+                                       ? 1.5 * hitThreshold
+                                       : -o.distance;
+                taken = cut > e.distance;
+                e.distance = std::max(e.distance, cut);
+                e.inside = inside && !o.inside;
+                break;
+            }
+        }
+        if (taken) {
+            const double distance = e.distance;
+            const bool combinedInside = e.inside;
+            e = o;
+            e.distance = distance;
+            e.inside = combinedInside;
+        }
+    }
+    if (!f.fractals.empty()) e.escaped = !e.inside;
+    if (!f.objects.empty()) e.distance = combineObjects(f.objects, pos, e.distance, e.inside, f.membershipIsFlag());
     return e;
 }
 

@@ -49,6 +49,24 @@ enum class HitRule {
 };
 inline constexpr std::string_view kHitRuleNames[] = {"surface", "insideOnly", "interiorWalls"};
 
+// Where a fractal sits in the scene (Mandelbulber2's boolean mode, calculate_distance.cpp): the
+// point is moved by -center, repeated in cells `repeat` wide about the origin (per axis; 0 does
+// not repeat), turned into the fractal's frame and multiplied by `scale`; the estimate is divided
+// by `scale`, so that it stays in world units. The identity by default.
+struct FractalPlacement : Placement {
+    double scale = 1.0;
+    vec3 repeat{0.0};
+
+    bool identity() const { return center == vec3(0.0) && !turned() && scale == 1.0 && repeat == vec3(0.0); }
+    // The point in the fractal's own frame.
+    vec3 localFromWorld(const vec3& world) const;
+};
+
+// At most this many fractals combined with the first (Mandelbulber2 has 9 slots).
+inline constexpr int kMaxCombinedFractals = 8;
+
+struct CombinedFractal;
+
 struct Formula {
     // The loop body, in order; then the closing estimator.
     std::vector<Node> nodes;
@@ -62,6 +80,13 @@ struct Formula {
     double deFactor = 1.0;
     // Where a ray stops (HitRule).
     HitRule hitRule = HitRule::Surface;
+    // Where the fractal sits (the identity unless it is placed among others).
+    FractalPlacement placement;
+    // Whole fractals combined with this one in order, before the objects (Mandelbulber2's boolean
+    // mode): each joined with what comes before, intersecting it or carved from it, with its own
+    // nodes, iterations, bailout, DE factor and placement. Membership is then the same boolean
+    // combination of each fractal's own membership.
+    std::vector<CombinedFractal> fractals;
     // Objects beside the fractal, combined in order with the estimate after it (each joined with
     // it, intersecting it or carved from it): Mandelbulber2's primitives and limit box. Their
     // distances are exact, so the DE factor does not scale them.
@@ -71,11 +96,32 @@ struct Formula {
 
     // False when a node is a custom GLSL block: evaluate it with gl::DEProbe instead.
     bool cpuEvaluable() const;
+    // Whether membership is a flag carried with the estimate (escape-time estimators, and any
+    // combination of fractals) rather than the sign of the estimate.
+    bool membershipIsFlag() const;
+    // Fractal `index` alone: 0 is this one, without the fractals combined with it; 1.. the
+    // combined ones, in order. Iterations, bailout, nodes and placement are its own; the bound,
+    // hit rule, custom blocks and objects this formula's.
+    Formula fractalAlone(size_t index) const;
+    // Fractal `index`: 0 is this one, 1.. the combined ones.
+    const Formula& fractalAt(size_t index) const;
 
     // Structure: what needs a recompile when it changes (block ids, order, enable, schedule). Parameter values,
     // iterations, bailout, bound and factor are uniforms.
     std::string structureKey() const;
 };
+
+// A fractal combined with the one before it (Formula::fractals). Its formula's own `fractals`
+// and `objects` stay empty: they belong to the formula that holds it.
+struct CombinedFractal {
+    Formula formula;
+    ObjectOperation operation = ObjectOperation::Join;
+    bool enabled = true;
+};
+
+inline const Formula& Formula::fractalAt(size_t index) const {
+    return index == 0 ? *this : fractals.at(index - 1).formula;
+}
 
 // The seed's colouring: minimum distances of the orbit to the three coordinate planes (xyz) and
 // to the origin (w), accumulated after every iteration (seed 3.3).
@@ -83,6 +129,8 @@ struct OrbitTrap {
     vec4 value{1e20};
 };
 
+// Of a formula with combined fractals, the fields but `distance` and `inside` are those of the
+// fractal that set the distance.
 struct Evaluation {
     double distance = 0.0;
     OrbitTrap trap;
@@ -113,10 +161,13 @@ inline bool jumps(const Node& n) { return n.enabled && n.block->derivativeAt(n.a
 int firstJumpingStep(const std::vector<Node>& nodes);
 
 // Throws std::logic_error for a formula that is not cpuEvaluable().
-// interiorWallsThreshold: with HitRule::InteriorWalls, the hit threshold at pos while a ray is
-// marched (0 elsewhere): the set's inside, and its outside within half of it, then count as that
+// hitThreshold: the hit threshold at pos while a ray is marched (0 elsewhere). With
+// HitRule::InteriorWalls the set's inside, and its outside within half of it, then count as that
 // threshold, before the objects (Mandelbulber2 applies its interior mode to the fractal alone).
-Evaluation evaluate(const Formula& f, const vec3& pos, double interiorWallsThreshold = 0.0);
+// Inside an escape-time fractal that carves (CombinedFractal), whose estimate says nothing of the
+// distance to its outside, the carved space counts as 1.5 thresholds: a marched ray crawls
+// through it, as in Mandelbulber2's boolean SUB (calculate_distance.cpp).
+Evaluation evaluate(const Formula& f, const vec3& pos, double hitThreshold = 0.0);
 inline double distanceEstimate(const Formula& f, const vec3& pos) { return evaluate(f, pos).distance; }
 
 }  // namespace fraktal

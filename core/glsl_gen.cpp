@@ -24,28 +24,37 @@ std::string glslFloat(double v) {
 
 int countLines(std::string_view s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
-std::string nodeFunctionName(int k) { return "fraktal_node" + std::to_string(k); }
+// One fractal's names: node k's function and uniforms carry the fractal's suffix (fractalSuffix);
+// `line` numbers its functions' #line ranges, which run on across the fractals and objects.
+struct FractalNames {
+    std::string suffix;
+    int firstLine = 0;
+
+    std::string function(int k) const { return "fraktal_node" + std::to_string(k) + suffix; }
+    std::string uniform(int k, std::string_view param, bool estimator) const {
+        return estimator ? estimatorUniformName(param, suffix) : nodeUniformName(k, param, suffix);
+    }
+};
 
 // One function per node: uniforms, then the block's body under the node's own source number.
-void emitNodeFunction(GlslEmitter& e, int k, const Node& node, const std::string& name, bool estimator) {
+void emitNodeFunction(GlslEmitter& e, const FractalNames& names, int k, const Node& node, const std::string& name,
+                      bool estimator) {
     const BlockDesc& b = *node.block;
     std::vector<GlslEmitter::Param> params;
     for (const ParamDecl& p : b.params)
-        params.push_back(
-            {glslType(p.type), estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name), p.name});
+        params.push_back({glslType(p.type), names.uniform(k, p.name, estimator), p.name});
     const std::string head =
-        std::string(estimator ? "float " : "void ") + nodeFunctionName(k) +
+        std::string(estimator ? "float " : "void ") + names.function(k) +
         (estimator ? "(vec4 p, vec3 c, float degree, float surfaceLogR, float orbitGradient" : "(inout vec4 p, vec3 c");
-    e.nodeFunction(k, b.id, name, head, params, b.glsl);
+    e.nodeFunction(names.firstLine + k, b.id, name, head, params, b.glsl);
 }
 
-// The estimator's arguments before its parameters, as formulaEval passes them.
+// The estimator's arguments before its parameters, as fractalEval passes them.
 constexpr const char* kEstimatorArgs = "p, c, degree, surfaceLogR, orbitGradient";
 
-std::string nodeCall(int k, const Node& node, bool estimator, const std::string& args = "") {
-    std::string call = nodeFunctionName(k) + "(" + (!args.empty() ? args : estimator ? kEstimatorArgs : "p, c");
-    for (const ParamDecl& p : node.block->params)
-        call += ", " + (estimator ? estimatorUniformName(p.name) : nodeUniformName(k, p.name));
+std::string nodeCall(const FractalNames& names, int k, const Node& node, bool estimator, const std::string& args = "") {
+    std::string call = names.function(k) + "(" + (!args.empty() ? args : estimator ? kEstimatorArgs : "p, c");
+    for (const ParamDecl& p : node.block->params) call += ", " + names.uniform(k, p.name, estimator);
     return call + ")";
 }
 
@@ -54,9 +63,8 @@ std::string nodeCall(int k, const Node& node, bool estimator, const std::string&
 // the estimate in order; it mirrors combineObjects() in core/scene_object.cpp. `escaped` is the
 // escape-time membership's flag of an orbit outside, which an object sets or clears. Returns
 // whether it emitted fraktalObjects (none without objects: the estimate is returned as it is).
-bool emitObjects(GlslEmitter& e, const Formula& f, std::vector<std::string>& names) {
+bool emitObjects(GlslEmitter& e, const Formula& f, int first, std::vector<std::string>& names) {
     std::string combine;
-    const int first = int(f.nodes.size()) + 1;
     for (size_t j = 0; j < f.objects.size(); ++j) {
         const SceneObject& o = f.objects[j];
         names.push_back("object " + std::to_string(j + 1) + " \"" + std::string(o.block->label) + "\" (" +
@@ -64,8 +72,10 @@ bool emitObjects(GlslEmitter& e, const Formula& f, std::vector<std::string>& nam
         if (!o.enabled) continue;
         const int k = int(j);
         std::vector<GlslEmitter::Param> params;
-        std::string call = "fraktal_object" + std::to_string(j) + "(" + objectPlacementUniformName(k, "turn") +
-                           " * (pos - " + objectPlacementUniformName(k, "center") + ")";
+        std::string call = "fraktal_object" + std::to_string(j) + "(repeatCell(" +
+                           objectPlacementUniformName(k, "turn") + " * (pos - " +
+                           objectPlacementUniformName(k, "center") + "), " + objectPlacementUniformName(k, "repeat") +
+                           ")";
         for (const ParamDecl& p : o.block->params) {
             params.push_back({glslType(p.type), objectUniformName(k, p.name), p.name});
             call += ", " + objectUniformName(k, p.name);
@@ -73,6 +83,7 @@ bool emitObjects(GlslEmitter& e, const Formula& f, std::vector<std::string>& nam
         call += ")";
         e.line("uniform vec3 " + objectPlacementUniformName(k, "center") + ";");
         e.line("uniform mat3 " + objectPlacementUniformName(k, "turn") + ";");
+        e.line("uniform vec3 " + objectPlacementUniformName(k, "repeat") + ";");
         e.nodeFunction(first + k, o.block->id, names.back(), "float fraktal_object" + std::to_string(j) + "(vec3 pos",
                        params, o.block->glsl);
         const std::string od = o.hollow ? "abs(" + call + ")" : call;
@@ -137,10 +148,16 @@ void replaceTemplateMarker(std::string& text, std::string_view marker, const std
     text.replace(at, (end == std::string::npos ? text.size() : end) - at, with);
 }
 
-std::string nodeUniformName(int nodeIndex, std::string_view param) {
-    return "u_n" + std::to_string(nodeIndex) + "_" + std::string(param);
+std::string fractalSuffix(size_t index) { return index == 0 ? "" : "_f" + std::to_string(index); }
+std::string nodeUniformName(int nodeIndex, std::string_view param, std::string_view fractal) {
+    return "u_n" + std::to_string(nodeIndex) + "_" + std::string(param) + std::string(fractal);
 }
-std::string estimatorUniformName(std::string_view param) { return "u_est_" + std::string(param); }
+std::string estimatorUniformName(std::string_view param, std::string_view fractal) {
+    return "u_est_" + std::string(param) + std::string(fractal);
+}
+std::string fractalUniformName(std::string_view what, std::string_view fractal) {
+    return "u_" + std::string(what) + std::string(fractal);
+}
 std::string objectUniformName(int objectIndex, std::string_view param) {
     return "u_o" + std::to_string(objectIndex) + "_" + std::string(param);
 }
@@ -148,42 +165,39 @@ std::string objectPlacementUniformName(int objectIndex, std::string_view what) {
     return "u_op" + std::to_string(objectIndex) + "_" + std::string(what);
 }
 
-GeneratedFormula generateFormulaGLSL(const Formula& f) {
-    GeneratedFormula g;
-    std::string tmpl(shaderTemplate("formula.glsl"));
-    // One line either way, so the template keeps its line numbers.
-    replaceMarker(tmpl, "//@FRAKTAL_OPTIONS",
-                  f.estimator.block->usesOrbitGradient() ? "#define FRAKTAL_ORBIT_GRADIENT" : "");
-    constexpr std::string_view kHitRuleDefines[] = {"", "#define FRAKTAL_HIT_INSIDE_ONLY",
-                                                    "#define FRAKTAL_HIT_INTERIOR_WALLS"};
-    static_assert(std::size(kHitRuleDefines) == std::size(kHitRuleNames));
-    replaceMarker(tmpl, "//@FRAKTAL_HIT_RULE", std::string(kHitRuleDefines[int(f.hitRule)]));
-    const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
-    if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
+namespace {
 
-    // Text before the marker keeps its own line numbers; the node functions follow.
-    GlslEmitter e;
-    e.out = tmpl.substr(0, nodesAt);
+// The node functions of one fractal, numbered from names.firstLine, listed in `nodeNames` as
+// `what` + the node's listed name.
+void emitFractalNodes(GlslEmitter& e, const Formula& f, const FractalNames& names, const std::string& what,
+                      std::vector<std::string>& nodeNames) {
     for (size_t k = 0; k < f.nodes.size(); ++k) {
-        g.nodeNames.push_back(listedNodeName("node ", int(k), *f.nodes[k].block));
-        if (f.nodes[k].enabled) emitNodeFunction(e, int(k), f.nodes[k], g.nodeNames.back(), false);
+        nodeNames.push_back(what + listedNodeName("node ", int(k), *f.nodes[k].block));
+        if (f.nodes[k].enabled) emitNodeFunction(e, names, int(k), f.nodes[k], nodeNames.back(), false);
     }
-    const int est = int(f.nodes.size());
-    g.nodeNames.push_back(listedNodeName("estimator", -1, *f.estimator.block));
-    emitNodeFunction(e, est, f.estimator, g.nodeNames.back(), true);
-    const bool objects = emitObjects(e, f, g.nodeNames);
+    nodeNames.push_back(what + listedNodeName("estimator", -1, *f.estimator.block));
+    emitNodeFunction(e, names, int(f.nodes.size()), f.estimator, nodeNames.back(), true);
+}
 
-    std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
+// shaders/formula_fractal.glsl for one fractal: its uniforms, orbit, membership and estimate,
+// fractalEval<suffix> and fractalInside<suffix>.
+std::string fractalInstance(const Formula& f, const FractalNames& names, HitRule hitRule) {
+    std::string text(shaderTemplate("formula_fractal.glsl"));
+    auto replace = [&text](std::string_view marker, const std::string& with) {
+        replaceTemplateMarker(text, marker, with, "formula_fractal.glsl");
+    };
+    replace("//@FRAKTAL_FRACTAL_OPTIONS",
+            f.estimator.block->usesOrbitGradient() ? "#define FRAKTAL_ORBIT_GRADIENT@F" : "");
     std::string loop, remaining;
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         const Node& n = f.nodes[k];
         if (!n.enabled) continue;
-        std::string call = nodeCall(int(k), n, false) + ";";
+        std::string call = nodeCall(names, int(k), n, false) + ";";
         // The product of the power steps' degrees (P4::degree on the CPU), for the estimator; and,
         // in log2, that of the iterations an escaped orbit did not run and of all of them.
         if (n.block->raisesDegree()) {
             const std::string d = n.block->degreeParam >= 0
-                                      ? nodeUniformName(int(k), n.block->params[size_t(n.block->degreeParam)].name)
+                                      ? names.uniform(int(k), n.block->params[size_t(n.block->degreeParam)].name, false)
                                       : glslFloat(n.block->fixedDegree);
             call += " degree *= " + d + ";";
             const std::string scheduleArgs = ", " + std::to_string(n.period) + ", " + std::to_string(n.phase) + ", " +
@@ -200,25 +214,106 @@ GeneratedFormula generateFormulaGLSL(const Formula& f) {
     }
     if (!loop.empty()) loop.pop_back();
     if (!remaining.empty()) remaining.pop_back();
-    replaceMarker(rest, "//@FRAKTAL_ORBIT_LOOP", loop);
-    replaceMarker(rest, "//@FRAKTAL_LOOP", loop);
-    replaceMarker(rest, "//@FRAKTAL_REMAINING_DEGREE", remaining);
-    std::string estimate = "u_deFactor * " + nodeCall(est, f.estimator, true);
-    if (f.hitRule == HitRule::InteriorWalls) estimate = "interiorWalls(" + estimate + ", escaped)";
-    replaceMarker(
-        rest, "//@FRAKTAL_ESTIMATE",
-        objects ? "    return fraktalObjects(pos, " + estimate + ", escaped);" : "    return " + estimate + ";");
+    replace("//@FRAKTAL_ORBIT_LOOP", loop);
+    replace("//@FRAKTAL_LOOP", loop);
+    replace("//@FRAKTAL_REMAINING_DEGREE", remaining);
+    const int est = int(f.nodes.size());
+    std::string estimate = "    float d = u_deFactor@F * " + nodeCall(names, est, f.estimator, true) + ";\n";
+    if (hitRule == HitRule::InteriorWalls)
+        estimate +=
+            "    d = interiorWalls(d, fractalInside@F(d, escaped), hitThreshold * "
+            "abs(u_fractalScale@F));\n";
+    replace("//@FRAKTAL_ESTIMATE", estimate + "    return d / u_fractalScale@F;");
     const bool escapeTime = f.estimator.block->membership == Membership::EscapeTime;
-    replaceMarker(rest, "//@FRAKTAL_MEMBERSHIP", escapeTime ? "    return !escaped;" : "    return d <= 0.0;");
+    replace("//@FRAKTAL_MEMBERSHIP", escapeTime ? "    return !escaped;" : "    return d <= 0.0;");
     // The orbit gradient (estimators that read it): the estimate without it sets the difference
     // step; the orbit value is log r for escape-time estimates, else the estimate at w = 1.
-    replaceMarker(
-        rest, "//@FRAKTAL_RUNNING_ESTIMATE",
-        "    float running = abs(" + nodeCall(est, f.estimator, true, "p, c, degree, surfaceLogR, 0.0") + ");");
-    replaceMarker(
-        rest, "//@FRAKTAL_ORBIT_VALUE",
-        escapeTime ? "    return log(max(length(p.xyz), 1e-30));"
-                   : "    return " + nodeCall(est, f.estimator, true, "vec4(p.xyz, 1.0), c, degree, 0.0, 0.0") + ";");
+    replace(
+        "//@FRAKTAL_RUNNING_ESTIMATE",
+        "    float running = abs(" + nodeCall(names, est, f.estimator, true, "p, c, degree, surfaceLogR, 0.0") + ");");
+    replace("//@FRAKTAL_ORBIT_VALUE",
+            escapeTime ? "    return log(max(length(p.xyz), 1e-30));"
+                       : "    return " +
+                             nodeCall(names, est, f.estimator, true, "vec4(p.xyz, 1.0), c, degree, 0.0, 0.0") + ";");
+    for (size_t at = text.find("@F"); at != std::string::npos; at = text.find("@F", at + names.suffix.size()))
+        text.replace(at, 2, names.suffix);
+    return text;
+}
+
+// formulaEval's body: the first fractal, each combined one in order (the trap and count of the
+// one that sets the distance kept, memberships combined as a flag), then the objects. Mirrors
+// evaluate() in core/formula.cpp.
+std::string combineFractals(const Formula& f, bool objects) {
+    std::string s = "    float d = fractalEval(pos, trap, iterations, escaped);\n";
+    if (!f.fractals.empty()) s += "    bool inside = fractalInside(d, escaped);\n";
+    for (size_t j = 0; j < f.fractals.size(); ++j) {
+        const CombinedFractal& c = f.fractals[j];
+        if (!c.enabled) continue;
+        const std::string suffix = fractalSuffix(j + 1);
+        s += "    {\n        vec4 t; int n; bool e;\n        float o = fractalEval" + suffix +
+             "(pos, t, n, e);\n        bool oInside = fractalInside" + suffix + "(o, e);\n";
+        switch (c.operation) {
+            case ObjectOperation::Join:
+                s += "        bool taken = o < d;\n        d = min(d, o);\n        inside = inside || oInside;\n";
+                break;
+            case ObjectOperation::Intersect:
+                s += "        bool taken = o > d;\n        d = max(d, o);\n        inside = inside && oInside;\n";
+                break;
+            case ObjectOperation::Carve:
+                // An escape-time estimate is no distance inside its set (evaluate() in core/formula.hpp).
+                s += c.formula.estimator.block->membership == Membership::EscapeTime
+                         ? "        float cut = oInside ? 1.5 * hitThreshold : -o;\n"
+                         : "        float cut = -o;\n";
+                s += "        bool taken = cut > d;\n        d = max(d, cut);\n        inside = inside && !oInside;\n";
+                break;
+        }
+        s += "        if (taken) { trap = t; iterations = n; }\n    }\n";
+    }
+    if (!f.fractals.empty()) s += "    escaped = !inside;\n";
+    s += objects ? "    return fraktalObjects(pos, d, escaped);" : "    return d;";
+    return s;
+}
+
+}  // namespace
+
+GeneratedFormula generateFormulaGLSL(const Formula& f) {
+    GeneratedFormula g;
+    std::string tmpl(shaderTemplate("formula.glsl"));
+    // One line either way, so the template keeps its line numbers.
+    constexpr std::string_view kHitRuleDefines[] = {"", "#define FRAKTAL_HIT_INSIDE_ONLY",
+                                                    "#define FRAKTAL_HIT_INTERIOR_WALLS"};
+    static_assert(std::size(kHitRuleDefines) == std::size(kHitRuleNames));
+    replaceMarker(tmpl, "//@FRAKTAL_HIT_RULE", std::string(kHitRuleDefines[int(f.hitRule)]));
+    const size_t nodesAt = tmpl.find("//@FRAKTAL_NODES");
+    if (nodesAt == std::string::npos) throw std::logic_error("formula.glsl lacks //@FRAKTAL_NODES");
+
+    // Text before the marker keeps its own line numbers; the node functions follow: the first
+    // fractal's, the objects', then each combined fractal's, numbered on.
+    GlslEmitter e;
+    e.out = tmpl.substr(0, nodesAt);
+    const FractalNames first{fractalSuffix(0), 0};
+    emitFractalNodes(e, f, first, "", g.nodeNames);
+    const bool objects = emitObjects(e, f, int(f.nodes.size()) + 1, g.nodeNames);
+    std::vector<FractalNames> combined;
+    int line = int(f.nodes.size() + 1 + f.objects.size());
+    for (size_t j = 0; j < f.fractals.size(); ++j) {
+        const Formula& c = f.fractals[j].formula;
+        combined.push_back({fractalSuffix(j + 1), line});
+        line += int(c.nodes.size()) + 1;
+        if (f.fractals[j].enabled)
+            emitFractalNodes(e, c, combined.back(), "fractal " + std::to_string(j + 2) + ": ", g.nodeNames);
+        else
+            for (size_t k = 0; k <= c.nodes.size(); ++k) g.nodeNames.push_back("fractal " + std::to_string(j + 2));
+    }
+    e.restoreFormulaLines();
+    e.out += fractalInstance(f, first, f.hitRule);
+    for (size_t j = 0; j < f.fractals.size(); ++j)
+        if (f.fractals[j].enabled) e.out += fractalInstance(f.fractals[j].formula, combined[j], f.hitRule);
+
+    std::string rest = tmpl.substr(tmpl.find('\n', nodesAt) + 1);
+    replaceMarker(rest, "//@FRAKTAL_COMBINE", combineFractals(f, objects));
+    replaceMarker(rest, "//@FRAKTAL_MEMBERSHIP",
+                  f.membershipIsFlag() ? "    return !escaped;" : "    return d <= 0.0;");
     e.restoreFormulaLines();
     e.out += rest;
     g.code = std::move(e.out);

@@ -15,7 +15,7 @@ namespace fraktal {
 //   lines 1 .. 4999        the program's own template (march, probe...)
 //   5000 + n               line n of the generated formula code (shaders/formula.glsl)
 //   10000 * (k + 1) + n    line n of node k's GLSL (the estimator is the last node, the objects
-//                          beside the fractal follow it)
+//                          beside the fractal follow it, then each combined fractal's nodes)
 inline constexpr int kFormulaLineBase = 5000;
 inline constexpr int kNodeLineStride = 10000;
 
@@ -65,10 +65,15 @@ struct GlslEmitter {
 void replaceTemplateMarker(std::string& text, std::string_view marker, const std::string& with,
                            std::string_view templateName);
 
-// Uniform names, shared by the generator and the uploader.
-std::string nodeUniformName(int nodeIndex, std::string_view param);
-std::string estimatorUniformName(std::string_view param);
-// An object's parameter, and its placement ("center", "turn": the mat3 localFromWorld).
+// Uniform names, shared by the generator and the uploader. `fractal` is fractalSuffix(index):
+// "" for the first fractal, "_f1", "_f2"... for those combined with it (Formula::fractals).
+std::string fractalSuffix(size_t index);
+std::string nodeUniformName(int nodeIndex, std::string_view param, std::string_view fractal = "");
+std::string estimatorUniformName(std::string_view param, std::string_view fractal = "");
+// A fractal's own uniforms (shaders/formula_fractal.glsl): "iterations", "bailout", "deFactor",
+// and its placement's "fractalCenter", "fractalTurn", "fractalScale", "fractalRepeat".
+std::string fractalUniformName(std::string_view what, std::string_view fractal);
+// An object's parameter, and its placement ("center", "turn": the mat3 localFromWorld, "repeat").
 std::string objectUniformName(int objectIndex, std::string_view param);
 std::string objectPlacementUniformName(int objectIndex, std::string_view what);
 

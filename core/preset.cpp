@@ -96,7 +96,7 @@ std::shared_ptr<const CustomBlock> parseCustomBlockKeepingUnknown(const ReadCont
 }
 
 // An object beside the fractal: {"object": kind, "operation": "join" | "intersect" | "carve",
-// "hollow", "enabled", "center", "axis", "angle", "params"}. Errors name it as "object N 'kind'".
+// "hollow", "enabled", "center", "axis", "angle", "repeat", "params"}. Errors name it as "object N 'kind'".
 SceneObject parseObject(const ReadContext& context, const json& j, const std::string& path, size_t listNumber) {
     FieldReader r(context, j, path);
     const json& id = r.at("object");
@@ -118,18 +118,94 @@ SceneObject parseObject(const ReadContext& context, const json& j, const std::st
     o.axis = r.vector<3>("axis", o.axis, -1.0, 1.0);
     if (length(o.axis) < 1e-9) r.fail("object " + std::to_string(listNumber) + ": the axis must not be zero", "axis");
     o.angle = r.number("angle", 0.0, -360.0, 360.0);
+    o.repeat = r.vector<3>("repeat", o.repeat, 0.0, 1e4);
     readNodeParams(r, o, listNumber, "object", "object");
     r.finish();
     return o;
 }
 
+// A placement {"center", "axis", "angle", "scale", "repeat"} (FractalPlacement), each optional.
+FractalPlacement parsePlacement(const ReadContext& context, const json& j, const std::string& path) {
+    FieldReader r(context, j, path);
+    FractalPlacement place;
+    place.center = r.vector<3>("center", place.center, -1e4, 1e4);
+    place.axis = r.vector<3>("axis", place.axis, -1.0, 1.0);
+    if (length(place.axis) < 1e-9) r.fail("the axis must not be zero", "axis");
+    place.angle = r.number("angle", 0.0, -360.0, 360.0);
+    place.scale = r.number("scale", 1.0, 1e-4, 1e4);
+    place.repeat = r.vector<3>("repeat", place.repeat, 0.0, 1e4);
+    r.finish();
+    return place;
+}
+
+// What each fractal of a formula has: iterations, bailout, DE factor, the node list closed by
+// its estimator, and the placement. Blocks are looked up among `custom` (the formula's).
+void parseFractal(FieldReader& r, const CustomBlocks& custom, Formula& f) {
+    const ReadContext& context = r.context();
+    f.iterations = r.integer("iterations", f.iterations, 0, kMaxIterations);
+    f.bailout = r.number("bailout", f.bailout, 1e-3, 1e10);
+    f.deFactor = r.number("deFactor", f.deFactor, 1e-3, 2.0);
+    const json& nodes = r.at("nodes");
+    const std::string path = r.child("nodes");
+    if (!nodes.is_array()) r.fail("expected an array of nodes, found " + FieldReader::typeName(nodes), "nodes");
+    if (nodes.empty()) r.fail("the node list is empty: a formula needs at least a closing estimator", "nodes");
+    if (nodes.size() > size_t(kMaxNodes))
+        r.fail("too many nodes (" + std::to_string(nodes.size()) + "; at most " + std::to_string(kMaxNodes) + ")",
+               "nodes");
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        const std::string nodePath = path + "[" + std::to_string(i) + "]";
+        Node n = parseNode(context, nodes[i], nodePath, custom, i + 1);
+        const bool last = i + 1 == nodes.size();
+        if (n.block->isEstimator() && !last)
+            throw PresetError(context.file, nodePath,
+                              "estimator '" + std::string(n.block->id) + "' may only close the node list");
+        if (!n.block->isEstimator() && last)
+            throw PresetError(context.file, nodePath,
+                              "the node list must end with an estimator (box, sphere, tetrahedron, escape_log, "
+                              "escape_potential, escape_linear), found '" +
+                                  std::string(n.block->id) + "'");
+        if (last) {
+            checkEstimatorSchedule(n, context.file, nodePath);
+            checkEscapeIsBounded(f.nodes, n, i + 1, context.file, nodePath);
+            f.estimator = std::move(n);
+        } else {
+            f.nodes.push_back(std::move(n));
+        }
+    }
+    if (r.has("placement")) f.placement = parsePlacement(context, r.at("placement"), r.child("placement"));
+}
+
+// A fractal combined with the first: {"operation", "enabled"} and the fields parseFractal reads.
+CombinedFractal parseCombinedFractal(const ReadContext& context, const json& j, const std::string& path,
+                                     const CustomBlocks& custom, size_t listNumber) {
+    FieldReader r(context, j, path);
+    CombinedFractal c;
+    c.operation = ObjectOperation(r.choice("operation", kObjectOperationNames, 0, "operation",
+                                           "fractal " + std::to_string(listNumber + 1) + ": "));
+    c.enabled = r.boolean("enabled", true);
+    parseFractal(r, custom, c.formula);
+    r.finish();
+    return c;
+}
+
+// Reads an optional array field of at most `most` entries with `parse(element, path, number)`.
+template <class Parse>
+void readList(FieldReader& r, const std::string& key, std::string_view what, size_t most, Parse parse) {
+    if (!r.has(key)) return;
+    const json& list = r.at(key);
+    if (!list.is_array())
+        r.fail("expected an array of " + std::string(what) + ", found " + FieldReader::typeName(list), key);
+    if (list.size() > most)
+        r.fail("too many " + std::string(what) + " (" + std::to_string(list.size()) + "; at most " +
+                   std::to_string(most) + ")",
+               key);
+    for (size_t i = 0; i < list.size(); ++i) parse(list[i], r.child(key) + "[" + std::to_string(i) + "]", i + 1);
+}
+
 Formula parseFormula(const ReadContext& context, const json& j) {
     FieldReader r(context, j, "formula");
     Formula f;
-    f.iterations = r.integer("iterations", f.iterations, 0, kMaxIterations);
-    f.bailout = r.number("bailout", f.bailout, 1e-3, 1e10);
     f.boundRadius = r.number("boundRadius", f.boundRadius, 1e-3, 1e4);
-    f.deFactor = r.number("deFactor", f.deFactor, 1e-3, 2.0);
     if (r.has("hitInsideOnly")) {  // the older field, read as the rule it named
         if (r.has("hitRule")) r.fail("give hitRule alone (hitInsideOnly is its older form)", "hitInsideOnly");
         if (r.boolean("hitInsideOnly", false)) f.hitRule = HitRule::InsideOnly;
@@ -148,45 +224,14 @@ Formula parseFormula(const ReadContext& context, const json& j) {
             f.customBlocks.push_back(std::move(block));
         }
     }
-    const json& nodes = r.at("nodes");
-    const std::string path = r.child("nodes");
-    if (!nodes.is_array()) r.fail("expected an array of nodes, found " + FieldReader::typeName(nodes), "nodes");
-    if (nodes.empty()) r.fail("the node list is empty: a formula needs at least a closing estimator", "nodes");
-    if (nodes.size() > size_t(kMaxNodes))
-        r.fail("too many nodes (" + std::to_string(nodes.size()) + "; at most " + std::to_string(kMaxNodes) + ")",
-               "nodes");
-    for (size_t i = 0; i < nodes.size(); ++i) {
-        const std::string nodePath = path + "[" + std::to_string(i) + "]";
-        Node n = parseNode(context, nodes[i], nodePath, f.customBlocks, i + 1);
-        const bool last = i + 1 == nodes.size();
-        if (n.block->isEstimator() && !last)
-            throw PresetError(context.file, nodePath,
-                              "estimator '" + std::string(n.block->id) + "' may only close the node list");
-        if (!n.block->isEstimator() && last)
-            throw PresetError(context.file, nodePath,
-                              "the node list must end with an estimator (box, sphere, tetrahedron, escape_log, "
-                              "escape_potential, escape_linear), found '" +
-                                  std::string(n.block->id) + "'");
-        if (last) {
-            checkEstimatorSchedule(n, context.file, nodePath);
-            checkEscapeIsBounded(f.nodes, n, i + 1, context.file, nodePath);
-            f.estimator = std::move(n);
-        } else {
-            f.nodes.push_back(std::move(n));
-        }
-    }
-    if (r.has("objects")) {
-        const json& objects = r.at("objects");
-        if (!objects.is_array())
-            r.fail("expected an array of objects, found " + FieldReader::typeName(objects), "objects");
-        if (objects.size() > size_t(kMaxObjects))
-            r.fail("too many objects (" + std::to_string(objects.size()) + "; at most " + std::to_string(kMaxObjects) +
-                       ")",
-                   "objects");
-        for (size_t i = 0; i < objects.size(); ++i)
-            f.objects.push_back(
-                parseObject(context, objects[i], r.child("objects") + "[" + std::to_string(i) + "]", i + 1));
-    }
+    parseFractal(r, f.customBlocks, f);
+    readList(r, "fractals", "combined fractals", size_t(kMaxCombinedFractals),
+             [&](const json& e, const std::string& path, size_t number) {
+                 f.fractals.push_back(parseCombinedFractal(context, e, path, f.customBlocks, number));
+             });
+    readList(r, "objects", "objects", size_t(kMaxObjects), [&](const json& e, const std::string& path, size_t number) {
+        f.objects.push_back(parseObject(context, e, path, number));
+    });
     r.finish();
     return f;
 }
@@ -395,8 +440,37 @@ json objectToJson(const SceneObject& o) {
     if (o.center != vec3(0.0)) j["center"] = vecJson(o.center);
     if (o.axis != vec3(0.0, 0.0, 1.0)) j["axis"] = vecJson(o.axis);
     if (o.angle != 0.0) j["angle"] = o.angle;
+    if (o.repeat != vec3(0.0)) j["repeat"] = vecJson(o.repeat);
     return j;
 }
+
+namespace {
+
+// A placement's fields that differ from the identity; empty at the identity.
+json placementToJson(const FractalPlacement& place) {
+    json j = json::object();
+    if (place.center != vec3(0.0)) j["center"] = vecJson(place.center);
+    if (place.axis != vec3(0.0, 0.0, 1.0)) j["axis"] = vecJson(place.axis);
+    if (place.angle != 0.0) j["angle"] = place.angle;
+    if (place.scale != 1.0) j["scale"] = place.scale;
+    if (place.repeat != vec3(0.0)) j["repeat"] = vecJson(place.repeat);
+    return j;
+}
+
+// What parseFractal reads: the fields that differ from the defaults, the nodes, the placement.
+void writeFractal(const Formula& fractal, json& f) {
+    const Formula defaults;
+    if (fractal.iterations != defaults.iterations) f["iterations"] = fractal.iterations;
+    if (fractal.bailout != defaults.bailout) f["bailout"] = fractal.bailout;
+    if (fractal.deFactor != defaults.deFactor) f["deFactor"] = fractal.deFactor;
+    json nodes = json::array();
+    for (const Node& n : fractal.nodes) nodes.push_back(nodeToJson(n));
+    nodes.push_back(nodeToJson(fractal.estimator));
+    f["nodes"] = nodes;
+    if (json place = placementToJson(fractal.placement); !place.empty()) f["placement"] = place;
+}
+
+}  // namespace
 
 json presetToJson(const Preset& p) {
     const Formula defaults;
@@ -407,19 +481,24 @@ json presetToJson(const Preset& p) {
     if (!p.name.empty()) j["name"] = p.name;
     if (!p.description.empty()) j["description"] = p.description;
     json f = json::object();
-    if (p.formula.iterations != defaults.iterations) f["iterations"] = p.formula.iterations;
-    if (p.formula.bailout != defaults.bailout) f["bailout"] = p.formula.bailout;
     if (p.formula.boundRadius != defaults.boundRadius) f["boundRadius"] = p.formula.boundRadius;
-    if (p.formula.deFactor != defaults.deFactor) f["deFactor"] = p.formula.deFactor;
     if (p.formula.hitRule != defaults.hitRule) f["hitRule"] = kHitRuleNames[int(p.formula.hitRule)];
     if (!p.formula.customBlocks.empty()) {
         f["customBlocks"] = json::array();
         for (const auto& b : p.formula.customBlocks) f["customBlocks"].push_back(customBlockToJson(*b));
     }
-    json nodes = json::array();
-    for (const Node& n : p.formula.nodes) nodes.push_back(nodeToJson(n));
-    nodes.push_back(nodeToJson(p.formula.estimator));
-    f["nodes"] = nodes;
+    writeFractal(p.formula, f);
+    if (!p.formula.fractals.empty()) {
+        json fractals = json::array();
+        for (const CombinedFractal& c : p.formula.fractals) {
+            json e = json::object();
+            if (c.operation != ObjectOperation::Join) e["operation"] = kObjectOperationNames[int(c.operation)];
+            if (!c.enabled) e["enabled"] = false;
+            writeFractal(c.formula, e);
+            fractals.push_back(e);
+        }
+        f["fractals"] = fractals;
+    }
     if (!p.formula.objects.empty()) {
         json objects = json::array();
         for (const SceneObject& o : p.formula.objects) objects.push_back(objectToJson(o));
@@ -453,12 +532,17 @@ void savePresetFile(const std::filesystem::path& path, const Preset& preset) {
 
 std::string describeFormula(const Formula& f) {
     std::ostringstream s;
-    s << "iterations " << f.iterations << ", bailout " << f.bailout << ", bound radius " << f.boundRadius
-      << ", DE factor " << f.deFactor
-      << (f.hitRule == HitRule::InsideOnly      ? ", hits only inside"
-          : f.hitRule == HitRule::InteriorWalls ? ", hits the interior walls"
-                                                : "")
-      << "\n";
+    auto describePlacement = [&](const FractalPlacement& place) {
+        if (place.identity()) return;
+        s << "  placed at (" << place.center.x << ", " << place.center.y << ", " << place.center.z << ")";
+        if (place.turned())
+            s << ", turned " << place.angle << " degrees about (" << place.axis.x << ", " << place.axis.y << ", "
+              << place.axis.z << ")";
+        if (place.scale != 1.0) s << ", scaled " << place.scale;
+        if (place.repeat != vec3(0.0))
+            s << ", repeated every (" << place.repeat.x << ", " << place.repeat.y << ", " << place.repeat.z << ")";
+        s << "\n";
+    };
     auto describeNode = [&](const Node& n, const std::string& prefix) {
         s << prefix << n.block->id << " [" << categoryName(n.block->category) << "]";
         if (!n.enabled) s << " (disabled)";
@@ -476,8 +560,27 @@ std::string describeFormula(const Formula& f) {
         s << "\n";
     };
     // Numbered from 1 with the estimator last, as the editor's list and the preset errors number them.
-    for (size_t k = 0; k < f.nodes.size(); ++k) describeNode(f.nodes[k], "  " + std::to_string(k + 1) + ". ");
-    describeNode(f.estimator, "  " + std::to_string(f.nodes.size() + 1) + ". ");
+    auto describeNodes = [&](const Formula& fractal) {
+        for (size_t k = 0; k < fractal.nodes.size(); ++k)
+            describeNode(fractal.nodes[k], "  " + std::to_string(k + 1) + ". ");
+        describeNode(fractal.estimator, "  " + std::to_string(fractal.nodes.size() + 1) + ". ");
+    };
+    s << "iterations " << f.iterations << ", bailout " << f.bailout << ", bound radius " << f.boundRadius
+      << ", DE factor " << f.deFactor
+      << (f.hitRule == HitRule::InsideOnly      ? ", hits only inside"
+          : f.hitRule == HitRule::InteriorWalls ? ", hits the interior walls"
+                                                : "")
+      << "\n";
+    describePlacement(f.placement);
+    describeNodes(f);
+    for (size_t j = 0; j < f.fractals.size(); ++j) {
+        const CombinedFractal& c = f.fractals[j];
+        s << "fractal " << j + 2 << " (" << kObjectOperationNames[int(c.operation)] << (c.enabled ? "" : ", off")
+          << "): iterations " << c.formula.iterations << ", bailout " << c.formula.bailout << ", DE factor "
+          << c.formula.deFactor << "\n";
+        describePlacement(c.formula.placement);
+        describeNodes(c.formula);
+    }
     for (size_t k = 0; k < f.objects.size(); ++k) {
         const SceneObject& o = f.objects[k];
         s << "  object " << k + 1 << ". " << o.block->id << " (" << kObjectOperationNames[int(o.operation)]
@@ -486,6 +589,8 @@ std::string describeFormula(const Formula& f) {
         if (o.angle != 0.0)
             s << ", turned " << o.angle << " degrees about (" << o.axis.x << ", " << o.axis.y << ", " << o.axis.z
               << ")";
+        if (o.repeat != vec3(0.0))
+            s << ", repeated every (" << o.repeat.x << ", " << o.repeat.y << ", " << o.repeat.z << ")";
         for (size_t i = 0; i < o.values.size(); ++i) {
             const ParamDecl& d = o.block->params[i];
             s << (i == 0 ? ": " : ", ") << d.name << " = ";

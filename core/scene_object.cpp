@@ -19,14 +19,21 @@ SceneObject SceneObject::make(const ObjectDesc& kind) {
     return o;
 }
 
-glm::dmat3 SceneObject::localFromWorld() const {
-    if (angle == 0.0 || length(axis) < 1e-12) return glm::dmat3(1.0);
+vec3 repeatCell(const vec3& x, const vec3& period) {
+    vec3 cell = x;
+    for (int a = 0; a < 3; ++a)
+        if (period[a] > 0.0) cell[a] = x[a] - period[a] * std::floor(x[a] / period[a] + 0.5);
+    return cell;
+}
+
+glm::dmat3 Placement::localFromWorld() const {
+    if (!turned()) return glm::dmat3(1.0);
     const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), glm::radians(angle), normalize(axis)));
     return glm::transpose(turn);
 }
 
 double SceneObject::distanceAt(const vec3& pos) const {
-    const double d = block->distance(localFromWorld() * (pos - center), args());
+    const double d = block->distance(repeatCell(localFromWorld() * (pos - center), repeat), args());
     return hollow ? std::abs(d) : d;
 }
 

@@ -52,21 +52,34 @@ const ObjectDesc* findObject(std::string_view id);
 // At most this many objects per formula (each is a function and a few uniforms).
 inline constexpr int kMaxObjects = 8;
 
-struct SceneObject {
+// The cell a repeated point falls in, centred on the origin: per axis with period > 0, x - period
+// * floor(x / period + 1/2) (Mandelbulber2's CVector3::mod); an axis of period 0 is kept.
+vec3 repeatCell(const vec3& x, const vec3& period);
+
+// Where a shape sits: its own frame turned by `angle` degrees about `axis` and moved to `center`.
+// Objects beside the fractal and combined fractals (core/formula.hpp) are placed by one.
+struct Placement {
+    vec3 center{0.0};
+    vec3 axis{0.0, 0.0, 1.0};
+    double angle = 0.0;
+
+    // The rotation taking world directions into the frame (the inverse of its turn).
+    glm::dmat3 localFromWorld() const;
+    bool turned() const { return angle != 0.0 && length(axis) >= 1e-12; }
+};
+
+struct SceneObject : Placement {
     const ObjectDesc* block = nullptr;  // the kind (named `block` so the node readers serve it)
     std::vector<ParamValue> values;     // one per block->params, in declaration order
     ObjectOperation operation = ObjectOperation::Join;
     bool hollow = false;  // |distance|: only the shell (Mandelbulber2's "empty")
     bool enabled = true;
-    // Placement: the object's frame is turned by `angle` degrees about `axis` and moved to `center`.
-    vec3 center{0.0};
-    vec3 axis{0.0, 0.0, 1.0};
-    double angle = 0.0;
+    // Repeated in cells this wide about the origin of its own frame, per axis (0: once), as
+    // Mandelbulber2 repeats its primitives (primitives.cpp: after the turn).
+    vec3 repeat{0.0};
 
     static SceneObject make(const ObjectDesc& kind);  // with default parameter values
     Args args() const { return Args{values.data()}; }
-    // The rotation taking world directions into the object's frame (the inverse of its turn).
-    glm::dmat3 localFromWorld() const;
     double distanceAt(const vec3& pos) const;  // in world units, hollow applied
 };
 

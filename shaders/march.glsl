@@ -105,9 +105,9 @@ void recoverOvershoot(vec3 ro, vec3 rd, float tOut, float dOut, float tIn, float
 void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
     for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
         float threshold = pixelAngle * s.t * u_detail;
-        interiorWallsThreshold = threshold;
+        hitThreshold = threshold;
         float d = DE(ro + rd * s.t);
-        interiorWallsThreshold = 0.0;
+        hitThreshold = 0.0;
         deEvals += 1.0;
         s.steps += 1;
         if (d < threshold || d <= 0.0) {
@@ -128,7 +128,9 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
 void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
     for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
         bool inside;
+        hitThreshold = pixelAngle * s.t * u_detail;
         float d = DEInside(ro + rd * s.t, inside);
+        hitThreshold = 0.0;
         deEvals += 1.0;
         s.steps += 1;
 #ifdef FRAKTAL_HIT_INSIDE_ONLY

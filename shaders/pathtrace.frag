@@ -178,7 +178,9 @@ float traceSecondary(vec3 ro, vec3 rd, float eps, float maxDistance, inout float
     tEnd = min(tEnd, maxDistance);
     float t = tStart;
     for (int i = 0; i < u_maxSteps && t < tEnd; ++i) {
+        hitThreshold = eps;
         float d = DE(ro + rd * t);
+        hitThreshold = 0.0;
         deEvals += 1.0;
         if (d < eps) return t;
         t += d;

@@ -87,7 +87,10 @@ float ambientOcclusion(vec3 pos, vec3 n, inout float deEvals) {
     float occlusion = 0.0;
     for (int i = 1; i <= u_aoSteps; ++i) {
         float h = u_aoDistance * float(i) / float(u_aoSteps);
+        // A fractal carved by an escape-time one reads its carved space as 1.5 h: open, not occluded.
+        hitThreshold = h;
         float d = DE(pos + n * h);
+        hitThreshold = 0.0;
         occlusion += clamp((h - d) / h, 0.0, 1.0);
     }
     deEvals += float(u_aoSteps);
@@ -102,7 +105,10 @@ float softShadow(vec3 ro, vec3 L, float eps, inout float deEvals) {
     float result = 1.0;
     float t = max(tStart, 2.0 * eps);
     for (int i = 0; i < u_shadowSteps && t < tEnd; ++i) {
+        // A carved space reads as 1.5 t / softness: lit, as in ambientOcclusion.
+        hitThreshold = t / u_shadowSoftness;
         float d = DE(ro + L * t);
+        hitThreshold = 0.0;
         deEvals += 1.0;
         result = min(result, u_shadowSoftness * d / t);
         if (result < 1e-3) return 0.0;

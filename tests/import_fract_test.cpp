@@ -328,13 +328,73 @@ TEST(FractImport, PrimitivesAndTheLimitBoxBecomeObjects) {
         const double mb2 = std::abs(std::max(std::abs(q.z) - 1.5, std::hypot(q.x, q.y) - 1.0));
         EXPECT_NEAR(objects[0].distanceAt(p), mb2, 1e-9);
     }
-    // A cone, a repeated object and one that carves the fractal from itself are named.
+    // A cone and one that carves the fractal from itself are named.
     const mb2::FractImport refused = importText(
-        "[main_parameters]\nprimitive_cone_1_enabled true;\nprimitive_box_1_enabled true;\n"
-        "primitive_box_1_repeat 1 0 0;\nprimitive_sphere_1_enabled true;\nprimitive_sphere_1_boolean_operator 3;\n");
+        "[main_parameters]\nprimitive_cone_1_enabled true;\nprimitive_sphere_1_enabled true;\n"
+        "primitive_sphere_1_boolean_operator 3;\n");
     EXPECT_TRUE(mentions(refused.unsupported, "main", "primitive cone 1: a cone beside the fractal"));
-    EXPECT_TRUE(mentions(refused.unsupported, "main", "primitive box 1: a repeated object"));
     EXPECT_TRUE(mentions(refused.unsupported, "main", "primitive sphere 1: boolean operator 3"));
+    // A repeated object repeats in its own frame, after the turn (primitives.cpp: M (p - position),
+    // then CVector3::mod): cells 2 wide along the turned x, centred on the position.
+    const mb2::FractImport repeated = importText(
+        "[main_parameters]\nformula_1 103;\nprimitive_box_1_enabled true;\nprimitive_box_1_repeat 2 0 0;\n"
+        "primitive_box_1_position 0 1 0;\nprimitive_box_1_rotation 0 0 90;\nprimitive_box_1_size 1 1 1;\n");
+    ASSERT_TRUE(repeated.faithful()) << repeated.unsupported.front().text();
+    ASSERT_EQ(repeated.preset.formula.objects.size(), 1u);
+    const SceneObject& box = repeated.preset.formula.objects[0];
+    EXPECT_EQ(box.repeat, vec3(2.0, 0.0, 0.0));
+    const glm::dmat3 rz(glm::rotate(glm::dmat4(1.0), glm::radians(90.0), vec3(0, 0, 1)));
+    for (const vec3& p : test::randomPoints(200, 3.0, 42)) {
+        vec3 q = rz * (p - vec3(0.0, 1.0, 0.0));
+        q.x -= 2.0 * std::floor(q.x / 2.0 + 0.5);
+        const vec3 outside = glm::abs(q) - vec3(0.5);
+        const double mb2 =
+            length(glm::max(outside, vec3(0.0))) + std::min(std::max(outside.x, std::max(outside.y, outside.z)), 0.0);
+        EXPECT_NEAR(box.distanceAt(p), mb2, 1e-9);
+    }
+}
+
+// Mandelbulber2's boolean mode (calculate_distance.cpp, nine_fractals.cpp): each enabled slot is
+// a fractal of its own, with its own Julia constant, constant factor and default bailout, placed
+// by formula_position, _rotation, _repeat and _scale (measured at M (p - position) / scale), and
+// combined with what the slots before it made by boolean_operator of the slot before (0 AND, 1 OR,
+// 2 SUB).
+TEST(FractImport, BooleanModeCombinesTheSlotsAsPlacedFractals) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nboolean_operators true;\nformula_1 8;\nformula_2 2;\nformula_3 7;\nN 12;\n"
+        "boolean_operator_1 2;\nboolean_operator_2 0;\nformula_position_2 0,5 0 0;\nformula_rotation_2 0 0 90;\n"
+        "formula_scale_2 0,5;\nformula_repeat_3 3 0 0;\njulia_mode_2 true;\njulia_c_2 0,1 0,2 0,3;\n"
+        "julia_mode true;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Formula& f = r.preset.formula;
+    EXPECT_EQ(blockIds(f).front(), "box_fold");
+    EXPECT_EQ(f.estimator.block->id, "escape_linear");
+    ASSERT_EQ(f.fractals.size(), 2u);
+    EXPECT_EQ(f.fractals[0].operation, ObjectOperation::Carve);
+    EXPECT_EQ(f.fractals[1].operation, ObjectOperation::Intersect);
+    EXPECT_TRUE(mentions(r.approximated, "slot 2", "carved exactly"));
+    // The bulb with its own Julia constant (the global julia_mode is the first slot's alone: off).
+    const Formula& bulb = f.fractals[0].formula;
+    EXPECT_EQ(blockIds(bulb), (std::vector<std::string>{"mandelbulb_sine", "add_c"}));
+    const Node& addC = bulb.nodes[1];
+    EXPECT_EQ(addC.values[size_t(addC.block->paramIndex("julia"))].x, 1.0);
+    EXPECT_EQ(addC.values[size_t(addC.block->paramIndex("julia_c"))], vec3(0.1, 0.2, 0.3));
+    EXPECT_TRUE(std::none_of(f.nodes.begin(), f.nodes.end(), [](const Node& n) {
+        return n.block->id == "add_c" && n.values[size_t(n.block->paramIndex("julia"))].x > 0.5;
+    }));
+    EXPECT_EQ(bulb.iterations, 12);
+    EXPECT_EQ(f.fractals[1].formula.iterations, 12);
+    const glm::dmat3 rz(glm::rotate(glm::dmat4(1.0), glm::radians(90.0), vec3(0, 0, 1)));
+    for (const vec3& p : test::randomPoints(100, 2.0, 43)) {
+        const vec3 local = bulb.placement.localFromWorld(p);
+        const vec3 mb2 = rz * (p - vec3(0.5, 0.0, 0.0)) / 0.5;
+        EXPECT_NEAR(length(local - mb2), 0.0, 1e-12);
+    }
+    EXPECT_EQ(f.fractals[1].formula.placement.repeat, vec3(3.0, 0.0, 0.0));
+    // An operator Mandelbulber2 does not have is named.
+    const mb2::FractImport refused =
+        importText("[main_parameters]\nboolean_operators true;\nformula_1 8;\nformula_2 2;\nboolean_operator_1 4;\n");
+    EXPECT_TRUE(mentions(refused.unsupported, "main", "boolean_operator_1 4"));
 }
 
 // Mandelbulber2's water beside a fractal: the water combine, its frame turned as the file's
@@ -1985,7 +2045,11 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         // abox_mod_kali_v2 with c added signed by the point (add_c_symmetric).
         {"formula/img/abox_mod_kali_v2.fract", ""},
         {"examples/quaternion4D_001.fract", "slot 1 (quaternion4d): the formula quaternion4d"},
-        {"examples/boolean001.fract", "boolean_operators"},
+        // Boolean mode: a kaleidoscopic IFS with a Mandelbulb carved from it and a Menger sponge
+        // joined, in a limit box (each fractal placed and measured alone).
+        {"examples/boolean001.fract", ""},
+        // A placed, scaled and turned fractal joined to a repeated one, lit by repeated cylinders.
+        {"examples/monte carlo global illumination - emmisive materials.fract", ""},
     };
     // Two files at a time (each import's safe-step measurement and each render keep about one of
     // the two cores busy), each in files of its own.

@@ -161,6 +161,13 @@ int runCheck(const CheckOptions& o) {
         return runPlaneCheck(o);
     }
     Preset preset = checkedPreset(o);
+    // The factor measured here is the combined estimate's, and one number cannot say which
+    // fractal's estimate overshoots: each fractal's own is measured alone (as `fraktal import` does).
+    if (o.apply && !preset.formula.fractals.empty())
+        throw std::runtime_error(o.preset +
+                                 ": --apply: the formula combines whole fractals, each with its own deFactor; the "
+                                 "check measures the combination, so set each fractal's factor by hand (or check "
+                                 "each fractal alone as a preset of its own)");
     SafeStepOptions safe;
     safe.rays.stepsAcrossBound = o.steps;
     safe.rays.seed = o.seed;

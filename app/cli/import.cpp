@@ -43,6 +43,13 @@ void addImportCommand(CLI::App& app, Action& action) {
                 std::printf("%s: %zu nodes, %s, %d iterations, bailout %g, bound %.3g, step factor %.3f\n",
                             output.string().c_str(), f.nodes.size(), std::string(f.estimator.block->id).c_str(),
                             f.iterations, f.bailout, f.boundRadius, f.deFactor);
+                for (size_t i = 0; i < f.fractals.size(); ++i) {
+                    const Formula& c = f.fractals[i].formula;
+                    std::printf("  fractal %zu (%s): %zu nodes, %s, %d iterations, bailout %g, step factor %.3f\n",
+                                i + 2, std::string(kObjectOperationNames[int(f.fractals[i].operation)]).c_str(),
+                                c.nodes.size(), std::string(c.estimator.block->id).c_str(), c.iterations, c.bailout,
+                                c.deFactor);
+                }
                 for (const std::string& item : scene.unsupported) std::printf("  dropped: %s\n", item.c_str());
                 for (const std::string& item : scene.approximated) std::printf("  approximated: %s\n", item.c_str());
             }

@@ -111,7 +111,7 @@ struct Tracer {
         tEnd = std::min(tEnd, maxDistance);
         double t = tStart;
         for (int i = 0; i < scene.render.maxSteps && t < tEnd; ++i) {
-            const double d = march.de(ro + rd * t, deEvals);
+            const double d = march.de(ro + rd * t, deEvals, eps);
             if (d < eps) return t;
             t += d;
         }

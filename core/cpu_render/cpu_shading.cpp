@@ -5,14 +5,14 @@
 
 namespace fraktal::cpu {
 
-double Scene::de(const vec3& p, double& deEvals) const {
+double Scene::de(const vec3& p, double& deEvals, double hitThreshold) const {
     deEvals += 1.0;
-    return distanceEstimate(formula, p);
+    return evaluate(formula, p, hitThreshold).distance;
 }
 
-double Scene::deInside(const vec3& p, bool& inside, double& deEvals) const {
+double Scene::deInside(const vec3& p, bool& inside, double& deEvals, double hitThreshold) const {
     deEvals += 1.0;
-    const Evaluation e = evaluate(formula, p);
+    const Evaluation e = evaluate(formula, p, hitThreshold);
     inside = e.inside;
     return e.distance;
 }
@@ -91,7 +91,7 @@ void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd,
         return marchStepsInteriorWalls(scene, ro, rd, tEnd, pixelAngle, maxSteps, s, deEvals);
     for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
         bool inside = false;
-        double d = scene.deInside(ro + rd * s.t, inside, deEvals);
+        double d = scene.deInside(ro + rd * s.t, inside, deEvals, pixelAngle * s.t * scene.params.detail);
         s.steps += 1;
         if (scene.formula.hitRule == HitRule::InsideOnly)
             d = inside ? 0.0 : std::max(d, 1.01 * pixelAngle * s.t * scene.params.detail);
@@ -177,7 +177,8 @@ double ambientOcclusion(const Scene& scene, const vec3& pos, const vec3& n, doub
     double occlusion = 0.0;
     for (int i = 1; i <= s.aoSteps; ++i) {
         const double h = s.aoDistance * double(i) / double(s.aoSteps);
-        const double d = scene.de(pos + n * h, deEvals);
+        // A fractal carved by an escape-time one reads its carved space as 1.5 h: open, not occluded.
+        const double d = scene.de(pos + n * h, deEvals, h);
         occlusion += std::clamp((h - d) / h, 0.0, 1.0);
     }
     return std::clamp(1.0 - s.aoStrength * occlusion / double(s.aoSteps), 0.0, 1.0);
@@ -191,7 +192,8 @@ double softShadow(const Scene& scene, const vec3& ro, const vec3& L, double eps,
     double result = 1.0;
     double t = std::max(tStart, 2.0 * eps);
     for (int i = 0; i < s.shadowSteps && t < tEnd; ++i) {
-        const double d = scene.de(ro + L * t, deEvals);
+        // A carved space reads as 1.5 t / softness: lit, as in ambientOcclusion.
+        const double d = scene.de(ro + L * t, deEvals, t / s.shadowSoftness);
         result = std::min(result, s.shadowSoftness * d / t);
         if (result < 1e-3) return 0.0;
         t += std::clamp(d, eps, 0.1 * scene.formula.boundRadius);

@@ -25,9 +25,11 @@ struct SurfaceSample {
 struct Scene {
     const Formula& formula;
     const ShadingParams& params;
-    double de(const vec3& p, double& deEvals) const;
+    // hitThreshold: the size the caller takes for a hit at p (evaluate() in core/formula.hpp).
+    double de(const vec3& p, double& deEvals, double hitThreshold = 0.0) const;
     // The estimate and the estimator's membership at p (formulaInside in shaders/formula.glsl).
-    double deInside(const vec3& p, bool& inside, double& deEvals) const;
+    // hitThreshold: the marcher's at p (evaluate() in core/formula.hpp), 0 elsewhere.
+    double deInside(const vec3& p, bool& inside, double& deEvals, double hitThreshold = 0.0) const;
 };
 
 MarchState marchStart(const Scene& scene, double tStart);

@@ -19,10 +19,16 @@ class FormulaUniforms {
     void upload(const Formula& formula) const;
 
    private:
-    GLint iterations_ = -1, bailout_ = -1, deFactor_ = -1, boundRadius_ = -1;
-    std::vector<std::vector<GLint>> nodes_;  // [node][param]; the estimator last
+    GLint boundRadius_ = -1;
+    // One fractal's uniforms (shaders/formula_fractal.glsl): the first, then each combined one.
+    struct FractalLocations {
+        GLint iterations = -1, bailout = -1, deFactor = -1;
+        GLint center = -1, turn = -1, scale = -1, repeat = -1;
+        std::vector<std::vector<GLint>> nodes;  // [node][param]; the estimator last
+    };
+    std::vector<FractalLocations> fractals_;
     struct ObjectLocations {
-        GLint center = -1, turn = -1;
+        GLint center = -1, turn = -1, repeat = -1;
         std::vector<GLint> params;
     };
     std::vector<ObjectLocations> objects_;

@@ -1904,6 +1904,21 @@ std::vector<std::pair<std::string, std::string>> enabledPrimitives(const FractFi
     return out;
 }
 
+// Mandelbulber2's boolean operators (fractparams.hpp enumBooleanOperator: AND, OR, SUB), for the
+// objects and the fractals of a boolean combination.
+constexpr ObjectOperation kBooleanOperations[] = {ObjectOperation::Intersect, ObjectOperation::Join,
+                                                  ObjectOperation::Carve};
+constexpr const char* kCarvedExactly = "carved exactly (Mandelbulber2 carves within 1.5 hit thresholds)";
+
+// Mandelbulber2 measures a placed shape at M (p - position), M = SetRotation2(rotation in
+// degrees): the shape is turned by M's inverse.
+void placeByMandelbulber2(Placement& place, const vec3& position, const vec3& rotation) {
+    place.center = position;
+    const AxisAngle turn = axisAngle(glm::transpose(setRotation2(rotation)));
+    place.axis = turn.axis;
+    place.angle = turn.degrees;
+}
+
 // A cut by a box (limits_enabled) and objects beside the fractal (primitives). One box, sphere or
 // plane, unrotated, or the limit box alone, beside a linear or log estimate keep to fraktal's
 // combine estimators (the fractal's linear estimate |v| - offset over |dr|, Mandelbulber2's linear
@@ -2022,10 +2037,6 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
                              "cylinder, torus)");
             continue;
         }
-        if (length(vectorOf("repeat", "0 0 0")) > 0.0) {
-            main.unsupported(where + ": a repeated object");
-            continue;
-        }
         if (file.find("main_parameters", key + "normal")) {
             main.unsupported(where + ": a plane given by its normal (files before 2.10)");
             continue;
@@ -2040,16 +2051,13 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
             continue;
         }
         SceneObject o = SceneObject::make(*kind);
-        constexpr ObjectOperation kOperations[] = {ObjectOperation::Intersect, ObjectOperation::Join,
-                                                   ObjectOperation::Carve};
-        o.operation = kOperations[booleanOperator];
+        o.operation = kBooleanOperations[booleanOperator];
         o.hollow = empty;
         o.center = position;
         // Mandelbulber2 measures at M (p - position), M = SetRotation2(rotation): the object is
         // turned by M's inverse.
-        const AxisAngle turn = axisAngle(glm::transpose(setRotation2(rotation)));
-        o.axis = turn.axis;
-        o.angle = turn.degrees;
+        placeByMandelbulber2(o, position, rotation);
+        o.repeat = glm::max(vectorOf("repeat", "0 0 0"), vec3(0.0));
         auto set = [&](std::string_view name, const vec3& v) {
             o.values[size_t(std::find_if(kind->params.begin(), kind->params.end(),
                                          [&](const ParamDecl& d) { return d.name == name; }) -
@@ -2074,8 +2082,7 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
             set("radius", vec3(numberOf("radius", "1")));
             set("tube", vec3(numberOf("tube_radius", "0.2")));
         }
-        if (booleanOperator == 2)
-            out.approximated.push_back({where, "carved exactly (Mandelbulber2 carves within 1.5 hit thresholds)"});
+        if (booleanOperator == 2) out.approximated.push_back({where, kCarvedExactly});
         f.objects.push_back(std::move(o));
     }
     if (limits) {
@@ -2087,56 +2094,24 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
     }
 }
 
-}  // namespace
-
-FractImport importFract(const FractFile& file) {
-    FractImport out;
-    Preset& p = out.preset;
-    p.name = "";
-    Reader main(file, "main_parameters", true, "main", out.unsupported);
-
-    // ---- Which slot runs on each iteration (nine_fractals.cpp; reference Notes 2) ----
-    const bool hybrid = main.boolean("hybrid_fractal_enable");
-    if (main.boolean("boolean_operators"))
-        main.unsupported("boolean_operators: each slot a separate object, combined (part 2)");
-    const int N = main.integer("N");
-    SlotSequencing sequencing;
-    sequencing.hybrid = hybrid;
-    sequencing.repeatFrom = hybrid ? main.integer("repeat_from") : 1;
-    std::vector<int> slots;  // 0-based, in slot order
-    for (int k = 0; k < (hybrid ? kSlots : 1); ++k) {
-        const std::string n = std::to_string(k + 1);
-        const int formula = main.integer("formula_" + n);
-        if (formula == 0 || !main.boolean("fractal_enable_" + n)) continue;
-        sequencing.runs[size_t(k)] = true;
-        sequencing.count[size_t(k)] = main.integer("formula_iterations_" + n);
-        sequencing.first[size_t(k)] = main.integer("formula_start_iteration_" + n);
-        sequencing.last[size_t(k)] = main.integer("formula_stop_iteration_" + n);
-        Reader slotMain(file, "main_parameters", true, "slot " + n + " (" + formulaName(formula) + ")",
-                        out.unsupported);
-        if (hybrid) slotMain.mustBeDefault("formula_weight_" + n, "a blend of the point before and after the slot");
-        // Mandelbulber2 skips the bailout test after such a slot's iterations (a pre-transform, or a
-        // box whose linear estimate r / dr settles whatever the radius it stops at); fraktal tests
-        // after every iteration, which ends some orbits an iteration sooner.
-        if (!main.boolean("check_for_bailout_" + n))
-            out.approximated.push_back({"slot " + n,
-                                        "check_for_bailout off: fraktal tests the bailout after every "
-                                        "iteration"});
-        slots.push_back(k);
-    }
-    if (slots.empty()) main.unsupported("no formula slot runs");
-    const std::vector<int> sequence = slotOfEachIteration(sequencing, std::clamp(N, 1, kMaxIterations));
+// One fractal from the slots in `slots` that run on the iterations of `sequence` (the 0-based
+// slot of each): its nodes, estimator, iterations, bailout and factor. `own` is the suffix of the
+// keys each fractal of a boolean combination has of its own ("_2" for slot 2; "" otherwise):
+// julia_mode, julia_c, fractal_constant_factor and initial_waxis (nine_fractals.cpp).
+Formula importFractal(const FractFile& file, Reader& main, const std::vector<int>& slots,
+                      const std::vector<int>& sequence, int N, const std::string& own, FractImport& out) {
+    Formula f;
     if (std::find_if(slots.begin(), slots.end(), [&](int k) {
             return main.integer("formula_" + std::to_string(k + 1)) == kHypercomplexId;
         }) == slots.end())
-        main.mustBeDefault("initial_waxis", "a fourth coordinate (part 2)");
+        main.mustBeDefault("initial_waxis" + own, "a fourth coordinate (part 2)");
 
     // ---- Each slot's nodes ----
     // Files up to 2.04 store the factor as one number (MB2's Compatibility() makes it a vector).
-    const std::optional<double> uniformFactor = parseNumber(main.raw("fractal_constant_factor"));
-    const vec3 factor = uniformFactor ? vec3(*uniformFactor) : main.vector("fractal_constant_factor");
-    const bool julia = main.boolean("julia_mode");
-    const vec3 juliaC = main.vector("julia_c");
+    const std::optional<double> uniformFactor = parseNumber(main.raw("fractal_constant_factor" + own));
+    const vec3 factor = uniformFactor ? vec3(*uniformFactor) : main.vector("fractal_constant_factor" + own);
+    const bool julia = main.boolean("julia_mode" + own);
+    const vec3 juliaC = main.vector("julia_c" + own);
     const bool perAxisFactor = std::abs(factor.x - factor.y) > 1e-12 || std::abs(factor.x - factor.z) > 1e-12;
     const bool boxFolding = main.boolean("box_folding"), sphericalFolding = main.boolean("spherical_folding");
     std::map<Mb2De, int> deVotes;
@@ -2227,11 +2202,11 @@ FractImport importFract(const FractFile& file) {
                 node.start = std::max(node.start, stretch.start);
                 if (stretch.stop < iterationsRun) node.stop = std::min(node.stop, stretch.stop);
                 if (node.start >= node.stop || node.iterationsRunBefore(iterationsRun) == 0) continue;
-                if (p.formula.nodes.size() <= size_t(kMaxNodes)) p.formula.nodes.push_back(std::move(node));
+                if (f.nodes.size() <= size_t(kMaxNodes)) f.nodes.push_back(std::move(node));
             }
         }
     }
-    if (p.formula.nodes.size() > size_t(kMaxNodes))
+    if (f.nodes.size() > size_t(kMaxNodes))
         main.unsupported("a sequence of more than " + std::to_string(kMaxNodes) + " nodes (fraktal holds at most " +
                          std::to_string(kMaxNodes) + ")");
 
@@ -2252,16 +2227,14 @@ FractImport importFract(const FractFile& file) {
     EstimatorChoice choice{functionFromSetting(function, preferred), delta || method == 1};
     if (choice.delta && choice.de == Mb2De::Linear) choice.de = Mb2De::DeltaLinear;
     if (choice.delta && choice.de == Mb2De::Log) choice.de = Mb2De::DeltaLog;
-    if (!p.formula.nodes.empty() || !out.unsupported.empty())
-        addEstimator(p.formula, choice, main, estimatorValues, out.approximated);
+    if (!f.nodes.empty() || !out.unsupported.empty()) addEstimator(f, choice, main, estimatorValues, out.approximated);
 
     // ---- Iterations, bailout, step ----
-    p.formula.iterations = std::clamp(N, 1, kMaxIterations);
+    f.iterations = std::clamp(N, 1, kMaxIterations);
     if (N > kMaxIterations) main.unsupported("N " + std::to_string(N) + " (fraktal runs at most 1000 iterations)");
-    p.formula.bailout =
-        main.boolean("use_default_bailout") ? (bailout > 0.0 ? bailout : 100.0) : main.number("bailout");
-    p.formula.bailout = std::clamp(p.formula.bailout, 1e-3, 1e10);
-    p.formula.deFactor = std::clamp(main.number("DE_factor"), 1e-3, 2.0);
+    f.bailout = main.boolean("use_default_bailout") ? (bailout > 0.0 ? bailout : 100.0) : main.number("bailout");
+    f.bailout = std::clamp(f.bailout, 1e-3, 1e10);
+    f.deFactor = std::clamp(main.number("DE_factor"), 1e-3, 2.0);
     if (ownOrbitSlot >= 0) {
         // The whole orbit in the estimator: N iterations, escaping at the bailout. Hypercomplex
         // from c = (point, initial_waxis); Aexion from the folded point, with its analytic
@@ -2273,23 +2246,107 @@ FractImport importFract(const FractFile& file) {
         if (formula == kHypercomplexId && julia) {
             // Julia mode adds julia_c times the constant factor in place of c, its fourth coordinate 0.
             b.add("hypercomplex_julia", {N::v("constant", juliaC * factor), N::f("constant_w", 0.0),
-                                         N::f("slice", main.number("initial_waxis")), N::f("orbit", N),
-                                         N::f("escape", std::max(p.formula.bailout, 2.0))});
+                                         N::f("slice", main.number("initial_waxis" + own)), N::f("orbit", N),
+                                         N::f("escape", std::max(f.bailout, 2.0))});
         } else if (formula == kHypercomplexId) {
-            b.add("hypercomplex_mandelbrot", {N::f("slice", main.number("initial_waxis")), N::f("orbit", N),
-                                              N::f("escape", std::max(p.formula.bailout, 2.0))});
+            b.add("hypercomplex_mandelbrot", {N::f("slice", main.number("initial_waxis" + own)), N::f("orbit", N),
+                                              N::f("escape", std::max(f.bailout, 2.0))});
         } else {
             Reader r(file, "fractal_" + n, false, "slot " + n + " (aexion)", out.unsupported);
             b.add("aexion",
-                  {N::f("cadd", r.number("cadd")), N::f("orbit", N), N::f("escape", std::max(p.formula.bailout, 2.0)),
+                  {N::f("cadd", r.number("cadd")), N::f("orbit", N), N::f("escape", std::max(f.bailout, 2.0)),
                    N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number("analyticDE_offset_1"))});
             if (choice.delta)
                 out.approximated.push_back(
                     {"DE", "delta_DE_method: Aexion's estimate from its analytic derivative, not differences"});
         }
-        p.formula.nodes.clear();
-        p.formula.estimator = nodes.front();
-        p.formula.iterations = 1;
+        f.nodes.clear();
+        f.estimator = nodes.front();
+        f.iterations = 1;
+    }
+    return f;
+}
+
+// Mandelbulber2's boolean mode (calculate_distance.cpp): each enabled slot is a fractal of its
+// own, run alone for N iterations, placed by formula_position, _rotation, _repeat and _scale of
+// its slot (the point moved, repeated, turned and divided by the scale; the estimate multiplied
+// by it), and combined with what the slots before it made by boolean_operator of the slot before
+// (AND intersects, OR joins, SUB carves).
+void importBooleanFractals(const FractFile& file, Reader& main, const std::vector<int>& slots, int N,
+                           FractImport& out) {
+    Formula& f = out.preset.formula;
+    const std::vector<int> sequence(size_t(std::clamp(N, 1, kMaxIterations)), 0);
+    for (const int k : slots) {
+        const std::string n = std::to_string(k + 1);
+        std::vector<int> alone = sequence;
+        std::fill(alone.begin(), alone.end(), k);
+        Formula fractal = importFractal(file, main, {k}, alone, N, "_" + n, out);
+        placeByMandelbulber2(fractal.placement, main.vector("formula_position_" + n),
+                             main.vector("formula_rotation_" + n));
+        fractal.placement.repeat = glm::max(main.vector("formula_repeat_" + n), vec3(0.0));
+        const double scale = main.number("formula_scale_" + n);
+        if (scale <= 0.0) main.unsupported("formula_scale_" + n + ": a scale that is not positive");
+        fractal.placement.scale = 1.0 / std::max(scale, 1e-4);
+        if (k == slots.front()) {
+            f = std::move(fractal);
+            continue;
+        }
+        const int op = main.integer("boolean_operator_" + std::to_string(k));
+        if (op < 0 || op > 2) {
+            main.unsupported("boolean_operator_" + std::to_string(k) + " " + std::to_string(op));
+            continue;
+        }
+        if (int(f.fractals.size()) >= kMaxCombinedFractals) {
+            main.unsupported("slot " + n + ": more than " + std::to_string(kMaxCombinedFractals + 1) + " fractals");
+            continue;
+        }
+        if (op == 2) out.approximated.push_back({"slot " + n, kCarvedExactly});
+        f.fractals.push_back({std::move(fractal), kBooleanOperations[op], true});
+    }
+}
+
+}  // namespace
+
+FractImport importFract(const FractFile& file) {
+    FractImport out;
+    Preset& p = out.preset;
+    p.name = "";
+    Reader main(file, "main_parameters", true, "main", out.unsupported);
+
+    // ---- Which slot runs on each iteration (nine_fractals.cpp; reference Notes 2) ----
+    const bool boolean = main.boolean("boolean_operators");
+    const bool hybrid = !boolean && main.boolean("hybrid_fractal_enable");
+    const int N = main.integer("N");
+    SlotSequencing sequencing;
+    sequencing.hybrid = hybrid;
+    sequencing.repeatFrom = hybrid ? main.integer("repeat_from") : 1;
+    std::vector<int> slots;  // 0-based, in slot order
+    for (int k = 0; k < (hybrid || boolean ? kSlots : 1); ++k) {
+        const std::string n = std::to_string(k + 1);
+        const int formula = main.integer("formula_" + n);
+        if (formula == 0 || !main.boolean("fractal_enable_" + n)) continue;
+        sequencing.runs[size_t(k)] = true;
+        sequencing.count[size_t(k)] = main.integer("formula_iterations_" + n);
+        sequencing.first[size_t(k)] = main.integer("formula_start_iteration_" + n);
+        sequencing.last[size_t(k)] = main.integer("formula_stop_iteration_" + n);
+        Reader slotMain(file, "main_parameters", true, "slot " + n + " (" + formulaName(formula) + ")",
+                        out.unsupported);
+        if (hybrid) slotMain.mustBeDefault("formula_weight_" + n, "a blend of the point before and after the slot");
+        // Mandelbulber2 skips the bailout test after such a slot's iterations (a pre-transform, or a
+        // box whose linear estimate r / dr settles whatever the radius it stops at); fraktal tests
+        // after every iteration, which ends some orbits an iteration sooner.
+        if (hybrid && !main.boolean("check_for_bailout_" + n))
+            out.approximated.push_back({"slot " + n,
+                                        "check_for_bailout off: fraktal tests the bailout after every "
+                                        "iteration"});
+        slots.push_back(k);
+    }
+    if (slots.empty()) main.unsupported("no formula slot runs");
+    if (boolean) {
+        importBooleanFractals(file, main, slots, N, out);
+    } else {
+        p.formula = importFractal(file, main, slots, slotOfEachIteration(sequencing, std::clamp(N, 1, kMaxIterations)),
+                                  N, "", out);
     }
     p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
     // iteration_threshold_mode: Mandelbulber2 stops only where the orbit stays bounded for N

@@ -43,8 +43,16 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
     result.preset.name = path.stem().string();
     result.preset.description = mb2::importDescription(file, result);
     if (result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) fitBound(result.preset);
-    if (options.measure && result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) {
-        const EstimatorMeasurement m = measureSafeStep(result.preset.formula, result.preset.camera);
+    // Each fractal of a boolean combination is measured alone, in its placement: its factor scales
+    // its own estimate (a union, intersection or difference of safe estimates is safe).
+    for (size_t i = 0; options.measure && result.preset.formula.cpuEvaluable() &&
+                       !result.preset.formula.nodes.empty() && i <= result.preset.formula.fractals.size();
+         ++i) {
+        const EstimatorMeasurement m = measureSafeStep(result.preset.formula.fractalAlone(i), result.preset.camera);
+        if (i > 0) {
+            result.preset.formula.fractals[i - 1].formula.deFactor = m.factor;
+            continue;
+        }
         if (hasSafeStepFactor(m))
             // The measured factor replaces the file's DE_factor: Mandelbulber2's artists lower that
             // for its own estimate (0.05 in its fog examples), and at a twentieth of the safe step
@@ -60,9 +68,11 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
     // A ray keeps the reach of 256 full steps at the factor: a file's low DE_factor that no
     // measurement replaced (an object drawn by its estimate alone, nothing inside it to measure
     // against: a Menger sponge at 250 iterations) would otherwise end rays before the surface.
-    Formula& f = result.preset.formula;
+    const Formula& f = result.preset.formula;
+    double leastFactor = f.deFactor;
+    for (const CombinedFractal& c : f.fractals) leastFactor = std::min(leastFactor, c.formula.deFactor);
     result.preset.render.maxSteps =
-        std::max(result.preset.render.maxSteps, std::min(int(std::ceil(256.0 / f.deFactor)), 4096));
+        std::max(result.preset.render.maxSteps, std::min(int(std::ceil(256.0 / leastFactor)), 4096));
     // What the import built must be a preset fraktal reads back: a value the mapping let through
     // outside a range is an error here, naming the file, not a preset that fails to load later.
     try {
