@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/anim/animation.hpp"
 #include "core/gl/de_probe.hpp"
 #include "core/glsl_gen.hpp"
 #include "core/json_reader.hpp"
@@ -144,6 +145,23 @@ TEST(CombinedFractals, PresetRoundTripsExactly) {
     for (const vec3& q : test::randomPoints(200, 1.8, 75))
         EXPECT_EQ(distanceEstimate(reloaded.formula, q), distanceEstimate(p.formula, q));
     EXPECT_NE(describeFormula(p.formula).find("fractal 3 (join)"), std::string::npos) << describeFormula(p.formula);
+}
+
+// A combined fractal's placement and parameters are fields a track keys like any other.
+TEST(CombinedFractals, TracksKeyACombinedFractalsPlacementAndParameters) {
+    Preset p = loadPreset(test::sourceDir() / "presets/menger_carved_by_mandelbulbs.json");
+    nlohmann::json j = presetToJson(p);
+    j["animation"] = {{"lastFrame", 10},
+                      {"tracks",
+                       {{{"target", "formula.fractals[0].placement.scale"},
+                         {"keys", {{{"frame", 0}, {"value", 0.9}}, {{"frame", 10}, {"value", 2.0}}}}},
+                        {{"target", "formula.fractals[1].nodes[0].params.power"},
+                         {"keys", {{{"frame", 0}, {"value", 8.0}}, {{"frame", 10}, {"value", 4.0}}}}}}}};
+    const Preset animated = parsePreset(j.dump(), "animated.json");
+    const Formula atMiddle = presetAtFrame(animated, 5.0).formula;
+    EXPECT_NEAR(atMiddle.fractals[0].formula.placement.scale, 1.45, 1e-9);
+    EXPECT_NEAR(atMiddle.fractals[1].formula.nodes[0].values[0].x, 6.0, 1e-9);
+    EXPECT_EQ(presetAtFrame(animated, 10.0).formula.fractals[0].formula.placement.scale, 2.0);
 }
 
 // Bad combined fractals are refused naming the field and the reason.

@@ -12,8 +12,6 @@ xvfb_screen=1920x1080x24 . "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$2
 
-# The centre of a widget the editor recorded (tab:Render, button:Store 1) in window coordinates.
-centre() { q ".widgets[\"$1\"] | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
 tap() { xdotool mousemove --window "$window" "$1" "$2" click 1; }
 person() {
     xdotool mousemove --window "$window" "$1" "$2"

@@ -9,21 +9,6 @@ xvfb_screen=1280x1060x24 . "$(dirname "$0")/editor_xvfb_helpers.sh"
 fraktal=$1
 presets=$2
 
-# The centre of a widget the editor recorded (header:Objects) in window coordinates.
-centre() { q ".widgets[\"$1\"] | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
-# click WIDGET: waits (at most 30 frames) for the editor to draw WIDGET, then clicks its centre as
-# a person does (move, a moment, press, release).
-click() {
-    wait_for ".widgets[\"$1\"] != null" true
-    [ "$(q ".widgets[\"$1\"] != null")" = true ] || { fail "no $1 drawn"; return; }
-    set -- $(centre "$1")
-    to "$1" "$2"
-    wait_frames 1
-    xdotool mousedown 1
-    wait_frames 1
-    xdotool mouseup 1
-    wait_frames 3
-}
 
 start "$presets/menger.json" --width 1280 --height 1060
 wait_settled

@@ -17,9 +17,9 @@ presets=$2
 out=$3
 mkdir -p "$out"
 
-# The centre of a panel widget (.widgets) or a parameter-panel widget (.paramWidgets) in window
-# coordinates; the field of an InputInt is its left part (its step buttons sit on the right).
-centre() { q ".widgets[\"$1\"] | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
+# A parameter-panel widget (.paramWidgets) in window coordinates (a panel widget's centre:
+# `centre`, editor_xvfb_helpers.sh); the field of an InputInt is its left part (its step buttons
+# sit on the right).
 field() { q ".paramWidgets[] | select(.name == \"$1\") | .rect | \"\\(.[0] + 12 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
 tick() { q ".paramWidgets[] | select(.name == \"$1\") | .rect | \"\\(.[0] + .[3] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
 click_at() {

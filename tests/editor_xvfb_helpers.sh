@@ -98,6 +98,21 @@ drag_frames() {
     done
     xdotool mouseup 1
 }
+# The centre of a widget the editor recorded (e.g. header:Objects) in window coordinates.
+centre() { q ".widgets[\"$1\"] | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
+# click WIDGET: waits (at most 30 frames) for the editor to draw WIDGET, then clicks its centre as
+# a person does (move, a moment, press, release).
+click() {
+    wait_for ".widgets[\"$1\"] != null" true
+    [ "$(q ".widgets[\"$1\"] != null")" = true ] || { fail "no $1 drawn"; return; }
+    set -- $(centre "$1")
+    to "$1" "$2"
+    wait_frames 1
+    xdotool mousedown 1
+    wait_frames 1
+    xdotool mouseup 1
+    wait_frames 3
+}
 # Relative difference of two camera positions (0: the same place).
 moved() { awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, r, " "); d = 0; n = 0;
     for (i = 1; i <= 3; i++) { d += (p[i] - r[i]) ^ 2; n += r[i] ^ 2 } print sqrt(d / n) }'; }

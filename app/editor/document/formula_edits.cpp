@@ -31,6 +31,50 @@ bool removeObject(Formula& f, int index) {
     return true;
 }
 
+bool combinable(const Formula& source) {
+    auto builtIn = [](const Node& n) { return n.block && !n.block->custom; };
+    return source.customBlocks.empty() && builtIn(source.estimator) &&
+           std::all_of(source.nodes.begin(), source.nodes.end(), builtIn);
+}
+
+bool addFractal(Formula& f, const Formula& source) {
+    if (int(f.fractals.size()) >= kMaxCombinedFractals || !combinable(source)) return false;
+    CombinedFractal c;
+    c.formula.nodes = source.nodes;
+    c.formula.estimator = source.estimator;
+    c.formula.iterations = source.iterations;
+    c.formula.bailout = source.bailout;
+    c.formula.deFactor = source.deFactor;
+    c.formula.placement = source.placement;
+    f.fractals.push_back(std::move(c));
+    return true;
+}
+
+bool removeFractal(Formula& f, int index) {
+    if (index < 0 || index >= int(f.fractals.size())) return false;
+    f.fractals.erase(f.fractals.begin() + index);
+    return true;
+}
+
+std::vector<FractalChoice> combinableFractals(const std::vector<std::filesystem::path>& folders) {
+    std::vector<FractalChoice> out;
+    for (const std::filesystem::path& folder : folders) {
+        std::error_code ec;
+        std::vector<std::filesystem::path> files;
+        for (const auto& e : std::filesystem::directory_iterator(folder, ec))
+            if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
+        std::sort(files.begin(), files.end());
+        for (const std::filesystem::path& file : files) {
+            try {
+                Preset p = loadPreset(file);  // throws for a 2D preset and a broken file
+                if (combinable(p.formula)) out.push_back({file.stem().string(), std::move(p.formula)});
+            } catch (const std::exception&) {
+            }
+        }
+    }
+    return out;
+}
+
 std::vector<const BlockDesc*> customBlocksIn(const Formula& f, Category category) {
     std::vector<const BlockDesc*> out;
     for (const auto& b : f.customBlocks)
@@ -211,11 +255,12 @@ void resetParam(Formula& f, int index, int param) {
 }
 
 int nodeNamedInLog(const std::string& log, int nodeCount) {
-    const std::regex node(R"(node (\d+) ")");
+    // The first node or estimator the log names; one of a combined fractal carries its number.
+    const std::regex named(R"((fractal \d+: )?(node (\d+) "|estimator "))");
     std::smatch m;
-    if (std::regex_search(log, m, node)) return std::stoi(m[1]) - 1;  // numbered from 1, as listed
-    if (log.find("estimator \"") != std::string::npos) return nodeCount;
-    return -1;
+    if (!std::regex_search(log, m, named) || m[1].matched) return -1;
+    if (m[3].matched) return std::stoi(m[3]) - 1;  // numbered from 1, as listed
+    return nodeCount;
 }
 
 // On Linux a thread's nice value is its own (setpriority(2), NOTES).

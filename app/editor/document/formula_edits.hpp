@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
 #include <future>
 #include <string>
 #include <string_view>
@@ -39,6 +40,25 @@ bool setEstimator(Preset& p, const BlockDesc& estimator);
 // object `index` removed (false out of range). They carry no animation tracks.
 bool addObject(Formula& f, const ObjectDesc& kind);
 bool removeObject(Formula& f, int index);
+// Whole fractals combined with the first (Formula::fractals). addFractal appends `source`'s own
+// fractal, joined: its nodes, estimator, iterations, bailout, DE factor and placement; not its
+// objects, the fractals combined with it, its bound or hit rule (the holding formula's apply).
+// False at kMaxCombinedFractals or when `source` is not combinable(). removeFractal takes
+// combined fractal `index` (0: the first combined one, the formula's fractal 2) out; false out of
+// range.
+bool addFractal(Formula& f, const Formula& source);
+bool removeFractal(Formula& f, int index);
+// Whether a formula's fractal can be combined into another formula: built-in blocks only, since
+// custom GLSL blocks belong to the formula that defines them and would not resolve in another.
+bool combinable(const Formula& source);
+// The presets the "Add fractal" menu offers: each .json file of `folders` (in that order, sorted
+// by name within each) that loads as a 3D preset with a combinable formula. Others (2D presets,
+// broken files, custom blocks) are skipped.
+struct FractalChoice {
+    std::string name;  // the file's stem
+    Formula formula;
+};
+std::vector<FractalChoice> combinableFractals(const std::vector<std::filesystem::path>& folders);
 // Sets parameter `param` of node `index` (nodes.size() means the estimator), clamped to the
 // declared range.
 bool setParam(Formula& f, int index, int param, const ParamValue& value);
@@ -134,6 +154,8 @@ struct AutoStepFactor {
 
 // The node index a compile-error log talks about (`node 3 "Box fold" (box_fold)...`, numbered
 // from 1 as ShaderSource::explainLog writes it), or -1 when it names none. The estimator is index nodes.size().
+// A log that first names a combined fractal's node (`fractal 2: node 3 "..."`) names none of the
+// first fractal's: -1.
 int nodeNamedInLog(const std::string& log, int nodeCount);
 
 }  // namespace fraktal::editor

@@ -1,6 +1,7 @@
 // The formula panel (left): iterations and bailout, the node list (select, enable, reorder by
 // drag and drop, duplicate, remove, add from a categorised menu), the estimator, and the
-// selected node's parameters. Compile errors are shown under the node they name.
+// selected node's parameters; under them the objects beside the fractal and the whole fractals
+// combined with it. Compile errors are shown under the node they name.
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -165,6 +166,113 @@ void objectsSection(EditorState& s) {
     }
 }
 
+constexpr ParamDecl kFractalScale{"scale",         ParamType::Float,
+                                  {1.0, 0.0, 0.0}, 0.01,
+                                  100.0,           "The point is multiplied by it: above 1 the fractal shrinks."};
+constexpr ParamDecl kFractalRepeat{"repeat",        ParamType::Vec3,
+                                   {0.0, 0.0, 0.0}, 0.0,
+                                   100.0,           "Repeats the fractal in cells this wide, per axis (0: once)."};
+
+// The widgets of a fractal's placement (FractalPlacement): the objects' center, axis and angle,
+// then scale and repeat.
+void placementWidgets(EditorState& s, FractalPlacement& place) {
+    ParamValue angle(place.angle, 0.0, 0.0), scale(place.scale, 0.0, 0.0);
+    paramWidget(kObjectCenter, place.center, &s.paramWidgets);
+    paramWidget(kObjectAxis, place.axis, &s.paramWidgets);
+    if (paramWidget(kObjectAngle, angle, &s.paramWidgets)) place.angle = angle.x;
+    if (paramWidget(kFractalScale, scale, &s.paramWidgets)) place.scale = scale.x;
+    paramWidget(kFractalRepeat, place.repeat, &s.paramWidgets);
+}
+
+// A node's parameters under its block's label, without the selection or keyframes of the node
+// list: a combined fractal's nodes are edited in place.
+void nodeParamWidgets(EditorState& s, Node& node, int index) {
+    if (!node.block || node.block->params.empty()) return;
+    ImGui::PushID(index);
+    ImGui::TextDisabled("%s", std::string(node.block->label).c_str());
+    for (size_t k = 0; k < node.block->params.size(); ++k)
+        paramWidget(node.block->params[k], node.values[k], &s.paramWidgets);
+    ImGui::PopID();
+}
+
+// Whole fractals combined with the first (Formula::fractals), under the objects (a collapsed
+// header by default, so the rows above keep their places): the first fractal's placement, then
+// each combined fractal with its operation, settings, placement and its nodes' parameters.
+// Structure edits (add, remove, on/off, operation) recompile; values are uniforms.
+void fractalsSection(EditorState& s) {
+    Formula& f = s.doc.preset.formula;
+    ImGui::Spacing();
+    const std::string title = "Fractals combined with this one (" + std::to_string(f.fractals.size()) + ")###fractals";
+    const bool open = ImGui::CollapsingHeader(title.c_str());
+    noteWidgetRect(s.layout, "header:Fractals");
+    if (!open) return;
+    if (!f.fractals.empty() || !f.placement.identity()) {
+        if (ImGui::TreeNodeEx("1. This fractal's placement", ImGuiTreeNodeFlags_DefaultOpen)) {
+            placementWidgets(s, f.placement);
+            ImGui::TreePop();
+        }
+    }
+    int remove = -1;
+    const double bailLo = 0.1, bailHi = 1e6, facLo = kMinStepFactor, facHi = kMaxStepFactor;
+    for (size_t j = 0; j < f.fractals.size(); ++j) {
+        CombinedFractal& c = f.fractals[j];
+        Formula& g = c.formula;
+        ImGui::PushID(int(j));
+        const std::string label = std::to_string(j + 2) + ". " +
+                                  std::string(g.estimator.block ? g.estimator.block->label : "(none)") + " (" +
+                                  std::string(kObjectOperationNames[int(c.operation)]) + ")";
+        if (ImGui::TreeNodeEx(label.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+            ImGui::Checkbox("On", &c.enabled);
+            ImGui::SameLine();
+            if (ImGui::SmallButton("Remove")) remove = int(j);
+            int operation = int(c.operation);
+            ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+            if (ImGui::Combo("Operation", &operation, "join\0intersect\0carve\0"))
+                c.operation = ObjectOperation(operation);
+            helpMarker(
+                "join: the union with the fractals before; intersect: only what lies inside this one too; carve: "
+                "this one cut out of them.");
+            ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+            ImGui::DragInt("Iterations", &g.iterations, 0.1f, 1, kMaxIterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+            ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+            ImGui::DragScalar("Bailout", ImGuiDataType_Double, &g.bailout, 0.05f, &bailLo, &bailHi, "%.4g",
+                              ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+            ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+            ImGui::DragScalar("DE factor", ImGuiDataType_Double, &g.deFactor, 0.005f, &facLo, &facHi, "%.3f",
+                              ImGuiSliderFlags_AlwaysClamp);
+            helpMarker(
+                "Multiplies this fractal's distance estimate alone; the automatic step factor sets the first's.");
+            placementWidgets(s, g.placement);
+            for (size_t k = 0; k < g.nodes.size(); ++k) nodeParamWidgets(s, g.nodes[k], int(k));
+            nodeParamWidgets(s, g.estimator, int(g.nodes.size()));
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (remove >= 0 && removeFractal(f, remove)) fitFormulaAfterEdit(s.doc.preset);
+    ImGui::BeginDisabled(int(f.fractals.size()) >= kMaxCombinedFractals);
+    if (ImGui::Button("Add fractal...")) {
+        s.fractalChoices = combinableFractals(s.browser.folders);
+        ImGui::OpenPopup("add_fractal");
+    }
+    ImGui::EndDisabled();
+    noteWidgetRect(s.layout, "button:Add fractal");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Combine a preset's fractal with this one (joined, at its own placement).");
+    if (ImGui::BeginPopup("add_fractal")) {
+        const std::vector<FractalChoice>& choices = s.fractalChoices;
+        if (choices.empty()) ImGui::TextDisabled("No preset with built-in blocks found.");
+        for (size_t i = 0; i < choices.size(); ++i) {
+            ImGui::PushID(int(i));
+            if (ImGui::MenuItem(choices[i].name.c_str()) && addFractal(f, choices[i].formula))
+                fitFormulaAfterEdit(s.doc.preset);
+            noteWidgetRect(s.layout, "menu:Fractal " + choices[i].name);
+            ImGui::PopID();
+        }
+        ImGui::EndPopup();
+    }
+}
+
 // A checkbox that sets the hit rule to `rule` when ticked and back to the plain surface when
 // cleared; its rectangle is noted as "checkbox:LABEL" for the user stories.
 void hitRuleCheckbox(EditorState& s, HitRule& hitRule, HitRule rule, const char* label, const char* help) {
@@ -277,6 +385,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
         }
     }
     objectsSection(s);
+    fractalsSection(s);
     ImGui::End();
 }
 

@@ -144,6 +144,9 @@ struct EditorState {
     SlowStackAdvice slowStack;  // why that factor is small, and the faster estimator
     Dialogs dialogs;
     PresetBrowser browser;
+    // The formula panel's "Add fractal" menu: read from the preset folders when the menu opens (a
+    // few dozen small files), not every frame.
+    std::vector<FractalChoice> fractalChoices;
     ExportJob exportJob;
     StatusLine status;
     int selectedNode = 0;           // formula.nodes.size() selects the estimator
