@@ -354,6 +354,25 @@ TEST(FractImport, PrimitivesAndTheLimitBoxBecomeObjects) {
     }
 }
 
+// The hit threshold: one pixel footprint over detail_level, times the step factor (fraktal's
+// threshold applies to the scaled estimate), divided by the largest power only where that power
+// is a spherical one, whose derivative carries the phi stretch that Mandelbulber2's leaves out;
+// the other powers keep Mandelbulber2's threshold (bench/import/README.md: riemann_sphere_msltoe_v2
+// 0.79 divided, 0.97 not).
+TEST(FractImport, HitThresholdIsDividedOnlyByASphericalPower) {
+    const std::string look = "DE_factor 0,5;\ndetail_level 2;\n";
+    const mb2::FractImport bulb = importText("[main_parameters]\nformula_1 2;\n" + look + "[fractal_1]\npower 9;\n");
+    EXPECT_EQ(bulb.preset.formula.nodes.front().block->id, "mandelbulb_sine");
+    EXPECT_DOUBLE_EQ(bulb.preset.render.detail, 0.5 / 2.0 / 9.0);
+    for (const char* id : {"129", "139", "800"}) {  // coastalbrot, riemann_sphere_msltoe_v2, mandelbulb_eye
+        const mb2::FractImport other = importText(std::string("[main_parameters]\nformula_1 ") + id + ";\n" + look);
+        ASSERT_TRUE(other.faithful()) << id << ": " << other.unsupported.front().text();
+        EXPECT_GT(other.preset.formula.nodes.front().block->degreeAt(other.preset.formula.nodes.front().args()), 1.0)
+            << id;
+        EXPECT_DOUBLE_EQ(other.preset.render.detail, 0.5 / 2.0) << id;
+    }
+}
+
 // Mandelbulber2's boolean mode (calculate_distance.cpp, nine_fractals.cpp): each enabled slot is
 // a fractal of its own, with its own Julia constant, constant factor and default bailout, placed
 // by formula_position, _rotation, _repeat and _scale (measured at M (p - position) / scale), and

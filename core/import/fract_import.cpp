@@ -2376,12 +2376,20 @@ FractImport importFract(const FractFile& file) {
     // Mandelbulber2 stops a ray where its estimate falls under one pixel's footprint over
     // detail_level (the same footprint as fraktal's unit), and only then scales the step by
     // DE_factor; fraktal's threshold applies to the scaled estimate, so it scales by the factor too.
-    // For power steps fraktal's running derivative bounds the stretch from above (the phi stretch
-    // of formulas/mandelbulb_variants.hpp), so its log estimate is the smaller near the surface; the
-    // threshold divided by the largest power puts the surface where Mandelbulber2 draws it
-    // (bench/import/README.md: the toolbar's power-9 bulb IoU 0.77 undivided, 0.94 divided).
+    // For the spherical powers fraktal's running derivative bounds the stretch from above (their
+    // phi stretch, up to the power, formulas/mandelbulb.hpp and mandelbulb_variants.hpp) where
+    // Mandelbulber2 carries n r^(n-1) alone, so its log estimate is the smaller near the surface;
+    // the threshold divided by the largest such power puts the surface where Mandelbulber2 draws
+    // it (bench/import/README.md: the toolbar's power-9 bulb IoU 0.77 undivided, 0.94 divided).
+    // Powers whose derivative is Mandelbulber2's own keep the threshold (formula/img
+    // riemann_sphere_msltoe_v2 0.79 divided by its 4, 0.97 not).
+    constexpr std::string_view kPhiStretchPowers[] = {"mandelbulb", "mandelbulb_phase", "mandelbulb_sine",
+                                                      "mandelbulb_cosine"};
     double degree = 1.0;
-    for (const Node& n : p.formula.nodes) degree = std::max(degree, n.block->degreeAt(n.args()));
+    for (const Node& n : p.formula.nodes)
+        if (std::find(std::begin(kPhiStretchPowers), std::end(kPhiStretchPowers), n.block->id) !=
+            std::end(kPhiStretchPowers))
+            degree = std::max(degree, n.block->degreeAt(n.args()));
     const bool logType = p.formula.estimator.block && p.formula.estimator.block->id != "escape_linear" &&
                          p.formula.estimator.block->membership == Membership::EscapeTime;
     p.render.detail = std::clamp(
