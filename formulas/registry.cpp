@@ -16,6 +16,7 @@
 #include "formulas/box_fold_soft.hpp"
 #include "formulas/coastalbrot.hpp"
 #include "formulas/deforms.hpp"
+#include "formulas/derivative_tweak.hpp"
 #include "formulas/difs.hpp"
 #include "formulas/estimators.hpp"
 #include "formulas/generalized_box_fold.hpp"
@@ -123,6 +124,7 @@ constexpr std::array kBlocks{
     describe<DifsCylinder>(),
     describe<AddCSymmetric>(),
     describe<PlatonicSolid>(),
+    describe<DerivativeTweak>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -1577,6 +1577,26 @@ TEST(FractImport, AbsAddConditionalReadsEachAxisWhereMandelbulber2Does) {
     EXPECT_EQ(node->values[0], vec3(1.0, 1.0, 0.0));
     EXPECT_EQ(node->values[1], vec3(1.0, 2.0, 1.0));
     EXPECT_EQ(node->values[2], vec3(0.2, 0.4, 0.3));
+    // Its DE tweak (aux.DE *= analyticDE_scale_1) follows it as a derivative tweak: the point as it
+    // was, the running derivative times the factor.
+    const mb2::FractImport tweaked = importText(
+        "[main_parameters]\nformula_1 2;\nformula_2 1065;\nhybrid_fractal_enable true;\n[fractal_2]\n"
+        "analyticDE_scale_1 0,895;\n");
+    ASSERT_TRUE(tweaked.faithful()) << tweaked.unsupported.front().text();
+    const std::vector<Node>& nodes = tweaked.preset.formula.nodes;
+    const auto step =
+        std::find_if(nodes.begin(), nodes.end(), [](const Node& n) { return n.block->id == "abs_add_conditional"; });
+    ASSERT_TRUE(step != nodes.end() && step + 1 != nodes.end());
+    const Node& tweak = *(step + 1);
+    ASSERT_EQ(tweak.block->id, "derivative_tweak");
+    EXPECT_EQ(tweak.schedule(), step->schedule());
+    P4 p{vec3(0.3, -0.2, 0.5), 2.0};
+    tweak.block->apply(p, vec3(0.0), tweak.args());
+    EXPECT_EQ(p.xyz, vec3(0.3, -0.2, 0.5));
+    EXPECT_NEAR(p.w, 2.0 * 0.895, 1e-12);
+    EXPECT_EQ(tweak.block->derivativeAt(tweak.args()), DerivativeBound::None);
+    for (const mb2::ImportItem& item : tweaked.approximated)
+        EXPECT_EQ(item.what.find("analyticDE_scale_1"), std::string::npos) << item.text();
 }
 
 // transf_diagonal_fold's swaps are plane folds through the diagonal planes; where the windowed

@@ -991,19 +991,20 @@ void mapJosKleinian(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 
 // x's multiplier is transf_scale3D_000's x, y's and z's transf_offset_000's (as Mandelbulber2
 // reads them).
-// Mandelbulber2's transforms multiply its running derivative by analyticDE_scale_1 (a "DE tweak"
-// with no map behind it): fraktal's running derivative bounds the map, so the factor is left out
-// and listed (its surface at the same hit threshold is then thicker where the factor is below 1).
-void derivativeTweakLeftOut(Reader& r, std::vector<ImportItem>& approximated) {
-    if (r.number("analyticDE_scale_1") != 1.0)
-        approximated.push_back({r.where(), "analyticDE_scale_1: the derivative's own factor is left out"});
+// Mandelbulber2's transforms multiply its running derivative by analyticDE_scale_1 (and some add
+// analyticDE_offset_1): a "DE tweak" with no map behind it, which sets how thick the surface is
+// at the hit threshold. fraktal's derivative_tweak does the same after the step; below 1 its
+// estimate is no bound, and the import's measured step factor keeps the march safe.
+void derivativeTweak(Reader& r, NodeBuilder& b, bool withOffset = false) {
+    const double scale = r.number("analyticDE_scale_1"), offset = withOffset ? r.number("analyticDE_offset_1") : 0.0;
+    if (scale != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", offset)});
 }
-void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const vec3 axes = enabledAxes(r);
     const vec3 offset = r.vector("transf_offset_000");
     b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", r.vector("transf_offset_111")),
                                   N::v("multiplier", vec3(r.vector("transf_scale3D_000").x, offset.y, offset.z))});
-    derivativeTweakLeftOut(r, approximated);
+    derivativeTweak(r, b);
 }
 
 void mapMandelbulb2(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("mandelbulb2", {}); }
@@ -1132,11 +1133,11 @@ void mapTransfAbsAddTgladFold4d(Reader& r, NodeBuilder& b, std::vector<ImportIte
         inWindow(r, b, window[k], window[k], [&] { fold(axis); });
     }
 }
-void mapTransfAbsAddConditional4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+void mapTransfAbsAddConditional4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const vec3 axes = enabledAxes(r);
     b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", vec3(r.vector4("transf_offset_1111"))),
                                   N::v("multiplier", vec3(r.vector4("transf_scale_0000")))});
-    derivativeTweakLeftOut(r, approximated);
+    derivativeTweak(r, b);
 }
 
 // ---- dIFS: shape steps whose least distance along the orbit is the estimate (formulas/difs.hpp) ----
@@ -1312,7 +1313,7 @@ void mapEiffieMsltoe(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { mslt
 // mode takes rho = sqrt(r); its second (transf_function_enabled_false) sums sqrt(r), r and r^2 as
 // options x, y and z say, or blends the first two (Ax) or the last two (Ay) by transf_scale_1, and
 // takes the wave's abs with Az. Its derivative's own factor (analyticDE_scale_1) is listed.
-void mapTransfPlatonicSolid(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+void mapTransfPlatonicSolid(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const double mul = r.number("platonic_solid_rhoMul");
     vec3 weights(1.0, 0.0, 0.0);  // of sqrt(r), r, r^2
     bool absWave = false;
@@ -1332,7 +1333,8 @@ void mapTransfPlatonicSolid(Reader& r, NodeBuilder& b, std::vector<ImportItem>& 
           {N::f("frequency", r.number("platonic_solid_frequency")),
            N::f("amplitude", r.number("platonic_solid_amplitude")), N::f("abs_wave", absWave ? 1.0 : 0.0),
            N::f("root", mul * weights.x), N::f("linear", mul * weights.y), N::f("square", mul * weights.z)});
-    derivativeTweakLeftOut(r, approximated);
+    // Its derivative times analyticDE_scale_1 plus _offset_1, where the analytic DE is on.
+    if (r.boolean("analyticDE_enabled")) derivativeTweak(r, b, true);
 }
 
 // The fold box mod 1 (FoldBoxMod1Iteration), each part in its window: the general box fold
