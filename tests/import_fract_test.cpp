@@ -356,14 +356,19 @@ TEST(FractImport, PrimitivesAndTheLimitBoxBecomeObjects) {
 
 // The hit threshold: one pixel footprint over detail_level, times the step factor (fraktal's
 // threshold applies to the scaled estimate), divided by the largest power only where that power
-// is a spherical one, whose derivative carries the phi stretch that Mandelbulber2's leaves out;
-// the other powers keep Mandelbulber2's threshold (bench/import/README.md: riemann_sphere_msltoe_v2
+// is a spherical one or the Bristorbrot, whose derivatives bound a stretch that Mandelbulber2's
+// leaves out; the other powers keep Mandelbulber2's threshold (bench/import/README.md: riemann_sphere_msltoe_v2
 // 0.79 divided, 0.97 not).
-TEST(FractImport, HitThresholdIsDividedOnlyByASphericalPower) {
+TEST(FractImport, HitThresholdIsDividedOnlyByPowersThatBoundTheirStretch) {
     const std::string look = "DE_factor 0,5;\ndetail_level 2;\n";
     const mb2::FractImport bulb = importText("[main_parameters]\nformula_1 2;\n" + look + "[fractal_1]\npower 9;\n");
     EXPECT_EQ(bulb.preset.formula.nodes.front().block->id, "mandelbulb_sine");
     EXPECT_DOUBLE_EQ(bulb.preset.render.detail, 0.5 / 2.0 / 9.0);
+    // The quaternion, drawn with the Bristorbrot, whose derivative is its Jacobian's largest
+    // singular value.
+    const mb2::FractImport quaternion = importText("[main_parameters]\nformula_1 5;\n" + look);
+    EXPECT_EQ(quaternion.preset.formula.nodes.front().block->id, "bristorbrot");
+    EXPECT_DOUBLE_EQ(quaternion.preset.render.detail, 0.5 / 2.0 / 2.0);
     for (const char* id : {"129", "139", "800"}) {  // coastalbrot, riemann_sphere_msltoe_v2, mandelbulb_eye
         const mb2::FractImport other = importText(std::string("[main_parameters]\nformula_1 ") + id + ";\n" + look);
         ASSERT_TRUE(other.faithful()) << id << ": " << other.unsupported.front().text();

@@ -2380,17 +2380,18 @@ FractImport importFract(const FractFile& file) {
     // DE_factor; fraktal's threshold applies to the scaled estimate, so it scales by the factor too.
     // For the spherical powers fraktal's running derivative bounds the stretch from above (their
     // phi stretch, up to the power, formulas/mandelbulb.hpp and mandelbulb_variants.hpp) where
-    // Mandelbulber2 carries n r^(n-1) alone, so its log estimate is the smaller near the surface;
-    // the threshold divided by the largest such power puts the surface where Mandelbulber2 draws
-    // it (bench/import/README.md: the toolbar's power-9 bulb IoU 0.77 undivided, 0.94 divided).
+    // Mandelbulber2 carries n r^(n-1) alone, and for the Bristorbrot (and the quaternion, which
+    // the import draws with it) its Jacobian's largest singular value where Mandelbulber2 carries
+    // 2 r: its log estimate is the smaller near the surface, and the threshold divided by the
+    // largest such power puts the surface where Mandelbulber2 draws it (bench/import/README.md:
+    // the toolbar's power-9 bulb IoU 0.77 undivided, 0.94 divided; its quaternion 0.89 and 0.96).
     // Powers whose derivative is Mandelbulber2's own keep the threshold (formula/img
     // riemann_sphere_msltoe_v2 0.79 divided by its 4, 0.97 not).
-    constexpr std::string_view kPhiStretchPowers[] = {"mandelbulb", "mandelbulb_phase", "mandelbulb_sine",
-                                                      "mandelbulb_cosine"};
+    constexpr std::string_view kBoundingPowers[] = {"mandelbulb", "mandelbulb_phase", "mandelbulb_sine",
+                                                    "mandelbulb_cosine", "bristorbrot"};
     double degree = 1.0;
     for (const Node& n : p.formula.nodes)
-        if (std::find(std::begin(kPhiStretchPowers), std::end(kPhiStretchPowers), n.block->id) !=
-            std::end(kPhiStretchPowers))
+        if (std::find(std::begin(kBoundingPowers), std::end(kBoundingPowers), n.block->id) != std::end(kBoundingPowers))
             degree = std::max(degree, n.block->degreeAt(n.args()));
     const bool logType = p.formula.estimator.block && p.formula.estimator.block->id != "escape_linear" &&
                          p.formula.estimator.block->membership == Membership::EscapeTime;
