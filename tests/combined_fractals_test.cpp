@@ -243,14 +243,14 @@ TEST(CombinedFractals, CheckMeasuresTheCombinationAndRefusesToApplyOneFactor) {
     EXPECT_EQ(checked.exitCode, 0) << checked.output;
     EXPECT_NE(checked.output.find("fractal 2 (carve)"), std::string::npos) << checked.output;
     EXPECT_NE(checked.output.find("conservative"), std::string::npos) << checked.output;
-    const std::filesystem::path copy = std::filesystem::temp_directory_path() / "fraktal_combined_check.json";
-    std::filesystem::copy_file(shippedPreset, copy, std::filesystem::copy_options::overwrite_existing);
+    const test::Sandbox box("fraktal_combined_check");
+    const std::filesystem::path copy = box.dir / "combined.json";
+    std::filesystem::copy_file(shippedPreset, copy);
     const std::string before = readGuardedFile(copy);
     const test::CliRun applied = test::runCli("check --apply '" + copy.string() + "'");
     EXPECT_NE(applied.exitCode, 0);
     EXPECT_NE(applied.output.find("each with its own deFactor"), std::string::npos) << applied.output;
     EXPECT_EQ(readGuardedFile(copy), before);
-    std::filesystem::remove(copy);
 }
 
 }  // namespace

@@ -104,8 +104,9 @@ void expectViewportEqualsExport(double frameTimeTargetMs) {
     const PathImage viewport = view.pathTracer()->image();
 
     // The export: `fraktal render --mode path` at the same size and spp.
-    const auto dir = std::filesystem::temp_directory_path() / "fraktal_editor_pathtrace";
-    std::filesystem::create_directories(dir);
+    // A folder of this process's own: the test's cases may run at once in parallel shards.
+    const test::Sandbox box("fraktal_editor_pathtrace");
+    const std::filesystem::path dir = box.dir;
     PathJob job;
     job.still.preset = p;
     job.still.preset.render.width = kW;
@@ -115,7 +116,6 @@ void expectViewportEqualsExport(double frameTimeTargetMs) {
     job.presetFile = presetFile();
     renderPathJob(job, color);
     const PathImage still = readExrBeauty(job.still.exr);
-    std::filesystem::remove_all(dir);
     ASSERT_EQ(still.width, kW);
     ASSERT_EQ(still.height, kH);
 
