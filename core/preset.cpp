@@ -431,15 +431,22 @@ json shadingJson(const ShadingSettings& s) {
 }  // namespace
 
 // An object beside the fractal: its kind, what differs from the defaults, its parameters.
+namespace {
+// A Placement's fields that differ from their defaults (objects and fractals write them alike).
+void writePlacement(const Placement& place, json& j) {
+    if (place.center != vec3(0.0)) j["center"] = vecJson(place.center);
+    if (place.axis != vec3(0.0, 0.0, 1.0)) j["axis"] = vecJson(place.axis);
+    if (place.angle != 0.0) j["angle"] = place.angle;
+}
+}  // namespace
+
 json objectToJson(const SceneObject& o) {
     json j = paramsOnlyJson(o);
     j["object"] = o.block->id;
     if (o.operation != ObjectOperation::Join) j["operation"] = kObjectOperationNames[int(o.operation)];
     if (o.hollow) j["hollow"] = true;
     if (!o.enabled) j["enabled"] = false;
-    if (o.center != vec3(0.0)) j["center"] = vecJson(o.center);
-    if (o.axis != vec3(0.0, 0.0, 1.0)) j["axis"] = vecJson(o.axis);
-    if (o.angle != 0.0) j["angle"] = o.angle;
+    writePlacement(o, j);
     if (o.repeat != vec3(0.0)) j["repeat"] = vecJson(o.repeat);
     return j;
 }
@@ -449,9 +456,7 @@ namespace {
 // A placement's fields that differ from the identity; empty at the identity.
 json placementToJson(const FractalPlacement& place) {
     json j = json::object();
-    if (place.center != vec3(0.0)) j["center"] = vecJson(place.center);
-    if (place.axis != vec3(0.0, 0.0, 1.0)) j["axis"] = vecJson(place.axis);
-    if (place.angle != 0.0) j["angle"] = place.angle;
+    writePlacement(place, j);
     if (place.scale != 1.0) j["scale"] = place.scale;
     if (place.repeat != vec3(0.0)) j["repeat"] = vecJson(place.repeat);
     return j;
