@@ -110,6 +110,7 @@ namespace {
 
 // One iteration of the node list: the body of the loops in shaders/formula.glsl.
 void iterate(const Formula& f, P4& p, const vec3& c, int i) {
+    p.iteration = i;
     for (const Node& n : f.nodes)
         if (n.enabled && n.runsOn(i)) {
             if (!n.block->apply) throw std::logic_error("a formula with custom GLSL blocks has no CPU evaluation");
@@ -124,8 +125,11 @@ double orbitValue(const Formula& f, const vec3& pos, int count) {
     P4 p{pos, 1.0};
     const vec3 c = pos;
     for (int i = 0; i < count; ++i) iterate(f, p, c, i);
-    if (f.estimator.block->membership == Membership::EscapeTime) return std::log(max(length(p.xyz), 1e-30));
-    return f.estimator.block->estimate(P4{p.xyz, 1.0, p.degree}, c, f.estimator.args());
+    if (f.estimator.block->membership == Membership::EscapeTime)
+        return std::log(max(length(vec4(p.xyz, p.pointW)), 1e-30));
+    P4 unit{p.xyz, 1.0, p.degree};
+    unit.pointW = p.pointW;
+    return f.estimator.block->estimate(unit, c, f.estimator.args());
 }
 
 // |grad V| at pos by tetrahedral differences: for the vertices k of a regular tetrahedron,
@@ -152,7 +156,7 @@ Evaluation evaluateFractal(const Formula& f, const vec3& pos, HitRule rule, doub
         iterate(f, p, c, i);
         e.trap.value = min(e.trap.value, vec4(abs(p.xyz), length(p.xyz)));
         e.iterations = i + 1;
-        if (dot(p.xyz, p.xyz) > bailout2) {
+        if (dot(p.xyz, p.xyz) + p.pointW * p.pointW > bailout2) {
             e.escaped = true;
             break;
         }

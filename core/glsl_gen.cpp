@@ -232,7 +232,7 @@ std::string fractalInstance(const Formula& f, const FractalNames& names, HitRule
         "//@FRAKTAL_RUNNING_ESTIMATE",
         "    float running = abs(" + nodeCall(names, est, f.estimator, true, "p, c, degree, surfaceLogR, 0.0") + ");");
     replace("//@FRAKTAL_ORBIT_VALUE",
-            escapeTime ? "    return log(max(length(p.xyz), 1e-30));"
+            escapeTime ? "    return log(max(length(vec4(p.xyz, pointW)), 1e-30));"
                        : "    return " +
                              nodeCall(names, est, f.estimator, true, "vec4(p.xyz, 1.0), c, degree, 0.0, 0.0") + ";");
     for (size_t at = text.find("@F"); at != std::string::npos; at = text.find("@F", at + names.suffix.size()))

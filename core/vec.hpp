@@ -44,6 +44,14 @@ struct P4 {
     // shared by all of them as Mandelbulber2 shares it between the formulas of a hybrid. GLSL: the
     // global `varyScale`, which formulaEval resets.
     double varyScale = 0.0;
+    // The iteration the orbit is on, from 0: blocks whose parameters vary with it read it (the
+    // sphere fold's growing inner radius, Mandelbulber2's Cpara curve). Set by the loop before
+    // each iteration's nodes run. GLSL: the global `iteration`, which the loops set.
+    int iteration = 0;
+    // The point's fourth coordinate (Mandelbulber2's z.w), which the 4D steps read and change
+    // (formulas/four_d.hpp); 0 when the orbit starts. The bailout and the linear estimate measure r
+    // in 4D. GLSL: the global `pointW`, which the loops reset.
+    double pointW = 0.0;
 };
 
 using glm::abs;

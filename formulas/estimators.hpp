@@ -258,11 +258,11 @@ struct EscapeLinearEstimator {
     };
 
     static constexpr std::string_view glsl = R"(
-    return (length(p.xyz) - offset) / abs(p.w);
+    return (length(vec4(p.xyz, pointW)) - offset) / abs(p.w);
 )";
     static double estimate(const P4& p, const vec3&, Args a) {
         const double offset = a.f(0);
-        return (length(p.xyz) - offset) / abs(p.w);
+        return (length(vec4(p.xyz, p.pointW)) - offset) / abs(p.w);
     }
 };
 

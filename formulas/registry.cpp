@@ -19,6 +19,7 @@
 #include "formulas/derivative_tweak.hpp"
 #include "formulas/difs.hpp"
 #include "formulas/estimators.hpp"
+#include "formulas/four_d.hpp"
 #include "formulas/generalized_box_fold.hpp"
 #include "formulas/hypercomplex.hpp"
 #include "formulas/kifs_icosahedral.hpp"
@@ -125,6 +126,9 @@ constexpr std::array kBlocks{
     describe<AddCSymmetric>(),
     describe<PlatonicSolid>(),
     describe<DerivativeTweak>(),
+    describe<StartW>(),
+    describe<Menger4d>(),
+    describe<Sierpinski4d>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

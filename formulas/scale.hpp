@@ -9,7 +9,8 @@ struct Scale {
     static constexpr std::string_view id = "scale";
     static constexpr std::string_view label = "Scale";
     static constexpr std::string_view help =
-        "Scale about a centre: p = (p - centre) * s + centre; the running scale grows by |s|.";
+        "Scale about a centre: p = (p - centre) * s + centre (and the fourth coordinate w times s); the running scale "
+        "grows by |s|.";
     static constexpr Category category = Category::Transform;
     static constexpr DerivativeBound derivative = DerivativeBound::Global;
     static constexpr std::array params{
@@ -19,12 +20,14 @@ struct Scale {
 
     static constexpr std::string_view glsl = R"(
     p.xyz = (p.xyz - center) * scale + center;
+    pointW *= scale;
     p.w *= abs(scale);
 )";
     static void apply(P4& p, const vec3&, Args a) {
         const double scale = a.f(0);
         const vec3 center = a.v3(1);
         p.xyz = (p.xyz - center) * scale + center;
+        p.pointW *= scale;
         p.w *= abs(scale);
     }
 };

@@ -13,6 +13,12 @@ namespace fraktal::blocks {
 // bounds it, but off the origin it stretches by more. p.w carries k times the largest singular
 // value of I - 2 a b^T, the root of l^2 - T l + D with T = 2 - 4 a.b + 4 |a|^2 and
 // D = (1 - 2 a.b)^2 (|b| = 1). Mandelbulber2 carries k alone.
+//
+// The inner radius may grow with the iteration i: Rm^2 + growth i + curve i^2, as Mandelbulber2's
+// Cpara curve moves the squared inner radius of abox_mod11's and pseudo_kleinian_mod2's folds
+// (fractal_formulas.cpp AboxMod11Iteration; its piecewise curve is imported as one quadratic per
+// window). k is still the fold's scale at the point, so the derivative bound holds at every
+// iteration; Rm^2 never falls below the 1e-6 of the least inner radius.
 struct SphereFold {
     static constexpr std::string_view id = "sphere_fold";
     static constexpr std::string_view label = "Sphere fold";
@@ -36,10 +42,23 @@ struct SphereFold {
                   4.0,
                   "Added before the scaling and taken away after it: the fold scales about -offset while its radii "
                   "stay measured from the origin (Mandelbulber2's offset)."},
+        ParamDecl{"min_r2_growth",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  -1.0,
+                  1.0,
+                  "Added to Rm^2 per iteration: at iteration i (from 0) the inner radius squared is Rm^2 + growth i + "
+                  "curve i^2 (Mandelbulber2's Cpara curve)."},
+        ParamDecl{"min_r2_curve",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  -0.1,
+                  0.1,
+                  "Added to Rm^2 times the iteration squared: the growth's own change."},
     };
 
     static constexpr std::string_view glsl = R"(
-    float rm2 = min_radius * min_radius;
+    float rm2 = max(min_radius * min_radius + (min_r2_growth + min_r2_curve * float(iteration)) * float(iteration), 1e-6);
     float rf2 = fixed_radius * fixed_radius;
     float r2 = dot(p.xyz, p.xyz);
     float k = rf2 / clamp(r2, min(rm2, rf2), rf2);
@@ -55,7 +74,9 @@ struct SphereFold {
     static void apply(P4& p, const vec3&, Args a) {
         const double min_radius = a.f(0), fixed_radius = a.f(1);
         const vec3 offset = a.v3(2);
-        double rm2 = min_radius * min_radius;
+        const double min_r2_growth = a.f(3), min_r2_curve = a.f(4);
+        double rm2 = max(
+            min_radius * min_radius + (min_r2_growth + min_r2_curve * double(p.iteration)) * double(p.iteration), 1e-6);
         double rf2 = fixed_radius * fixed_radius;
         double r2 = dot(p.xyz, p.xyz);
         double k = rf2 / clamp(r2, min(rm2, rf2), rf2);

@@ -20,6 +20,11 @@ float orbitDistance;
 // The varying scale's running offset (P4::varyScale): the scale_vary steps read and change it;
 // each orbit starts it at 0.
 float varyScale;
+// The iteration the orbit is on (P4::iteration), set by the loops before each iteration's nodes.
+int iteration;
+// The point's fourth coordinate (P4::pointW): the 4D steps read and change it; each orbit starts
+// it at 0.
+float pointW;
 
 // A dIFS shape step's divisor (difsDivisor in formulas/difs.hpp): |p.w| times the step's scale,
 // the varying one with wVary, plus wOffset.

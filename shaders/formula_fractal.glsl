@@ -25,7 +25,9 @@ float orbitValue@F(vec3 pos, int count) {
     float degree = 1.0;
     orbitDistance = 1000.0;
     varyScale = 0.0;
+    pointW = 0.0;
     for (int i = 0; i < count; ++i) {
+        iteration = i;
 //@FRAKTAL_ORBIT_LOOP
     }
 //@FRAKTAL_ORBIT_VALUE
@@ -56,15 +58,17 @@ float fractalEval@F(vec3 world, out vec4 trap, out int iterations, out bool esca
     trap = vec4(1e20);
     orbitDistance = 1000.0;
     varyScale = 0.0;
+    pointW = 0.0;
     iterations = 0;
     escaped = false;
     float bailout2 = u_bailout@F * u_bailout@F;
     int n = clamp(u_iterations@F, 0, FRAKTAL_MAX_ITERATIONS);
     for (int i = 0; i < n; ++i) {
+        iteration = i;
 //@FRAKTAL_LOOP
         trap = min(trap, vec4(abs(p.xyz), length(p.xyz)));
         iterations = i + 1;
-        if (dot(p.xyz, p.xyz) > bailout2) {
+        if (dot(p.xyz, p.xyz) + pointW * pointW > bailout2) {
             escaped = true;
             break;
         }

@@ -1769,6 +1769,162 @@ TEST(FractImport, AboxMod11PartsRunInTheirWindows) {
     EXPECT_EQ(r.preset.formula.nodes[3].stop, 1);
 }
 
+// abox_mod11's sphere fold with transf_function_enabledy_false: its squared inner radius follows
+// Mandelbulber2's Cpara curve, transf_minR2_p25 plus the linear stretches through para00, paraA,
+// paraB and paraC at iterations 0, iterA, iterB and iterC (fractal_formulas.cpp
+// AboxMod11Iteration), one sphere_fold per stretch. On every iteration the orbit runs, the fold
+// that runs there scales a point as the fold with that iteration's radius does.
+TEST(FractImport, CparaCurveGrowsTheSphereFoldsInnerRadius) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 119;\nN 40;\n[fractal_1]\ntransf_function_enabledy_false true;\n"
+        "Cpara_para00 0,1;\nCpara_paraA 0,3;\nCpara_paraB 0,2;\nCpara_paraC 0,5;\nCpara_iterA 5;\nCpara_iterB 12;\n"
+        "Cpara_iterC 30;\nCpara_enabledCurves false;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    std::vector<const Node*> folds;
+    for (const Node& n : r.preset.formula.nodes)
+        if (n.block->id == "sphere_fold") folds.push_back(&n);
+    ASSERT_EQ(folds.size(), 3u);
+    EXPECT_EQ(folds[0]->start, 0);
+    EXPECT_EQ(folds[1]->start, 5);
+    EXPECT_EQ(folds[2]->start, 12);
+    EXPECT_EQ(folds[2]->stop, 40);         // the formula's N
+    auto squaredInnerRadius = [](int i) {  // 0.25 + the curve, as Mandelbulber2 computes it
+        if (i < 5) return 0.25 + 0.1 + i * (0.3 - 0.1) / 5.0;
+        if (i < 12) return 0.25 + 0.3 + (i - 5) * (0.2 - 0.3) / 7.0;
+        return 0.25 + 0.2 + (i - 12) * (0.5 - 0.2) / 18.0;
+    };
+    for (int i = 0; i < 40; ++i) {
+        int running = 0;
+        for (const Node* fold : folds) {
+            if (!fold->runsOn(i)) continue;
+            ++running;
+            // A point inside the inner radius is scaled by Rf^2 / Rm^2 (here Rf^2 = 1).
+            P4 p{vec3(0.01, 0.0, 0.0), 1.0};
+            p.iteration = i;
+            fold->block->apply(p, vec3(0.0), fold->args());
+            EXPECT_NEAR(p.w, 1.0 / squaredInnerRadius(i), 1e-9) << "iteration " << i;
+        }
+        EXPECT_EQ(running, 1) << "iteration " << i;
+    }
+    // Without the flag the fold keeps transf_minR2_p25. Refused: a curve undefined where the orbit
+    // runs (iterB = iterC, so the third stretch divides by 0), and one whose squared inner radius
+    // passes the fixed one (Mandelbulber2's fold shrinks inside it there, fraktal's does not).
+    const mb2::FractImport plain = importText("[main_parameters]\nformula_1 119;\n");
+    ASSERT_TRUE(plain.faithful());
+    EXPECT_EQ(param(plain.preset.formula.nodes[1], "min_r2_growth"), 0.0);
+    const mb2::FractImport undefined = importText(
+        "[main_parameters]\nformula_1 119;\n[fractal_1]\ntransf_function_enabledy_false true;\nCpara_iterB 20;\n"
+        "Cpara_iterC 20;\n");
+    EXPECT_TRUE(mentions(undefined.unsupported, "slot 1 (abox_mod11)", "Cpara: a curve undefined at iteration 20"));
+    const mb2::FractImport passing = importText(
+        "[main_parameters]\nformula_1 119;\n[fractal_1]\ntransf_function_enabledy_false true;\nCpara_paraA 3;\n");
+    EXPECT_TRUE(mentions(passing.unsupported, "slot 1 (abox_mod11)", "outside [0, transf_maxR2_1 1]"));
+}
+
+// Mandelbulber2's 4D formulas carry the point's fourth coordinate from initial_waxis: a start_w
+// node, then the 4D steps; r is measured in 4D for the bailout and the linear estimate. The
+// imported formula's estimate equals Mandelbulber2's orbit written out here in 4D
+// (fractal_formulas.cpp Menger4dIteration, Sierpinski4dIteration; compute_fractal.cpp: z.w and
+// c.w start at initial_waxis, r = |z| in 4D, the IFS estimate (r - 2) / DE).
+TEST(FractImport, FourDFormulasCarryTheFourthCoordinate) {
+    using D4 = glm::dvec4;
+    auto mandelbulber2 = [](const vec3& pos, double w0, int n, double bailout, auto&& step, double scale) {
+        D4 z(pos, w0);
+        double de = 1.0;
+        for (int i = 0; i < n; ++i) {
+            step(z, i);
+            de *= scale;
+            if (glm::length(z) > bailout) break;
+        }
+        return (glm::length(z) - 2.0) / de;
+    };
+    auto menger = [](D4& z, int) {
+        z = glm::abs(z);
+        if (z.x - z.y < 0.0) std::swap(z.y, z.x);
+        if (z.x - z.z < 0.0) std::swap(z.z, z.x);
+        if (z.y - z.z < 0.0) std::swap(z.z, z.y);
+        if (z.x - z.w < 0.0) std::swap(z.w, z.x);
+        if (z.y - z.w < 0.0) std::swap(z.w, z.y);
+        if (z.z - z.w < 0.0) std::swap(z.w, z.z);
+        const D4 offset(1.0, 1.0, 1.0, 0.40107);
+        z.x = 3.0 * z.x - offset.x;
+        z.y = 3.0 * z.y - offset.y;
+        z.w = 3.0 * z.w - offset.w;
+        z.z -= 0.5 * offset.z / 3.0;
+        z.z = -std::abs(-z.z);
+        z.z += 0.5 * offset.z / 3.0;
+        z.z *= 3.0;
+    };
+    auto sierpinski = [](D4& z, int i) {
+        auto mirror = [](double& a, double& b) {
+            if (a + b < 0.0) {
+                const double t = a;
+                a = -b;
+                b = -t;
+            }
+        };
+        mirror(z.x, z.y);
+        mirror(z.x, z.z);
+        mirror(z.z, z.y);  // Mandelbulber2's third: z = -y, y = -z
+        mirror(z.x, z.w);
+        mirror(z.y, z.w);
+        mirror(z.z, z.w);
+        z *= 2.0;
+        if (i >= 1) z -= D4(2.1, 1.0, 1.0, 1.0);  // window C from iteration 1
+    };
+    const mb2::FractImport m = importText(
+        "[main_parameters]\nformula_1 111;\ninitial_waxis 0,333333;\nN 12;\n[fractal_1]\n"
+        "transf_addition_constant_111d5 1 1 1 0,40107;\n");
+    ASSERT_TRUE(m.faithful()) << m.unsupported.front().text();
+    EXPECT_EQ(blockIds(m.preset.formula), (std::vector<std::string>{"start_w", "menger4d"}));
+    const mb2::FractImport s = importText(
+        "[main_parameters]\nformula_1 109;\ninitial_waxis -0,6;\nN 12;\n[fractal_1]\n"
+        "transf_offset_1111 2,1 1 1 1;\ntransf_start_iterations_C 1;\n");
+    ASSERT_TRUE(s.faithful()) << s.unsupported.front().text();
+    EXPECT_EQ(blockIds(s.preset.formula), (std::vector<std::string>{"start_w", "sierpinski4d", "sierpinski4d"}));
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    for (int k = 0; k < 200; ++k) {
+        const vec3 pos(u(rng), u(rng), u(rng));
+        EXPECT_NEAR(evaluate(m.preset.formula, pos).distance / m.preset.formula.deFactor,
+                    mandelbulber2(pos, 0.333333, 12, m.preset.formula.bailout, menger, 3.0), 1e-9)
+            << pos.x << " " << pos.y << " " << pos.z;
+        EXPECT_NEAR(evaluate(s.preset.formula, pos).distance / s.preset.formula.deFactor,
+                    mandelbulber2(pos, -0.6, 12, s.preset.formula.bailout, sierpinski, 2.0), 1e-9)
+            << pos.x << " " << pos.y << " " << pos.z;
+    }
+    // Beside a formula that leaves w aside, the fourth coordinate is refused; so is a 4D turn.
+    const mb2::FractImport bulb = importText("[main_parameters]\nformula_1 2;\ninitial_waxis 0,5;\n");
+    EXPECT_TRUE(mentions(bulb.unsupported, "main", "initial_waxis 0,5: a fourth coordinate beside formulas"));
+    const mb2::FractImport turned =
+        importText("[main_parameters]\nformula_1 111;\n[fractal_1]\ntransf_function_enabledR_false true;\n");
+    EXPECT_TRUE(mentions(turned.unsupported, "slot 1 (menger4d)", "a turn in the six planes of 4D"));
+}
+
+// The whole scene's fractal_position, fractal_rotation and repeat place the formula: Mandelbulber2
+// measures it at M ((p - position) mod repeat), M the rotation's matrix (compute_fractal.cpp),
+// here 90 degrees about z: (x, y, z) -> (-y, x, z). In boolean mode, where each slot has a
+// placement of its own, they are refused.
+TEST(FractImport, FractalPositionRotationAndRepeatPlaceTheFormula) {
+    const std::string body = "[main_parameters]\nformula_1 7;\n";
+    const mb2::FractImport plain = importText(body);
+    const mb2::FractImport placed =
+        importText(body + "fractal_position 0,5 -1 0,25;\nfractal_rotation 0 0 90;\nrepeat 6 0 0;\n");
+    ASSERT_TRUE(placed.faithful()) << placed.unsupported.front().text();
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-8.0, 8.0);
+    for (int k = 0; k < 100; ++k) {
+        const vec3 p(u(rng), u(rng) / 4.0, u(rng) / 4.0);
+        vec3 q = p - vec3(0.5, -1.0, 0.25);
+        q.x -= 6.0 * std::floor(q.x / 6.0 + 0.5);
+        EXPECT_NEAR(evaluate(placed.preset.formula, p).distance,
+                    evaluate(plain.preset.formula, vec3(-q.y, q.x, q.z)).distance, 1e-9)
+            << p.x << " " << p.y << " " << p.z;
+    }
+    const mb2::FractImport boolean = importText(body + "boolean_operators true;\nfractal_rotation 0 0 90;\n");
+    EXPECT_TRUE(mentions(boolean.unsupported, "main", "fractal_rotation 0 0 90: the whole scene's placement"));
+}
+
 // Amazing Surf mod 2: Tglad's fold with per-axis limits (the box fold per axis, z's fold when
 // enabled), the sphere fold and scale in their windows; other fold types are named.
 TEST(FractImport, AmazingSurfMod2FoldsPerAxisInItsWindows) {
@@ -2094,6 +2250,10 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         {"examples/boolean001.fract", ""},
         // A placed, scaled and turned fractal joined to a repeated one, lit by repeated cylinders.
         {"examples/monte carlo global illumination - emmisive materials.fract", ""},
+        // The 4D Sierpinski simplex's slice at initial_waxis, the whole fractal turned by
+        // fractal_rotation; formula/img abox_mod11's sphere fold on the Cpara curve.
+        {gm + "Sierpinski 4D.fract", ""},
+        {"formula/img/abox_mod11.fract", ""},
     };
     // Two files at a time (each import's safe-step measurement and each render keep about one of
     // the two cores busy), each in files of its own.

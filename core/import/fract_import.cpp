@@ -43,6 +43,8 @@ constexpr int kAmazingSurfId = 73;
 // Formulas whose orbit fraktal runs in an estimator of its own (4D state).
 constexpr int kHypercomplexId = 4;
 constexpr int kAexionId = 19;
+// The formulas that carry the point's fourth coordinate through fraktal's loop (formulas/four_d.hpp).
+constexpr int kSierpinski4dId = 109, kMenger4dId = 111;
 // Formulas whose 4D orbit a fraktal estimator runs whole (alone in a file).
 bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula == kAexionId; }
 
@@ -146,7 +148,8 @@ class Reader {
 // lists it as dropped, still writes a preset fraktal reads.
 class NodeBuilder {
    public:
-    NodeBuilder(Reader& reader, std::vector<Node>& out) : reader_(reader), out_(out) {}
+    NodeBuilder(Reader& reader, std::vector<Node>& out, int iterations = kMaxIterations)
+        : reader_(reader), out_(out), iterations_(iterations) {}
 
     struct Value {
         std::string_view name;
@@ -210,6 +213,12 @@ class NodeBuilder {
     Reader& reader_;
     std::vector<Node>& out_;
     int windowStart_ = 0, windowStop_ = kMaxIterations;
+    int iterations_;
+
+   public:
+    // The iterations the open window holds that the orbit runs (the formula's N caps them).
+    int firstIteration() const { return windowStart_; }
+    int lastIteration() const { return std::min(windowStop_, iterations_) - 1; }
 };
 
 using N = NodeBuilder;
@@ -646,6 +655,86 @@ void squaredRadiiSphereFold(Reader& r, NodeBuilder& b, const vec3& offset = vec3
                std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)), offset);
 }
 
+// Mandelbulber2's Cpara curve at iteration i, as the quadratic a + b i + c i^2 it is there
+// (fractal_formulas.cpp AboxMod11Iteration, PseudoKleinianMod2Iteration; its linear part and
+// "curves" read as written there, the curves' breaks at paraA and paraB included): the linear
+// stretches through para00, paraA, paraB and paraC at iterations 0, iterA, iterB and iterC, the
+// curves where iterB - iterA > 2 iterA, and the parabola parab_offset0 + slope i + 0.001 scale i^2.
+struct Quadratic {
+    double a = 0.0, b = 0.0, c = 0.0;
+    bool operator==(const Quadratic&) const = default;
+    Quadratic operator+(const Quadratic& o) const { return {a + o.a, b + o.b, c + o.c}; }
+    // (a + b i)^2 times k: the curves' square of a linear function of i.
+    static Quadratic squaredTimes(double a, double b, double k) { return {k * a * a, k * 2.0 * a * b, k * b * b}; }
+};
+Quadratic cparaAt(Reader& r, int i) {
+    Quadratic q;
+    if (r.boolean("Cpara_enabledLinear")) {
+        const double p0 = r.number("Cpara_para00"), pA = r.number("Cpara_paraA"), pB = r.number("Cpara_paraB"),
+                     pC = r.number("Cpara_paraC");
+        const double iA = r.integer("Cpara_iterA"), iB = r.integer("Cpara_iterB"), iC = r.integer("Cpara_iterC");
+        const double lengthAB = iB - iA, lengthBC = iC - iB;
+        const double grade1 = (pA - p0) / iA, grade2 = (pB - pA) / lengthAB, grade3 = (pC - pB) / lengthBC;
+        q = {p0, 0.0, 0.0};
+        if (i < iA) q = {p0, grade1, 0.0};
+        if (i < iB && i >= iA) q = {pA - iA * grade2, grade2, 0.0};
+        if (i >= iB) q = {pB - iB * grade3, grade3, 0.0};
+        if (r.boolean("Cpara_enabledCurves") && lengthAB > 2.0 * iA) {
+            const double tempL = lengthAB - iA;
+            const double curve1 = (grade2 - grade1) / (4.0 * iA), curve2 = (grade3 - grade2) / (4.0 * tempL);
+            if (i < 2 * iA)  // paraIt = paraA - |paraA - i|
+                q = q + (i <= pA ? Quadratic::squaredTimes(0.0, 1.0, curve1)
+                                 : Quadratic::squaredTimes(2.0 * pA, -1.0, curve1));
+            if (i >= 2 * iA && i < iB + tempL)  // paraIt = paraB - |paraB i|
+                q = q + Quadratic::squaredTimes(pB, -std::abs(pB), curve2);
+        }
+    }
+    if (r.boolean("Cpara_enabledParab_false"))
+        q = q + Quadratic{r.number("Cpara_parab_offset0"), r.number("Cpara_parab_slope"),
+                          0.001 * r.number("Cpara_parab_scale")};
+    return q;
+}
+
+// The sphere fold of squared radii whose inner one follows the Cpara curve when `varies` (the
+// formula's transf_function_enabledy_false): one sphere_fold per stretch of the open window's
+// iterations on which the curve is one quadratic (its growth and curve parameters), the curve plus
+// transf_minR2_p25 being the squared inner radius. A curve undefined on an iteration the orbit runs
+// (iterA, iterB - iterA or iterC - iterB of 0 where its stretch is used) is refused.
+void cparaSphereFold(Reader& r, NodeBuilder& b, bool varies, const vec3& offset) {
+    if (!varies) return squaredRadiiSphereFold(r, b, offset);
+    const double minR2 = r.number("transf_minR2_p25"), maxR2 = r.number("transf_maxR2_1");
+    int from = b.firstIteration();
+    Quadratic run = cparaAt(r, from);
+    auto fold = [&](int to) {
+        if (!std::isfinite(run.a) || !std::isfinite(run.b) || !std::isfinite(run.c))
+            return r.unsupported("Cpara: a curve undefined at iteration " + std::to_string(from) +
+                                 " (two of Cpara_iterA, _iterB, _iterC meet)");
+        const double base = minR2 + run.a;
+        // fraktal's fold keeps its inner radius within the fixed one, where Mandelbulber2's shrinks
+        // a point inside it (rf^2 / rm^2 < 1); and its squared inner radius above 0, at iteration 0 too.
+        for (int i = from; i < to; ++i)
+            if (const double rm2 = base + (run.b + run.c * i) * i; rm2 < 0.0 || rm2 > maxR2)
+                return r.unsupported("Cpara: a squared inner radius of " + fmt(rm2) + " at iteration " +
+                                     std::to_string(i) + ", outside [0, transf_maxR2_1 " + fmt(maxR2) + "]");
+        if (base < 0.0)
+            return r.unsupported("Cpara: a squared inner radius of " + fmt(base) + " at iteration 0 of its curve, " +
+                                 "below 0 (fraktal's inner radius is measured from there)");
+        b.within(from, to, [&] {
+            b.add("sphere_fold", {N::f("min_radius", std::sqrt(std::max(base, 1e-6))),
+                                  N::f("fixed_radius", std::sqrt(std::max(maxR2, 0.0))), N::v("offset", offset),
+                                  N::f("min_r2_growth", run.b), N::f("min_r2_curve", run.c)});
+        });
+    };
+    for (int i = from + 1; i <= b.lastIteration(); ++i) {
+        const Quadratic q = cparaAt(r, i);
+        if (q == run) continue;
+        fold(i);
+        from = i;
+        run = q;
+    }
+    if (from <= b.lastIteration()) fold(b.lastIteration() + 1);
+}
+
 // Mandelbulber2's "addCpixel" section of a formula (transf_addCpixel_enabled_false): c times
 // transf_constant_multiplier_111 per axis, in the iteration window `window`, c's axes in
 // mandelbulbMulti_order_of_xyz (xyz, or yxz as add_c_axes' swap_xy). Where `turnWindow` is given
@@ -693,7 +782,6 @@ void symmetricMultipleOfC(Reader& r, NodeBuilder& b, const std::string& weights,
 // The fold's parabolic softening (window D .. D1) is the soft box fold where the windows meet.
 void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and z");
-    r.mustBeDefault("transf_function_enabledy_false", "a sphere fold radius that varies with the iteration");
     r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
     const vec3 limit = r.vector("transf_addition_constant_111");
     const bool foldZ = r.boolean("transf_function_enabled");
@@ -715,7 +803,8 @@ void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     } else {
         fold(foldStart, foldStop);
     }
-    inWindow(r, b, "S", "S", [&] { squaredRadiiSphereFold(r, b, r.vector("mandelbox_offset")); });
+    inWindow(r, b, "S", "S",
+             [&] { cparaSphereFold(r, b, r.boolean("transf_function_enabledy_false"), r.vector("mandelbox_offset")); });
     inWindow(r, b, "A", "A", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
     additionConstant(r, b);
     extraMultipleOfC(r, b, "E");
@@ -1138,6 +1227,57 @@ void mapTransfAbsAddConditional4d(Reader& r, NodeBuilder& b, std::vector<ImportI
     b.add("abs_add_conditional", {N::v("axes", axes), N::v("offset", vec3(r.vector4("transf_offset_1111"))),
                                   N::v("multiplier", vec3(r.vector4("transf_scale_0000")))});
     derivativeTweak(r, b);
+}
+
+// ---- Mandelbulber2's 4D formulas: the orbit carries the point's fourth coordinate
+// (formulas/four_d.hpp), from initial_waxis (a start_w node, importFractal) ----
+
+// menger4d (Menger4dIteration): the 4D offset transf_addition_constant_0000 before it (window C),
+// the fold and sort, the turn in 4D's six planes (option R), the scale transf_scale_3 about
+// transf_addition_constant_111d5, a 4D sphere fold (S) and an iteration weight (option F); then
+// the derivative times analyticDE_scale_1. The turn and the sphere fold are refused.
+void mapMenger4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const glm::dvec4 before = r.vector4("transf_addition_constant_0000");
+    if (before != glm::dvec4(0.0))
+        inWindow(r, b, "C", "C", [&] {
+            b.add("translate", {N::v("offset", vec3(before)), N::f("offset_w", before.w)});
+        });
+    r.mustBeDefault("transf_function_enabledR_false", "a turn in the six planes of 4D");
+    r.mustBeDefault("transf_function_enabledS_false", "a 4D sphere fold after the Menger 4D step");
+    const glm::dvec4 offset = r.vector4("transf_addition_constant_111d5");
+    b.add("menger4d",
+          {N::f("scale", r.number("transf_scale_3")), N::v("offset", vec3(offset)), N::f("offset_w", offset.w)});
+    // Option F: z times transf_scale (plus z times transf_offset on iteration transf_int_A and
+    // times transf_offset_0 on transf_int_B, refused), the derivative times transf_scale_1.
+    double derivative = r.number("analyticDE_scale_1");
+    if (r.boolean("transf_function_enabled_false")) {
+        r.mustBeDefault("transf_offset", "a 4D iteration weight of its own on iteration transf_int_A");
+        r.mustBeDefault("transf_offset_0", "a 4D iteration weight of its own on iteration transf_int_B");
+        const double weight = r.number("transf_scale");
+        if (weight == 0.0) return r.unsupported("transf_scale 0: a weight that collapses the orbit");
+        if (weight != 1.0) b.add("scale", {N::f("scale", weight)});
+        derivative *= r.number("transf_scale_1") / std::abs(weight);
+    }
+    if (derivative != 1.0) b.add("derivative_tweak", {N::f("scale", derivative), N::f("offset", 0.0)});
+}
+
+// sierpinski4d (Sierpinski4dIteration): the six mirrors, the scale transf_scaleA_2, minus
+// transf_offset_1111 in window C; then, with analyticDE_enabled_false, the derivative times
+// analyticDE_scale_1 plus analyticDE_offset_0. Its turn in 4D's six planes (option R) is refused.
+void mapSierpinski4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledR_false", "a turn in the six planes of 4D");
+    const double scale = r.number("transf_scaleA_2");
+    auto step = [&](const glm::dvec4& offset) {
+        b.add("sierpinski4d", {N::f("scale", scale), N::v("offset", vec3(offset)), N::f("offset_w", offset.w)});
+    };
+    const int start = r.integer("transf_start_iterations_C"), stop = r.integer("transf_stop_iterations_C");
+    b.within(0, start, [&] { step(glm::dvec4(0.0)); });
+    b.within(start, stop, [&] { step(r.vector4("transf_offset_1111")); });
+    b.within(std::max(start, stop), kMaxIterations, [&] { step(glm::dvec4(0.0)); });
+    if (r.boolean("analyticDE_enabled_false")) {
+        const double tweak = r.number("analyticDE_scale_1"), offset = r.number("analyticDE_offset_0");
+        if (tweak != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", tweak), N::f("offset", offset)});
+    }
 }
 
 // ---- dIFS: shape steps whose least distance along the orbit is the estimate (formulas/difs.hpp) ----
@@ -1616,6 +1756,8 @@ constexpr Mapping kMappings[] = {
     {117, mapPseudoKleinianMod2},
     {98, mapMengerCrossKifs},
     {110, mapSierpinski3d},
+    {kSierpinski4dId, mapSierpinski4d},
+    {kMenger4dId, mapMenger4d},
     {59, mapFoldBoxMod1},
     {56, mapTransfPlatonicSolid},
     {101, mapPseudoKleinianStdDE},
@@ -2103,10 +2245,21 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
 Formula importFractal(const FractFile& file, Reader& main, const std::vector<int>& slots,
                       const std::vector<int>& sequence, int N, const std::string& own, FractImport& out) {
     Formula f;
-    if (std::find_if(slots.begin(), slots.end(), [&](int k) {
-            return main.integer("formula_" + std::to_string(k + 1)) == kHypercomplexId;
-        }) == slots.end())
-        main.mustBeDefault("initial_waxis" + own, "a fourth coordinate (part 2)");
+    // The fourth coordinate the orbit starts from: the hypercomplex orbit reads it itself, and the
+    // 4D steps carry it from a start_w node (below). Other formulas leave w aside where
+    // Mandelbulber2 measures r in 4D, so they are refused with it.
+    auto slotsAre = [&](std::initializer_list<int> ids, bool all) {
+        auto is = [&](int k) {
+            const int id = main.integer("formula_" + std::to_string(k + 1));
+            return std::find(ids.begin(), ids.end(), id) != ids.end();
+        };
+        return all ? std::all_of(slots.begin(), slots.end(), is) : std::any_of(slots.begin(), slots.end(), is);
+    };
+    const bool carriesW = !slots.empty() && slotsAre({kMenger4dId, kSierpinski4dId}, true);
+    if (!slotsAre({kHypercomplexId}, false) && !carriesW)
+        main.mustBeDefault("initial_waxis" + own,
+                           "a fourth coordinate beside formulas that do not carry it (fraktal's 4D steps are menger4d "
+                           "and sierpinski4d)");
 
     // ---- Each slot's nodes ----
     // Files up to 2.04 store the factor as one number (MB2's Compatibility() makes it a vector).
@@ -2130,7 +2283,7 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
         const FormulaInfo* info = findFormula(formula);
         Reader r(file, "fractal_" + n, false, "slot " + n + " (" + formulaName(formula) + ")", out.unsupported);
         std::vector<Node>& group = groups[size_t(k)];
-        NodeBuilder b(r, group);
+        NodeBuilder b(r, group, N);
         if (runsOwnOrbit(formula) && info) {
             // A 4D orbit: fraktal's hypercomplex Mandelbrot or Aexion estimator runs it (below),
             // alone. Refused (and, leniently, dropped) beside other slots or with options it lacks.
@@ -2207,6 +2360,11 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
                 if (f.nodes.size() <= size_t(kMaxNodes)) f.nodes.push_back(std::move(node));
             }
         }
+    }
+    if (const double w = main.number("initial_waxis" + own); carriesW && w != 0.0) {
+        std::vector<Node> start;
+        NodeBuilder(main, start).add("start_w", {N::f("w", w)});
+        f.nodes.insert(f.nodes.begin(), start.begin(), start.end());
     }
     if (f.nodes.size() > size_t(kMaxNodes))
         main.unsupported("a sequence of more than " + std::to_string(kMaxNodes) + " nodes (fraktal holds at most " +
@@ -2344,11 +2502,20 @@ FractImport importFract(const FractFile& file) {
         slots.push_back(k);
     }
     if (slots.empty()) main.unsupported("no formula slot runs");
+    // Mandelbulber2 moves, repeats and turns the point before every formula (compute_fractal.cpp:
+    // (point - fractal_position) mod repeat, turned by fractal_rotation's matrix): the first
+    // fractal's placement. In boolean mode each slot's own placement comes first, and the two do not
+    // make one placement.
+    const char* placementKeys[] = {"fractal_position", "fractal_rotation", "repeat"};
     if (boolean) {
+        for (const char* key : placementKeys)
+            main.mustBeDefault(key, "the whole scene's placement inside each boolean slot's own");
         importBooleanFractals(file, main, slots, N, out);
     } else {
         p.formula = importFractal(file, main, slots, slotOfEachIteration(sequencing, std::clamp(N, 1, kMaxIterations)),
                                   N, "", out);
+        placeByMandelbulber2(p.formula.placement, main.vector("fractal_position"), main.vector("fractal_rotation"));
+        p.formula.placement.repeat = glm::max(main.vector("repeat"), vec3(0.0));
     }
     p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
     // iteration_threshold_mode: Mandelbulber2 stops only where the orbit stays bounded for N
