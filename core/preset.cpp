@@ -430,7 +430,6 @@ json shadingJson(const ShadingSettings& s) {
 
 }  // namespace
 
-// An object beside the fractal: its kind, what differs from the defaults, its parameters.
 namespace {
 // A Placement's fields that differ from their defaults (objects and fractals write them alike).
 void writePlacement(const Placement& place, json& j) {
@@ -440,6 +439,7 @@ void writePlacement(const Placement& place, json& j) {
 }
 }  // namespace
 
+// An object beside the fractal: its kind, what differs from the defaults, its parameters.
 json objectToJson(const SceneObject& o) {
     json j = paramsOnlyJson(o);
     j["object"] = o.block->id;

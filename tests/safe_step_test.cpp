@@ -50,7 +50,6 @@ std::vector<const BlockDesc*> stepBlocks() {
     return out;
 }
 
-// A node of `block` with every parameter drawn uniformly from its declared range.
 // Parameters added to the steps RandomStacksWithTheCheckedFactorNeverOvershoot draws after it was
 // written, each an identity at its default (translate's move of the fourth coordinate, the sphere
 // fold's inner radius growing with the iteration): drawing them would change every seeded stack
@@ -60,6 +59,8 @@ bool addedAfterTheSeededStacks(const BlockDesc& block, const ParamDecl& d) {
            (block.id == "sphere_fold" && d.name.starts_with("min_r2_"));
 }
 
+// A node of `block` with every parameter drawn uniformly from its declared range (with
+// `seededStacks`, those above left at their defaults).
 Node randomNode(const BlockDesc& block, std::mt19937_64& rng, bool seededStacks = false) {
     Node n = Node::make(block);
     for (size_t i = 0; i < block.params.size(); ++i) {

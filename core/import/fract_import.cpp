@@ -47,6 +47,8 @@ constexpr int kAexionId = 19;
 constexpr int kSierpinski4dId = 109, kMenger4dId = 111;
 // Formulas whose 4D orbit a fraktal estimator runs whole (alone in a file).
 bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula == kAexionId; }
+// Formulas whose steps carry the fourth coordinate through fraktal's loop.
+bool carriesFourthCoordinate(int formula) { return formula == kMenger4dId || formula == kSierpinski4dId; }
 
 const FormulaInfo* findFormula(int id) {
     for (const FormulaInfo& f : kFormulas)
@@ -698,8 +700,9 @@ Quadratic cparaAt(Reader& r, int i) {
 // The sphere fold of squared radii whose inner one follows the Cpara curve when `varies` (the
 // formula's transf_function_enabledy_false): one sphere_fold per stretch of the open window's
 // iterations on which the curve is one quadratic (its growth and curve parameters), the curve plus
-// transf_minR2_p25 being the squared inner radius. A curve undefined on an iteration the orbit runs
-// (iterA, iterB - iterA or iterC - iterB of 0 where its stretch is used) is refused.
+// transf_minR2_p25 being the squared inner radius. Refused: a curve undefined on an iteration the
+// orbit runs (iterA, iterB - iterA or iterC - iterB of 0 where its stretch is used), and a squared
+// inner radius below 0 or above transf_maxR2_1 (where Mandelbulber2's fold shrinks the point).
 void cparaSphereFold(Reader& r, NodeBuilder& b, bool varies, const vec3& offset) {
     if (!varies) return squaredRadiiSphereFold(r, b, offset);
     const double minR2 = r.number("transf_minR2_p25"), maxR2 = r.number("transf_maxR2_1");
@@ -2248,15 +2251,12 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
     // The fourth coordinate the orbit starts from: the hypercomplex orbit reads it itself, and the
     // 4D steps carry it from a start_w node (below). Other formulas leave w aside where
     // Mandelbulber2 measures r in 4D, so they are refused with it.
-    auto slotsAre = [&](std::initializer_list<int> ids, bool all) {
-        auto is = [&](int k) {
-            const int id = main.integer("formula_" + std::to_string(k + 1));
-            return std::find(ids.begin(), ids.end(), id) != ids.end();
-        };
-        return all ? std::all_of(slots.begin(), slots.end(), is) : std::any_of(slots.begin(), slots.end(), is);
-    };
-    const bool carriesW = !slots.empty() && slotsAre({kMenger4dId, kSierpinski4dId}, true);
-    if (!slotsAre({kHypercomplexId}, false) && !carriesW)
+    auto formulaOf = [&](int k) { return main.integer("formula_" + std::to_string(k + 1)); };
+    const bool carriesW = !slots.empty() && std::all_of(slots.begin(), slots.end(),
+                                                        [&](int k) { return carriesFourthCoordinate(formulaOf(k)); });
+    const bool hypercomplex =
+        std::any_of(slots.begin(), slots.end(), [&](int k) { return formulaOf(k) == kHypercomplexId; });
+    if (!hypercomplex && !carriesW)
         main.mustBeDefault("initial_waxis" + own,
                            "a fourth coordinate beside formulas that do not carry it (fraktal's 4D steps are menger4d "
                            "and sierpinski4d)");
