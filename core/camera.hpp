@@ -36,6 +36,8 @@ struct Camera {
     bool flipVertical = false;
     Projection projection = Projection::Perspective;
 
+    bool operator==(const Camera&) const = default;
+
     // Camera space: x right, y up, looking down -z (OpenGL convention).
     glm::dmat4 worldFromCamera() const;
     // Direction in world space of the ray through normalised device coordinates (-1..1).

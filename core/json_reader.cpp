@@ -211,45 +211,96 @@ const json& FieldReader::at(const std::string& key) {
     return object_.at(key);
 }
 
+bool FieldReader::has(const std::string& key) const {
+    const bool present = object_.contains(key);
+    if (!present && context_.log) note(key, FieldAsked::Kind::Optional, nullptr);
+    return present;
+}
+
+void FieldReader::note(const std::string& key, FieldAsked::Kind kind, const json& value, double lo, double hi, int size,
+                       std::vector<std::string> choices) const {
+    FieldAsked f;
+    f.path = child(key);
+    f.kind = kind;
+    f.value = value;
+    f.present = object_.contains(key);
+    f.lo = lo;
+    f.hi = hi;
+    f.size = size;
+    f.choices = std::move(choices);
+    context_.log->push_back(std::move(f));
+}
+
+void FieldReader::noteChoice(const std::string& key, const std::string& value, std::vector<std::string> names) const {
+    if (!context_.log) return;
+    const std::string path = child(key);
+    std::erase_if(*context_.log, [&](const FieldAsked& f) { return f.path == path; });
+    note(key, FieldAsked::Kind::Choice, value, 0.0, 0.0, 0, std::move(names));
+}
+
 double FieldReader::number(const std::string& key, double fallback, double lo, double hi) {
-    return has(key) ? checkNumber(at(key), child(key), lo, hi) : fallback;
+    const double d = object_.contains(key) ? checkNumber(at(key), child(key), lo, hi) : fallback;
+    if (context_.log) note(key, FieldAsked::Kind::Number, d, lo, hi);
+    return d;
 }
 
 int FieldReader::integer(const std::string& key, int fallback, int lo, int hi) {
-    if (!has(key)) return fallback;
-    const json& v = at(key);
-    const double d = checkNumber(v, child(key), lo, hi);
-    if (d != std::floor(d)) fail("expected a whole number, found " + v.dump(), key);
-    return int(d);
+    int n = fallback;
+    if (object_.contains(key)) {
+        const json& v = at(key);
+        const double d = checkNumber(v, child(key), lo, hi);
+        if (d != std::floor(d)) fail("expected a whole number, found " + v.dump(), key);
+        n = int(d);
+    }
+    if (context_.log) note(key, FieldAsked::Kind::Integer, n, lo, hi);
+    return n;
 }
 
 bool FieldReader::boolean(const std::string& key, bool fallback) {
-    if (!has(key)) return fallback;
-    const json& v = at(key);
-    if (!v.is_boolean()) fail("expected true or false, found " + typeName(v), key);
-    return v.get<bool>();
+    bool b = fallback;
+    if (object_.contains(key)) {
+        const json& v = at(key);
+        if (!v.is_boolean()) fail("expected true or false, found " + typeName(v), key);
+        b = v.get<bool>();
+    }
+    if (context_.log) note(key, FieldAsked::Kind::Boolean, b);
+    return b;
 }
 
 bool FieldReader::toggle(const std::string& key, bool fallback) {
-    if (!has(key)) return fallback;
-    const json& v = at(key);
-    if (v.is_boolean()) return v.get<bool>();
-    if (v.is_number() && (v.get<double>() == 0.0 || v.get<double>() == 1.0)) return v.get<double>() == 1.0;
-    fail("expected true or false (or 0 or 1), found " + v.dump(), key);
+    bool b = fallback;
+    if (object_.contains(key)) {
+        const json& v = at(key);
+        if (v.is_boolean())
+            b = v.get<bool>();
+        else if (v.is_number() && (v.get<double>() == 0.0 || v.get<double>() == 1.0))
+            b = v.get<double>() == 1.0;
+        else
+            fail("expected true or false (or 0 or 1), found " + v.dump(), key);
+    }
+    if (context_.log) note(key, FieldAsked::Kind::Boolean, b);
+    return b;
 }
 
 std::string FieldReader::string(const std::string& key, const std::string& fallback, size_t maxLength) {
-    if (!has(key)) return fallback;
-    const json& v = at(key);
-    if (!v.is_string()) fail("expected a string, found " + typeName(v), key);
-    std::string s = v.get<std::string>();
-    if (s.size() > maxLength) fail("string longer than " + std::to_string(maxLength) + " bytes", key);
+    std::string s = fallback;
+    if (object_.contains(key)) {
+        const json& v = at(key);
+        if (!v.is_string()) fail("expected a string, found " + typeName(v), key);
+        s = v.get<std::string>();
+        if (s.size() > maxLength) fail("string longer than " + std::to_string(maxLength) + " bytes", key);
+    }
+    if (context_.log) note(key, FieldAsked::Kind::String, s, 0.0, double(maxLength));
     return s;
 }
 
 int FieldReader::choice(const std::string& key, std::span<const std::string_view> names, int fallback,
                         const std::string& what, const std::string& prefix) {
     const std::string name = string(key, std::string(names[size_t(fallback)]));
+    if (context_.log) {  // a choice, not the free string string() noted
+        context_.log->back().kind = FieldAsked::Kind::Choice;
+        context_.log->back().choices.assign(names.begin(), names.end());
+    }
     for (size_t i = 0; i < names.size(); ++i)
         if (names[i] == name) return int(i);
     std::string expected;

@@ -79,6 +79,30 @@ class KeptFields {
     std::vector<Entry> entries_;
 };
 
+// Every field the readers asked about while reading one document, present or not, with what
+// they accept: the format's own enumeration of itself. Tests walk it to reach every field a
+// preset can hold without a list of their own (tests/scene_change_test.cpp); nothing else reads
+// it.
+struct FieldAsked {
+    enum class Kind {
+        Number,    // lo..hi
+        Integer,   // whole numbers in lo..hi
+        Boolean,   // true or false
+        String,    // any string (up to hi bytes)
+        Choice,    // one of `choices`
+        Vector,    // `size` numbers, each in lo..hi
+        Optional,  // an object, list or field that is absent and was only asked about (has())
+    };
+    std::string path;  // formula.nodes[2].params.scale
+    Kind kind = Kind::Optional;
+    nlohmann::json value;  // as read: the document's value, or the reader's default when absent
+    bool present = false;
+    double lo = 0.0, hi = 0.0;
+    int size = 0;
+    std::vector<std::string> choices;
+};
+using FieldLog = std::vector<FieldAsked>;
+
 // What readers of one document share: the file name for errors, and what to do with fields
 // they were not asked about.
 struct ReadContext {
@@ -87,6 +111,7 @@ struct ReadContext {
     // Null: unknown fields are errors (a typo must not be ignored silently). Set (a document of
     // a newer format version): they are kept here instead.
     KeptFields* keepUnknown = nullptr;
+    FieldLog* log = nullptr;  // set: every field asked about is noted there
 };
 
 // Reads the fields of one JSON object, with its path for error messages. Every field asked
@@ -99,7 +124,8 @@ class FieldReader {
     std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
     const std::string& path() const { return path_; }
     const ReadContext& context() const { return context_; }
-    bool has(const std::string& key) const { return object_.contains(key); }
+    // Whether the field is there (an absent one is noted in the context's log as optional).
+    bool has(const std::string& key) const;
     // A field that must be there.
     const nlohmann::json& at(const std::string& key);
     // A field read elsewhere (e.g. "format" and "version", by readPresetDocument).
@@ -116,13 +142,24 @@ class FieldReader {
     // fails: "PREFIXunknown WHAT "x" (expected a, b or c)".
     int choice(const std::string& key, std::span<const std::string_view> names, int fallback, const std::string& what,
                const std::string& prefix = {});
+    // A string the caller checks against `names` itself (block and object ids, light types),
+    // read as `value`: noted in the log as a choice (it replaces a note string() made).
+    void noteChoice(const std::string& key, const std::string& value, std::vector<std::string> names) const;
     template <int N>
     glm::vec<N, double> vector(const std::string& key, const glm::vec<N, double>& fallback, double lo, double hi) {
-        return has(key) ? checkVector<N>(at(key), child(key), lo, hi) : fallback;
+        const glm::vec<N, double> v = object_.contains(key) ? checkVector<N>(at(key), child(key), lo, hi) : fallback;
+        if (context_.log) {
+            nlohmann::json a = nlohmann::json::array();
+            for (int i = 0; i < N; ++i) a.push_back(v[i]);
+            note(key, FieldAsked::Kind::Vector, a, lo, hi, N);
+        }
+        return v;
     }
     template <int N>
     glm::vec<N, double> requiredVector(const std::string& key, double lo, double hi) {
-        return checkVector<N>(at(key), child(key), lo, hi);
+        const glm::vec<N, double> v = checkVector<N>(at(key), child(key), lo, hi);
+        if (context_.log) note(key, FieldAsked::Kind::Vector, at(key), lo, hi, N);
+        return v;
     }
 
     // Fields present but never asked about: an error with `reason`, or kept (newer version).
@@ -145,6 +182,9 @@ class FieldReader {
     static std::string formatNumber(double d);
 
    private:
+    void note(const std::string& key, FieldAsked::Kind kind, const nlohmann::json& value, double lo = 0.0,
+              double hi = 0.0, int size = 0, std::vector<std::string> choices = {}) const;
+
     const ReadContext& context_;
     const nlohmann::json& object_;
     std::string path_;

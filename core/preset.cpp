@@ -54,6 +54,12 @@ Node parseNode(const ReadContext& context, const json& j, const std::string& pat
     FieldReader r(context, j, path);
     const json& id = r.at("block");
     if (!id.is_string()) r.fail("expected a block id string, found " + FieldReader::typeName(id), "block");
+    if (context.log) {
+        std::vector<std::string> ids;
+        for (const BlockDesc& b : allBlocks()) ids.emplace_back(b.id);
+        for (const auto& b : custom) ids.emplace_back(b->desc().id);
+        r.noteChoice("block", id.get<std::string>(), std::move(ids));
+    }
     const BlockDesc* block = lookUpBlock(id.get<std::string>(), custom);
     if (!block) {
         std::string known;
@@ -101,6 +107,11 @@ SceneObject parseObject(const ReadContext& context, const json& j, const std::st
     FieldReader r(context, j, path);
     const json& id = r.at("object");
     if (!id.is_string()) r.fail("expected an object kind string, found " + FieldReader::typeName(id), "object");
+    if (context.log) {
+        std::vector<std::string> ids;
+        for (const ObjectDesc& o : allObjects()) ids.emplace_back(o.id);
+        r.noteChoice("object", id.get<std::string>(), std::move(ids));
+    }
     const ObjectDesc* kind = findObject(id.get<std::string>());
     if (!kind) {
         std::string known;
@@ -300,9 +311,9 @@ const char* const kKnownSections[] = {"format",      "version",         "dimensi
                                       "description", "formula",         "camera",    "render",
                                       "shading",     "colorManagement", "animation"};
 
-Preset readPreset(const PresetDocument& doc, const std::string& file) {
+Preset readPreset(const PresetDocument& doc, const std::string& file, FieldLog* log) {
     Preset p;
-    const ReadContext context{file, &doc.json, doc.newer() ? &p.unknownFields : nullptr};
+    const ReadContext context{file, &doc.json, doc.newer() ? &p.unknownFields : nullptr, log};
     FieldReader r(context, doc.json, "");
     if (r.has("dimension") && doc.json["dimension"] != 3)
         r.fail(
@@ -363,10 +374,10 @@ json colorManagementJson(const RenderSettings& s) {
     return j;
 }
 
-Preset parsePreset(std::string_view text, const std::string& file) {
+Preset parsePreset(std::string_view text, const std::string& file, FieldLog* log) {
     const PresetDocument doc = readPresetDocument(text, file);
     try {
-        return readPreset(doc, file);
+        return readPreset(doc, file, log);
     } catch (const PresetError& e) {
         throw errorAsInFile(e, doc);
     }
@@ -470,32 +481,26 @@ void writeFractal(const Formula& fractal, json& f) {
     if (fractal.deFactor != defaults.deFactor) f["deFactor"] = fractal.deFactor;
     json nodes = json::array();
     for (const Node& n : fractal.nodes) nodes.push_back(nodeToJson(n));
-    nodes.push_back(nodeToJson(fractal.estimator));
+    if (fractal.estimator.block) nodes.push_back(nodeToJson(fractal.estimator));  // none: a formula being built
     f["nodes"] = nodes;
     if (json place = placementToJson(fractal.placement); !place.empty()) f["placement"] = place;
 }
 
 }  // namespace
 
-json presetToJson(const Preset& p) {
+json formulaToJson(const Formula& formula) {
     const Formula defaults;
-    const Camera camDefaults;
-    json j = json::object();
-    j["format"] = kPresetFormat;
-    j["version"] = std::max(kPresetVersion, p.formatVersion);
-    if (!p.name.empty()) j["name"] = p.name;
-    if (!p.description.empty()) j["description"] = p.description;
     json f = json::object();
-    if (p.formula.boundRadius != defaults.boundRadius) f["boundRadius"] = p.formula.boundRadius;
-    if (p.formula.hitRule != defaults.hitRule) f["hitRule"] = kHitRuleNames[int(p.formula.hitRule)];
-    if (!p.formula.customBlocks.empty()) {
+    if (formula.boundRadius != defaults.boundRadius) f["boundRadius"] = formula.boundRadius;
+    if (formula.hitRule != defaults.hitRule) f["hitRule"] = kHitRuleNames[int(formula.hitRule)];
+    if (!formula.customBlocks.empty()) {
         f["customBlocks"] = json::array();
-        for (const auto& b : p.formula.customBlocks) f["customBlocks"].push_back(customBlockToJson(*b));
+        for (const auto& b : formula.customBlocks) f["customBlocks"].push_back(customBlockToJson(*b));
     }
-    writeFractal(p.formula, f);
-    if (!p.formula.fractals.empty()) {
+    writeFractal(formula, f);
+    if (!formula.fractals.empty()) {
         json fractals = json::array();
-        for (const CombinedFractal& c : p.formula.fractals) {
+        for (const CombinedFractal& c : formula.fractals) {
             json e = json::object();
             if (c.operation != ObjectOperation::Join) e["operation"] = kObjectOperationNames[int(c.operation)];
             if (!c.enabled) e["enabled"] = false;
@@ -504,12 +509,22 @@ json presetToJson(const Preset& p) {
         }
         f["fractals"] = fractals;
     }
-    if (!p.formula.objects.empty()) {
+    if (!formula.objects.empty()) {
         json objects = json::array();
-        for (const SceneObject& o : p.formula.objects) objects.push_back(objectToJson(o));
+        for (const SceneObject& o : formula.objects) objects.push_back(objectToJson(o));
         f["objects"] = objects;
     }
-    j["formula"] = f;
+    return f;
+}
+
+json presetToJson(const Preset& p) {
+    const Camera camDefaults;
+    json j = json::object();
+    j["format"] = kPresetFormat;
+    j["version"] = std::max(kPresetVersion, p.formatVersion);
+    if (!p.name.empty()) j["name"] = p.name;
+    if (!p.description.empty()) j["description"] = p.description;
+    j["formula"] = formulaToJson(p.formula);
     json c = json::object();
     c["position"] = vecJson(p.camera.position);
     c["target"] = vecJson(p.camera.target);

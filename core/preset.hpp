@@ -60,8 +60,9 @@ PresetDocument readPresetDocument(std::string_view text, const std::string& file
 // `e`, raised while reading the migrated document, with its field named as in the file.
 PresetError errorAsInFile(const PresetError& e, const PresetDocument& document);
 
-// `source` names the file in error messages.
-Preset parsePreset(std::string_view text, const std::string& source);
+// `source` names the file in error messages. `log`, when given, receives every field the
+// readers asked about (json_reader.hpp, FieldLog).
+Preset parsePreset(std::string_view text, const std::string& source, FieldLog* log = nullptr);
 Preset loadPreset(const std::filesystem::path& path);
 
 // The "colorManagement" section (working space, display, view, exposure; 3D and 2D alike), read
@@ -166,6 +167,9 @@ void writeImageSize(const RenderSettings& s, nlohmann::json& render);
 
 // Writes only what differs from defaults, plus the format and version.
 nlohmann::json presetToJson(const Preset& preset);
+// The "formula" section alone: every field of the formula a render reads (nodes, objects,
+// combined fractals, placement, custom blocks), as presetToJson writes it.
+nlohmann::json formulaToJson(const Formula& formula);
 std::string serializePreset(const Preset& preset);
 // Saves atomically (temp file, fsync, rename) and keeps the previous version as PATH.bak: if
 // the program is killed mid-save, PATH is the complete old or the complete new preset.

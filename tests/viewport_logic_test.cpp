@@ -251,8 +251,8 @@ TEST(ViewportLogic, CameraPathsMoveAndStartAtThePreset) {
     Camera c;
     c.position = vec3(0, 1, 4);
     for (CameraPath p : {CameraPath::Orbit, CameraPath::Dolly, CameraPath::Pan}) {
-        EXPECT_TRUE(sameCamera(cameraOnPath(c, p, 0), c));
-        EXPECT_FALSE(sameCamera(cameraOnPath(c, p, 5), c));
+        EXPECT_EQ(cameraOnPath(c, p, 0), c);
+        EXPECT_NE(cameraOnPath(c, p, 5), c);
         EXPECT_EQ(parseCameraPath(toString(p)), p);
     }
     // An orbit keeps the distance to the target.

@@ -33,6 +33,11 @@ Light parseLight(const ReadContext& context, const json& j, const std::string& p
         }
     }
     if (!found) r.fail("unknown light type '" + type + "' (known: " + known + ")", "type");
+    if (r.context().log) {
+        std::vector<std::string> names;
+        for (const LightTypeNames& n : kLightTypeNames) names.emplace_back(n.name);
+        r.noteChoice("type", type, std::move(names));
+    }
     l.enabled = r.boolean("enabled", true);
     l.color = r.vector<3>("color", l.color, 0.0, 1e4);
     l.intensity = r.number("intensity", l.intensity, 0.0, 1e9);

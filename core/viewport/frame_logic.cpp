@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/preset.hpp"
+
 namespace fraktal::viewport {
 
 const char* toString(FrameAction a) {
@@ -15,38 +17,7 @@ const char* toString(FrameAction a) {
     return "?";
 }
 
-namespace {
-
-void appendNumber(std::string& s, double v) {
-    char buffer[40];
-    std::snprintf(buffer, sizeof buffer, "%.17g,", v);
-    s += buffer;
-}
-
-}  // namespace
-
-std::string formulaValuesKey(const Formula& f) {
-    std::string key;
-    appendNumber(key, f.iterations);
-    appendNumber(key, f.bailout);
-    appendNumber(key, f.boundRadius);
-    appendNumber(key, f.deFactor);
-    for (size_t k = 0; k <= f.nodes.size(); ++k) {
-        const Node& n = k == f.nodes.size() ? f.estimator : f.nodes[k];
-        key += '|';
-        for (const ParamValue& v : n.values) {
-            appendNumber(key, v.x);
-            appendNumber(key, v.y);
-            appendNumber(key, v.z);
-        }
-    }
-    return key;
-}
-
-bool sameCamera(const Camera& a, const Camera& b) {
-    return a.position == b.position && a.target == b.target && a.up == b.up && a.fovY == b.fovY &&
-           a.projection == b.projection;
-}
+std::string formulaValuesKey(const Formula& f) { return formulaToJson(f).dump(); }
 
 FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool reprojectEnabled,
                         FrameAction previousAction) {
@@ -57,7 +28,7 @@ FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool 
         previous->shading.overRelaxation != current.shading.overRelaxation || previous->maxSteps != current.maxSteps ||
         !(previous->lens == current.lens))
         return FrameAction::Reset;
-    if (sameCamera(previous->camera, current.camera)) {
+    if (previous->camera == current.camera) {
         const bool moving = previousAction == FrameAction::Reproject || previousAction == FrameAction::Hold;
         if (resized) return moving && reprojectEnabled ? FrameAction::Reproject : FrameAction::Reset;
         if (previousAction == FrameAction::Reproject) return FrameAction::Hold;

@@ -31,18 +31,18 @@ const char* toString(FrameAction a);
 struct FrameKey {
     int width = 0, height = 0;
     std::string structure;  // Formula::structureKey(): a change recompiles
-    std::string values;     // formulaValuesKey(): the parameter values (uniforms)
+    std::string values;     // scene::SceneRevision::values, or formulaValuesKey(): every value a frame reads
     ShadingParams shading;  // shading, detail and over-relaxation: any change re-marches
     int maxSteps = 0;
     Camera camera;
     ThinLens lens;  // depth of field of the AA samples at rest: a change restarts them
 };
 
-// `values` of a formula: every uniform the generated GLSL reads (parameters, iterations, bailout,
-// bound, factor), printed exactly, so that any edit changes the string.
+// `values` of a formula alone, for callers without a whole scene: its preset section
+// (formulaToJson: nodes, objects, combined fractals, placement, custom blocks), numbers printed
+// exactly, so that any edit changes the string. The editor passes the whole scene's revision
+// instead (core/scene/scene_revision.hpp).
 std::string formulaValuesKey(const Formula& f);
-
-bool sameCamera(const Camera& a, const Camera& b);
 
 // `previous` is null before the first frame. A camera move reprojects only when reprojection is
 // enabled; otherwise it resets like an edit does. An edit and a move in the same frame reset

@@ -23,18 +23,26 @@ void Viewport::setOptions(const ViewportOptions& options) {
 }
 
 FrameKey Viewport::frameKey(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                            const ShadingSettings& shading, int width, int height, const ThinLens& lens) const {
+                            const ShadingSettings& shading, int width, int height, const ThinLens& lens,
+                            const scene::SceneRevision* revision) const {
     RenderSettings effective = render;
     if (!options_.overRelaxation) effective.overRelaxation = 1.0;
     const ShadingParams params = resolveShading(shading, effective, formula);
-    return FrameKey{width,  height, formula.structureKey(), formulaValuesKey(formula), params, render.maxSteps,
-                    camera, lens};
+    return FrameKey{width,
+                    height,
+                    revision ? revision->structure : formula.structureKey(),
+                    revision ? revision->values : formulaValuesKey(formula),
+                    params,
+                    render.maxSteps,
+                    camera,
+                    lens};
 }
 
 FrameStats Viewport::render(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                            const ShadingSettings& shading, int width, int height, const ThinLens& lens) {
+                            const ShadingSettings& shading, int width, int height, const ThinLens& lens,
+                            const scene::SceneRevision* revision) {
     if (width < 2 || height < 2) throw std::runtime_error("viewport: size must be at least 2x2");
-    FrameKey key = frameKey(formula, camera, render, shading, width, height, lens);
+    FrameKey key = frameKey(formula, camera, render, shading, width, height, lens, revision);
     const ShadingParams& params = key.shading;
     // Compile first: if it fails, the old programs and image stay.
     if (!programs_ || programs_->structure != key.structure) programs_ = std::make_unique<ViewportPrograms>(formula);

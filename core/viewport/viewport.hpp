@@ -20,6 +20,7 @@
 #include "core/formula.hpp"
 #include "core/gl/color_target.hpp"
 #include "core/render/settings.hpp"
+#include "core/scene/scene_revision.hpp"
 #include "core/viewport/frame_logic.hpp"
 #include "core/viewport/gpu_counters.hpp"
 #include "core/viewport/march_state.hpp"
@@ -43,14 +44,19 @@ class Viewport {
     // programs and image stay). With a thin lens the anti-aliasing samples at rest (from the second
     // on, which replaces the pinhole first one) leave their own points of the aperture, so the
     // settled image has the lens's depth of field; under motion the image is the pinhole's.
+    // `revision`, when the caller has one (the editor: core/scene/scene_revision.hpp), says what
+    // changed for the whole scene; without it the formula's own values are compared
+    // (formulaValuesKey).
     FrameStats render(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                      const ShadingSettings& shading, int width, int height, const ThinLens& lens = {});
+                      const ShadingSettings& shading, int width, int height, const ThinLens& lens = {},
+                      const scene::SceneRevision* revision = nullptr);
 
     // What render() with these arguments decides its frame on (decideFrame's key), so that a caller
     // that stops rendering for a while (the editor's path tracing at rest) asks the same question
     // about whether the view changed.
     FrameKey frameKey(const Formula& formula, const Camera& camera, const RenderSettings& render,
-                      const ShadingSettings& shading, int width, int height, const ThinLens& lens = {}) const;
+                      const ShadingSettings& shading, int width, int height, const ThinLens& lens = {},
+                      const scene::SceneRevision* revision = nullptr) const;
 
     // Whether render() with this formula would compile first: the current programs were built for
     // another structure (or none yet).

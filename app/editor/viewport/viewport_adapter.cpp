@@ -77,7 +77,8 @@ const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {
     return workingShading_;
 }
 
-bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& settings, int width, int height) {
+bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevision& revision,
+                                   const ViewSettings& settings, int width, int height) {
     const Formula& formula = preset.formula;
     lastAction_ = viewport::FrameAction::Reset;
     if (!failedStructure_.empty() && formula.structureKey() == failedStructure_) return false;
@@ -90,7 +91,7 @@ bool CoreViewportView::renderFrame(const Preset& preset, const ViewSettings& set
     viewport::FrameStats frame;
     try {
         frame = viewport_.render(formula, preset.camera, preset.render, workingShading_, width, height,
-                                 preset.lighting.lens);
+                                 preset.lighting.lens, &revision);
     } catch (const std::exception& e) {
         // The viewport keeps its previous programs and image (viewport.hpp).
         compileError_ = e.what();
@@ -145,16 +146,11 @@ void CoreViewportView::redisplay(const Preset& preset, GLuint linearImage, doubl
     imageChanged_ = false;
 }
 
-double CoreViewportView::chooseScale(const Preset& preset, const ViewSettings& settings) {
-    // The view a frame shows, as far as motion goes: the camera, the formula and the shading.
-    viewport::FrameKey view;
-    view.structure = preset.formula.structureKey();
-    view.values = viewport::formulaValuesKey(preset.formula);
-    view.camera = preset.camera;
-    const bool changed = lastView_ && (lastView_->structure != view.structure || lastView_->values != view.values ||
-                                       !viewport::sameCamera(lastView_->camera, view.camera) ||
-                                       !(shadingKey_ && shadingKey_->first == preset.shading));
-    lastView_ = std::move(view);
+double CoreViewportView::chooseScale(const scene::SceneRevision& revision, const ViewSettings& settings) {
+    // Motion: anything the image is rendered from changed (a new display transform is not).
+    const scene::SceneChange change = scene::sceneChange(lastView_ ? &*lastView_ : nullptr, revision);
+    const bool changed = lastView_ && (change.restarts() || change.camera);
+    lastView_ = revision;
     // The editor's frame time: from the start of the previous frame's render to this one's.
     const auto now = std::chrono::steady_clock::now();
     const double frameMs =
@@ -168,7 +164,9 @@ double CoreViewportView::chooseScale(const Preset& preset, const ViewSettings& s
 }
 
 void CoreViewportView::render(const Preset& preset, const ViewSettings& settings, int fullWidth, int fullHeight) {
-    if (path_ && !pathStillValid(preset, settings, fullWidth, fullHeight)) dropPath();
+    // What changed since the last frame is decided here, once, for every consumer below.
+    const scene::SceneRevision revision = scene::sceneRevision(preset);
+    if (path_ && !pathStillValid(revision, settings, fullWidth, fullHeight)) dropPath();
     if (path_) {
         pathFrame(preset, settings);
         return;
@@ -176,12 +174,12 @@ void CoreViewportView::render(const Preset& preset, const ViewSettings& settings
     stats_.pathTracing = false;
     stats_.pathSamples = 0;
     stats_.pathSppCap = settings.pathSppCap;
-    const double scale = chooseScale(preset, settings);
+    const double scale = chooseScale(revision, settings);
     const int width = std::max(int(std::lround(fullWidth * scale)), 2);
     const int height = std::max(int(std::lround(fullHeight * scale)), 2);
     stats_.internalScale = scale;
     try {
-        if (renderFrame(preset, settings, width, height)) imageChanged_ = true;
+        if (renderFrame(preset, revision, settings, width, height)) imageChanged_ = true;
     } catch (const std::exception& e) {
         lastAction_ = viewport::FrameAction::Reset;
         displayError_ = e.what();  // e.g. an unknown working space
@@ -195,41 +193,36 @@ void CoreViewportView::render(const Preset& preset, const ViewSettings& settings
     const bool atRest = lastAction_ == viewport::FrameAction::Continue && scale == 1.0 &&
                         viewport_.width() == fullWidth && viewport_.height() == fullHeight;
     if (settings.pathTraceAtRest && atRest && compileError_.empty() && !stats_.compiling) {
-        startPath(preset, fullWidth, fullHeight);
+        startPath(preset, revision, fullWidth, fullHeight);
         if (path_) stats_.settled = false;  // samples to come: the editor keeps drawing frames
     }
 }
 
-bool CoreViewportView::pathStillValid(const Preset& preset, const ViewSettings& settings, int width, int height) {
+bool CoreViewportView::pathStillValid(const scene::SceneRevision& revision, const ViewSettings& settings, int width,
+                                      int height) {
     if (!settings.pathTraceAtRest || !failedStructure_.empty()) return false;
-    // The fast mode's question (decideFrame) about the view at rest, plus what only the path
-    // tracer sees: the lights, lens and environment, the background's transparency and the file
-    // that environment paths are relative to.
-    const viewport::FrameKey view = viewport_.frameKey(preset.formula, preset.camera, preset.render,
-                                                       workingShading(preset), width, height, preset.lighting.lens);
+    // Everything the scene holds (lights, lens, environment, the background's transparency
+    // included: the fast mode does not see them all), the size, and the file that environment
+    // paths are relative to. A new display transform only redisplays the samples.
     const PathAtRest& p = *path_;
-    return viewport::decideFrame(&p.view, view, false) == viewport::FrameAction::Continue &&
-           p.lighting == preset.lighting && p.workingSpace == preset.render.workingSpace &&
-           p.transparentBackground == preset.render.transparentBackground && p.presetFile == presetFile_;
+    const scene::SceneChange change = scene::sceneChange(&p.revision, revision);
+    return !change.restarts() && !change.camera && p.render.width == width && p.render.height == height &&
+           p.presetFile == presetFile_;
 }
 
-void CoreViewportView::startPath(const Preset& preset, int width, int height) {
-    const std::string failureKey = presetFile_ + "\n" + preset.formula.structureKey();
+void CoreViewportView::startPath(const Preset& preset, const scene::SceneRevision& revision, int width, int height) {
+    const std::string failureKey = presetFile_ + "\n" + revision.structure;
     if (pathFailed_ && pathFailed_->first == preset.lighting && pathFailed_->second == failureKey) return;
     PathAtRest p;
-    p.view = viewport_.frameKey(preset.formula, preset.camera, preset.render, workingShading(preset), width, height,
-                                preset.lighting.lens);
-    p.lighting = preset.lighting;
-    p.workingSpace = preset.render.workingSpace;
+    p.revision = revision;
     p.presetFile = presetFile_;
-    p.transparentBackground = preset.render.transparentBackground;
     p.render = preset.render;
     p.render.width = width;
     p.render.height = height;
     try {
         pathData_ = resolvePathScene(preset, presetFile_, color_, pathData_ ? &*pathData_ : nullptr);
         if (!pathTracer_ || pathTracer_->width() != width || pathTracer_->height() != height ||
-            pathTracer_->structure() != preset.formula.structureKey())
+            pathTracer_->structure() != revision.structure)
             pathTracer_ = std::make_unique<gl::PathTracer>(preset.formula, width, height);
         pathTracer_->setScene(pathData_->scene(preset, p.render));
     } catch (const std::exception& e) {

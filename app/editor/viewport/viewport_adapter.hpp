@@ -14,6 +14,7 @@
 #include "core/gl/color_target.hpp"
 #include "core/render/path_job.hpp"
 #include "core/render/path_tracer.hpp"
+#include "core/scene/scene_revision.hpp"
 #include "core/viewport/resolution_control.hpp"
 #include "core/viewport/viewport.hpp"
 
@@ -30,12 +31,11 @@ ShadingSettings shadingInWorkingSpace(const ShadingSettings& shading, const Colo
                                       const std::string& workingSpace);
 
 // "Path traced at rest": the accumulation the viewport shows while the view rests, and what it
-// was started for. Any difference from the current view drops it (back to the fast mode).
+// was started for. Any change of the scene but its display transform, of the size or of the file
+// that environment paths are relative to drops it (back to the fast mode).
 struct PathAtRest {
-    viewport::FrameKey view;  // the fast viewport's key of the view at rest (decideFrame's question)
-    Lighting lighting;        // the document's lighting, which the fast mode does not see
-    std::string workingSpace, presetFile;
-    bool transparentBackground = false;
+    scene::SceneRevision revision;
+    std::string presetFile;
     RenderSettings render;  // the preset's, at the viewport's full size
 };
 
@@ -61,7 +61,8 @@ class CoreViewportView final : public ViewportView {
 
    private:
     // Runs one viewport frame; false when nothing was rendered (compile error, skipped).
-    bool renderFrame(const Preset& preset, const ViewSettings& settings, int width, int height);
+    bool renderFrame(const Preset& preset, const scene::SceneRevision& revision, const ViewSettings& settings,
+                     int width, int height);
     void ensureDisplayTarget(int width, int height);
     // Draws `linearImage` (scene-linear, the size of the display target, top row first) through
     // the display transform when it or the transform changed. `gain` in stops adds to the exposure.
@@ -70,8 +71,8 @@ class CoreViewportView final : public ViewportView {
 
     // Path traced at rest: whether the accumulation still shows this view; starting one for the
     // view the fast mode rests at; one frame's samples, shown.
-    bool pathStillValid(const Preset& preset, const ViewSettings& settings, int width, int height);
-    void startPath(const Preset& preset, int width, int height);
+    bool pathStillValid(const scene::SceneRevision& revision, const ViewSettings& settings, int width, int height);
+    void startPath(const Preset& preset, const scene::SceneRevision& revision, int width, int height);
     void pathFrame(const Preset& preset, const ViewSettings& settings);
     void copyPathImage();  // the tracer's whole passes into pathImage_
     void dropPath();
@@ -80,7 +81,7 @@ class CoreViewportView final : public ViewportView {
     // there is no compiler: render() compiles). False while compiling or when it failed.
     bool programsReady(const Formula& formula);
     // Dynamic resolution: the share of (width, height) to render this frame at.
-    double chooseScale(const Preset& preset, const ViewSettings& settings);
+    double chooseScale(const scene::SceneRevision& revision, const ViewSettings& settings);
 
     const ColorPipeline& color_;
     BackgroundCompiler* compiler_ = nullptr;
@@ -97,9 +98,10 @@ class CoreViewportView final : public ViewportView {
     bool imageChanged_ = false;
     std::optional<std::pair<DisplayKey, double>> shownDisplay_;
     ViewportStats stats_;
-    // Dynamic resolution: what the last frame showed (a change means motion) and when it began.
+    // Dynamic resolution: what the last frame showed (a change but of the display transform
+    // means motion) and when it began.
     viewport::ResolutionController resolution_;
-    std::optional<viewport::FrameKey> lastView_;
+    std::optional<scene::SceneRevision> lastView_;
     std::optional<std::chrono::steady_clock::time_point> lastFrameStart_;
     viewport::FrameAction lastAction_ = viewport::FrameAction::Reset;  // the last fast frame's
     // Path traced at rest. The tracer is kept while the structure and size stay (its program
