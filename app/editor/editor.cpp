@@ -417,10 +417,9 @@ int runEditor(const EditorOptions& o) {
             else
                 drawFormulaPanel(s, *viewport);
             drawSidebar(s);
-            if (!s.doc.plane) {
-                s.stepFactor.update(s.doc.preset.formula, s.doc.preset.camera);
-                s.slowStack.update(s.doc.preset.formula, s.doc.preset.camera, s.stepFactor);
-            }
+            // The step factor measured for a new structure joins the edit's undo step.
+            updateDerivedValues(s);
+            if (!s.doc.plane) s.slowStack.update(s.doc.preset.formula, s.doc.preset.camera, s.stepFactor);
             layoutViewport(s, io.DisplaySize.x, io.DisplaySize.y);
             drawTimelinePanel(s);
             const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);

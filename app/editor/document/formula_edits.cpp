@@ -277,6 +277,34 @@ void AutoStepFactor::apply(const EstimatorMeasurement& m, Formula& f) {
     if (!overridden && !noHits) f.deFactor = measured;
 }
 
+AutoStepFactor AutoStepFactor::adopting(const Formula& f) {
+    AutoStepFactor a;
+    a.measuredKey = f.structureKey();
+    a.remember(true);
+    return a;
+}
+
+void AutoStepFactor::remember(bool complete) {
+    if (known.size() >= kKnownStructures && !known.count(measuredKey))
+        known.erase(std::min_element(known.begin(), known.end(),
+                                     [](const auto& x, const auto& y) { return x.second.order < y.second.order; }));
+    known[measuredKey] = {measured, seconds, worst, speed, rays, noHits, noSafeFactor, complete, ++knownOrder};
+}
+
+void AutoStepFactor::restore(const Formula& f) {
+    furtherWorker = {};  // stops the rounds measuring the structure left
+    further = {};
+    measuredKey = f.structureKey();
+    const auto it = known.find(measuredKey);
+    if (it == known.end() || !it->second.complete) {
+        measuredKey.clear();  // measured again by update()
+        return;
+    }
+    const Measured& m = it->second;
+    measured = m.measured, seconds = m.seconds, worst = m.worst, speed = m.speed;
+    rays = m.rays, noHits = m.noHits, noSafeFactor = m.noSafeFactor;
+}
+
 bool AutoStepFactor::update(Formula& f, const Camera& camera) {
     std::string key = f.structureKey();
     if (key == measuredKey) {
@@ -286,8 +314,10 @@ bool AutoStepFactor::update(Formula& f, const Camera& camera) {
         try {
             apply(ended.get(), f);
         } catch (const std::exception&) {
+            remember(true);
             return false;  // the settled rounds' factor stays
         }
+        remember(true);
         return true;
     }
     furtherWorker = {};  // stops the rounds measuring the previous structure
@@ -298,7 +328,9 @@ bool AutoStepFactor::update(Formula& f, const Camera& camera) {
     const EstimatorMeasurement m = measureSafeStep(f, camera, options());
     apply(m, f);
     const SafeStepOptions check = checkOptions();
-    if (noHits || noSafeFactor || check.tailCovered(m.report, *f.estimator.block, f.nodes)) return true;
+    const bool settled = noHits || noSafeFactor || check.tailCovered(m.report, *f.estimator.block, f.nodes);
+    remember(settled);
+    if (settled) return true;
     // The check's rounds from the first: the sampling is seeded, so the factor is the one
     // `fraktal check` reports for this formula and camera.
     std::promise<EstimatorMeasurement> result;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <future>
+#include <map>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -121,6 +122,18 @@ struct AutoStepFactor {
     // The measured factor times the median DE / true distance per orbit (EstimatorMeasurement::
     // speed): the share of the gap a typical step covers (0: not measured).
     double speed = 0.0;
+    // What was measured for each structure this session (at most kKnownStructures, the latest):
+    // undo and redo bring a structure back with the factor measured for it then (restore()).
+    struct Measured {
+        double measured = 0.0, seconds = 0.0, worst = 0.0, speed = 0.0;
+        int rays = 0;
+        bool noHits = false, noSafeFactor = false;
+        bool complete = false;  // no further rounds left (ended, or not called for)
+        unsigned long order = 0;
+    };
+    static constexpr size_t kKnownStructures = 64;
+    std::map<std::string, Measured> known;
+    unsigned long knownOrder = 0;
     // The further rounds for measuredKey, while they run.
     std::future<EstimatorMeasurement> further{};
     std::chrono::steady_clock::time_point measuringSince{};
@@ -139,7 +152,14 @@ struct AutoStepFactor {
         return check;
     }
     // Takes f's factor as the one for its structure (an opened document).
-    static AutoStepFactor adopting(const Formula& f) { return {f.structureKey()}; }
+    static AutoStepFactor adopting(const Formula& f);
+    // Undo or redo brought back f, with the factor its state held (measured for its structure,
+    // or the preset's own): when this session measured that structure to the end (or adopted it),
+    // its figures are shown again and nothing is measured; otherwise (its further rounds were cut
+    // short by the next edit) update() measures it again, and the caller folds the result into
+    // the restored state (UndoHistory::amendPresent), recording no step. Stops the further
+    // rounds of the structure left.
+    void restore(const Formula& f);
     // When f's structure differs from measuredKey: measures its estimator from `camera` (CPU;
     // formulas with custom GLSL blocks keep their factor) and, unless overridden, sets
     // f.deFactor (not when noHits); starts the further rounds where the tail calls for them.
@@ -150,6 +170,7 @@ struct AutoStepFactor {
 
    private:
     void apply(const EstimatorMeasurement& m, Formula& f);
+    void remember(bool complete);
 };
 
 // The node index a compile-error log talks about (`node 3 "Box fold" (box_fold)...`, numbered

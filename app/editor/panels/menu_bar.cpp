@@ -30,12 +30,20 @@ void drawMenuBar(EditorState& s) {
         if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestAction(s, {PendingKind::Quit, {}});
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Edit")) {
-        // Says what it will do: "Undo change of scale", "Redo add Box fold".
+    const bool editOpen = ImGui::BeginMenu("Edit");
+    if (!editOpen) noteWidgetRect(s.layout, "menu:Edit");  // the menu's title, where a click opens it
+    if (editOpen) {
+        // Says what it will do: "Undo change of scale", "Redo add Box fold". The items are noted
+        // by their text (the state file's widgets: what the menu reads, for the Xvfb tests).
         s.history.commit(s.doc);
         const std::string undoText = "Undo " + s.history.undoLabel(), redoText = "Redo " + s.history.redoLabel();
+        std::erase_if(s.layout.widgetRects, [](const auto& w) {
+            return w.first.starts_with("menu:Undo") || w.first.starts_with("menu:Redo");
+        });
         if (ImGui::MenuItem(undoText.c_str(), "Ctrl+Z", false, s.history.canUndo())) undo(s);
+        noteWidgetRect(s.layout, "menu:" + undoText);
         if (ImGui::MenuItem(redoText.c_str(), "Ctrl+Shift+Z", false, s.history.canRedo())) redo(s);
+        noteWidgetRect(s.layout, "menu:" + redoText);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {

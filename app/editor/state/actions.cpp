@@ -227,15 +227,36 @@ bool saveDocument(EditorState& s) {
 void undo(EditorState& s) {
     s.history.commit(s.doc);
     const std::string what = s.history.undoLabel();
-    if (s.history.undo(s.doc)) setStatus(s, "Undo " + what);
+    if (s.history.undo(s.doc)) {
+        setStatus(s, "Undo " + what);
+        if (!s.doc.plane) s.stepFactor.restore(s.doc.preset.formula);
+    }
     clampSelection(s);
 }
 
 void redo(EditorState& s) {
     s.history.commit(s.doc);
     const std::string what = s.history.redoLabel();
-    if (s.history.redo(s.doc)) setStatus(s, "Redo " + what);
+    if (s.history.redo(s.doc)) {
+        setStatus(s, "Redo " + what);
+        if (!s.doc.plane) s.stepFactor.restore(s.doc.preset.formula);
+    }
     clampSelection(s);
+}
+
+bool updateDerivedValues(EditorState& s) {
+    if (s.doc.plane) return false;
+    Formula& f = s.doc.preset.formula;
+    if (!s.stepFactor.update(f, s.doc.preset.camera)) return false;
+    if (s.stepFactor.overridden || s.stepFactor.noHits) return true;  // the factor was left alone
+    // An edit not committed yet (its frame) takes the factor with it when it is committed; the
+    // state of a committed one, or one brought back by undo / redo, is amended in place.
+    const std::string& structure = s.stepFactor.measuredKey;
+    const double factor = f.deFactor;
+    s.history.amendPresent([&](Document& d) {
+        if (!d.plane && d.preset.formula.structureKey() == structure) d.preset.formula.deFactor = factor;
+    });
+    return true;
 }
 
 void requestAction(EditorState& s, PendingAction action) {

@@ -29,8 +29,16 @@ void resetPlaneView(EditorState& s);
 void restoreDocument(EditorState& s, RecoveryOffer offer);
 bool saveDocument(EditorState& s);  // to s.file.path; false when there is none (use Save As)
 bool saveDocumentAs(EditorState& s, const std::filesystem::path& file);
+// Undo and redo bring the state back with its step factor (AutoStepFactor::restore): nothing is
+// measured again for a structure measured to the end.
 void undo(EditorState& s);
 void redo(EditorState& s);
+// Each frame, for a 3D document: the step factor measured for the document's structure
+// (AutoStepFactor::update) is applied to it and, once that structure is the undo history's
+// present state (the edit that made it committed, or brought back by undo / redo), to that state
+// in place: the factor is part of the edit's step, never a step of its own, and redo is kept.
+// Returns whether a factor was measured or applied.
+bool updateDerivedValues(EditorState& s);
 // Runs `action` now, or asks first when there are unsaved changes.
 void requestAction(EditorState& s, PendingAction action);
 void runPending(EditorState& s);
