@@ -164,7 +164,7 @@ using ApplyFn = BlockDesc::ApplyFn;
 using EstimateFn = BlockDesc::EstimateFn;
 
 // What a block definition must provide; a block missing any of it fails to compile at its
-// registration line in formulas/registry.cpp (2D: core/plane/plane_registry.cpp).
+// registration line in formulas/registry.cpp (2D: formulas/plane/registry.cpp).
 template <class B>
 concept BlockCommon = requires {
     { B::id } -> std::convertible_to<std::string_view>;

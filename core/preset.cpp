@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fraktal {
 

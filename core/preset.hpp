@@ -8,13 +8,13 @@
 #include <string_view>
 #include <vector>
 
-#include "core/anim/animation.hpp"
+#include "core/animation.hpp"
 #include "core/camera.hpp"
 #include "core/formula.hpp"
 #include "core/json_reader.hpp"
+#include "core/lighting.hpp"
 #include "core/preset_migrate.hpp"
-#include "core/render/lighting.hpp"
-#include "core/render/settings.hpp"
+#include "core/render_settings.hpp"
 
 namespace fraktal {
 

@@ -8,8 +8,8 @@ seconds="${1:-60}"
 out=build-fuzz
 mkdir -p "$out"
 sources=(core/preset.cpp core/json_reader.cpp core/preset_migrate.cpp core/formula.cpp core/custom_block.cpp core/camera.cpp
-         core/image/atomic_file.cpp core/plane/plane_preset.cpp core/plane/plane_formula.cpp core/plane/plane_registry.cpp
-         core/render/lighting.cpp core/anim/animation.cpp formulas/registry.cpp core/import/fract_file.cpp
+         core/atomic_file.cpp core/plane/plane_preset.cpp core/plane/plane_formula.cpp formulas/plane/registry.cpp
+         core/lighting.cpp core/animation.cpp formulas/registry.cpp core/import/fract_file.cpp
          core/import/fract_import.cpp core/import/mb2_sequence.cpp core/scene_object.cpp tests/fuzz/preset_fuzzer.cpp)
 if [ ! -x "$out/preset_fuzzer" ] || [ -n "$(find "${sources[@]}" core/*.hpp core/plane/*.hpp core/render/*.hpp core/anim/*.hpp core/import/* formulas/*.hpp formulas/plane/*.hpp -newer "$out/preset_fuzzer")" ]; then
   # One compiler per source, as many at once as there are cores (one clang++ over all the sources

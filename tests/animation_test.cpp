@@ -1,6 +1,6 @@
 // Keyframe tracks: interpolation through the keys, smoothness, even camera speed, quaternion
 // orientation without flips, the "animation" section's round trip and its errors.
-#include "core/anim/animation.hpp"
+#include "core/animation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/anim/animation.hpp"
+#include "core/animation.hpp"
 #include "core/gl/de_probe.hpp"
 #include "core/glsl_gen.hpp"
 #include "core/json_reader.hpp"

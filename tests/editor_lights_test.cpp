@@ -10,8 +10,8 @@
 #include "app/editor/document/lights_edits.hpp"
 #include "app/editor/document/undo_history.hpp"
 #include "app/editor/input/pointer_input.hpp"
+#include "core/image/environment.hpp"
 #include "core/preset.hpp"
-#include "core/render/environment.hpp"
 #include "test_support.hpp"
 
 namespace fraktal::editor {

@@ -16,7 +16,7 @@
 #include "app/editor/input/camera_controller.hpp"
 #include "app/editor/input/fly_speed.hpp"
 #include "app/editor/state/actions.hpp"
-#include "core/anim/animation.hpp"
+#include "core/animation.hpp"
 
 namespace fraktal::editor {
 namespace {

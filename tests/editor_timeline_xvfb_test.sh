@@ -21,7 +21,7 @@ frame_x() { q "(.timeline.bar[0] + ($1 - .timeline.shownFrames[0]) / (.timeline.
 ruler_y() { q '.timeline.bar[1] + 8 | round'; }
 scrub_to() { to "$(frame_x "$1")" "$(ruler_y)"; xdotool click 1; wait_frames 3; }
 # The power track's value at frame $1 (smooth: cubic Hermite with Catmull-Rom tangents over the
-# keys' frames, core/anim/animation.hpp), from the keys in the file $2.
+# keys' frames, core/animation.hpp), from the keys in the file $2.
 catmull_rom() {
     jq -r ".animation.tracks[] | select(.target == \"$power_target\") | .keys[] | \"\(.frame) \(.value)\"" "$2" |
         awk -v F="$1" 'BEGIN { n = 0 } { f[n] = $1; v[n] = $2; n++ } END {

@@ -13,7 +13,7 @@
 
 #include "core/color/color_pipeline.hpp"
 #include "core/cpu_render/cpu_path_tracer.hpp"
-#include "core/render/environment.hpp"
+#include "core/image/environment.hpp"
 #include "core/render/path_tracer.hpp"
 #include "core/render/still_renderer.hpp"
 #include "core/viewport/converge.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/cpu_render/cpu_renderer.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/shading_params.hpp"
 #include "core/viewport/camera_path.hpp"
 #include "core/viewport/converge.hpp"
 #include "core/viewport/flight.hpp"

@@ -15,8 +15,8 @@
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
 #include "core/anim/sequence.hpp"
+#include "core/atomic_file.hpp"
 #include "core/color/color_pipeline.hpp"
-#include "core/image/atomic_file.hpp"
 #include "core/image/exr_writer.hpp"
 #include "core/preset.hpp"
 

@@ -11,7 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/process.hpp"
 #include "cli/render_options.hpp"
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::cli {

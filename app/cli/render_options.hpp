@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "core/render/settings.hpp"
+#include "core/render_settings.hpp"
 
 namespace fraktal::cli {
 

@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fraktal::editor {
 

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     }
     const double pi = 3.14159265358979323846;
     const double sunElevation = 35.0 * pi / 180.0, sunAzimuth = 0.6, sunRadius = 2.0 * pi / 180.0;
-    // The same equirectangular convention as core/render/environment.cpp (u = 0.5 looks down -z).
+    // The same equirectangular convention as core/image/environment.cpp (u = 0.5 looks down -z).
     auto direction = [&](double u, double v, double d[3]) {
         const double phi = (u - 0.5) * 2.0 * pi, theta = v * pi;
         d[0] = std::sin(theta) * std::sin(phi);

@@ -29,7 +29,7 @@ std::vector<float> depthOf(const char* path, int& width, int& height) {
     return z;
 }
 
-// A miss has depth 1e30 (core/render/image_strip.hpp: "depth of the nearest hit").
+// A miss has depth 1e30 (core/image/image_strip.hpp: "depth of the nearest hit").
 bool isHit(float z) { return std::isfinite(z) && z < 1e9f; }
 
 }  // namespace

@@ -25,10 +25,10 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
-#include "core/render/environment.hpp"
-#include "core/render/lighting.hpp"
-#include "core/render/path_image.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/image/environment.hpp"
+#include "core/image/path_image.hpp"
+#include "core/lighting.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal {
 

@@ -6,8 +6,8 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
-#include "core/render/image_strip.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/image/image_strip.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal {
 

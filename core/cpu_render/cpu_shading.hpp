@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/formula.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal::cpu {
 

@@ -7,7 +7,7 @@
 #include <epoxy/gl.h>
 
 #include "core/camera.hpp"
-#include "core/render/lighting.hpp"
+#include "core/lighting.hpp"
 
 namespace fraktal::gl {
 

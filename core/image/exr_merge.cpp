@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "core/image/exr_writer.hpp"
 
 namespace fraktal {

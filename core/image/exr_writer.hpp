@@ -17,7 +17,7 @@
 
 #include "core/camera.hpp"
 #include "core/color/color_pipeline.hpp"
-#include "core/render/image_strip.hpp"
+#include "core/image/image_strip.hpp"
 
 namespace fraktal {
 

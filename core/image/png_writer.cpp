@@ -5,7 +5,7 @@
 
 #include <stdexcept>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fraktal {
 

@@ -2,7 +2,7 @@
 // test in the plane (seed 2.1): a fold, a transform, a triangle test or the complex power
 // iteration, or the closing estimator. Each is declared once (formulas/plane/*.hpp) with its id,
 // help, one ParamDecl list (the same declarations the editor's widgets and the preset reader use)
-// and its GLSL and CPU bodies side by side; core/plane/plane_registry.cpp holds one line per block.
+// and its GLSL and CPU bodies side by side; formulas/plane/registry.cpp holds one line per block.
 #pragma once
 
 #include <algorithm>
@@ -60,7 +60,7 @@ constexpr PlaneBlockDesc describePlane() {
     return describeAs<PlaneBlockDesc, B>();
 }
 
-// All registered 2D blocks (core/plane/plane_registry.cpp).
+// All registered 2D blocks (formulas/plane/registry.cpp).
 std::span<const PlaneBlockDesc> allPlaneBlocks();
 const PlaneBlockDesc* findPlaneBlock(std::string_view id);
 

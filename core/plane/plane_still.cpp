@@ -10,7 +10,7 @@
 #include <ImfStringAttribute.h>
 #include <half.h>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "core/image/png_writer.hpp"
 #include "core/render/still_job.hpp"
 

@@ -6,7 +6,7 @@
 // their normal, albedo or depth differs, so edges and silhouettes stay sharp too.
 #pragma once
 
-#include "core/render/path_image.hpp"
+#include "core/image/path_image.hpp"
 
 namespace fraktal {
 

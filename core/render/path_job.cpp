@@ -9,7 +9,7 @@
 
 #include <chrono>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "core/image/exr_writer.hpp"
 #include "core/image/png_writer.hpp"
 #include "core/render/denoise.hpp"

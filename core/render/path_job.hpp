@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/cpu_render/cpu_path_tracer.hpp"
-#include "core/render/path_image.hpp"
+#include "core/image/path_image.hpp"
 #include "core/render/still_job.hpp"
 
 namespace fraktal {

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "core/render/shading_params.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal::gl {
 

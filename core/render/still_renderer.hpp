@@ -12,10 +12,10 @@
 #include "core/gl/camera_uniforms.hpp"
 #include "core/gl/formula_uniforms.hpp"
 #include "core/gl/program.hpp"
-#include "core/render/image_strip.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/image/image_strip.hpp"
 #include "core/render/shading_uniforms.hpp"
 #include "core/render/tiles.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal::gl {
 

@@ -11,8 +11,8 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
-#include "core/render/lighting.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/lighting.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal::viewport {
 

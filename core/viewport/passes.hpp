@@ -5,7 +5,7 @@
 
 #include "core/camera.hpp"
 #include "core/formula.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/shading_params.hpp"
 #include "core/viewport/frame_logic.hpp"
 #include "core/viewport/march_state.hpp"
 #include "core/viewport/viewport_options.hpp"

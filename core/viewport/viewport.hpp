@@ -19,7 +19,7 @@
 #include "core/camera.hpp"
 #include "core/formula.hpp"
 #include "core/gl/color_target.hpp"
-#include "core/render/settings.hpp"
+#include "core/render_settings.hpp"
 #include "core/scene/scene_revision.hpp"
 #include "core/viewport/frame_logic.hpp"
 #include "core/viewport/gpu_counters.hpp"

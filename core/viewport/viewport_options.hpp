@@ -1,7 +1,7 @@
 // How the viewport renders (the editor's viewport panel and `fraktal bench viewport` set these).
 #pragma once
 
-#include "core/render/settings.hpp"
+#include "core/render_settings.hpp"
 
 namespace fraktal::viewport {
 

@@ -9,8 +9,8 @@
 #include "core/gl/camera_uniforms.hpp"
 #include "core/gl/formula_uniforms.hpp"
 #include "core/gl/program.hpp"
-#include "core/render/shading_params.hpp"
 #include "core/render/shading_uniforms.hpp"
+#include "core/shading_params.hpp"
 #include "core/viewport/pass_images.hpp"
 
 namespace fraktal::viewport {

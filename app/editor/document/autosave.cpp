@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fraktal::editor {
 

@@ -1,5 +1,5 @@
 // Session recovery: while the editor runs, the document is saved every minute to a
-// recovery file in the editor's config folder (atomically: core/image/atomic_file.hpp). A clean
+// recovery file in the editor's config folder (atomically: core/atomic_file.hpp). A clean
 // exit removes it and marks the session "clean"; so when the next start finds the recovery file
 // and a session marker that does not say "clean", the last session crashed (or was killed) and
 // the editor offers to restore it. An flock on "session.lock" makes a second editor running at

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <regex>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 extern char** environ;
 

@@ -7,7 +7,7 @@
 #include <chrono>
 #include <regex>
 
-#include "core/anim/animation.hpp"
+#include "core/animation.hpp"
 #include "core/safe_step.hpp"
 
 namespace fraktal::editor {

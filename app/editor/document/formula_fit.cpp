@@ -8,7 +8,7 @@
 
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/input/camera_controller.hpp"
-#include "core/anim/animation.hpp"
+#include "core/animation.hpp"
 
 namespace fraktal::editor {
 

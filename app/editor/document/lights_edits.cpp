@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/cpu_render/cpu_shading.hpp"
-#include "core/render/shading_params.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal::editor {
 
@@ -66,7 +66,7 @@ std::string environmentMapProblem(const fs::path& file) {
     if (file.empty()) return "No file given.";
     if (!fs::exists(file, ec)) return "'" + file.string() + "' does not exist.";
     if (!fs::is_regular_file(file, ec)) return "'" + file.string() + "' is not a file.";
-    // The preset reader takes only the .exr / .EXR extension (core/render/lighting.cpp).
+    // The preset reader takes only the .exr / .EXR extension (core/lighting.cpp).
     const std::string ext = file.extension().string();
     if (ext != ".exr" && ext != ".EXR")
         return "'" + file.filename().string() +

@@ -1,4 +1,4 @@
-// The Lights tab's edits of a scene's Lighting (core/render/lighting.hpp) and the click-to-focus
+// The Lights tab's edits of a scene's Lighting (core/lighting.hpp) and the click-to-focus
 // rule, without ImGui: adding, duplicating and removing lights within kMaxLights, checking an
 // environment map before the document takes it, and the lens focus distance of the surface under
 // the cursor. The tab (lights_panel.cpp) draws them; the panel's own state lives here too.
@@ -13,8 +13,8 @@
 #include "app/editor/input/fly_speed.hpp"
 #include "core/camera.hpp"
 #include "core/formula.hpp"
-#include "core/render/lighting.hpp"
-#include "core/render/settings.hpp"
+#include "core/lighting.hpp"
+#include "core/render_settings.hpp"
 
 namespace fraktal::editor {
 

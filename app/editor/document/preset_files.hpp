@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::editor {

@@ -2,7 +2,7 @@
 // image: the march budget per frame, the render resolution, reprojection, colour carry, the
 // motion filter and the AA cap.
 // Everything about the image itself (march steps per ray, detail, shading, exposure, OCIO view)
-// is the preset's `render` and `shading` sections (core/render/settings.hpp), which the viewport
+// is the preset's `render` and `shading` sections (core/render_settings.hpp), which the viewport
 // and the still export both read. Plain data, part of the undoable document, saved in the
 // preset's "editor" section.
 #pragma once

@@ -11,7 +11,7 @@
 #include "app/editor/document/preset_files.hpp"
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fraktal::editor {
 

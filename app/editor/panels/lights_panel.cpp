@@ -1,4 +1,4 @@
-// The Lights tab: the preset's print-quality lighting (core/render/lighting.hpp) that the
+// The Lights tab: the preset's print-quality lighting (core/lighting.hpp) that the
 // path-traced mode renders: the list of lights, the environment map, the thin lens and the path
 // tracer's settings. The fast viewport lights with the Shading tab, so the lights and the map show
 // in `fraktal render --mode path` (and the viewport's path-traced mode); the lens's depth of field
@@ -19,7 +19,7 @@
 #include "app/editor/widgets/node_list_widgets.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
 #include "app/editor/widgets/setting_widgets.hpp"
-#include "core/render/environment.hpp"
+#include "core/image/environment.hpp"
 
 namespace fraktal::editor {
 

@@ -1,4 +1,4 @@
-// The Shading tab: the preset's `shading` section (core/render/settings.hpp), which the viewport
+// The Shading tab: the preset's `shading` section (core/render_settings.hpp), which the viewport
 // and the still export both read. Colours are linear Rec.709 as the preset stores them.
 #include <imgui.h>
 

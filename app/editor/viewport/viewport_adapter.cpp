@@ -25,7 +25,7 @@ viewport::ViewportOptions viewportOptions(const ViewSettings& v) {
 
 ShadingSettings shadingInWorkingSpace(const ShadingSettings& shading, const ColorPipeline& color,
                                       const std::string& workingSpace) {
-    // The colours core/render/shading_params.cpp converts (the palette's c and d are frequencies
+    // The colours core/shading_params.cpp converts (the palette's c and d are frequencies
     // and phases, and its a and b multiply the light, so they stay as written, as in the still).
     ShadingSettings s = shading;
     for (vec3* c : {&s.lightColor, &s.fillColor, &s.fogColor, &s.backgroundTop, &s.backgroundBottom})

@@ -1,5 +1,5 @@
 // Small widgets for the Render and Shading tabs: doubles, ints, colours and directions of the
-// preset's settings structs (core/render/settings.hpp), each with its range and help text.
+// preset's settings structs (core/render_settings.hpp), each with its range and help text.
 #pragma once
 
 #include "core/vec.hpp"

@@ -6,7 +6,7 @@
 #include <functional>
 
 #include "core/formula.hpp"
-#include "core/render/settings.hpp"
+#include "core/render_settings.hpp"
 
 namespace fraktal {
 

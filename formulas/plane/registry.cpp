@@ -1,5 +1,6 @@
-// The 2D block registry: one line per block. A block that lacks part of its declaration fails to
-// compile here (see the concepts in core/plane/plane_block.hpp).
+// The 2D block registry, beside the 3D one (formulas/registry.cpp): one line per block. A block
+// that lacks part of its declaration fails to compile here (see the concepts in
+// core/plane/plane_block.hpp).
 #include "formulas/plane/abs_fold.hpp"
 #include "formulas/plane/estimators.hpp"
 #include "formulas/plane/line_fold.hpp"
@@ -15,16 +16,11 @@ namespace fraktal {
 namespace {
 using namespace plane_blocks;
 constexpr std::array kPlaneBlocks{
-    describePlane<LineFold>(),
-    describePlane<AbsFold>(),
-    describePlane<Rotate>(),
-    describePlane<Scale>(),
-    describePlane<Translate>(),
-    describePlane<TriangleCorner>(),
-    describePlane<TriangleCapture>(),
-    describePlane<Power>(),
-    describePlane<EscapeEstimator>(),
-    describePlane<TriangleEstimator>(),
+    describePlane<LineFold>(),         describePlane<AbsFold>(),
+    describePlane<Rotate>(),           describePlane<Scale>(),
+    describePlane<Translate>(),        describePlane<TriangleCorner>(),
+    describePlane<TriangleCapture>(),  describePlane<Power>(),
+    describePlane<EscapeEstimator>(),  describePlane<TriangleEstimator>(),
     describePlane<SegmentEstimator>(),
 };
 }  // namespace

@@ -9,7 +9,7 @@
 namespace fraktal {
 
 class AtomicFile {
-public:
+   public:
     // Checks that the destination's folder exists and is writable; throws std::runtime_error
     // naming the path and the reason otherwise. Nothing is created yet.
     explicit AtomicFile(std::filesystem::path destination);
@@ -27,7 +27,7 @@ public:
     // (by a hard link, so the destination never goes missing). Throws on failure.
     void commit(bool keepBackup = false);
 
-private:
+   private:
     std::filesystem::path destination_, temp_;
     bool committed_ = false;
 };

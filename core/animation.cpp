@@ -1,4 +1,4 @@
-#include "core/anim/animation.hpp"
+#include "core/animation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/render/shading_params.hpp"
+#include "core/shading_params.hpp"
 
 namespace fraktal {
 

@@ -1,7 +1,7 @@
 // Print-quality light for the path-traced mode: a list of lights, an HDR environment map and a
 // thin-lens camera, as the preset's "lights", "environment" and camera lens fields describe them
 // (presets/README.md, "Lights"). Plain data plus its JSON reading and writing; the environment
-// map's pixels are loaded when a scene is built (core/render/environment.hpp), not here.
+// map's pixels are loaded when a scene is built (core/image/environment.hpp), not here.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/color/color_pipeline.hpp"
-#include "core/render/lighting.hpp"
+#include "core/lighting.hpp"
 #include "core/vec.hpp"
 
 namespace fraktal {

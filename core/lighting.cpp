@@ -1,4 +1,4 @@
-#include "core/render/lighting.hpp"
+#include "core/lighting.hpp"
 
 #include <algorithm>
 #include <cmath>

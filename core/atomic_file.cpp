@@ -1,4 +1,4 @@
-#include "core/image/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -24,10 +24,12 @@ AtomicFile::AtomicFile(fs::path destination) : destination_(std::move(destinatio
     fs::path folder = destination_.parent_path();
     if (folder.empty()) folder = ".";
     std::error_code ec;
-    if (!fs::is_directory(folder, ec)) throw std::runtime_error(name + ": folder " + folder.string() + " does not exist");
+    if (!fs::is_directory(folder, ec))
+        throw std::runtime_error(name + ": folder " + folder.string() + " does not exist");
     if (fs::is_directory(destination_, ec)) throw std::runtime_error(name + ": is a directory");
     if (::access(folder.c_str(), W_OK) != 0)
-        throw std::runtime_error(name + ": cannot write to folder " + folder.string() + " (" + std::strerror(errno) + ")");
+        throw std::runtime_error(name + ": cannot write to folder " + folder.string() + " (" + std::strerror(errno) +
+                                 ")");
     if (fs::exists(destination_, ec) && ::access(destination_.c_str(), W_OK) != 0)
         throw std::runtime_error(name + ": existing file is not writable (" + std::strerror(errno) + ")");
     temp_ = folder / ("." + destination_.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +

@@ -1,4 +1,4 @@
-#include "core/render/environment.hpp"
+#include "core/image/environment.hpp"
 
 #include <ImfRgbaFile.h>
 #include <ImfTestFile.h>
