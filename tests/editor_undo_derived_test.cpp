@@ -194,6 +194,38 @@ TEST(UndoDerived, EditorUndoesAndRedoesADeleteAcrossTheMeasurement) {
     EXPECT_FALSE(s.stepFactor.refining()) << "the opened structure keeps its own factor";
 }
 
+// Undoing a value edit keeps the structure: the measurement running for it goes on (it is not
+// started again), and when it ends its factor lands in the state undo brought back, as no step.
+TEST(UndoDerived, UndoingAValueEditLetsTheMeasurementRunOn) {
+    EditorState s;
+    newDocument(s);
+    auto frame = [&] {
+        updateDerivedValues(s);
+        s.history.commit(s.doc);
+    };
+    ASSERT_TRUE(addNode(s.doc.preset, *findBlock("rotate"), 1));
+    fitFormulaAfterEdit(s.doc.preset);
+    frame();
+    if (!s.stepFactor.refining()) GTEST_SKIP() << "the settled rounds covered the tail: nothing runs on";
+    const auto since = s.stepFactor.measuringSince;
+    s.doc.preset.formula.iterations = 10;
+    frame();
+    undo(s);
+    frame();
+    EXPECT_EQ(s.doc.preset.formula.iterations, 12);
+    EXPECT_TRUE(s.stepFactor.refining()) << "undoing a value edit stopped the measurement";
+    EXPECT_EQ(s.stepFactor.measuringSince, since) << "undoing a value edit measured again";
+    for (int i = 0; i < 6000 && s.stepFactor.refining(); ++i) {
+        frame();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    frame();
+    EXPECT_EQ(s.doc.preset.formula.deFactor, s.stepFactor.measured);
+    EXPECT_EQ(s.history.present().preset.formula.deFactor, s.stepFactor.measured);
+    EXPECT_EQ(s.history.undoLabel(), "add Rotate");
+    EXPECT_EQ(s.history.redoLabel(), "change of iterations") << "the measurement kept the redo branch";
+}
+
 // Labels in the artist's words: the edit where the node list says what it was, else the changed
 // fields as the panels label them; the factor measured with an edit is not named beside it.
 TEST(UndoDerived, LabelsUseThePanelsWords) {

@@ -292,9 +292,11 @@ void AutoStepFactor::remember(bool complete) {
 }
 
 void AutoStepFactor::restore(const Formula& f) {
-    furtherWorker = {};  // stops the rounds measuring the structure left
+    std::string key = f.structureKey();
+    if (key == measuredKey) return;  // the same structure: its measurement, ended or running, stands
+    furtherWorker = {};              // stops the rounds measuring the structure left
     further = {};
-    measuredKey = f.structureKey();
+    measuredKey = std::move(key);
     const auto it = known.find(measuredKey);
     if (it == known.end() || !it->second.complete) {
         measuredKey.clear();  // measured again by update()

@@ -158,7 +158,7 @@ struct AutoStepFactor {
     // its figures are shown again and nothing is measured; otherwise (its further rounds were cut
     // short by the next edit) update() measures it again, and the caller folds the result into
     // the restored state (UndoHistory::amendPresent), recording no step. Stops the further
-    // rounds of the structure left.
+    // rounds of the structure left; those of the same structure (an undone value edit) go on.
     void restore(const Formula& f);
     // When f's structure differs from measuredKey: measures its estimator from `camera` (CPU;
     // formulas with custom GLSL blocks keep their factor) and, unless overridden, sets
