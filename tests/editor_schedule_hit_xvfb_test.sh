@@ -113,5 +113,5 @@ coverage=$(convert "$out/interior_walls.png" -crop "$crop" +repage -colorspace G
 check "$coverage > 0.03" || fail "with interior walls the viewport shows no object (edge share $coverage)"
 echo "interior walls: edge share $coverage, difference from the plain rule $(differ undone interior_walls)"
 stop
-[ "$failures" -eq 0 ] && echo "PASS editor_schedule_hit_xvfb_test"
-exit "$failures"
+[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+echo "PASS editor_schedule_hit_xvfb_test"

@@ -79,5 +79,5 @@ wait_for '.document.formula.nodes[-1].block' escape_linear
 [ "$(q .document.formula.bailout)" = 1000 ] || fail "Ctrl+Z left bailout $(q .document.formula.bailout)"
 [ "$(q '.document.formula.nodes | length')" = 4 ] || fail "Ctrl+Z undid more than the fix"
 stop
-[ "$failures" -eq 0 ] && echo "PASS editor_slow_stack_xvfb_test"
-exit "$failures"
+[ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+echo "PASS editor_slow_stack_xvfb_test"

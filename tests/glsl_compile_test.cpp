@@ -18,11 +18,12 @@ struct ToolResult {
     std::string output;
 };
 
-// Runs glslangValidator on a compute shader; returns its exit status and output.
+// Runs glslangValidator on a compute shader; returns its exit status and output. The shader is
+// written in a folder of this process's own: parallel runs (ctest -j, gtest shards) write the
+// same names, and one run would otherwise validate, or remove, another's file.
 ToolResult glslang(const ShaderSource& s, const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / "fraktal_glsl_test";
-    std::filesystem::create_directories(dir);
-    const auto file = dir / (name + ".comp");
+    static const test::Sandbox sandbox("fraktal_glsl_test_");
+    const auto file = sandbox.dir / (name + ".comp");
     std::ofstream(file) << s.text;
     const std::string command = std::string(FRAKTAL_GLSLANG) + " " + file.string() + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");

@@ -33,10 +33,12 @@ const char* extensionOf(GLenum stage) {
     }
 }
 
-// glslangValidator on one stage's source: its output, empty when it compiled.
+// glslangValidator on one stage's source: its output, empty when it compiled. The source is
+// written in a folder of this process's own, so that parallel runs (ctest -j, gtest shards),
+// which write the same names, never validate each other's files.
 std::string glslangErrors(const gl::StageSource& stage, const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / "fraktal_portable_limits_test";
-    std::filesystem::create_directories(dir);
+    static const test::Sandbox sandbox("fraktal_portable_limits_test_");
+    const auto& dir = sandbox.dir;
     std::string file = name;
     for (char& c : file)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';

@@ -1,12 +1,15 @@
 // Soak test of the viewport: random parameter edits, structure edits (a block toggled,
 // which recompiles), camera moves and resizes with frames in between, for a bounded time
 // (FRAKTAL_SOAK_SECONDS, default 60 s in CI; set it higher for a long soak). Resident memory
-// after a warm-up must not grow steadily (a leak), nor by much at all, and GL must raise no error.
+// after a warm-up must not grow steadily (a leak), nor by much at all, GL must raise no error,
+// and every frame must render (no compile error, the size asked for, most of them marching).
 #include <gtest/gtest.h>
 #include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <random>
@@ -60,18 +63,24 @@ TEST(SoakViewport, RandomEditsKeepMemoryFlatAndRaiseNoGlError) {
     long rssAfterWarmUp = -1, rssAtHalf = -1;
     std::vector<long> timeline;  // KiB every 5 s after the warm-up, printed when the test fails
     int frames = 0, edits = 0;
+    int working = 0;  // frames that marched (evaluated the DE)
     Preset current = presets[0];
     Camera camera = current.camera;
     int width = 64, height = 48;
     // Every structure the loop can reach (each preset, its first block on and off) is compiled
-    // once before the clock starts: the driver's per-program memory belongs to the warm-up.
-    for (const Preset& p : presets)
+    // once before the clock starts: the driver's per-program memory belongs to the warm-up. Each
+    // of them compiles (render() throws when one does not), so no frame below may throw.
+    for (size_t i = 0; i < presets.size(); ++i)
         for (bool firstOn : {true, false}) {
-            Preset variant = p;
+            Preset variant = presets[i];
             if (variant.formula.nodes.size() > 1) variant.formula.nodes[0].enabled = firstOn;
             try {
-                viewport.render(variant.formula, variant.camera, variant.render, variant.shading, width, height);
-            } catch (const std::runtime_error&) {
+                const FrameStats stats =
+                    viewport.render(variant.formula, variant.camera, variant.render, variant.shading, width, height);
+                EXPECT_EQ(stats.width, width) << test::shippedPresets()[i].filename();
+            } catch (const std::runtime_error& e) {
+                ADD_FAILURE() << test::shippedPresets()[i].filename() << (firstOn ? "" : " with its first block off")
+                              << " does not compile: " << e.what();
             }
         }
     // The clock starts after those compiles: with 50-odd programs they take over a minute on a
@@ -117,9 +126,13 @@ TEST(SoakViewport, RandomEditsKeepMemoryFlatAndRaiseNoGlError) {
         }
         for (int f = 0; f < 3; ++f, ++frames) {
             try {
-                viewport.render(current.formula, camera, current.render, current.shading, width, height);
-            } catch (const std::runtime_error&) {
-                // A toggled-off block may leave a formula that does not compile: the old image stays.
+                const FrameStats stats =
+                    viewport.render(current.formula, camera, current.render, current.shading, width, height);
+                ASSERT_EQ(stats.width, width) << "after " << frames << " frames";
+                ASSERT_EQ(stats.height, height) << "after " << frames << " frames";
+                working += stats.deEvalsPerPixel > 0.0;
+            } catch (const std::runtime_error& e) {
+                FAIL() << "after " << frames << " frames, " << edits << " edits: " << e.what();
             }
         }
         ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "after " << frames << " frames, " << edits << " edits";
@@ -128,6 +141,23 @@ TEST(SoakViewport, RandomEditsKeepMemoryFlatAndRaiseNoGlError) {
     ASSERT_GT(rssAfterWarmUp, 0);
     ASSERT_GT(rssAtHalf, 0);
     EXPECT_GT(edits, 10);
+    // Most frames marched (a frame of a settled view costs nothing; the frames after an edit, a
+    // move or a resize never are), and the image shown is finite, not black and not one colour.
+    const std::vector<float> image = viewport.readImage();
+    size_t lit = 0;
+    float darkest = INFINITY, brightest = -INFINITY;
+    for (size_t i = 0; i < image.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(image[i]));
+        if (i % 4 == 3) continue;
+        lit += image[i] > 0.0f;
+        darkest = std::min(darkest, image[i]);
+        brightest = std::max(brightest, image[i]);
+    }
+    std::printf("%d frames, %d edits: %d marched; the last image %dx%d, %zu of %zu colour values lit, from %g to %g\n",
+                frames, edits, working, width, height, lit, image.size() / 4 * 3, darkest, brightest);
+    EXPECT_GE(working, frames / 2);
+    EXPECT_GT(lit, image.size() / 4 * 3 / 10) << "the last image is black";
+    EXPECT_GT(brightest - darkest, 0.05f) << "the last image is one colour";
     // Run alone this stays within 1 MB over 110 s and 23000 frames, but it has grown without a
     // leak being found: 19 and 40 MB under load (before the mallopt calls above), and 34 MB in CI
     // right after the parallel ctest (alone, the same build stayed flat, twice). The
