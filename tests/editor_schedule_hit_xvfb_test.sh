@@ -89,7 +89,7 @@ click_at "$1" "$2"
 wait_for '.document.formula.hitRule // "surface"' insideOnly 12
 [ "$(q '.document.formula.hitRule // "surface"')" = insideOnly ] || fail "ticking 'Hit only inside' left the hit rule off"
 # A change of structure: the step factor is measured again, in the same undo step.
-q .undoLabel | grep -q hitRule || fail "Undo would do '$(q .undoLabel)', not the hit rule's change"
+q .undoLabel | grep -q "hit rule" || fail "Undo would do '$(q .undoLabel)', not the hit rule's change"
 shot inside_only
 coverage=$(convert "$out/inside_only.png" -crop "$crop" +repage -colorspace Gray -edge 1 -threshold 8% -format "%[fx:mean]" info:)
 check "$coverage > 0.03" || fail "with hits only inside the viewport shows no object (edge share $coverage)"

@@ -140,8 +140,7 @@ const std::map<std::string, std::string, std::less<>>& fieldLabels() {
         {"deFactor", "step factor"},
         {"boundRadius", "bound radius"},
         {"enabled", "on/off"},
-        // Kept as written until tests/editor_schedule_hit_xvfb_test.sh reads the label in words.
-        {"hitRule", "hitRule"},
+        {"hitRule", "hit rule"},
         // Camera tab.
         {"fovY", "field of view"},
         {"flipVertical", "vertical flip"},
