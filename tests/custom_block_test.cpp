@@ -64,9 +64,9 @@ TEST(CustomBlock, FlySpeedUsesTheGpuDistance) {
     const Preset builtIn = loadPreset(test::sourceDir() / "presets/mandelbox.json");
     test::glContext();
     editor::EyeDistance eye;
-    const editor::DistanceAt gpu = eye.of(custom.formula);
+    const DistanceAt gpu = eye.of(custom.formula);
     EXPECT_TRUE(eye.onGpu());
-    const editor::DistanceAt cpu = editor::cpuDistance(builtIn.formula);
+    const DistanceAt cpu = cpuDistance(builtIn.formula);
     for (const vec3& p : test::randomPoints(64, 2.0 * custom.formula.boundRadius, 7)) {
         const double expected = editor::safeDistance(builtIn.formula, cpu, p);
         EXPECT_NEAR(editor::safeDistance(custom.formula, gpu, p), expected, 1e-4 * std::max(std::abs(expected), 0.1));
@@ -84,7 +84,7 @@ TEST(CustomBlock, FlySpeedUsesTheGpuDistance) {
     EXPECT_LT(length(position), custom.formula.boundRadius);
     // A structure that does not compile falls back to the bound sphere instead of throwing.
     Preset broken = parsePreset(mandelboxWithCustomFold("p.xyz = undefined_function(p.xyz);\n"), "broken.json");
-    const editor::DistanceAt fallback = eye.of(broken.formula);
+    const DistanceAt fallback = eye.of(broken.formula);
     EXPECT_FALSE(eye.onGpu());
     EXPECT_EQ(fallback(vec3(0.0)), 0.0);
     EXPECT_NEAR(fallback(vec3(0.0, 0.0, broken.formula.boundRadius + 1.0)), 1.0, 1e-12);

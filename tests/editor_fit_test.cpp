@@ -7,8 +7,8 @@
 #include <random>
 
 #include "app/editor/document/formula_edits.hpp"
-#include "app/editor/document/formula_fit.hpp"
 #include "core/preset.hpp"
+#include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
 namespace {

@@ -11,9 +11,9 @@
 #include <thread>
 
 #include "app/editor/document/formula_edits.hpp"
-#include "app/editor/document/formula_fit.hpp"
 #include "app/editor/document/undo_history.hpp"
 #include "app/editor/state/actions.hpp"
+#include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
 namespace {

@@ -17,9 +17,9 @@
 #include <thread>
 
 #include "app/editor/document/formula_edits.hpp"
-#include "app/editor/document/formula_fit.hpp"
 #include "app/editor/document/slow_stack.hpp"
 #include "core/preset.hpp"
+#include "core/scene/formula_fit.hpp"
 
 using namespace fraktal;
 
@@ -228,7 +228,7 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
 // across a jump is no derivative, and its worst rays are rare), 0.497 with the fixed margins alone
 // (0.8 of the sampled worst, 0.7 after a jump) at the time of that 0.545. The ten slowest stacks
 // are printed with their blocks, and every stack whose median is under 0.02 must have the block
-// that keeps it slow named by the check's explanation (editor::explainSlowStack).
+// that keeps it slow named by the check's explanation (explainSlowStack).
 TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     // The stacks are drawn from the steps this test was written against: those registered before
     // axis_scale, the first of the blocks added for Mandelbulber2's formulas (later blocks go after
@@ -272,7 +272,7 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
         f.estimator = Node::make(*findBlock("escape_log"));
         for (int i = pickCount(rng); i > 0; --i) f.nodes.push_back(randomNode(*blocks[pickBlock(rng)], rng, true));
         if (!canBoundEscape(f.nodes)) continue;  // a preset with this stack is refused
-        editor::fitEstimatorToBlocks(f);
+        fitEstimatorToBlocks(f);
         const std::vector<EstimatorMeasurement> options = compareEstimators(f, camera, check);
         if (!hasSafeStepFactor(options.front())) {
             ++unsound;  // the estimate overflows, or overshoots more than any factor makes up for
@@ -331,7 +331,7 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
         std::printf("slow stack %zu: median DE * factor / true distance %.4f, factor %.3f, bailout %g: %s\n", i + 1,
                     slow.median, slow.formula.deFactor, slow.formula.bailout, describe(slow.formula).c_str());
         if (slow.median >= 0.02) continue;
-        const editor::SlowStack why = editor::explainSlowStack(slow.formula, camera, check);
+        const SlowStack why = explainSlowStack(slow.formula, camera, check);
         std::printf("  why: %s\n", why.text(slow.formula).c_str());
         if (why.block < 0) ++unexplained;
         EXPECT_GE(why.block, 0) << "a stack under 0.02 with no block named: " << describe(slow.formula);

@@ -8,9 +8,6 @@
 #include <optional>
 #include <random>
 
-#include "app/editor/document/formula_fit.hpp"
-#include "app/editor/document/scene_import.hpp"
-#include "app/editor/document/slow_stack.hpp"
 #include "cli/commands.hpp"
 #include "core/atomic_file.hpp"
 #include "core/de_check.hpp"
@@ -22,6 +19,9 @@
 #include "core/preset.hpp"
 #include "core/preset_text_edit.hpp"
 #include "core/safe_step.hpp"
+#include "core/scene/formula_fit.hpp"
+#include "core/scene/scene_import.hpp"
+#include "core/scene/slow_stack.hpp"
 
 namespace fraktal::cli {
 
@@ -48,23 +48,51 @@ struct CheckOptions {
 // The stack as the editor closes it after a structure change: the estimator and bailout fitted to
 // the blocks, the bound to the object (fitFormulaAfterEdit; the camera stays the file's), then the
 // estimator the check measures fastest among those that share its membership, at its factor.
-// Prints what changed.
-void fitToBlocks(Preset& preset, const SafeStepOptions& options) {
+// A candidate under which none of the check's rays meets the object (nothing to measure), or
+// whose estimate no step factor makes safe, is rejected: the fitted estimator and bailout within
+// the fitted bound, then within the file's bound; when neither is kept, the file's estimator,
+// bailout and bound stay, and the check measures them. Prints what changed, or why nothing did.
+// Returns whether the fit was taken.
+bool fitToBlocks(Preset& preset, const SafeStepOptions& options) {
     Formula& f = preset.formula;
     if (!f.cpuEvaluable()) {
         std::printf("fit: not fitted (custom GLSL blocks: the fit measures on the CPU)\n");
-        return;
+        return false;
     }
     const Formula before = f;
+    Formula fitted = f;
     Camera framed = preset.camera;
-    editor::fitFormulaAfterEdit(f, framed);
+    fitFormulaAfterEdit(fitted, framed);
     // Three significant digits, rounded up: the file gets a number a person reads.
-    const double digits = std::pow(10.0, std::floor(std::log10(f.boundRadius)) - 2.0);
-    f.boundRadius = std::ceil(f.boundRadius / digits) * digits;
-    if (std::optional<Formula> measured = editor::fittedAndMeasured(f, preset.camera, options)) f = *measured;
-    std::printf("fit: estimator %s -> %s, bailout %g -> %g, bound radius %g -> %g\n",
-                std::string(before.estimator.block->id).c_str(), std::string(f.estimator.block->id).c_str(),
-                before.bailout, f.bailout, before.boundRadius, f.boundRadius);
+    const double digits = std::pow(10.0, std::floor(std::log10(fitted.boundRadius)) - 2.0);
+    fitted.boundRadius = std::ceil(fitted.boundRadius / digits) * digits;
+    std::vector<Formula> candidates{fitted};
+    if (fitted.boundRadius != before.boundRadius) {
+        candidates.push_back(fitted);
+        candidates.back().boundRadius = before.boundRadius;
+    }
+    std::string rejected;
+    for (const Formula& candidate : candidates) {
+        const EstimatorMeasurement best = compareEstimators(candidate, preset.camera, options).front();
+        if (best.report.samples > 0 && best.hasFactor) {
+            f = candidate;
+            f.estimator = best.estimator;
+            f.deFactor = best.factor;
+            std::printf("fit: estimator %s -> %s, bailout %g -> %g, bound radius %g -> %g\n",
+                        std::string(before.estimator.block->id).c_str(), std::string(f.estimator.block->id).c_str(),
+                        before.bailout, f.bailout, before.boundRadius, f.boundRadius);
+            if (!rejected.empty()) std::printf("fit: rejected %s\n", rejected.c_str());
+            return true;
+        }
+        char why[256];
+        std::snprintf(why, sizeof why, "%s%s at bailout %g within bound radius %g (%s)", rejected.empty() ? "" : "; ",
+                      std::string(candidate.estimator.block->id).c_str(), candidate.bailout, candidate.boundRadius,
+                      best.report.samples == 0 ? "no ray of the check meets the object" : "no safe step factor");
+        rejected += why;
+    }
+    std::printf("fit: kept estimator %s, bailout %g, bound radius %g: the fit's candidates were rejected: %s\n",
+                std::string(before.estimator.block->id).c_str(), before.bailout, before.boundRadius, rejected.c_str());
+    return false;
 }
 
 // The fitted formula's estimator, bailout, bound and factor written into the preset file, every
@@ -78,7 +106,7 @@ std::string withFittedFormula(std::string text, const Formula& f, double factor,
 
 // The preset as checked: the file's, or its animation's frame `o.frame`.
 Preset checkedPreset(const CheckOptions& o) {
-    Preset preset = editor::loadSceneFile(o.preset);
+    Preset preset = loadSceneFile(o.preset);
     if (!o.frame) return preset;
     const Animation& a = preset.animation;
     if (a.empty())
@@ -176,7 +204,7 @@ int runCheck(const CheckOptions& o) {
     if (o.frame) std::printf(" at frame %d", *o.frame);
     std::printf("\n");
     printLoadNotes(preset.migrationNotes, preset.unknownFields, preset.formatVersion);
-    if (o.fit) fitToBlocks(preset, safe);
+    const bool fitted = o.fit && fitToBlocks(preset, safe);
     const Formula& f = preset.formula;
     std::printf("formula: %s", describeFormula(f).c_str());
 
@@ -278,17 +306,19 @@ int runCheck(const CheckOptions& o) {
     // A useless estimate (far under the distance everywhere: every ray stops at once or crawls)
     // fails; a small factor is explained. Both name what keeps the estimate loose and the
     // estimator the fit would choose; so does a stack with no safe factor or nothing to measure.
-    const bool useless = editor::uselessSpeed(own);
+    const bool useless = uselessSpeed(own);
     if (useless)
         std::printf("PROBLEM: the estimate is useless: a step covers %.2g%% of the gap (speed %.4f, under %g)\n",
-                    100.0 * own.speed(), own.speed(), editor::kUselessSpeed);
+                    100.0 * own.speed(), own.speed(), kUselessSpeed);
     const bool unmeasured = c.raysHit > 0 && (s.samples == 0 || c.samples == 0);
-    if (f.cpuEvaluable() &&
-        (useless || unmeasured || !hasSafeStepFactor(own) || (s.samples > 0 && own.factor < editor::kExplainFactor))) {
-        const editor::SlowStack why =
-            editor::explainSlowStack(f, preset.camera, safe, s.samples > 0 ? std::optional(own) : std::nullopt);
+    const bool slow = s.samples > 0 && own.factor < kExplainFactor;
+    std::string whyText;  // what keeps the estimate slow, useless or unmeasured, and why
+    if (f.cpuEvaluable() && (useless || unmeasured || !hasSafeStepFactor(own) || slow)) {
+        const SlowStack why =
+            explainSlowStack(f, preset.camera, safe, s.samples > 0 ? std::optional(own) : std::nullopt);
+        whyText = why.text(f);
         std::printf("%s: %s\n", useless || unmeasured || !hasSafeStepFactor(own) ? "why" : "note: slow",
-                    why.text(f).c_str());
+                    whyText.c_str());
         if (why.faster)
             std::printf(
                 "fix: `fraktal check --fit --apply %s` fits and writes the estimator (%s at bailout %g here), the "
@@ -329,15 +359,28 @@ int runCheck(const CheckOptions& o) {
                 &m == &candidates.front() ? "  <- largest factor x median per orbit" : "");
         }
     }
+    // --apply writes the factor measured whenever there is one, also where the estimate stays slow,
+    // useless or otherwise unsound: the file then marches safely, if slowly, and the check still
+    // fails on what remains. Nothing measured (no ray met the object from outside it) or no safe
+    // factor (the estimate overshoots more than the smallest factor makes up for) leaves the file
+    // as it is.
     bool applied = false;
     if (o.apply) {
-        if (status != 0 || s.samples == 0 || !hasSafeStepFactor(own)) {
-            std::printf("not applied: %s is unchanged (the problems above come first)\n", o.preset.c_str());
+        if (s.samples == 0) {
+            std::printf(
+                "not applied: %s is unchanged: no step factor was measured (no ray met the object from outside "
+                "it)\n",
+                o.preset.c_str());
+        } else if (!hasSafeStepFactor(own)) {
+            std::printf(
+                "not applied: %s is unchanged: no step factor down to %g keeps this estimate under the "
+                "distance\n",
+                o.preset.c_str(), kMinStepFactor);
         } else {
             // Rounded down to the printed precision, so that the file never holds more than was measured.
             const double factor = std::max(std::floor(own.factor * 1000.0) / 1000.0, kMinStepFactor);
             const std::string text = readGuardedFile(o.preset);
-            if (o.fit && f.estimator.block != fileFormula.estimator.block)
+            if (fitted && f.estimator.block != fileFormula.estimator.block)
                 for (const Track& t : preset.animation.tracks)
                     if (const auto target = parseParamTarget(t.target);
                         target && (target->estimator || target->node == f.nodes.size()))
@@ -346,7 +389,7 @@ int runCheck(const CheckOptions& o) {
                                                  std::string(fileFormula.estimator.block->id) +
                                                  ", whose parameters the animation keys (" + t.target +
                                                  "); fit it in the editor, which drops those tracks");
-            if (o.fit) {
+            if (fitted) {
                 writeFileAtomically(o.preset, withFittedFormula(text, f, factor, o.preset));
                 std::printf(
                     "applied: estimator %s, bailout %g, bound radius %g and formula.deFactor %.3f written to %s "
@@ -357,9 +400,16 @@ int runCheck(const CheckOptions& o) {
             } else {
                 writeFileAtomically(o.preset, withNumberInPlace(text, "formula", "deFactor", factor, o.preset));
                 std::printf("applied: formula.deFactor %.3f written to %s (was %.3f)\n", factor, o.preset.c_str(),
-                            f.deFactor);
+                            fileFormula.deFactor);
             }
             applied = true;
+            if (useless)
+                std::printf("stays useless: at the factor written a step covers %.2g%% of the gap; %s\n",
+                            100.0 * own.speed(), whyText.c_str());
+            else if (slow)
+                std::printf("stays slow: the factor written is under %g; %s\n", kExplainFactor, whyText.c_str());
+            if (status != 0 && !useless)
+                std::printf("the factor written is safe on the rays measured; the problems above remain\n");
         }
     }
     // An overshooting factor is a problem unless the measured one replaced it.

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "app/editor/document/scene_import.hpp"
 #include "cli/commands.hpp"
+#include "core/scene/scene_import.hpp"
 
 namespace fraktal::cli {
 
@@ -31,9 +31,9 @@ void addImportCommand(CLI::App& app, Action& action) {
         action = [a] {
             std::error_code ec;
             if (!std::filesystem::is_regular_file(a->input, ec)) throw PresetError(a->input, "", "no such file");
-            if (!editor::isImportedSceneFile(a->input))
+            if (!isImportedSceneFile(a->input))
                 throw PresetError(a->input, "", "not a Mandelbulber2 settings file (expected the extension .fract)");
-            const editor::ImportedScene scene = editor::importSceneFile(a->input, {.lenient = a->lenient});
+            const ImportedScene scene = importSceneFile(a->input, {.lenient = a->lenient});
             const std::filesystem::path output = a->output.empty()
                                                      ? std::filesystem::path(a->input).stem().concat(".json")
                                                      : std::filesystem::path(a->output);

@@ -7,7 +7,6 @@
 #include <memory>
 #include <regex>
 
-#include "app/editor/document/scene_import.hpp"
 #include "cli/cancel.hpp"
 #include "cli/commands.hpp"
 #include "cli/plane_render.hpp"
@@ -21,6 +20,7 @@
 #include "core/preset.hpp"
 #include "core/render/path_job.hpp"
 #include "core/render/still_job.hpp"
+#include "core/scene/scene_import.hpp"
 
 namespace fraktal::cli {
 
@@ -61,7 +61,7 @@ Preset loadInput(const std::string& input) {
         if (!std::filesystem::is_regular_file(input, ec)) throw PresetError(input, "", "no such file");
         return parsePreset(readExrPreset(input), input + " (embedded preset)");
     }
-    return editor::loadSceneFile(input);
+    return loadSceneFile(input);
 }
 
 // A 2D preset (presets/2d) or a 2D still's EXR (its embedded 2D preset); nullopt for 3D input.

@@ -71,14 +71,4 @@ bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const Camer
     return changed;
 }
 
-Camera defaultViewFor(const Formula& f, const Camera& current) {
-    Camera cam = current;
-    cam.target = vec3(0.0);
-    cam.up = vec3(0.0, 1.0, 0.0);
-    const double halfFov = glm::radians(std::clamp(cam.fovY, 5.0, 120.0)) * 0.5;
-    const double distance = f.boundRadius / std::sin(halfFov) * 0.9;
-    cam.position = normalize(vec3(0.6, 0.45, 0.8)) * distance;
-    return cam;
-}
-
 }  // namespace fraktal::editor

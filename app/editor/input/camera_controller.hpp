@@ -35,8 +35,4 @@ bool orbitCamera(Camera& cam, const CameraInput& in, const CameraControls& c);
 bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const CameraControls& c,
                const DistanceAt& de = {});
 
-// The view a preset shows when "Reset view" is chosen: looking at the origin from outside the
-// bound sphere, framing it for the camera's field of view.
-Camera defaultViewFor(const Formula& f, const Camera& current);
-
 }  // namespace fraktal::editor

@@ -20,10 +20,6 @@ DistanceAt defaultDistance(const Formula& f) { return f.cpuEvaluable() ? cpuDist
 
 }  // namespace
 
-DistanceAt cpuDistance(const Formula& f) {
-    return [&f](const vec3& p) { return distanceEstimate(f, p); };
-}
-
 EyeDistance::EyeDistance() = default;
 EyeDistance::~EyeDistance() = default;
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/formula.hpp"
+#include "core/scene/distance.hpp"
 
 namespace fraktal::gl {
 class DEProbe;
@@ -26,12 +27,6 @@ struct FlyRule {
     // longer tell the eye from the surface, so only steps that move away are taken.
     double standoff = 1e-9;
 };
-
-// The formula's distance estimate at a point (trusted inside formula.boundRadius).
-using DistanceAt = std::function<double(const vec3&)>;
-
-// The CPU DE (fraktal::distanceEstimate, double precision). Needs f.cpuEvaluable().
-DistanceAt cpuDistance(const Formula& f);
 
 // Where the editor gets the DE at the eye: the CPU for built-in blocks; for a formula with custom
 // GLSL blocks, which has no CPU body, the generated GLSL evaluated on the current GL context

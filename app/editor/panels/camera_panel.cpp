@@ -9,6 +9,7 @@
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/timeline/timeline_panel.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
+#include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
 

@@ -9,11 +9,11 @@
 #include <string>
 
 #include "app/editor/document/formula_edits.hpp"
-#include "app/editor/document/formula_fit.hpp"
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/timeline/timeline_panel.hpp"
 #include "app/editor/widgets/node_list_widgets.hpp"
 #include "core/safe_step.hpp"
+#include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
 

@@ -4,6 +4,7 @@
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/state/actions.hpp"
 #include "app/editor/viewport/camera_input.hpp"
+#include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
 

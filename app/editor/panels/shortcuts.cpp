@@ -7,12 +7,12 @@
 #include <algorithm>
 
 #include "app/editor/document/formula_edits.hpp"
-#include "app/editor/document/formula_fit.hpp"
 #include "app/editor/document/node_list_edits.hpp"
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/state/actions.hpp"
 #include "app/editor/state/plane_edits.hpp"
 #include "app/editor/viewport/camera_input.hpp"
+#include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
 

@@ -8,11 +8,11 @@
 #include <stdexcept>
 
 #include "app/editor/document/preset_files.hpp"
-#include "app/editor/document/scene_import.hpp"
 #include "app/editor/state/plane_edits.hpp"
 #include "core/atomic_file.hpp"
 #include "core/plane/plane_still.hpp"
 #include "core/preset.hpp"
+#include "core/scene/scene_import.hpp"
 
 namespace fraktal::editor {
 

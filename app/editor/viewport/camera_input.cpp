@@ -3,10 +3,10 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include "app/editor/document/formula_fit.hpp"
 #include "app/editor/document/lights_edits.hpp"
 #include "app/editor/state/actions.hpp"
 #include "app/editor/state/plane_edits.hpp"
+#include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
 

@@ -10,7 +10,7 @@
 
 #include "core/preset.hpp"
 
-namespace fraktal::editor {
+namespace fraktal {
 
 struct SceneImportOptions {
     // Write the preset although the file uses what fraktal cannot express (listed in its
@@ -39,4 +39,4 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
 // strict here (no --lenient).
 Preset loadSceneFile(const std::filesystem::path& path);
 
-}  // namespace fraktal::editor
+}  // namespace fraktal

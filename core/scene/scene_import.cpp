@@ -1,14 +1,14 @@
-#include "app/editor/document/scene_import.hpp"
+#include "core/scene/scene_import.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "app/editor/document/formula_fit.hpp"
-#include "app/editor/input/fly_speed.hpp"
 #include "core/import/fract_import.hpp"
 #include "core/safe_step.hpp"
+#include "core/scene/distance.hpp"
+#include "core/scene/formula_fit.hpp"
 
-namespace fraktal::editor {
+namespace fraktal {
 
 bool isImportedSceneFile(const std::filesystem::path& path) { return mb2::isFractPath(path); }
 
@@ -88,4 +88,4 @@ Preset loadSceneFile(const std::filesystem::path& path) {
     return loadPreset(path);
 }
 
-}  // namespace fraktal::editor
+}  // namespace fraktal

@@ -2,12 +2,12 @@
 // blocks and the distance estimate rather than from a table of known formulas.
 #pragma once
 
-#include "app/editor/input/fly_speed.hpp"
 #include "core/camera.hpp"
 #include "core/formula.hpp"
 #include "core/preset.hpp"
+#include "core/scene/distance.hpp"
 
-namespace fraktal::editor {
+namespace fraktal {
 
 // Picks the estimator family and bailout the loop body needs when the current ones do not fit:
 // a power block (Mandelbulb) wants the escape-time log estimator and a bailout of about 2; a
@@ -42,4 +42,8 @@ bool fitFormulaAfterEdit(Formula& f, Camera& camera);
 // The same on a document: when the fit replaces the estimator, its parameter tracks go with it.
 bool fitFormulaAfterEdit(Preset& p);
 
-}  // namespace fraktal::editor
+// The view a preset shows when "Reset view" is chosen: looking at the origin from outside the
+// bound sphere, framing it for the camera's field of view.
+Camera defaultViewFor(const Formula& f, const Camera& current);
+
+}  // namespace fraktal
