@@ -46,9 +46,10 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["frame"] = frame;
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},
                    {"target", {c.target.x, c.target.y, c.target.z}}};
-    // The CPU DE at the eye: > 0 outside the surface (null for formulas with GLSL blocks).
+    // The CPU DE at the eye: > 0 outside the surface (null for formulas with GLSL blocks, and for a
+    // 2D document, whose unused 3D preset has no estimator).
     const Formula& f = s.doc.preset.formula;
-    j["eyeDistance"] = f.cpuEvaluable() ? json(distanceEstimate(f, c.position)) : json();
+    j["eyeDistance"] = !s.doc.plane && f.cpuEvaluable() ? json(distanceEstimate(f, c.position)) : json();
     j["cameraGesture"] = s.cameraGesture;
     j["uiDraw"] = uiDrawName(ui);  // how this frame drew the window (viewport/ui_redraw.hpp)
     j["shortcutHelp"] = s.panels.help;
@@ -126,7 +127,9 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["tooltip"] = s.paramWidgets.tooltip;
     j["lights"] = lightsJson(s.doc.preset.lighting, s.lights);
     j["document"] = json::parse(fingerprint(s.doc));
-    return j.dump(1);
+    // Text the editor shows may hold bytes that are not UTF-8 (a file's name, an error quoting a
+    // binary file): they are replaced, never a reason to write no state.
+    return j.dump(1, ' ', false, json::error_handler_t::replace);
 }
 
 void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last) {

@@ -19,6 +19,12 @@ void pushRecent(std::vector<std::string>& recent, const std::filesystem::path& f
 std::filesystem::path configFolder();
 std::filesystem::path userPresetFolder();  // configFolder()/presets
 
+// Why `file` cannot be a preset, whatever its name says, from its first bytes: an image (PNG,
+// JPEG, GIF, TIFF, BMP, WebP, Radiance HDR) or another binary file (a NUL byte, or bytes that are
+// not UTF-8 text). One sentence that names the file, e.g. "x.png is an image, not a fraktal
+// preset: ..."; empty when it may be one (the preset reader then says what is wrong with it).
+std::string notAPresetReason(const std::filesystem::path& file);
+
 std::vector<std::string> loadRecentList(const std::filesystem::path& file);
 void saveRecentList(const std::filesystem::path& file, const std::vector<std::string>& recent);
 

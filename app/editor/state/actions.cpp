@@ -129,6 +129,8 @@ Document loadDocument(const fs::path& file) {
         if (!d.plane) d.preset = presetFromExr(file);
     } else if (isImportedSceneFile(file)) {
         d.preset = importSceneFile(file, {.lenient = true, .measure = false}).preset;
+    } else if (const std::string why = notAPresetReason(file); !why.empty()) {
+        throw std::runtime_error(why);  // an image or another binary file: not the JSON parser's text
     } else if (isPlanePresetFile(file)) {
         d.plane = loadPlanePreset(file);
     } else {
