@@ -39,7 +39,10 @@ bool orbitCamera(Camera& cam, const CameraInput& in, const CameraControls& c) {
         offset *= std::pow(0.85, in.scroll);
         changed = true;
     }
-    cam.position = cam.target + offset;
+    // Only a turn or a zoom moves the eye: target + (position - target) is not position in
+    // floating point (0.9 comes back as 0.8999999999999999), and a frame without input must leave
+    // the camera, and so the document, as it was.
+    if (changed) cam.position = cam.target + offset;
     if (in.panDrag != vec2(0.0)) {
         // One pixel moves the target plane by one pixel's footprint at the target distance.
         const double worldPerPixel = length(offset) * cam.pixelAngle(std::max(in.viewportHeight, 1.0));
@@ -66,9 +69,10 @@ bool flyCamera(Camera& cam, const Formula& f, const CameraInput& in, const Camer
     const vec3 step = de ? flyStep(f, de, cam.position, dir, in.dt, boost, c.fly)
                          : flyStep(f, cam.position, dir, in.dt, boost, c.fly);
     if (step != vec3(0.0)) changed = true;
+    if (!changed) return false;  // the target rebuilt from the view direction is not bit for bit the same
     cam.position += step;
     cam.target = cam.position + b.forward * lookDistance;
-    return changed;
+    return true;
 }
 
 }  // namespace fraktal::editor
