@@ -33,6 +33,30 @@ json lightsJson(const Lighting& l, const LightsPanel& p) {
             {"widgets", widgets}};
 }
 
+// The export dialog (F12) as drawn: its options, the command it runs, the job's state and the
+// line it shows for it, and the files the last job wrote.
+json exportJson(const EditorState& s) {
+    const ExportJob& job = s.exportJob;
+    const ExportOptions& o = job.options;
+    static constexpr const char* kStatus[] = {"idle", "running", "cancelling", "done", "failed", "cancelled"};
+    json outputs = json::array();
+    for (const auto& f : job.outputs) outputs.push_back(f.string());
+    std::string command;
+    for (const std::string& a : exportCommand("fraktal", "<preset>", o)) command += (command.empty() ? "" : " ") + a;
+    return {{"shown", s.dialogs.exportStill},
+            {"mode", o.pathTraced ? "path" : "fast"},
+            {"spp", exportSpp(o)},
+            {"denoise", o.denoise},
+            {"size", {o.width, o.height}},
+            {"output", o.output},
+            {"command", command},
+            {"lights", s.doc.plane ? "" : exportLightsText(s.doc.preset.lighting, o.pathTraced)},
+            {"status", kStatus[int(job.status)]},
+            {"statusText", exportStatusText(job)},
+            {"outputs", outputs},
+            {"outputsExist", exportOutputsExist(job)}};
+}
+
 }  // namespace
 
 std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
@@ -126,6 +150,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["tooltipParam"] = s.paramWidgets.tooltipParam;
     j["tooltip"] = s.paramWidgets.tooltip;
     j["lights"] = lightsJson(s.doc.preset.lighting, s.lights);
+    j["exportDialog"] = exportJson(s);
     j["document"] = json::parse(fingerprint(s.doc));
     // Text the editor shows may hold bytes that are not UTF-8 (a file's name, an error quoting a
     // binary file): they are replaced, never a reason to write no state.

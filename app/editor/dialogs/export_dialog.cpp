@@ -1,4 +1,5 @@
-// The export dialog (F12): size presets or custom, samples, EXR/PNG options; runs the still
+// The export dialog (F12): size presets or custom, the render mode (fast, or path traced with its
+// samples and denoise, as the viewport shows it at rest), samples, EXR/PNG options; runs the still
 // renderer in a child process (export_job.cpp) with a progress bar and a cancel button.
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -34,10 +35,18 @@ void drawExportDialog(EditorState& s) {
     }
     ExportOptions& o = job.options;
     const bool running = exportActive(job);
+    const bool plane = s.doc.plane.has_value();
+    // The render mode the viewport shows, unless chosen here since the view's settings last changed.
+    if (!running) followViewMode(o, s.doc.view.pathTraceAtRest, s.doc.view.pathSppCap);
+    if (plane) o.pathTraced = false;  // 2D stills have one renderer
+    bool edited = false;
     ImGui::BeginDisabled(running);
     if (ImGui::BeginCombo("Size", kExportSizes[o.sizeIndex].label)) {
         for (int i = 0; i < int(std::size(kExportSizes)); ++i)
-            if (ImGui::Selectable(kExportSizes[i].label, i == o.sizeIndex)) o.sizeIndex = i;
+            if (ImGui::Selectable(kExportSizes[i].label, i == o.sizeIndex)) {
+                edited |= i != o.sizeIndex;
+                o.sizeIndex = i;
+            }
         ImGui::EndCombo();
     }
     const ExportSize& size = kExportSizes[o.sizeIndex];
@@ -49,24 +58,58 @@ void drawExportDialog(EditorState& s) {
         o.height = int(s.layout.viewportH);
     }
     ImGui::BeginDisabled(size.width >= 0);
-    ImGui::DragInt("Width", &o.width, 4.0f, 16, 65536, "%d px", ImGuiSliderFlags_AlwaysClamp);
-    ImGui::DragInt("Height", &o.height, 4.0f, 16, 65536, "%d px", ImGuiSliderFlags_AlwaysClamp);
+    edited |= ImGui::DragInt("Width", &o.width, 4.0f, 16, 65536, "%d px", ImGuiSliderFlags_AlwaysClamp);
+    edited |= ImGui::DragInt("Height", &o.height, 4.0f, 16, 65536, "%d px", ImGuiSliderFlags_AlwaysClamp);
     ImGui::EndDisabled();
-    ImGui::DragInt("Samples per pixel", &o.spp, 0.25f, 1, 4096, "%d", ImGuiSliderFlags_AlwaysClamp);
+    if (!plane) {
+        int mode = o.pathTraced ? 1 : 0;
+        if (ImGui::Combo("Render mode", &mode, "Fast\0Path traced\0")) {
+            edited |= o.pathTraced != (mode == 1);
+            o.pathTraced = mode == 1;
+        }
+        noteWidgetRect(s.layout, "export:Render mode");
+        helpMarker(
+            "Fast: the still renderer (the viewport's image while it moves). Path traced: `fraktal render --mode "
+            "path`, the preset's lights, environment map and lens (the viewport's image at rest in its path-traced "
+            "mode). It starts as the Render tab's render mode.");
+    }
+    edited |= ImGui::DragInt("Samples per pixel", o.pathTraced ? &o.pathSpp : &o.spp, 0.25f, 1, 4096, "%d",
+                             ImGuiSliderFlags_AlwaysClamp);
+    noteWidgetRect(s.layout, "export:Samples per pixel");
+    if (o.pathTraced) {
+        edited |= ImGui::Checkbox("Denoise", &o.denoise);
+        noteWidgetRect(s.layout, "export:Denoise");
+        helpMarker(
+            "A joint bilateral filter guided by the albedo, normal and depth passes: it smooths the lighting, "
+            "not the texture.");
+    }
+    if (!plane)
+        if (const std::string lights = exportLightsText(s.doc.preset.lighting, o.pathTraced); !lights.empty()) {
+            ImGui::PushTextWrapPos(0.0f);
+            if (o.pathTraced)
+                ImGui::TextDisabled("%s", lights.c_str());
+            else
+                ImGui::TextColored(ImVec4(0.95f, 0.75f, 0.35f, 1), "%s", lights.c_str());
+            ImGui::PopTextWrapPos();
+        }
     sectionHeader("Output");
-    ImGui::InputText("File (no extension)", &o.output);
+    edited |= ImGui::InputText("File (no extension)", &o.output);
+    noteWidgetRect(s.layout, "export:File");
     ImGui::TextDisabled("OpenEXR (scene-linear, AOVs, the preset embedded) is always written.");
-    ImGui::Checkbox("Half float", &o.halfFloat);
+    edited |= ImGui::Checkbox("Half float", &o.halfFloat);
     ImGui::SameLine();
-    ImGui::Checkbox("PNG preview", &o.pngPreview);
+    edited |= ImGui::Checkbox("PNG preview", &o.pngPreview);
     helpMarker("Through the Render tab's OCIO view and exposure, as the viewport shows it.");
     ImGui::EndDisabled();
+    // A finished job's Done, Failed or Cancelled speaks of its own files, not of the options now.
+    if (edited) exportOptionsEdited(job);
     ImGui::TextDisabled("%.1f megapixels, %.1f MB as half EXR", o.width * double(o.height) / 1e6,
                         o.width * double(o.height) * 8.0 / 1e6);
 
     ImGui::Spacing();
     if (!running) {
-        if (ImGui::Button("Render", ImVec2(120, 0))) startExport(job, documentFileText(s.doc), s.now);
+        if (ImGui::Button("Render", ImVec2(120, 0))) startExport(job, exportPresetText(s.doc, s.file.path), s.now);
+        noteWidgetRect(s.layout, "export:Render");
     } else {
         ImGui::BeginDisabled(job.status == ExportStatus::Cancelling);
         if (ImGui::Button("Cancel", ImVec2(120, 0))) cancelExport(job);
@@ -74,6 +117,8 @@ void drawExportDialog(EditorState& s) {
     }
     ImGui::SameLine();
     const double elapsed = running ? s.now - job.startedAt : 0.0;
+    const std::string status = exportStatusText(job);
+    ImGui::PushTextWrapPos(0.0f);
     switch (job.status) {
         case ExportStatus::Running:
             if (job.progress >= 0.0) {
@@ -84,15 +129,18 @@ void drawExportDialog(EditorState& s) {
                 ImGui::ProgressBar(float(std::fmod(elapsed, 2.0) / 2.0), ImVec2(-1, 0), text.c_str());
             }
             break;
-        case ExportStatus::Cancelling: ImGui::TextDisabled("Cancelling after the current tile..."); break;
         case ExportStatus::Done:
-            ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "Done: %s.exr%s", o.output.c_str(),
-                               o.pngPreview ? " and .png" : "");
+            if (exportOutputsExist(job))
+                ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "%s", status.c_str());
+            else
+                ImGui::TextDisabled("%s", status.c_str());
             break;
-        case ExportStatus::Failed: ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "Failed (see log)."); break;
-        case ExportStatus::Cancelled: ImGui::TextDisabled("Cancelled."); break;
-        case ExportStatus::Idle: ImGui::TextDisabled("The UI stays usable while it renders."); break;
+        case ExportStatus::Failed: ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "%s", status.c_str()); break;
+        case ExportStatus::Cancelling:
+        case ExportStatus::Cancelled:
+        case ExportStatus::Idle: ImGui::TextDisabled("%s", status.c_str()); break;
     }
+    ImGui::PopTextWrapPos();
     if (ImGui::CollapsingHeader("Command and log")) {
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled("%s", joined(exportCommand("fraktal", "<preset>", o)).c_str());

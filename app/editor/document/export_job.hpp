@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/editor/document/document.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::editor {
@@ -32,7 +33,17 @@ inline constexpr ExportSize kExportSizes[] = {
 struct ExportOptions {
     int sizeIndex = 1;
     int width = 1920, height = 1080;
-    int spp = 16;
+    int spp = 16;  // samples per pixel of the fast renderer
+    // The render mode: `--mode path` (the path tracer: the preset's lights, environment map and
+    // lens, as the viewport shows it at rest in its path-traced mode) with its own samples per
+    // pixel and `--denoise`; else the fast renderer. 3D documents only.
+    bool pathTraced = false;
+    int pathSpp = 256;
+    bool denoise = false;
+    // The view settings the mode and path samples were last taken from (followViewMode).
+    bool followed = false;
+    bool followedPathTraced = false;
+    int followedPathSpp = 0;
     // OUT.exr is always written (scene-linear, with AOVs and the preset in its `fraktal.preset`
     // header attribute): it is the master. OUT.png goes through the preset's OCIO display/view
     // and exposure, as the viewport shows it.
@@ -54,13 +65,34 @@ struct ExportJob {
     double startedAt = 0.0;
     std::filesystem::path presetFile;  // the temp preset handed to the child
     std::filesystem::path executable;  // the fraktal binary to run; empty: this program
+    // The files this job was asked to write (the EXR, then the PNG if chosen), kept from its start:
+    // the options may change after it; Done means the renderer exited with 0 and all of them exist.
+    std::vector<std::filesystem::path> outputs;
+    bool pathTraced = false;  // the mode this job renders in
+    int spp = 0;              // and its samples per pixel
 };
+
+// The export's default render mode is what the viewport shows: the view settings' render mode
+// (pathTraceAtRest) and, for the path tracer, the samples the viewport accumulates (pathSppCap).
+// Taken when the dialog first shows and again whenever the view's settings change; a choice made
+// in the dialog stands until then.
+void followViewMode(ExportOptions& o, bool pathTraceAtRest, int pathSppCap);
+// The samples per pixel of the options' render mode.
+int exportSpp(const ExportOptions& o);
+// What the mode does with the preset's lighting, for the dialog: the lights and environment map
+// the path tracer renders, or what the fast renderer leaves out ("" when nothing).
+std::string exportLightsText(const Lighting& lighting, bool pathTraced);
 
 // The command line for the still renderer (`fraktal render`), for the dialog to show.
 std::vector<std::string> exportCommand(const std::filesystem::path& fraktalExe, const std::filesystem::path& preset,
                                        const ExportOptions& o);
 // The last "NN%" or "NN.N%" in `log` as 0..1, or -1.
 double parseProgress(const std::string& log);
+
+// The document's file text for the renderer: a relative environment map is made absolute
+// (resolved against `documentFile`'s folder, as the viewport does), since the renderer reads the
+// preset from a temporary file next to the output.
+std::string exportPresetText(const Document& d, const std::filesystem::path& documentFile);
 
 // Writes the preset next to the output and starts the child; false with job.log saying why.
 bool startExport(ExportJob& job, const Preset& preset, double now);
@@ -73,5 +105,13 @@ void cancelExport(ExportJob& job);
 // Cancels and waits for the renderer to exit (when the editor quits).
 void finishExport(ExportJob& job);
 bool exportActive(const ExportJob& job);  // Running or Cancelling
+// The options changed after a job ended: its Done, Failed or Cancelled no longer describes them.
+void exportOptionsEdited(ExportJob& job);
+// Whether every file the job wrote is there now.
+bool exportOutputsExist(const ExportJob& job);
+// The dialog's line for the job's state, e.g. "Done: out/still.exr and out/still.png (path traced,
+// 64 spp)." (the files the job wrote, while they exist) or "Failed: ..." (the log's last line);
+// "" while it runs (a progress bar).
+std::string exportStatusText(const ExportJob& job);
 
 }  // namespace fraktal::editor
