@@ -27,7 +27,9 @@ Family familyOf(const Formula& f) {
     return addsPoint ? Family::EscapeLinear : Family::Ifs;
 }
 
+// The estimator `id` with its defaults, unless it closes the stack already (its values kept).
 bool setEstimatorId(Formula& f, std::string_view id) {
+    if (f.estimator.block && f.estimator.block->id == id) return false;
     const BlockDesc* b = findBlock(id);
     if (!b || !b->isEstimator()) return false;
     f.estimator = Node::make(*b);
