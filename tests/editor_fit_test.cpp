@@ -1,7 +1,8 @@
 // Fitting a formula's settings to its blocks and framing its object from the DE
-// (app/editor/document/formula_fit.hpp).
+// (core/scene/formula_fit.hpp).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <random>
@@ -9,6 +10,7 @@
 #include "app/editor/document/formula_edits.hpp"
 #include "core/preset.hpp"
 #include "core/scene/formula_fit.hpp"
+#include "user_stacks.hpp"
 
 namespace fraktal::editor {
 namespace {
@@ -157,6 +159,33 @@ TEST(EditorFormulaFit, EditLeavesAGoodCameraAndFramesABadOne) {
     fitFormulaAfterEdit(f, far);
     EXPECT_LT(length(far.position), 6.0);
     EXPECT_GT(dot(normalize(far.position - far.target), direction), 0.99);
+}
+
+// An object the bailout search's 2000 points through the bound miss: a twist in front of an
+// octahedral KIFS (tests/user_stacks.hpp, seed 20) that fills under 1 % of its bound. At bailout
+// 2, the first the search tries, it is gone, and no ray of `fraktal check` meets it; the search
+// keeps where rays across the bound first meet it at the reference bailout, and takes 4.
+TEST(EditorFormulaFit, TheBailoutKeepsAnObjectThePointsMiss) {
+    std::mt19937_64 rng(20);
+    const Preset p = test::drawnStack({"twist_y", "kifs_octahedral"}, rng);
+    auto hits = [&](const Formula& f) {
+        CpuSampler sampler(f);
+        return sampleRays(sampler, p.camera, {120, 4000, 1}).raysHit;
+    };
+    Formula f = p.formula;
+    ASSERT_EQ(f.bailout, 1000.0);
+    const int atReference = hits(f);
+    const auto start = std::chrono::steady_clock::now();
+    fitEstimatorToBlocks(f);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Formula atTwo = f;
+    atTwo.bailout = 2.0;
+    std::printf("rays that meet the object: %d at bailout 1000, %d at 2, %d at the fitted %g (fitted in %.2f s)\n",
+                atReference, hits(atTwo), hits(f), f.bailout, seconds);
+    EXPECT_GT(atReference, 0);
+    EXPECT_EQ(hits(atTwo), 0);
+    EXPECT_EQ(f.bailout, 4.0);
+    EXPECT_GE(hits(f), atReference);
 }
 
 }  // namespace
