@@ -110,36 +110,3 @@ TEST(ResolutionControl, NoTargetMeansFullResolution) {
 
 }  // namespace
 }  // namespace fraktal::viewport
-
-// At rest a frame marches every unfinished ray by its steps: against a simulated renderer whose
-// frame costs a fixed part plus a part per step, the steps settle where the frame holds the
-// target (a heavy formula: one step's worth is all that fits, never less than one step), a light
-// formula gets the whole cap, and the steps grow at most twice a frame.
-namespace fraktal::viewport {
-TEST(ResolutionControl, StepsAtRestFitTheFrameTimeTarget) {
-    struct Case {
-        double fixedMs, msPerStep;
-        int settleAt;  // the steps it must settle at
-    };
-    // kleinian-like (900 ms for 30 steps), a medium one, a light one.
-    for (const Case c : {Case{5.0, 30.0, 1}, Case{5.0, 2.0, 14}, Case{2.0, 0.5, 30}}) {
-        SCOPED_TRACE(c.msPerStep);
-        int steps = 30;
-        double ms = c.fixedMs + c.msPerStep * steps;
-        for (int frame = 0; frame < 40; ++frame) {
-            const int next = restStepsFittingTarget(steps, ms, 33.0, 30);
-            EXPECT_GE(next, 1);
-            EXPECT_LE(next, 30);
-            EXPECT_LE(next, 2 * steps);
-            steps = next;
-            ms = c.fixedMs + c.msPerStep * steps;
-        }
-        EXPECT_NEAR(steps, c.settleAt, 1);
-        if (c.settleAt > 1 && c.settleAt < 30) {
-            EXPECT_LE(ms, 33.0 * 1.1);
-        }
-    }
-    EXPECT_EQ(restStepsFittingTarget(3, 900.0, 0.0, 30), 30) << "no target: the settings' steps";
-    EXPECT_EQ(restStepsFittingTarget(1, 1.0, 33.0, 30), 2) << "growth at most twice a frame";
-}
-}  // namespace fraktal::viewport

@@ -29,10 +29,4 @@ double ResolutionController::next(bool changed, double lastFrameMs) {
     return scale_ = chosen;
 }
 
-int restStepsFittingTarget(int steps, double frameMs, double targetMs, int cap) {
-    if (targetMs <= 0.0) return cap;
-    const double fitting = steps * targetMs / std::max(frameMs, 1e-3);
-    return int(std::clamp(fitting, 1.0, double(std::max(std::min(2 * steps, cap), 1))));
-}
-
 }  // namespace fraktal::viewport

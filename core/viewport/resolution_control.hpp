@@ -24,13 +24,6 @@ struct ResolutionControl {
     int restFrames = 3;      // unchanged frames in a row before the view counts as at rest
 };
 
-// At rest the viewport refines at full size, and a frame marches every unfinished ray by its
-// steps per frame: the steps the next frame at rest gets so that it takes about `targetMs`, from
-// the `frameMs` the last one took with `steps`. It grows at most twice a frame (a frame that found
-// little left to march says little about the next one) and stays within 1..cap (<= 0 target:
-// `cap`, always).
-int restStepsFittingTarget(int steps, double frameMs, double targetMs, int cap);
-
 class ResolutionController {
    public:
     explicit ResolutionController(ResolutionControl control = {}) : control_(control) {}

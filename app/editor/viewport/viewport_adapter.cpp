@@ -80,14 +80,9 @@ const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {
 bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevision& revision,
                                    const ViewSettings& settings, int width, int height) {
     const Formula& formula = preset.formula;
-    // At rest the march gets the steps that fit the frame-time target (restSteps_); in motion the
-    // dynamic resolution holds the target and the view settings' steps apply.
-    const bool resting = lastAction_ == viewport::FrameAction::Continue && resolution_.scale() == 1.0 &&
-                         settings.frameTimeTargetMs > 0.0 && restSteps_ > 0;
     lastAction_ = viewport::FrameAction::Reset;
     if (!failedStructure_.empty() && formula.structureKey() == failedStructure_) return false;
-    viewport::ViewportOptions options = viewportOptions(settings);
-    if (resting) options.stepsPerFrame = std::min(restSteps_, settings.stepsPerFrame);
+    const viewport::ViewportOptions options = viewportOptions(settings);
     if (!sameOptions(options, viewport_.options())) viewport_.setOptions(options);
     workingShading(preset);
     if (!programsReady(formula)) return false;
@@ -114,13 +109,6 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
     const bool idle = frame.settled && frame.action == viewport::FrameAction::Continue && frame.deEvalsPerPixel == 0.0;
     stats_.renderMs =
         idle ? 0.0 : std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    // A frame that refined the view at rest: the steps the next one at rest gets.
-    if (frame.action == viewport::FrameAction::Continue && !idle && settings.frameTimeTargetMs > 0.0 &&
-        resolution_.scale() == 1.0) {
-        restSteps_ = viewport::restStepsFittingTarget(options.stepsPerFrame, stats_.renderMs,
-                                                      settings.frameTimeTargetMs, settings.stepsPerFrame);
-    }
-    stats_.stepsPerFrame = options.stepsPerFrame;
     stats_.deEvaluationsPerPixel = frame.deEvalsPerPixel;
     stats_.reprojectedShare = frame.shareReprojected;
     stats_.convergedShare = frame.shareConverged;

@@ -104,10 +104,6 @@ class CoreViewportView final : public ViewportView {
     std::optional<scene::SceneRevision> lastView_;
     std::optional<std::chrono::steady_clock::time_point> lastFrameStart_;
     viewport::FrameAction lastAction_ = viewport::FrameAction::Reset;  // the last fast frame's
-    // March steps per frame at rest, fitted to the frame-time target from the last frame at rest
-    // (0: none measured yet). A heavy formula refines over more frames instead of holding the
-    // window: three Kleinian nodes took 900-965 ms a frame at rest with the settings' 30 steps.
-    int restSteps_ = 0;
     // Path traced at rest. The tracer is kept while the structure and size stay (its program
     // takes a while to compile); `path_` is the running accumulation.
     std::string presetFile_;

@@ -28,7 +28,6 @@ struct ViewportStats {
     int width = 0, height = 0;   // render resolution
     double internalScale = 1.0;  // dynamic resolution: the share of the full size rendered (1 at rest)
     int compiles = 0;            // formula programs built so far (a value edit must not add one)
-    int stepsPerFrame = 0;       // march steps per ray the last frame took (fitted to the target at rest)
     bool compiling = false;      // a new structure compiles in the background; the old image stays
     // "Path traced at rest" (ViewSettings::pathTraceAtRest): whether the image shown is the path
     // tracer's, and its samples per pixel so far (0 while the fast mode shows) out of the cap.
