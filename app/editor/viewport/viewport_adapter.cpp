@@ -81,7 +81,7 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
                                    const ViewSettings& settings, int width, int height) {
     const Formula& formula = preset.formula;
     lastAction_ = viewport::FrameAction::Reset;
-    if (!failedStructure_.empty() && formula.structureKey() == failedStructure_) return false;
+    if (!failedStructure_.empty() && revision.structure == failedStructure_) return false;
     const viewport::ViewportOptions options = viewportOptions(settings);
     if (!sameOptions(options, viewport_.options())) viewport_.setOptions(options);
     workingShading(preset);
@@ -95,7 +95,7 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
     } catch (const std::exception& e) {
         // The viewport keeps its previous programs and image (viewport.hpp).
         compileError_ = e.what();
-        if (newStructure) failedStructure_ = formula.structureKey();
+        if (newStructure) failedStructure_ = revision.structure;
         return false;
     }
     if (newStructure) {
