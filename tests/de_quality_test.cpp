@@ -11,7 +11,6 @@ using namespace fraktal;
 
 namespace {
 
-Preset shipped(const std::string& name) { return loadPreset(test::sourceDir() / "presets" / name); }
 
 double boxDistance(const vec3& p, const vec3& halfSize) {
     const vec3 q = abs(p) - halfSize;
@@ -44,7 +43,7 @@ TEST(DEQuality, EveryShippedFormulaIsConservative) {
 // The checker must catch an overshooting DE: scale a sound one up and it has to say so, with a
 // step multiplier that undoes the scaling.
 TEST(DEQuality, CheckerCatchesAnOvershootingEstimate) {
-    Preset p = shipped("menger.json");
+    Preset p = test::shippedPreset("menger.json");
     p.formula.deFactor = 1.5;
     const ConservativenessReport r = checkConservativeness(p.formula, p.camera, testRays());
     EXPECT_FALSE(r.conservative());
@@ -53,7 +52,7 @@ TEST(DEQuality, CheckerCatchesAnOvershootingEstimate) {
 }
 
 TEST(DEQuality, MengerWithNoIterationsIsTheExactBox) {
-    Formula f = shipped("menger.json").formula;
+    Formula f = test::shippedPreset("menger.json").formula;
     f.iterations = 0;
     for (const vec3& p : test::randomPoints(5000, 2.0, 3))
         ASSERT_NEAR(distanceEstimate(f, p), boxDistance(p, vec3(1.0)), 1e-12);
@@ -62,7 +61,7 @@ TEST(DEQuality, MengerWithNoIterationsIsTheExactBox) {
 // The sponge keeps its eight corners at every level, so from a point whose nearest point on the
 // cube is a corner, the distance to the sponge is exactly the distance to the cube.
 TEST(DEQuality, MengerEqualsTheBoxDistanceWhereThatIsExact) {
-    const Formula f = shipped("menger.json").formula;
+    const Formula f = test::shippedPreset("menger.json").formula;
     int checked = 0;
     for (const vec3& p : test::randomPoints(20000, f.boundRadius, 5)) {
         if (std::min({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= 1.0) continue;
@@ -79,7 +78,7 @@ TEST(DEQuality, MengerEqualsTheBoxDistanceWhereThatIsExact) {
 
 // |z^8 + c| >= |z|^8 - |c| > |z| once |z| = |c| > 2^(1/7): every orbit from there escapes.
 TEST(DEQuality, MandelbulbInsideItsBoundingRadius) {
-    const Formula f = shipped("mandelbulb.json").formula;
+    const Formula f = test::shippedPreset("mandelbulb.json").formula;
     const double radius = std::pow(2.0, 1.0 / 7.0);
     long outside = 0;
     double farthestInside = 0.0;
@@ -97,7 +96,7 @@ TEST(DEQuality, MandelbulbInsideItsBoundingRadius) {
 
 // For scale 2 the Mandelbox lies in the cube |x|, |y|, |z| <= 2 (s + 1) / (s - 1) = 6.
 TEST(DEQuality, MandelboxInsideItsBoundingBox) {
-    const Formula f = shipped("mandelbox.json").formula;
+    const Formula f = test::shippedPreset("mandelbox.json").formula;
     double farthestInside = 0.0;
     for (const vec3& p : test::randomPoints(40000, 8.0, 9)) {
         if (evaluate(f, p).inside)
@@ -111,7 +110,7 @@ TEST(DEQuality, MandelboxInsideItsBoundingBox) {
 // Away from the bulb the estimate is close to the true distance, which is measured to a dense
 // sample of the surface found by the baseline marcher.
 TEST(DEQuality, MandelbulbDistanceIsCloseAwayFromTheSurface) {
-    Formula f = shipped("mandelbulb.json").formula;
+    Formula f = test::shippedPreset("mandelbulb.json").formula;
     f.deFactor = 1.0;  // the estimator itself, before the preset's safety factor
     std::vector<vec3> surface;
     for (const vec3& d : test::randomPoints(6000, 1.0, 21)) {

@@ -13,21 +13,12 @@
 #include "app/editor/document/export_job.hpp"
 #include "app/editor/document/preset_files.hpp"
 #include "app/editor/state/actions.hpp"
+#include "export_job_support.hpp"
 
 namespace fraktal::editor {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool pollUntilEnded(ExportJob& job, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (exportActive(job)) {
-        if (std::chrono::steady_clock::now() > end) return false;
-        pollExport(job);
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return true;
-}
 
 struct ExportMode : ::testing::Test {
     fs::path dir = fs::temp_directory_path() / ("fraktal_export_mode_" + std::to_string(::getpid()));
@@ -93,7 +84,7 @@ TEST_F(ExportMode, DoneOnlyForTheFilesTheJobWroteWhileTheyExist) {
     const Preset preset = loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "menger.json");
     ASSERT_TRUE(startExport(job, preset, 0.0)) << job.log;
     job.options.output = (dir / "other").string();  // edited while it runs: the job keeps its files
-    ASSERT_TRUE(pollUntilEnded(job, 120.0)) << job.log;
+    ASSERT_TRUE(test::pollUntilEnded(job, 120.0)) << job.log;
     ASSERT_EQ(job.status, ExportStatus::Done) << job.log;
     EXPECT_EQ(exportStatusText(job),
               "Done: " + (dir / "still.exr").string() + " and " + (dir / "still.png").string() + " (fast, 1 spp).");
@@ -110,7 +101,7 @@ TEST_F(ExportMode, DoneOnlyForTheFilesTheJobWroteWhileTheyExist) {
     job.executable = fake;
     job.options.output = (dir / "never").string();
     ASSERT_TRUE(startExport(job, preset, 0.0)) << job.log;
-    ASSERT_TRUE(pollUntilEnded(job, 30.0)) << job.log;
+    ASSERT_TRUE(test::pollUntilEnded(job, 30.0)) << job.log;
     EXPECT_EQ(job.status, ExportStatus::Failed);
     EXPECT_EQ(exportStatusText(job), "Failed: the renderer exited without writing " + (dir / "never.exr").string());
 }

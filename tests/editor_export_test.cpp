@@ -9,22 +9,12 @@
 
 #include "app/editor/document/export_job.hpp"
 #include "app/editor/state/actions.hpp"
+#include "export_job_support.hpp"
 
 namespace fraktal::editor {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Polls like the editor's frame loop does; returns false on timeout.
-bool pollUntilEnded(ExportJob& job, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (exportActive(job)) {
-        if (std::chrono::steady_clock::now() > end) return false;
-        pollExport(job);
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return true;
-}
 
 struct EditorExportJob : ::testing::Test {
     fs::path dir = fs::temp_directory_path() / ("fraktal_export_" + std::to_string(::getpid()));
@@ -48,7 +38,7 @@ TEST_F(EditorExportJob, RendersTheExrWithTheEmbeddedPresetAndThePng) {
     job.options.spp = 1;
     preset.render.exposure = 0.5;  // travels in the preset, as the Render tab sets it
     ASSERT_TRUE(startExport(job, preset, 0.0)) << job.log;
-    ASSERT_TRUE(pollUntilEnded(job, 120.0)) << job.log;
+    ASSERT_TRUE(test::pollUntilEnded(job, 120.0)) << job.log;
     ASSERT_EQ(job.status, ExportStatus::Done) << job.log;
     EXPECT_NEAR(job.progress, 1.0, 1e-9) << "the last progress line says 100%";
     EXPECT_TRUE(fs::exists(dir / "still.png"));
@@ -69,7 +59,7 @@ TEST_F(EditorExportJob, Exports2dDocumentsWithTheirPresetAndProgress) {
     job.options.height = 30;
     job.options.spp = 1;
     ASSERT_TRUE(startExport(job, documentFileText(d), 0.0)) << job.log;
-    ASSERT_TRUE(pollUntilEnded(job, 120.0)) << job.log;
+    ASSERT_TRUE(test::pollUntilEnded(job, 120.0)) << job.log;
     ASSERT_EQ(job.status, ExportStatus::Done) << job.log;
     EXPECT_NEAR(job.progress, 1.0, 1e-9) << "2D progress lines carry a percentage too: " << job.log;
     EXPECT_TRUE(fs::exists(dir / "still.png"));
@@ -92,7 +82,7 @@ TEST_F(EditorExportJob, CancelReturnsAtOnceAndLeavesNoFile) {
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count(), 0.1)
         << "the UI thread does not wait for the renderer";
     EXPECT_EQ(job.status, ExportStatus::Cancelling);
-    ASSERT_TRUE(pollUntilEnded(job, 120.0)) << job.log;
+    ASSERT_TRUE(test::pollUntilEnded(job, 120.0)) << job.log;
     EXPECT_EQ(job.status, ExportStatus::Cancelled) << job.log;
     EXPECT_FALSE(fs::exists(dir / "still.exr"));
     EXPECT_FALSE(fs::exists(dir / "still.png"));

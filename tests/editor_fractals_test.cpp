@@ -15,7 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Preset shipped(const char* name) { return loadPreset(test::sourceDir() / "presets" / name); }
 
 // A folder of its own under the system's temporary folder, removed at the end of the test.
 struct TempFolder {
@@ -31,16 +30,16 @@ struct TempFolder {
 };
 
 TEST(EditorFractals, AddTakesThePresetsFractalAndNothingOfItsScene) {
-    Formula f = shipped("menger.json").formula;
+    Formula f = test::shippedPreset("menger.json").formula;
     // A source with a scene of its own: objects and combined fractals, a bound and a hit rule.
-    Formula source = shipped("menger_carved_by_mandelbulbs.json").formula.fractals.at(1).formula;
+    Formula source = test::shippedPreset("menger_carved_by_mandelbulbs.json").formula.fractals.at(1).formula;
     source.placement.center = vec3(0.5, 0.0, -0.25);
     source.placement.scale = 2.0;
     source.placement.repeat = vec3(3.0, 0.0, 0.0);
     source.boundRadius = 7.0;
     source.hitRule = HitRule::InteriorWalls;
     ASSERT_TRUE(addObject(source, *findObject("torus")));
-    ASSERT_TRUE(addFractal(source, shipped("menger.json").formula));
+    ASSERT_TRUE(addFractal(source, test::shippedPreset("menger.json").formula));
     const Formula before = f;
 
     ASSERT_TRUE(addFractal(f, source));
@@ -74,7 +73,7 @@ TEST(EditorFractals, AddTakesThePresetsFractalAndNothingOfItsScene) {
     EXPECT_NE(f.structureKey(), before.structureKey());
 
     // The document round-trips through the preset format with the fractal in it.
-    Preset p = shipped("menger.json");
+    Preset p = test::shippedPreset("menger.json");
     p.formula = f;
     const Preset again = parsePreset(serializePreset(p), "round trip");
     ASSERT_EQ(again.formula.fractals.size(), 1u);
@@ -83,9 +82,9 @@ TEST(EditorFractals, AddTakesThePresetsFractalAndNothingOfItsScene) {
 }
 
 TEST(EditorFractals, AddStopsAtTheLimitAndRemoveTakesTheOneAsked) {
-    Formula f = shipped("menger.json").formula;
-    const Formula bulb = shipped("mandelbulb.json").formula;
-    const Formula box = shipped("mandelbox.json").formula;
+    Formula f = test::shippedPreset("menger.json").formula;
+    const Formula bulb = test::shippedPreset("mandelbulb.json").formula;
+    const Formula box = test::shippedPreset("mandelbox.json").formula;
     for (int k = 0; k < kMaxCombinedFractals; ++k) EXPECT_TRUE(addFractal(f, k % 2 ? box : bulb)) << k;
     EXPECT_FALSE(addFractal(f, bulb));
     EXPECT_EQ(int(f.fractals.size()), kMaxCombinedFractals);
@@ -96,11 +95,11 @@ TEST(EditorFractals, AddStopsAtTheLimitAndRemoveTakesTheOneAsked) {
     EXPECT_EQ(int(f.fractals.size()), kMaxCombinedFractals - 1);
     EXPECT_EQ(f.fractals[0].formula.estimator.block, box.estimator.block);
     while (!f.fractals.empty()) EXPECT_TRUE(removeFractal(f, 0));
-    EXPECT_EQ(f.structureKey(), shipped("menger.json").formula.structureKey());
+    EXPECT_EQ(f.structureKey(), test::shippedPreset("menger.json").formula.structureKey());
 }
 
 TEST(EditorFractals, CustomBlocksAreNotCombined) {
-    Formula custom = shipped("mandelbox.json").formula;
+    Formula custom = test::shippedPreset("mandelbox.json").formula;
     CustomBlock::Definition d;
     d.id = "wobble";
     d.category = Category::Transform;
@@ -111,10 +110,10 @@ TEST(EditorFractals, CustomBlocksAreNotCombined) {
     EXPECT_FALSE(combinable(custom));
     ASSERT_TRUE(addNode(custom, *customBlocksIn(custom, Category::Transform).at(0), 0));
     EXPECT_FALSE(combinable(custom));
-    Formula f = shipped("menger.json").formula;
+    Formula f = test::shippedPreset("menger.json").formula;
     EXPECT_FALSE(addFractal(f, custom));
     EXPECT_TRUE(f.fractals.empty());
-    EXPECT_TRUE(combinable(shipped("mandelbulb.json").formula));
+    EXPECT_TRUE(combinable(test::shippedPreset("mandelbulb.json").formula));
 }
 
 TEST(EditorFractals, MenuListsTheLoadable3DPresetsWithBuiltInBlocks) {
@@ -124,7 +123,7 @@ TEST(EditorFractals, MenuListsTheLoadable3DPresetsWithBuiltInBlocks) {
     fs::copy_file(test::sourceDir() / "presets" / "2d" / "mandelbrot.json", a.path / "flat.json");  // 2D
     std::ofstream(a.path / "broken.json") << "{ not json";
     std::ofstream(a.path / "notes.txt") << "not a preset";
-    Preset custom = shipped("mandelbox.json");
+    Preset custom = test::shippedPreset("mandelbox.json");
     CustomBlock::Definition d;
     d.id = "wobble";
     d.category = Category::Transform;
@@ -141,7 +140,7 @@ TEST(EditorFractals, MenuListsTheLoadable3DPresetsWithBuiltInBlocks) {
     // Folder by folder, sorted within each; the missing folder adds nothing.
     EXPECT_EQ(names, (std::vector<std::string>{"b_menger", "mandelbulb", "a_box"}));
     ASSERT_EQ(choices.size(), 3u);
-    EXPECT_EQ(choices[1].formula.structureKey(), shipped("mandelbulb.json").formula.structureKey());
+    EXPECT_EQ(choices[1].formula.structureKey(), test::shippedPreset("mandelbulb.json").formula.structureKey());
 
     // Every shipped 3D preset without custom blocks is offered, mandelbulb among them.
     const std::vector<FractalChoice> shippedChoices = combinableFractals({test::sourceDir() / "presets"});

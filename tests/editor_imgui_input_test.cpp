@@ -11,12 +11,12 @@
 namespace fraktal::editor {
 namespace {
 
-using Kind = InputEvent::Kind;
+using InputKind = InputEvent::Kind;
 
-InputEvent move(double x, double y) { return {Kind::CursorMove, x, y}; }
-InputEvent button(int b, bool down) { return {Kind::MouseButton, 0, 0, b, down}; }
-InputEvent key(int k, bool down) { return {Kind::Key, 0, 0, k, down}; }
-InputEvent character(char c) { return {Kind::Char, 0, 0, int(c), true}; }
+InputEvent move(double x, double y) { return {InputKind::CursorMove, x, y}; }
+InputEvent button(int b, bool down) { return {InputKind::MouseButton, 0, 0, b, down}; }
+InputEvent key(int k, bool down) { return {InputKind::Key, 0, 0, k, down}; }
+InputEvent character(char c) { return {InputKind::Char, 0, 0, int(c), true}; }
 
 // A quick tap on a tab (moves, press and release all between two frames): the frame that sees
 // the cursor on the tab comes before the one that sees the press, and the release after that.

@@ -8,17 +8,17 @@
 namespace fraktal::editor {
 namespace {
 
-using Kind = PointerEvent::Kind;
+using PointerKind = PointerEvent::Kind;
 const ViewportRect kViewport{360, 20, 590, 780};
 
 TEST(ViewportInput, ClickWithoutDragMovesNothing) {
     ViewportDrag drag;
     // The cursor comes from a panel far away, presses, wobbles 2 px, releases: one frame.
-    const std::vector<PointerEvent> events = {{Kind::Move, 0, 100, 600},
-                                              {Kind::Move, 0, 650, 400},
-                                              {Kind::Press, 0, 650, 400},
-                                              {Kind::Move, 0, 652, 401},
-                                              {Kind::Release, 0, 652, 401}};
+    const std::vector<PointerEvent> events = {{PointerKind::Move, 0, 100, 600},
+                                              {PointerKind::Move, 0, 650, 400},
+                                              {PointerKind::Press, 0, 650, 400},
+                                              {PointerKind::Move, 0, 652, 401},
+                                              {PointerKind::Release, 0, 652, 401}};
     const DragMotion m = consumePointerEvents(drag, events, kViewport, false);
     EXPECT_EQ(m.rotate, vec2(0.0));
     EXPECT_EQ(m.pan, vec2(0.0));
@@ -28,9 +28,9 @@ TEST(ViewportInput, ClickWithoutDragMovesNothing) {
 }
 
 TEST(ViewportInput, DragIsTheSameWhateverTheFrameSplit) {
-    std::vector<PointerEvent> events = {{Kind::Press, 1, 600, 300}};
-    for (int i = 1; i <= 10; ++i) events.push_back({Kind::Move, 0, 600.0 + 7 * i, 300.0 - 3 * i});
-    events.push_back({Kind::Release, 1, 670, 270});
+    std::vector<PointerEvent> events = {{PointerKind::Press, 1, 600, 300}};
+    for (int i = 1; i <= 10; ++i) events.push_back({PointerKind::Move, 0, 600.0 + 7 * i, 300.0 - 3 * i});
+    events.push_back({PointerKind::Release, 1, 670, 270});
     ViewportDrag oneFrame;
     const DragMotion all = consumePointerEvents(oneFrame, events, kViewport, false);
     EXPECT_EQ(all.pan, vec2(70, -30));  // all of it, from the press point
@@ -43,11 +43,11 @@ TEST(ViewportInput, DragIsTheSameWhateverTheFrameSplit) {
 
 TEST(ViewportInput, PressOnAPanelOrOutsideStartsNoDrag) {
     ViewportDrag drag;
-    DragMotion m = consumePointerEvents(drag, {{Kind::Press, 0, 650, 400}, {Kind::Move, 0, 750, 400}}, kViewport, true);
+    DragMotion m = consumePointerEvents(drag, {{PointerKind::Press, 0, 650, 400}, {PointerKind::Move, 0, 750, 400}}, kViewport, true);
     EXPECT_EQ(m.rotate, vec2(0.0));
     EXPECT_FALSE(drag.focused);
     drag = {};
-    m = consumePointerEvents(drag, {{Kind::Press, 0, 100, 400}, {Kind::Move, 0, 750, 400}}, kViewport, false);
+    m = consumePointerEvents(drag, {{PointerKind::Press, 0, 100, 400}, {PointerKind::Move, 0, 750, 400}}, kViewport, false);
     EXPECT_EQ(m.rotate, vec2(0.0));
     EXPECT_FALSE(m.held);
 }

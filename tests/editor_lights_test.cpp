@@ -171,13 +171,15 @@ TEST(LightsFocus, SphereTracingFallbackAgreesWithTheMarcher) {
     ASSERT_TRUE(marched.has_value());
     const vec3 ro = p.camera.position, rd = p.camera.rayDirection(0.2, -0.1, 1.5);
     const double pixelAngle = p.camera.pixelAngle(600.0);
-    const auto t = sphereTrace(box, ro, rd, 0.0, 10.0, pixelAngle, 0.5, 256);
+    cpu::MarchRule rule;
+    rule.coneAngle = pixelAngle * 0.5;
+    const auto t = traceDistance(box, ro, rd, 0.0, 10.0, rule, 256);
     ASSERT_TRUE(t.has_value());
     EXPECT_NEAR(length(*marched - ro), *t, 0.01);
     EXPECT_LT(box(ro + rd * *t), pixelAngle * *t * 0.5);
     // A ray past the cube, and one stopped short by tEnd, find nothing.
-    EXPECT_FALSE(sphereTrace(box, ro, vec3(0.0, 1.0, 0.0), 0.0, 10.0, pixelAngle, 0.5, 256).has_value());
-    EXPECT_FALSE(sphereTrace(box, ro, vec3(0.0, 0.0, -1.0), 0.0, 2.5, pixelAngle, 0.5, 256).has_value());
+    EXPECT_FALSE(traceDistance(box, ro, vec3(0.0, 1.0, 0.0), 0.0, 10.0, rule, 256).has_value());
+    EXPECT_FALSE(traceDistance(box, ro, vec3(0.0, 0.0, -1.0), 0.0, 2.5, rule, 256).has_value());
 }
 
 TEST(LightsFocus, ClickWithCtrlIsReportedWithItsModifiers) {

@@ -17,17 +17,17 @@
 #include "app/editor/input/fly_speed.hpp"
 #include "app/editor/state/actions.hpp"
 #include "core/animation.hpp"
+#include "test_support.hpp"
 
 namespace fraktal::editor {
 namespace {
 
 namespace fs = std::filesystem;
 
-Preset shipped(const char* name) { return loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / name); }
 
 Document documentFrom(const char* name) {
     Document d;
-    d.preset = shipped(name);
+    d.preset = test::shippedPreset(name);
     return d;
 }
 
@@ -74,7 +74,7 @@ TEST(EditorUndo, ScriptedSequenceUndoesAndRedoesToEveryStateExactly) {
     EXPECT_FALSE(history.undo(doc));
     EXPECT_EQ(fingerprint(doc), states.front());
     // The first state is also structurally the loaded preset (same doubles, same blocks).
-    EXPECT_EQ(doc.preset.formula.structureKey(), shipped("mandelbulb.json").formula.structureKey());
+    EXPECT_EQ(doc.preset.formula.structureKey(), test::shippedPreset("mandelbulb.json").formula.structureKey());
     EXPECT_EQ(doc.preset.formula.nodes[0].values[0].x, 8.0);
 
     for (size_t i = 1; i < states.size(); ++i) {
@@ -171,7 +171,7 @@ TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
 }
 
 TEST(EditorRecompile, ValueEditsKeepTheProgramStructureEditsRecompile) {
-    Formula f = shipped("hybrid_menger_octahedral.json").formula;
+    Formula f = test::shippedPreset("hybrid_menger_octahedral.json").formula;
     ProgramTracker tracker;
     EXPECT_TRUE(tracker.needsRecompile(f)) << "no program yet";
     tracker.compiled(f);
@@ -207,7 +207,7 @@ TEST(EditorRecompile, ValueEditsKeepTheProgramStructureEditsRecompile) {
 }
 
 TEST(EditorFormulaEdits, ParametersAreClampedToTheDeclaredRange) {
-    Formula f = shipped("mandelbulb.json").formula;
+    Formula f = test::shippedPreset("mandelbulb.json").formula;
     const ParamDecl& power = f.nodes[0].block->params[0];
     setParam(f, 0, 0, vec3(1e9, 0, 0));
     EXPECT_EQ(f.nodes[0].values[0].x, power.max);
@@ -255,7 +255,7 @@ TEST(EditorFlySpeed, OutsideTheBoundTheDistanceIsStillALowerBound) {
 
 TEST(EditorFlySpeed, NoFrameStepCrossesTheSurfaceEvenWithALongFrame) {
     // Fly straight at a Menger sponge with absurdly long frames: the eye must never get inside.
-    const Preset menger = shipped("menger.json");
+    const Preset menger = test::shippedPreset("menger.json");
     const Formula& f = menger.formula;
     vec3 eye(0.5, 0.5, 3.0);  // in front of a solid corner column of the sponge
     const vec3 towards(0.0, 0.0, -1.0);
@@ -282,7 +282,7 @@ TEST(EditorCamera, OrbitKeepsTheDistanceAndFlyKeepsTheLookDistance) {
     EXPECT_NEAR(length(cam.position - cam.target), 4.0, 1e-9);
     EXPECT_GT(std::abs(cam.position.x), 0.5);
 
-    const Formula f = shipped("mandelbulb.json").formula;
+    const Formula f = test::shippedPreset("mandelbulb.json").formula;
     const double look = length(cam.target - cam.position);
     CameraInput fly;
     fly.move = vec3(0, 0, 1);

@@ -17,7 +17,6 @@ namespace {
 
 constexpr const char* kPresets[] = {"kleinian.json", "pseudo_kleinian.json"};
 
-Preset shipped(const char* name) { return loadPreset(test::sourceDir() / "presets" / name); }
 
 // Runs `fraktal check` on `p`, written to a temporary file.
 test::CliRun checkPreset(const Preset& p, const std::string& name) {
@@ -37,7 +36,7 @@ test::CliRun checkPreset(const Preset& p, const std::string& name) {
 // the preset's.
 TEST(KleinianPresets, CheckFindsHitsAndTheStepFactorNeverOvershoots) {
     for (const char* name : kPresets) {
-        const Preset p = shipped(name);
+        const Preset p = test::shippedPreset(name);
         EXPECT_FALSE(evaluate(p.formula, p.camera.position).inside) << name << ": the camera is inside the object";
         for (uint64_t seed : {3u, 4u}) {
             ConservativenessOptions o;
@@ -73,7 +72,7 @@ TEST(KleinianPresets, CheckFindsHitsAndTheStepFactorNeverOvershoots) {
 // Without the offset the pseudo-Kleinian's sheets have no inside: the baseline marcher finds no
 // hit, and `fraktal check` says so and fails rather than passing an unmeasured estimate.
 TEST(KleinianPresets, SheetsWithoutAnInsideFailTheCheck) {
-    Preset p = shipped("pseudo_kleinian.json");
+    Preset p = test::shippedPreset("pseudo_kleinian.json");
     Node& estimator = p.formula.estimator;
     ASSERT_EQ(estimator.block->id, "pseudo_kleinian_de");
     estimator.values[size_t(estimator.block->paramIndex("offset"))].x = 0.0;
@@ -91,7 +90,7 @@ TEST(KleinianPresets, SheetsWithoutAnInsideFailTheCheck) {
 // factor a preset may hold makes that safe. The check says so and fails; the editor applies the
 // smallest factor and says the structure has none.
 TEST(KleinianPresets, WrapOutsideItsGroupHasNoSafeStepFactor) {
-    Preset p = shipped("kleinian.json");
+    Preset p = test::shippedPreset("kleinian.json");
     Formula& f = p.formula;
     Node step = Node::make(*findBlock("kleinian"));
     step.values[0].x = 1.92;
@@ -122,7 +121,7 @@ TEST(KleinianPresets, WrapOutsideItsGroupHasNoSafeStepFactor) {
 
 // A camera below the Kleinian's floor sits inside the lower half-space's ball: the check names it.
 TEST(KleinianPresets, CameraInsideTheObjectFailsTheCheck) {
-    Preset p = shipped("kleinian.json");
+    Preset p = test::shippedPreset("kleinian.json");
     p.camera.position.y = -0.5;
     p.camera.target.y = -0.5;
     ASSERT_TRUE(evaluate(p.formula, p.camera.position).inside);
@@ -137,7 +136,7 @@ TEST(KleinianPresets, CameraInsideTheObjectFailsTheCheck) {
 // A bound wholly inside the object: every ray of the check starts inside, so nothing is measured;
 // the check says so and fails rather than calling the empty sample conservative.
 TEST(KleinianPresets, BoundWhollyInsideFailsTheCheck) {
-    Preset p = shipped("kleinian.json");
+    Preset p = test::shippedPreset("kleinian.json");
     p.formula.nodes.clear();
     p.formula.estimator = Node::make(*findBlock("sphere"));
     p.formula.estimator.values[0].x = 50.0;  // radius: the bound (6) lies within it

@@ -12,14 +12,14 @@
 namespace fraktal {
 namespace {
 
-PlanePreset shipped2d(const std::string& name) { return loadPlanePreset(test::sourceDir() / "presets/2d" / name); }
+PlanePreset shippedPlanePreset(const std::string& name) { return loadPlanePreset(test::sourceDir() / "presets/2d" / name); }
 
 const double kSqrt3 = std::sqrt(3.0);
 
 // Sierpinski: the hole removed at depth d (d = 1: the middle triangle) has its centroid at
 // sum_{i=1}^{d-1} v_{a_i} / 2^i for corner choices a_i (each corner step maps z -> 2z - v).
 TEST(PlaneSierpinski, PointsInRemovedTrianglesAreOutsideFromTheirDepthOn) {
-    PlanePreset p = shipped2d("sierpinski_triangle.json");
+    PlanePreset p = shippedPlanePreset("sierpinski_triangle.json");
     const real2 v[3] = {real2(0.0, 1.0), real2(-kSqrt3 / 2, -0.5), real2(kSqrt3 / 2, -0.5)};
     std::mt19937 rng(7);
     for (int depth = 1; depth <= 9; ++depth) {
@@ -61,7 +61,7 @@ double areaInside(const PlaneFormula& f, real2 lo, real2 hi, int n, uint32_t see
 }
 
 TEST(PlaneSierpinski, AreaAtDepthNIsThreeQuartersToTheN) {
-    PlanePreset p = shipped2d("sierpinski_triangle.json");
+    PlanePreset p = shippedPlanePreset("sierpinski_triangle.json");
     const double triangle = 3.0 * kSqrt3 / 4.0;  // circumradius 1
     for (int n : {0, 2, 4}) {
         p.formula.iterations = n;
@@ -73,7 +73,7 @@ TEST(PlaneSierpinski, AreaAtDepthNIsThreeQuartersToTheN) {
 // Koch: the polygon after n bump levels has area A0 (1 + 1/3 sum_{k<n} (4/9)^k) (3 bumps of area
 // A0/9 first, then 4 times as many each 1/9 the size), which converges to 8/5 A0.
 TEST(PlaneKoch, AreaMatchesClosedFormAtEachDepthAndConvergesToEightFifths) {
-    PlanePreset p = shipped2d("koch_snowflake.json");
+    PlanePreset p = shippedPlanePreset("koch_snowflake.json");
     const double a0 = 3.0 * kSqrt3 / 4.0;
     double closedForm = a0;
     for (int n = 0; n <= 7; ++n) {
@@ -97,7 +97,7 @@ TEST(PlaneKoch, AreaMatchesClosedFormAtEachDepthAndConvergesToEightFifths) {
 }
 
 PlaneFormula mandelbrot(int iterations, double bailout) {
-    PlaneFormula f = shipped2d("mandelbrot.json").formula;
+    PlaneFormula f = shippedPlanePreset("mandelbrot.json").formula;
     f.iterations = iterations;
     f.bailout = bailout;
     return f;
@@ -154,7 +154,7 @@ TEST(PlaneMandelbrot, AreaWithinOnePercentOfPublishedValue) {
 }
 
 TEST(PlaneMandelbrot, JuliaModeUsesTheFixedC) {
-    PlaneFormula f = shipped2d("julia.json").formula;
+    PlaneFormula f = shippedPlanePreset("julia.json").formula;
     f.iterations = 500;
     const int power = f.nodes[0].block->paramIndex("julia_x");
     ASSERT_GE(power, 0);
@@ -168,7 +168,7 @@ TEST(PlaneMandelbrot, JuliaModeUsesTheFixedC) {
 TEST(PlaneMandelbrot, MultibrotPowerThreeIsSymmetricUnderThirdTurns) {
     // The Multibrot set of power d has (d - 1)-fold rotational symmetry; for d = 3, half turns:
     // c is in exactly when -c is (the orbit of -c is minus the orbit of c).
-    const PlaneFormula f = shipped2d("multibrot.json").formula;
+    const PlaneFormula f = shippedPlanePreset("multibrot.json").formula;
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> u(-1.3, 1.3);
     int agree = 0, insideCount = 0;

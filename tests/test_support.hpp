@@ -20,6 +20,9 @@ namespace fraktal::test {
 
 inline std::filesystem::path sourceDir() { return FRAKTAL_SOURCE_DIR; }
 
+// A shipped 3D preset by file name ("mandelbulb.json").
+inline Preset shippedPreset(const std::string& name) { return loadPreset(sourceDir() / "presets" / name); }
+
 // Every preset shipped in presets/, by file name.
 inline std::vector<std::filesystem::path> shippedPresets() {
     std::vector<std::filesystem::path> out;

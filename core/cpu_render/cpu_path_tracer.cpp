@@ -104,18 +104,16 @@ struct Tracer {
     const cpu::Scene march;
     double pixelAngle;
 
-    // Plain sphere tracing: the distance to the first point with DE < eps, or kInfinity.
+    // Plain sphere tracing (pathtrace.frag's traceSecondary): the distance to the first point with
+    // DE < eps, or kInfinity.
     double traceSecondary(const vec3& ro, const vec3& rd, double eps, double maxDistance, double& deEvals) const {
         double tStart, tEnd;
         if (!cpu::clipToBound(march, ro, rd, tStart, tEnd)) return kInfinity;
-        tEnd = std::min(tEnd, maxDistance);
-        double t = tStart;
-        for (int i = 0; i < scene.render.maxSteps && t < tEnd; ++i) {
-            const double d = march.de(ro + rd * t, deEvals, eps);
-            if (d < eps) return t;
-            t += d;
-        }
-        return kInfinity;
+        cpu::MarchRule rule;
+        rule.epsilon = eps;
+        const auto at = [this](const vec3& p, double threshold) { return march.sample(p, threshold); };
+        return cpu::traceFirstHit(at, ro, rd, tStart, std::min(tEnd, maxDistance), rule, scene.render.maxSteps, deEvals)
+            .value_or(kInfinity);
     }
 
     vec3 background(const vec3& rd) const {

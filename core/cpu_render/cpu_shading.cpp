@@ -10,11 +10,9 @@ double Scene::de(const vec3& p, double& deEvals, double hitThreshold) const {
     return evaluate(formula, p, hitThreshold).distance;
 }
 
-double Scene::deInside(const vec3& p, bool& inside, double& deEvals, double hitThreshold) const {
-    deEvals += 1.0;
+DistanceSample Scene::sample(const vec3& p, double hitThreshold) const {
     const Evaluation e = evaluate(formula, p, hitThreshold);
-    inside = e.inside;
-    return e.distance;
+    return {e.distance, e.inside};
 }
 
 // Mirror of march.glsl's refineHit (why: there).
@@ -40,89 +38,18 @@ MarchState marchStart(const Scene& scene, double tStart) {
     return s;
 }
 
-// Mirror of march.glsl's recoverOvershoot (why: there).
-constexpr int kRecoverBisections = 12;
-
-void recoverOvershoot(const Scene& scene, const vec3& ro, const vec3& rd, double tOut, double dOut, double tIn,
-                      double pixelAngle, MarchState& s, double& deEvals) {
-    for (int i = 0; i < kRecoverBisections && tIn - tOut > pixelAngle * tOut * scene.params.detail; ++i) {
-        const double tMid = 0.5 * (tOut + tIn);
-        bool inside = false;
-        const double d = scene.deInside(ro + rd * tMid, inside, deEvals);
-        s.steps += 1;
-        if (inside) {
-            tIn = tMid;
-        } else {
-            tOut = tMid;
-            dOut = d;
-        }
-    }
-    s.t = tOut;
-    s.lastD = std::min(dOut, tIn - tOut);
-    s.status = MarchStatus::Hit;
-}
-
-// Mirror of march.glsl's marchSteps for HitRule::InteriorWalls (why: there).
-void marchStepsInteriorWalls(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle,
-                             int maxSteps, MarchState& s, double& deEvals) {
-    for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
-        const double threshold = pixelAngle * s.t * scene.params.detail;
-        deEvals += 1.0;
-        const double d = evaluate(scene.formula, ro + rd * s.t, threshold).distance;
-        s.steps += 1;
-        if (d < threshold || d <= 0.0) {
-            s.lastD = std::max(d, 0.0);
-            s.status = MarchStatus::Hit;
-            break;
-        }
-        if (s.t > tEnd) {
-            s.status = MarchStatus::Escaped;
-            break;
-        }
-        s.lastD = d;
-        s.closest = std::min(s.closest, d / std::max(s.t, 1e-20));
-        s.t += d - 0.8 * threshold;
-    }
-}
-
-void marchSteps(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
-                MarchState& s, double& deEvals) {
-    if (scene.formula.hitRule == HitRule::InteriorWalls)
-        return marchStepsInteriorWalls(scene, ro, rd, tEnd, pixelAngle, maxSteps, s, deEvals);
-    for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
-        bool inside = false;
-        double d = scene.deInside(ro + rd * s.t, inside, deEvals, pixelAngle * s.t * scene.params.detail);
-        s.steps += 1;
-        if (scene.formula.hitRule == HitRule::InsideOnly)
-            d = inside ? 0.0 : std::max(d, 1.01 * pixelAngle * s.t * scene.params.detail);
-        const double previousStep = s.omega * s.lastD;
-        if (s.omega > 1.0 && std::abs(d) + s.lastD < previousStep) {
-            s.t -= previousStep - s.lastD;
-            s.omega = 1.0;
-            continue;
-        }
-        if (inside && s.lastD > 0.0) {
-            recoverOvershoot(scene, ro, rd, s.t - previousStep, s.lastD, s.t, pixelAngle, s, deEvals);
-            break;
-        }
-        if (d <= pixelAngle * s.t * scene.params.detail) {
-            s.lastD = d;
-            s.status = MarchStatus::Hit;
-            break;
-        }
-        if (s.t > tEnd) {
-            s.status = MarchStatus::Escaped;
-            break;
-        }
-        s.lastD = std::abs(d);
-        s.closest = std::min(s.closest, s.lastD / std::max(s.t, 1e-20));
-        s.t += s.omega * d;
-    }
+MarchRule cameraRule(const Scene& scene, double pixelAngle) {
+    MarchRule rule;
+    rule.coneAngle = pixelAngle * scene.params.detail;
+    rule.hitRule = scene.formula.hitRule;
+    rule.recoverOvershoot = true;
+    return rule;
 }
 
 void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,
               MarchState& s, double& deEvals) {
-    marchSteps(scene, ro, rd, tEnd, pixelAngle, maxSteps, s, deEvals);
+    const auto at = [&scene](const vec3& p, double threshold) { return scene.sample(p, threshold); };
+    marchSteps(at, ro, rd, tEnd, cameraRule(scene, pixelAngle), maxSteps, s, deEvals);
     if (s.status == MarchStatus::Hit) refineHit(scene, ro, rd, pixelAngle, s.lastD, s, deEvals);
 }
 

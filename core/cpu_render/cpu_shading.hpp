@@ -2,19 +2,11 @@
 // Change both together.
 #pragma once
 
+#include "core/cpu_render/sphere_trace.hpp"
 #include "core/formula.hpp"
 #include "core/shading_params.hpp"
 
 namespace fraktal::cpu {
-
-enum class MarchStatus { Marching, Hit, Escaped };
-
-struct MarchState {
-    double t = 0.0, lastD = 0.0, omega = 1.0;
-    MarchStatus status = MarchStatus::Marching;
-    int steps = 0;
-    double closest = 1e30;  // the smallest d / t of the points passed (not the hit), as in shaders/march.glsl
-};
 
 struct SurfaceSample {
     vec3 color{0.0}, normal{0.0}, albedo{0.0};
@@ -27,10 +19,15 @@ struct Scene {
     const ShadingParams& params;
     // hitThreshold: the size the caller takes for a hit at p (evaluate() in core/formula.hpp).
     double de(const vec3& p, double& deEvals, double hitThreshold = 0.0) const;
-    // The estimate and the estimator's membership at p (formulaInside in shaders/formula.glsl).
-    // hitThreshold: the marcher's at p (evaluate() in core/formula.hpp), 0 elsewhere.
-    double deInside(const vec3& p, bool& inside, double& deEvals, double hitThreshold = 0.0) const;
+    // The estimate and the estimator's membership at p (formulaInside in shaders/formula.glsl), as
+    // the marcher's distance source (sphere_trace.hpp, which counts the evaluation). hitThreshold:
+    // the marcher's at p (evaluate() in core/formula.hpp), 0 elsewhere.
+    DistanceSample sample(const vec3& p, double hitThreshold) const;
 };
+
+// The camera ray's rule: the hit within the pixel footprint times the detail, the formula's hit
+// rule, and overshoot recovery on the estimator's membership.
+MarchRule cameraRule(const Scene& scene, double pixelAngle);
 
 MarchState marchStart(const Scene& scene, double tStart);
 void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, double pixelAngle, int maxSteps,

@@ -158,22 +158,16 @@ bool fitEstimatorToBlocks(Formula& f) {
 
 std::vector<vec3> probeSurface(const DistanceAt& de, double radius, int rays, int maxSteps) {
     std::vector<vec3> hits;
-    const double epsilon = radius * 1e-4;
+    cpu::MarchRule rule;
+    rule.epsilon = radius * 1e-4;
+    // Far outside, escape-time estimates overshoot (few iterations run): cap the step.
+    rule.maxStep = radius / 16.0;
     for (int i = 0; i < rays; ++i) {
-        const vec3 dir = fibonacciDirection(i, rays);
         // From the sphere straight through the origin and out the far side.
-        double t = 0.0;
-        for (int step = 0; step < maxSteps && t < 2.0 * radius; ++step) {
-            const vec3 p = dir * (radius - t);
-            const double d = de(p);
-            if (!std::isfinite(d)) break;
-            if (d < epsilon) {
-                hits.push_back(p);
-                break;
-            }
-            // Far outside, escape-time estimates overshoot (few iterations run): cap the step.
-            t += std::min(d, radius / 16.0);
-        }
+        const vec3 dir = fibonacciDirection(i, rays);
+        const vec3 ro = dir * radius;
+        if (const std::optional<double> t = traceDistance(de, ro, -dir, 0.0, 2.0 * radius, rule, maxSteps))
+            hits.push_back(ro - dir * *t);
     }
     return hits;
 }

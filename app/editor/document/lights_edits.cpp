@@ -111,20 +111,11 @@ std::optional<vec3> surfaceUnderCursor(const Formula& formula, const Camera& cam
         return ro + rd * s.t;
     }
     // Custom GLSL has no CPU body: the caller's DE (the GPU probe), plainly sphere traced.
-    const std::optional<double> t = sphereTrace(de, ro, rd, tStart, tEnd, pixelAngle, params.detail, render.maxSteps);
+    cpu::MarchRule rule;
+    rule.coneAngle = pixelAngle * params.detail;
+    const std::optional<double> t = traceDistance(de, ro, rd, tStart, tEnd, rule, render.maxSteps);
     if (!t) return std::nullopt;
     return ro + rd * *t;
-}
-
-std::optional<double> sphereTrace(const DistanceAt& de, const vec3& ro, const vec3& rd, double tStart, double tEnd,
-                                  double pixelAngle, double detail, int maxSteps) {
-    double t = tStart;
-    for (int i = 0; i < maxSteps && t <= tEnd; ++i) {
-        const double d = de(ro + rd * t);
-        if (d <= pixelAngle * t * detail) return t;
-        t += d;
-    }
-    return std::nullopt;
 }
 
 }  // namespace fraktal::editor

@@ -62,10 +62,4 @@ std::optional<vec3> surfaceUnderCursor(const Formula& formula, const Camera& cam
                                        const ShadingSettings& shading, const DistanceAt& de, double ndcX, double ndcY,
                                        double aspect, double imageHeight);
 
-// Sphere tracing (Hart 1996) of `de` from ro along unit rd over [tStart, tEnd]: the distance t of
-// the first point closer to the surface than the pixel footprint pixelAngle * t * detail (the
-// marcher's hit test), or none within maxSteps.
-std::optional<double> sphereTrace(const DistanceAt& de, const vec3& ro, const vec3& rd, double tStart, double tEnd,
-                                  double pixelAngle, double detail, int maxSteps);
-
 }  // namespace fraktal::editor
