@@ -177,3 +177,69 @@ TEST(SceneObjects, EditorAddsAndRemovesObjects) {
     EXPECT_FALSE(editor::removeObject(f, kMaxObjects));
     EXPECT_EQ(f.objects.front().block->id, allObjects()[1].id);
 }
+
+namespace {
+// The plane's normal in world space: its frame's z turned by its placement.
+vec3 normalOf(const SceneObject& o) { return glm::transpose(o.localFromWorld()) * vec3(0.0, 0.0, 1.0); }
+}  // namespace
+
+// Add object > Plane under the Menger sponge (its cube spans -1 .. 1 on every axis) makes a floor:
+// the plane faces the camera's up (+y), its surface is just under the cube's bottom face, and the
+// bound reaches far enough for the floor to fill the lower part of the default view, with the
+// AO distance and fog kept the same in world units.
+TEST(SceneObjects, AddedPlaneIsAFloorUnderTheFractal) {
+    Preset p = loadPreset(test::sourceDir() / "presets" / "menger.json");
+    const double bound = p.formula.boundRadius;
+    const double aoWorld = p.shading.aoDistance * bound;
+    p.shading.fogDensity = 0.5;
+    const double fogWorld = p.shading.fogDensity / bound;
+    ASSERT_TRUE(editor::addObject(p, *findObject("plane")));
+    ASSERT_EQ(p.formula.objects.size(), 1u);
+    const SceneObject& floor = p.formula.objects[0];
+    EXPECT_EQ(floor.block->id, "plane");
+    EXPECT_NEAR(length(normalOf(floor) - vec3(0.0, 1.0, 0.0)), 0.0, 1e-12);
+    // Solid below y = -1 - a hair, empty above: the cube stands on it.
+    const double surface = -floor.distanceAt(vec3(0.0));
+    EXPECT_LT(surface, -1.0);
+    EXPECT_GT(surface, -1.0 - 0.01 * bound);
+    EXPECT_LT(floor.distanceAt(vec3(3.0, -1.05, -2.0)), 0.0);
+    EXPECT_GT(floor.distanceAt(vec3(3.0, -0.99, -2.0)), 0.0);
+    // The bound sphere meets the floor in a disc reaching kFloorReach camera distances out.
+    const double reach = std::sqrt(p.formula.boundRadius * p.formula.boundRadius - surface * surface);
+    EXPECT_GE(reach, editor::kFloorReach * length(p.camera.position));
+    EXPECT_LE(p.formula.boundRadius, 100.0);
+    EXPECT_NEAR(p.shading.aoDistance * p.formula.boundRadius, aoWorld, 1e-12);
+    EXPECT_NEAR(p.shading.fogDensity / p.formula.boundRadius, fogWorld, 1e-12);
+
+    // Other kinds are added as they are declared, the bound left alone.
+    Preset q = loadPreset(test::sourceDir() / "presets" / "menger.json");
+    ASSERT_TRUE(editor::addObject(q, *findObject("box")));
+    EXPECT_EQ(q.formula.boundRadius, bound);
+    EXPECT_EQ(q.formula.objects[0].center, vec3(0.0));
+}
+
+// The floor follows the camera's up, and the probe finds the lowest point along it: along z the
+// cube's face at z = -1, along the diagonal of x and y its edge at -sqrt(2). A floor already there
+// is no part of what the next one goes under.
+TEST(SceneObjects, FloorProbeFindsTheLowestPointAlongUp) {
+    Preset p = loadPreset(test::sourceDir() / "presets" / "menger.json");
+    const Formula& f = p.formula;
+    EXPECT_NEAR(*editor::lowestPointAlong(f, vec3(0.0, 1.0, 0.0)), -1.0, 2e-3 * f.boundRadius);
+    EXPECT_NEAR(*editor::lowestPointAlong(f, vec3(0.0, 0.0, 1.0)), -1.0, 2e-3 * f.boundRadius);
+    EXPECT_NEAR(*editor::lowestPointAlong(f, vec3(1.0, 1.0, 0.0)), -std::sqrt(2.0), 3e-3 * f.boundRadius);
+    const SceneObject zFloor = editor::floorPlane(f, vec3(0.0, 0.0, 1.0));
+    EXPECT_NEAR(length(normalOf(zFloor) - vec3(0.0, 0.0, 1.0)), 0.0, 1e-12);
+    const SceneObject downFloor = editor::floorPlane(f, vec3(0.0, 0.0, -1.0));
+    EXPECT_NEAR(length(normalOf(downFloor) - vec3(0.0, 0.0, -1.0)), 0.0, 1e-12);
+    EXPECT_NEAR(downFloor.distanceAt(vec3(0.0)), 1.0, 0.01 * f.boundRadius);
+
+    ASSERT_TRUE(editor::addObject(p, *findObject("plane")));
+    EXPECT_NEAR(*editor::lowestPointAlong(p.formula, vec3(0.0, 1.0, 0.0)), -1.0, 2e-3 * 1.8);
+    // Empty space has no lowest point: a sphere estimator pushed out of its bound.
+    Formula nothing = f;
+    nothing.boundRadius = 0.5;
+    nothing.nodes.clear();
+    nothing.estimator = Node::make(*findBlock("sphere"));
+    nothing.placement.center = vec3(5.0, 0.0, 0.0);
+    EXPECT_FALSE(editor::lowestPointAlong(nothing, vec3(0.0, 1.0, 0.0)));
+}

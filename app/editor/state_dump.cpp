@@ -106,6 +106,8 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
     j["compileError"] = compileError;
     j["viewportSettled"] = viewportSettled;
+    // A structure edit compiles in the background while the last image stays settled on screen.
+    j["viewportCompiling"] = viewport && viewport->compiling;
     // The render mode (ViewSettings::pathTraceAtRest) and what the viewport shows: "path" with its
     // samples per pixel once the view rests in the path-traced mode, else "fast" with 0.
     if (viewport)

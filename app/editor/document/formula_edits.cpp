@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <regex>
 
 #include "core/animation.hpp"
@@ -22,6 +23,98 @@ std::vector<const BlockDesc*> blocksIn(Category category) {
 bool addObject(Formula& f, const ObjectDesc& kind) {
     if (int(f.objects.size()) >= kMaxObjects) return false;
     f.objects.push_back(SceneObject::make(kind));
+    return true;
+}
+
+std::optional<double> lowestPointAlong(const Formula& f, const vec3& up) {
+    if (!f.cpuEvaluable()) return std::nullopt;
+    Formula solid = f;
+    std::erase_if(solid.objects, [](const SceneObject& o) { return o.block && o.block->id == "plane"; });
+    const vec3 u = normalize(up);
+    const vec3 across = normalize(glm::cross(u, std::abs(u.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+    const vec3 along = glm::cross(u, across);
+    const double radius = f.boundRadius, hit = 1e-3 * radius;
+    std::optional<double> lowest;
+    vec2 lowestColumn(0.0);
+    // The column through (a, b) of the bound's disc across `up` (in bound radii), marched up from
+    // the sphere's lower side. It gives up once it climbs above the lowest point found.
+    const auto column = [&](double a, double b) {
+        if (a * a + b * b >= 1.0) return;
+        const double half = radius * std::sqrt(1.0 - a * a - b * b);
+        const vec3 start = radius * (a * across + b * along) - half * u;
+        double t = 0.0;
+        for (int step = 0; step < 256 && t <= 2.0 * half; ++step) {
+            const vec3 at = start + t * u;
+            if (lowest && dot(at, u) >= *lowest) return;
+            const double d = distanceEstimate(solid, at);
+            if (d < hit) {
+                lowest = dot(at, u);
+                lowestColumn = vec2(a, b);
+                return;
+            }
+            t += d;
+        }
+    };
+    // 24 x 24 columns across the disc, then as many again across the cell of the lowest one
+    // and its neighbours, twice, each time a twelfth as far apart: an edge or a tip pointing down
+    // is found to a thousandth of the bound, not to the first grid's spacing.
+    constexpr int kColumns = 24;
+    double spacing = 2.0 / kColumns;
+    for (int i = 0; i < kColumns; ++i)
+        for (int j = 0; j < kColumns; ++j) column((i + 0.5) * spacing - 1.0, (j + 0.5) * spacing - 1.0);
+    for (int round = 0; round < 2 && lowest; ++round) {
+        const vec2 centre = lowestColumn;
+        spacing *= 2.0 / kColumns;
+        for (int i = -kColumns / 2; i < kColumns / 2; ++i)
+            for (int j = -kColumns / 2; j < kColumns / 2; ++j)
+                column(centre.x + (i + 0.5) * spacing, centre.y + (j + 0.5) * spacing);
+    }
+    return lowest;
+}
+
+SceneObject floorPlane(const Formula& f, const vec3& up) {
+    SceneObject floor = SceneObject::make(*findObject("plane"));
+    const vec3 u = length(up) > 0.0 ? normalize(up) : vec3(0.0, 1.0, 0.0);
+    // The plane's normal is its frame's z: turn z onto `up` (about any axis across z when up is -z).
+    const vec3 z(0.0, 0.0, 1.0);
+    const vec3 axis = glm::cross(z, u);
+    if (length(axis) > 1e-9) {
+        floor.axis = normalize(axis);
+        floor.angle = glm::degrees(std::acos(std::clamp(dot(z, u), -1.0, 1.0)));
+    } else if (dot(z, u) < 0.0) {
+        floor.axis = vec3(1.0, 0.0, 0.0);
+        floor.angle = 180.0;
+    }
+    // A thousandth of the bound under the lowest point found (which is itself up to that much
+    // above the surface): the fractal stands on the floor rather than sinking into it.
+    const std::optional<double> lowest = lowestPointAlong(f, u);
+    const double height = lowest ? *lowest - 2e-3 * f.boundRadius : -f.boundRadius;
+    floor.center = height * u;
+    return floor;
+}
+
+void growBoundForFloor(Preset& p, const SceneObject& floor) {
+    Formula& f = p.formula;
+    const double depth = std::abs(floor.distanceAt(vec3(0.0)));
+    const double reach = kFloorReach * std::max(length(p.camera.position), f.boundRadius);
+    // The Formula panel's bound slider ends at 100: stay within what it can show.
+    const double wanted = std::min(std::sqrt(reach * reach + depth * depth), 100.0);
+    if (wanted <= f.boundRadius) return;
+    // Two significant digits up: the panel shows a round number.
+    const double digits = std::pow(10.0, std::floor(std::log10(wanted)) - 1.0);
+    const double bound = std::min(std::ceil(wanted / digits) * digits, 100.0);
+    const double grow = bound / f.boundRadius;
+    f.boundRadius = bound;
+    p.shading.aoDistance = std::max(p.shading.aoDistance / grow, 1e-6);
+    p.shading.fogDensity = std::min(p.shading.fogDensity * grow, 1e3);
+}
+
+bool addObject(Preset& p, const ObjectDesc& kind) {
+    if (kind.id != "plane") return addObject(p.formula, kind);
+    if (int(p.formula.objects.size()) >= kMaxObjects) return false;
+    const SceneObject floor = floorPlane(p.formula, p.camera.up);
+    p.formula.objects.push_back(floor);
+    growBoundForFloor(p, floor);
     return true;
 }
 

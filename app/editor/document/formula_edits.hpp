@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <future>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -41,6 +42,25 @@ bool setEstimator(Preset& p, const BlockDesc& estimator);
 // object `index` removed (false out of range). They carry no animation tracks.
 bool addObject(Formula& f, const ObjectDesc& kind);
 bool removeObject(Formula& f, int index);
+// What the "Add object" menu adds: a plane is a floor (floorPlane, with the bound grown by
+// growBoundForFloor), every other kind is addObject's default object.
+bool addObject(Preset& p, const ObjectDesc& kind);
+// A plane under the fractal: its normal the camera's `up` (the up the editor shows), its surface
+// just below the lowest point of what `f` already holds (lowestPointAlong), or at the bottom of
+// the bound where that cannot be probed.
+SceneObject floorPlane(const Formula& f, const vec3& up);
+// The lowest point of the formula's surface along `up` (the smallest dot(point, up)), marched up
+// in columns across the bound sphere with the CPU estimate; none when the formula has GLSL blocks
+// the CPU cannot run or no column meets the surface. Planes already in `f` are left out: they fill
+// the space below them.
+std::optional<double> lowestPointAlong(const Formula& f, const vec3& up);
+// Every marcher stops at the bound sphere, which cuts a plane down to a disc of the bound's size:
+// under a fractal that fills the view, a coaster rather than a floor. The bound grows until the
+// floor reaches kFloorReach times the camera's distance from the origin (and at least that many
+// bound radii) out from the centre. The AO distance and fog density, measured in bound radii,
+// are scaled back so that the fractal is shaded as before.
+inline constexpr double kFloorReach = 3.0;
+void growBoundForFloor(Preset& p, const SceneObject& floor);
 // Whole fractals combined with the first (Formula::fractals). addFractal appends `source`'s own
 // fractal, joined: its nodes, estimator, iterations, bailout, DE factor and placement; not its
 // objects, the fractals combined with it, its bound or hit rule (the holding formula's apply).

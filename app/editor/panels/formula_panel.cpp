@@ -158,7 +158,7 @@ void objectsSection(EditorState& s) {
     noteWidgetRect(s.layout, "button:Add object");
     if (ImGui::BeginPopup("add_object")) {
         for (const ObjectDesc& kind : allObjects()) {
-            if (ImGui::MenuItem(std::string(kind.label).c_str())) addObject(f, kind);
+            if (ImGui::MenuItem(std::string(kind.label).c_str())) addObject(s.doc.preset, kind);
             noteWidgetRect(s.layout, "menu:Object " + std::string(kind.label));
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(kind.help).c_str());
         }
