@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <thread>
 
 #include "app/editor/document/preset_files.hpp"
@@ -31,6 +32,7 @@
 #include "app/editor/viewport/thumbnails.hpp"
 #include "app/editor/viewport/ui_layer_cache.hpp"
 #include "app/editor/viewport/ui_redraw.hpp"
+#include "app/editor/widgets/param_widgets.hpp"
 
 namespace fraktal::editor {
 
@@ -409,6 +411,7 @@ int runEditor(const EditorOptions& o) {
             takeFrameInput(window, s);
             ImGui::NewFrame();
             s.paramWidgets.clear();
+            std::optional<ReportClamps> reportClamps(std::in_place, s.clampReports);
             handleTimelineShortcuts(s);
             handleShortcuts(s);
             drawMenuBar(s);
@@ -432,6 +435,10 @@ int runEditor(const EditorOptions& o) {
             drawShortcutHelp(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);
             if (s.browser.visible) renderNextThumbnail(thumbnails, s.browser, *s.color);
+            reportClamps.reset();
+            // A typed value the slider brought into its range: said on the next frame's status line.
+            if (const std::optional<ClampNotice> clamped = s.clampReports.take())
+                setStatus(s, clampMessage(*clamped), true);
 
             ImGui::Render();
             int fbW = 0, fbH = 0;

@@ -58,8 +58,8 @@ void drawExportDialog(EditorState& s) {
         o.height = int(s.layout.viewportH);
     }
     ImGui::BeginDisabled(size.width >= 0);
-    edited |= ImGui::DragInt("Width", &o.width, 4.0f, 16, 65536, "%d px", ImGuiSliderFlags_AlwaysClamp);
-    edited |= ImGui::DragInt("Height", &o.height, 4.0f, 16, 65536, "%d px", ImGuiSliderFlags_AlwaysClamp);
+    edited |= dragClamped("Width", &o.width, 1, 4.0f, 16, 65536, "%d px");
+    edited |= dragClamped("Height", &o.height, 1, 4.0f, 16, 65536, "%d px");
     ImGui::EndDisabled();
     if (!plane) {
         int mode = o.pathTraced ? 1 : 0;
@@ -73,8 +73,7 @@ void drawExportDialog(EditorState& s) {
             "path`, the preset's lights, environment map and lens (the viewport's image at rest in its path-traced "
             "mode). It starts as the Render tab's render mode.");
     }
-    edited |= ImGui::DragInt("Samples per pixel", o.pathTraced ? &o.pathSpp : &o.spp, 0.25f, 1, 4096, "%d",
-                             ImGuiSliderFlags_AlwaysClamp);
+    edited |= dragClamped("Samples per pixel", o.pathTraced ? &o.pathSpp : &o.spp, 1, 0.25f, 1, 4096, "%d");
     noteWidgetRect(s.layout, "export:Samples per pixel");
     if (o.pathTraced) {
         edited |= ImGui::Checkbox("Denoise", &o.denoise);

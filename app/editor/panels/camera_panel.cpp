@@ -36,8 +36,7 @@ void drawCameraTab(EditorState& s) {
     const double fovLo = 5.0, fovHi = cam.projection == Projection::Perspective ? 120.0 : 360.0;
     const auto keyValue = [](const vec3& v) { return std::vector<double>{v.x, v.y, v.z}; };
     keyMarker(s, "camera.fovY", {cam.fovY});
-    ImGui::DragScalar("Field of view", ImGuiDataType_Double, &cam.fovY, 0.2f, &fovLo, &fovHi, "%.1f deg",
-                      ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Field of view", &cam.fovY, 1, 0.2f, fovLo, fovHi, "%.1f deg");
     keyMarker(s, "camera.position", keyValue(cam.position));
     ImGui::DragScalarN("Position", ImGuiDataType_Double, &cam.position.x, 3, 0.01f, nullptr, nullptr, "%.3f");
     keyMarker(s, "camera.target", keyValue(cam.target));
@@ -69,8 +68,8 @@ void drawCameraTab(EditorState& s) {
     ImGui::Text("Distance to surface (%s DE): %.4g", s.eyeDistance.onGpu() ? "GPU" : "CPU", d);
     ImGui::Text("Fly speed: %.4g units/s", flySpeed(f, de, cam.position, s.cameraControls.fly));
     const double lo = 0.05, hi = 20.0;
-    ImGui::DragScalar("Speed per distance", ImGuiDataType_Double, &s.cameraControls.fly.speedPerDistance, 0.01f, &lo,
-                      &hi, "%.2f /s", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Speed per distance", &s.cameraControls.fly.speedPerDistance, 1, 0.01f, lo, hi, "%.2f /s",
+                ImGuiSliderFlags_Logarithmic);
 
     sectionHeader("View slots");
     for (int i = 0; i < kViewSlots; ++i) {

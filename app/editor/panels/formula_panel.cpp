@@ -12,6 +12,7 @@
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/timeline/timeline_panel.hpp"
 #include "app/editor/widgets/node_list_widgets.hpp"
+#include "app/editor/widgets/param_widgets.hpp"
 #include "core/safe_step.hpp"
 #include "core/scene/formula_fit.hpp"
 
@@ -55,24 +56,21 @@ void addBlockMenu(EditorState& s) {
     }
 }
 
-void globalSettings(Formula& f, AutoStepFactor& stepFactor) {
+void globalSettings(Formula& f, AutoStepFactor& stepFactor, Layout& layout) {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-    ImGui::DragInt("Iterations", &f.iterations, 0.1f, 1, kMaxIterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Iterations", &f.iterations, 1, 0.1f, 1, kMaxIterations, "%d");
     helpMarker("How many times the node list runs per point. Parameters update live, without a recompile.");
     const double bailLo = 0.1, bailHi = 1e6, boundLo = 0.01, boundHi = 100.0, facLo = kMinStepFactor,
                  facHi = kMaxStepFactor;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-    ImGui::DragScalar("Bailout", ImGuiDataType_Double, &f.bailout, 0.05f, &bailLo, &bailHi, "%.4g",
-                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Bailout", &f.bailout, 1, 0.05f, bailLo, bailHi, "%.4g", ImGuiSliderFlags_Logarithmic);
     helpMarker("The orbit escapes when |p| passes this radius.");
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-    ImGui::DragScalar("Bound radius", ImGuiDataType_Double, &f.boundRadius, 0.01f, &boundLo, &boundHi, "%.3g",
-                      ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Bound radius", &f.boundRadius, 1, 0.01f, boundLo, boundHi, "%.3g");
+    noteWidgetRect(layout, "Bound radius");
     helpMarker("The fractal lies inside this sphere; rays are clipped to it.");
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-    if (ImGui::DragScalar("DE factor", ImGuiDataType_Double, &f.deFactor, 0.005f, &facLo, &facHi, "%.3f",
-                          ImGuiSliderFlags_AlwaysClamp))
-        stepFactor.overridden = true;
+    if (dragClamped("DE factor", &f.deFactor, 1, 0.005f, facLo, facHi, "%.3f")) stepFactor.overridden = true;
     helpMarker(
         "Multiplies the distance estimate. Set from `fraktal check`'s measurement after every structure "
         "change unless set by hand (Render tab).");
@@ -233,13 +231,11 @@ void fractalsSection(EditorState& s) {
                 "join: the union with the fractals before; intersect: only what lies inside this one too; carve: "
                 "this one cut out of them.");
             ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-            ImGui::DragInt("Iterations", &g.iterations, 0.1f, 1, kMaxIterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+            dragClamped("Iterations", &g.iterations, 1, 0.1f, 1, kMaxIterations, "%d");
             ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-            ImGui::DragScalar("Bailout", ImGuiDataType_Double, &g.bailout, 0.05f, &bailLo, &bailHi, "%.4g",
-                              ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+            dragClamped("Bailout", &g.bailout, 1, 0.05f, bailLo, bailHi, "%.4g", ImGuiSliderFlags_Logarithmic);
             ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-            ImGui::DragScalar("DE factor", ImGuiDataType_Double, &g.deFactor, 0.005f, &facLo, &facHi, "%.3f",
-                              ImGuiSliderFlags_AlwaysClamp);
+            dragClamped("DE factor", &g.deFactor, 1, 0.005f, facLo, facHi, "%.3f");
             helpMarker(
                 "Multiplies this fractal's distance estimate alone; the automatic step factor sets the first's.");
             placementWidgets(s, g.placement);
@@ -294,7 +290,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
 
     ImGui::SetNextItemWidth(-1);
     ImGui::InputTextWithHint("##name", "Preset name", &s.doc.preset.name);
-    globalSettings(f, s.stepFactor);
+    globalSettings(f, s.stepFactor, s.layout);
     ImGui::Spacing();
     sectionHeader("Node list");
 

@@ -46,9 +46,7 @@ std::vector<double> keyValue(const vec3& v) { return {v.x, v.y, v.z}; }
 
 bool positionEdit(const char* label, vec3& v) {
     double x[3] = {v.x, v.y, v.z};
-    const double lo = -1e4, hi = 1e4;  // the preset reader's range
-    if (!ImGui::DragScalarN(label, ImGuiDataType_Double, x, 3, 0.01f, &lo, &hi, "%.3f", ImGuiSliderFlags_AlwaysClamp))
-        return false;
+    if (!dragClamped(label, x, 3, 0.01f, -1e4, 1e4, "%.3f")) return false;  // the preset reader's range
     v = vec3(x[0], x[1], x[2]);
     return true;
 }

@@ -53,10 +53,7 @@ void drawPaletteSection(EditorState& s, ShadingSettings& sh) {
         "colour = a + b cos(2 pi (c t + d)), t = offset + scale * dot(weights, trap); trap = the orbit's "
         "closest approach to the planes and the origin (seed 3.3).");
     double w[4] = {sh.trapWeights.x, sh.trapWeights.y, sh.trapWeights.z, sh.trapWeights.w};
-    const double lo = -4.0, hi = 4.0;
-    if (ImGui::DragScalarN("Trap weights", ImGuiDataType_Double, w, 4, 0.005f, &lo, &hi, "%.2f",
-                           ImGuiSliderFlags_AlwaysClamp))
-        sh.trapWeights = vec4(w[0], w[1], w[2], w[3]);
+    if (dragClamped("Trap weights", w, 4, 0.005f, -4.0, 4.0, "%.2f")) sh.trapWeights = vec4(w[0], w[1], w[2], w[3]);
     keyMarker(s, "shading.trapScale", {sh.trapScale});
     dragDouble("Trap scale", sh.trapScale, -20.0, 20.0, 0.01f, "%.3f", nullptr);
     keyMarker(s, "shading.trapOffset", {sh.trapOffset});

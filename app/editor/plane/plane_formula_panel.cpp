@@ -11,6 +11,7 @@
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/state/plane_edits.hpp"
 #include "app/editor/widgets/node_list_widgets.hpp"
+#include "app/editor/widgets/param_widgets.hpp"
 
 namespace fraktal::editor {
 
@@ -34,14 +35,13 @@ void addBlockMenu(EditorState& s) {
 
 void globalSettings(PlaneFormula& f) {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-    ImGui::DragInt("Iterations", &f.iterations, 0.2f, 0, kMaxIterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Iterations", &f.iterations, 1, 0.2f, 0, kMaxIterations, "%d");
     helpMarker(
         "How many times the loop runs per point (the depth of the Sierpinski and Koch tests). Parameters "
         "update live, without a recompile.");
     const double lo = 1e-3, hi = 1e10;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
-    ImGui::DragScalar("Bailout", ImGuiDataType_Double, &f.bailout, 0.05f, &lo, &hi, "%.4g",
-                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Bailout", &f.bailout, 1, 0.05f, lo, hi, "%.4g", ImGuiSliderFlags_Logarithmic);
     helpMarker("The orbit escapes when |z| passes this radius (2 for the Mandelbrot set; larger colours smoothly).");
 }
 

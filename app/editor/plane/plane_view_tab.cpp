@@ -20,8 +20,7 @@ void drawPlaneViewTab(EditorState& s) {
     helpMarker("The plane point at the middle of the image.");
     const double lo = 1e-300, hi = 1e4;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
-    ImGui::DragScalar("Width", ImGuiDataType_Double, &v.width, 0.002f * float(v.width), &lo, &hi, "%.6g",
-                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    dragClamped("Width", &v.width, 1, 0.002f * float(v.width), lo, hi, "%.6g", ImGuiSliderFlags_Logarithmic);
     helpMarker("The width of the image in plane units. With fp64 the set keeps its structure down to about 1e-13.");
     if (ImGui::Button("Reset view (Home)")) resetPlaneView(s);
     ImGui::Text("Zoom %.3gx of the opened view", s.planeHome.width / v.width);

@@ -23,6 +23,7 @@
 #include "app/editor/input/pointer_input.hpp"
 #include "app/editor/state/custom_block_editor.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
+#include "app/editor/widgets/value_clamp.hpp"
 #include "core/color/color_pipeline.hpp"
 
 namespace fraktal::editor {
@@ -165,6 +166,7 @@ struct EditorState {
     InputQueue input;                            // window events not yet handed to a frame, in order
     TimelineState timeline;                      // the animation's current frame, playback, selection
     ParamWidgetsShown paramWidgets;              // the parameter widgets drawn this frame (state file)
+    ClampReports clampReports;                   // values typed outside a slider's range, for the status line
     LightsPanel lights;                          // the Lights tab's selection, typed map path, focus pick
 };
 

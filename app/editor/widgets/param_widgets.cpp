@@ -4,11 +4,38 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string>
+#include <type_traits>
 
 namespace fraktal::editor {
 
 namespace {
+
+// The reports of the ReportClamps alive (null: none; clamps then go unreported).
+ClampReports* gClampReports = nullptr;
+
+template <typename T>
+bool dragClampedOf(const char* label, T* values, int count, float speed, T lo, T hi, const char* format, int flags,
+                   std::string_view name) {
+    constexpr bool integer = std::is_same_v<T, int>;
+    constexpr ImGuiDataType type = integer ? ImGuiDataType_S32 : ImGuiDataType_Double;
+    const ImGuiID id = ImGui::GetID(label);
+    flags &= ~ImGuiSliderFlags_AlwaysClamp;  // clamped below, where the typed value is still known
+    const bool changed = count == 1 ? ImGui::DragScalar(label, type, values, speed, &lo, &hi, format, flags)
+                                    : ImGui::DragScalarN(label, type, values, count, speed, &lo, &hi, format, flags);
+    std::optional<ClampNotice> notice;
+    if (changed) {
+        double v[4];
+        std::copy(values, values + count, v);
+        notice = clampIntoRange(name.empty() ? visibleLabel(label) : name, std::span(v, size_t(count)), double(lo),
+                                double(hi), integer);
+        for (int i = 0; i < count; ++i) values[i] = T(v[i]);
+    }
+    if (gClampReports) gClampReports->drawn(id, std::move(notice), changed, ImGui::IsItemDeactivated());
+    return changed;
+}
 
 std::string defaultText(const ParamDecl& d) {
     if (d.type == ParamType::Toggle) return d.defaultValue.x > 0.5 ? "on" : "off";
@@ -38,6 +65,19 @@ void tooltip(const ParamDecl& d, ParamWidgetsShown* shown) {
 }
 
 }  // namespace
+
+ReportClamps::ReportClamps(ClampReports& reports) : previous_(gClampReports) { gClampReports = &reports; }
+ReportClamps::~ReportClamps() { gClampReports = previous_; }
+
+bool dragClamped(const char* label, double* values, int count, float speed, double lo, double hi, const char* format,
+                 int flags, std::string_view name) {
+    return dragClampedOf(label, values, count, speed, lo, hi, format, flags, name);
+}
+
+bool dragClamped(const char* label, int* values, int count, float speed, int lo, int hi, const char* format, int flags,
+                 std::string_view name) {
+    return dragClampedOf(label, values, count, speed, lo, hi, format, flags, name);
+}
 
 void helpMarker(const char* help) {
     ImGui::SameLine();
@@ -74,7 +114,6 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
     const float resetWidth = ImGui::GetFrameHeight();
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - resetWidth - ImGui::GetStyle().ItemInnerSpacing.x -
                             ImGui::CalcTextSize(name.c_str()).x - ImGui::GetStyle().ItemInnerSpacing.x);
-    const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
     if (d.type == ParamType::Toggle) {
         // One click flips it: the checkbox is active for that frame only, so the editor commits
         // one undo step per click.
@@ -84,10 +123,10 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
             changed = true;
         }
     } else if (d.type == ParamType::Float) {
-        changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &value.x, speed, &lo, &hi, "%.4g", flags);
+        changed = dragClamped("##v", &value.x, 1, speed, lo, hi, "%.4g", 0, name);
     } else {
         double v[3] = {value.x, value.y, value.z};
-        changed = ImGui::DragScalarN("##v", ImGuiDataType_Double, v, 3, speed, &lo, &hi, "%.3g", flags);
+        changed = dragClamped("##v", v, 3, speed, lo, hi, "%.3g", 0, name);
         if (changed) {
             const vec3 next(v[0], v[1], v[2]);
             // A direction may not be zero: refuse the edit that would make it so.

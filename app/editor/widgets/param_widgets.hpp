@@ -5,8 +5,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "app/editor/widgets/value_clamp.hpp"
 #include "core/block.hpp"
 
 namespace fraktal::editor {
@@ -28,8 +30,31 @@ struct ParamWidgetsShown {
 };
 
 // Draws the widget for one parameter; returns whether the value changed this frame. The value
-// is clamped to the declared range; a toggle is 0 or 1. `shown`, when given, records it.
+// is clamped to the declared range (a typed value outside it is reported: dragClamped); a toggle
+// is 0 or 1. `shown`, when given, records it.
 bool paramWidget(const ParamDecl& decl, ParamValue& value, ParamWidgetsShown* shown = nullptr);
+
+// While one is alive, the sliders below send what they clamp to `reports`: the editor opens one
+// around each frame's panels. (ImGui keeps one context per program; so does this.)
+class ReportClamps {
+   public:
+    explicit ReportClamps(ClampReports& reports);
+    ~ReportClamps();
+    ReportClamps(const ReportClamps&) = delete;
+    ReportClamps& operator=(const ReportClamps&) = delete;
+
+   private:
+    ClampReports* previous_;
+};
+
+// ImGui's drag of `count` (1 to 4) doubles or ints over [lo, hi] that clamps a typed value
+// itself and reports it under `name` (by default the label's visible text): with
+// ImGuiSliderFlags_AlwaysClamp ImGui would clamp it silently. `flags` are ImGuiSliderFlags; a drag
+// with the mouse stays within the range as before. Every slider of the editor with a range is one.
+bool dragClamped(const char* label, double* values, int count, float speed, double lo, double hi, const char* format,
+                 int flags = 0, std::string_view name = {});
+bool dragClamped(const char* label, int* values, int count, float speed, int lo, int hi, const char* format,
+                 int flags = 0, std::string_view name = {});
 
 // A "(?)" marker whose tooltip shows `help` (used beside headers and settings).
 void helpMarker(const char* help);

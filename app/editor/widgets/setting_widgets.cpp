@@ -27,8 +27,7 @@ const NamedPalette kPalettes[] = {
 
 bool vec3Drag(const char* label, vec3& v, double lo, double hi) {
     double x[3] = {v.x, v.y, v.z};
-    if (!ImGui::DragScalarN(label, ImGuiDataType_Double, x, 3, 0.005f, &lo, &hi, "%.2f", ImGuiSliderFlags_AlwaysClamp))
-        return false;
+    if (!dragClamped(label, x, 3, 0.005f, lo, hi, "%.2f")) return false;
     v = vec3(x[0], x[1], x[2]);
     return true;
 }
@@ -60,14 +59,13 @@ bool paletteTerms(vec3& a, vec3& b, vec3& c, vec3& d) {
 
 bool dragDouble(const char* label, double& value, double lo, double hi, float speed, const char* format,
                 const char* helpText) {
-    const bool changed =
-        ImGui::DragScalar(label, ImGuiDataType_Double, &value, speed, &lo, &hi, format, ImGuiSliderFlags_AlwaysClamp);
+    const bool changed = dragClamped(label, &value, 1, speed, lo, hi, format);
     help(helpText);
     return changed;
 }
 
 bool dragInt(const char* label, int& value, int lo, int hi, float speed, const char* helpText) {
-    const bool changed = ImGui::DragInt(label, &value, speed, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp);
+    const bool changed = dragClamped(label, &value, 1, speed, lo, hi, "%d");
     help(helpText);
     return changed;
 }
@@ -82,9 +80,7 @@ bool colorEdit(const char* label, vec3& rgb, const char* helpText) {
 
 bool directionEdit(const char* label, vec3& direction, const char* helpText) {
     double v[3] = {direction.x, direction.y, direction.z};
-    const double lo = -1.0, hi = 1.0;
-    bool changed =
-        ImGui::DragScalarN(label, ImGuiDataType_Double, v, 3, 0.01f, &lo, &hi, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    bool changed = dragClamped(label, v, 3, 0.01f, -1.0, 1.0, "%.2f");
     const vec3 next(v[0], v[1], v[2]);
     if (changed && length(next) > 0.0)
         direction = next;
