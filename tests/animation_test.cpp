@@ -262,6 +262,40 @@ TEST(Animation, LightsAndEnvironmentAreKeyable) {
     }
 }
 
+// A rect light's height is keyed like its width: it animates between its keys, a key outside the
+// field's range is refused, and the track survives a save and a load.
+TEST(Animation, ARectLightsHeightIsKeyable) {
+    const char* const lit = R"({
+  "format": "fraktal-preset", "version": 3,
+  "formula": {"nodes": [{"block": "mandelbulb"}, {"block": "escape_log"}]},
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0]},
+  "lights": [{"type": "rect", "position": [0, 3, 0], "normal": [0, -1, 0], "up": [0, 0, 1], "size": 2, "height": 0.5}],
+  "animation": {"lastFrame": 10, "tracks": [
+    {"target": "lights[0].size", "interpolation": "linear", "keys": [{"frame": 0, "value": 2}, {"frame": 10, "value": 4}]},
+    {"target": "lights[0].height", "interpolation": "linear", "keys": [{"frame": 0, "value": 0.5}, {"frame": 10, "value": 1.5}]}
+  ]}
+})";
+    const Preset p = parsePreset(lit, FRAKTAL_SOURCE_DIR "/presets/rect.json");
+    for (double frame : {0.0, 2.5, 5.0, 10.0}) {
+        const Light l = presetAtFrame(p, frame).lighting.lights.at(0);
+        EXPECT_NEAR(l.height, 0.5 + 0.1 * frame, 1e-12) << frame;
+        EXPECT_NEAR(l.size, 2.0 + 0.2 * frame, 1e-12) << frame;
+    }
+    const Preset again = parsePreset(serializePreset(p), FRAKTAL_SOURCE_DIR "/presets/again.json");
+    EXPECT_EQ(again.animation, p.animation);
+    EXPECT_NEAR(presetAtFrame(again, 5.0).lighting.lights.at(0).height, 1.0, 1e-12);
+
+    std::string negative = lit;
+    const std::string lastKey = "\"value\": 1.5";
+    negative.replace(negative.find(lastKey), lastKey.size(), "\"value\": -1.0");
+    try {
+        parsePreset(negative, FRAKTAL_SOURCE_DIR "/presets/rect.json");
+        FAIL() << "a negative height key loaded";
+    } catch (const PresetError& e) {
+        EXPECT_NE(std::string(e.what()).find("animation.tracks[1].keys[1].value"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Animation, BadTracksNameFileFieldAndReason) {
     struct Case {
         const char* track;

@@ -123,6 +123,35 @@ TEST(TimelineEdits, AKeyedValueShowsAsChangedOnlyWhenItDiffers) {
     EXPECT_TRUE(differsFromTrack(o, o.animation.tracks[0], 5, cameraOrientation(turned)));
 }
 
+// A frame shown in the editor carries the keyed lights and environment into the document, as the
+// render of that frame has them: a rect light's height and intensity, the environment's turn.
+TEST(TimelineEdits, AFrameShowsTheKeyedLightsAndEnvironment) {
+    Document d;
+    d.preset = loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / "studio_mandelbulb.json");
+    ASSERT_EQ(d.preset.lighting.lights.at(0).type, LightType::Rect);
+    Animation& a = d.preset.animation;
+    a.lastFrame = 40;
+    ASSERT_TRUE(addKey(a, "lights[0].height", 0, {1.6}));
+    ASSERT_TRUE(addKey(a, "lights[0].height", 40, {3.6}));
+    ASSERT_TRUE(addKey(a, "lights[0].intensity", 0, {3.5}));
+    ASSERT_TRUE(addKey(a, "lights[0].intensity", 40, {7.5}));
+    ASSERT_TRUE(addKey(a, "environment.rotation", 0, {0.0}));
+    ASSERT_TRUE(addKey(a, "environment.rotation", 40, {80.0}));
+    const Lighting before = d.preset.lighting;
+    applyAnimationFrame(d.preset, 20);
+    const Preset expected = presetAtFrame(d.preset, 20);
+    const Light& l = d.preset.lighting.lights[0];
+    EXPECT_NEAR(l.height, 2.6, 1e-9);
+    EXPECT_EQ(l.height, expected.lighting.lights[0].height);
+    EXPECT_NEAR(l.intensity, 5.5, 1e-9);
+    EXPECT_NEAR(d.preset.lighting.environment.rotation, 40.0, 1e-9);
+    // What no track keys stays.
+    EXPECT_EQ(l.size, before.lights[0].size);
+    EXPECT_EQ(l.position, before.lights[0].position);
+    EXPECT_EQ(d.preset.lighting.lights[1], before.lights[1]);
+    EXPECT_EQ(d.preset.lighting.environment.map, before.environment.map);
+}
+
 // A toggle keyed off and on steps, in the document and in the key marker's check: between its keys
 // it is off, and off is no change from the animation.
 TEST(TimelineEdits, AKeyedToggleStepsInTheDocumentAndItsMarker) {

@@ -17,7 +17,8 @@ json lightsJson(const Lighting& l, const LightsPanel& p) {
         lights.push_back({{"type", lightTypeNames(light.type).label},
                           {"enabled", light.enabled},
                           {"intensity", light.intensity},
-                          {"size", light.size}});
+                          {"size", light.size},
+                          {"height", light.height}});
     json widgets = json::object();
     for (const auto& [name, r] : p.widgets) widgets[name] = {r[0], r[1], r[2], r[3]};
     return {{"count", l.lights.size()},

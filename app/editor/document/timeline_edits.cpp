@@ -200,6 +200,9 @@ void applyAnimationFrame(Preset& p, double frame) {
     p.shading = at.shading;
     p.render = at.render;
     p.lighting.lens = at.lighting.lens;
+    // Tracks key the lights' fields, never their number: the lists match.
+    if (at.lighting.lights.size() == p.lighting.lights.size()) p.lighting.lights = at.lighting.lights;
+    p.lighting.environment = at.lighting.environment;
     Formula& f = p.formula;
     f.iterations = at.formula.iterations;
     f.bailout = at.formula.bailout;

@@ -93,8 +93,9 @@ struct PlaybackStep {
 PlaybackStep playbackFrame(const Animation& a, int startFrame, double elapsed, bool loop);
 
 // Writes the animation's values at `frame` into the preset's still fields (formula values,
-// camera, shading, colour settings, lens), leaving the animation and the formula's structure
-// (its blocks) as they are, so the viewport updates uniforms and recompiles nothing.
+// camera, shading, colour settings, lights, environment, lens), leaving the animation and the
+// formula's structure (its blocks) as they are, so the viewport updates uniforms and recompiles
+// nothing.
 void applyAnimationFrame(Preset& p, double frame);
 
 }  // namespace fraktal::editor

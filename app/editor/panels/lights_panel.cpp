@@ -106,7 +106,9 @@ void drawLightSettings(EditorState& s, LightsPanel& p, Light& l, int index) {
     keyMarker(s, target + "size", {l.size});
     dragDouble("Width", l.size, 0.001, 100.0, 0.005f, "%.3f", nullptr);
     recordWithHelp(p, "light.size", nullptr);
-    dragDouble("Height", l.height, 0.001, 100.0, 0.005f, "%.3f", "The extent along Up.");
+    keyMarker(s, target + "height", {l.height});
+    dragDouble("Height", l.height, 0.001, 100.0, 0.005f, "%.3f", nullptr);
+    recordWithHelp(p, "light.height", "The extent along Up.");
     Light edited = l;
     if (directionEdit("Normal", edited.normal, "The side the rectangle emits toward.") ||
         directionEdit("Up", edited.up, "The direction of the height edge (not along the normal).")) {
