@@ -6,6 +6,7 @@ packages=(
   libglfw3-dev libglm-dev libopenexr-dev openexr libopencolorio-dev opencolorio-tools
   libimgui-dev libepoxy-dev libegl-dev libegl1-mesa-dev libgles-dev libgl1-mesa-dri mesa-utils
   nlohmann-json3-dev libcli11-dev libstb-dev libgtest-dev glslang-tools
+  libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libassimp-dev
   xvfb xauth imagemagick
   xdotool jq
   ffmpeg slurm-wlm munge

@@ -1,0 +1,202 @@
+#include "core/mesh/brick_sampler.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace fraktal::mesh {
+
+GridLayout layoutByResolution(const Formula& f, int resolution) {
+    if (resolution < 2) throw std::invalid_argument("resolution " + std::to_string(resolution) + " is under 2 voxels");
+    GridLayout l;
+    l.minCorner = vec3(-f.boundRadius);
+    l.voxel = 2.0 * f.boundRadius / resolution;
+    l.voxelsAcross = resolution;
+    return l;
+}
+
+GridLayout layoutByVoxel(const Formula& f, double voxel) {
+    if (!(voxel > 0.0)) throw std::invalid_argument("voxel size " + std::to_string(voxel) + " is not positive");
+    const double across = std::ceil(2.0 * f.boundRadius / voxel);
+    if (across > 1e7)
+        throw std::invalid_argument("voxel size " + std::to_string(voxel) + " makes over 1e7 voxels across");
+    GridLayout l;
+    l.minCorner = vec3(-f.boundRadius);
+    l.voxel = voxel;
+    l.voxelsAcross = std::max(2, int(across));
+    return l;
+}
+
+void parallelFor(int64_t count, int threads, const std::function<void(int64_t)>& body) {
+    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    threads = int(std::min<int64_t>(threads, std::max<int64_t>(count, 1)));
+    std::atomic<int64_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failureLock;
+    auto work = [&] {
+        try {
+            for (int64_t i; (i = next.fetch_add(1)) < count;) body(i);
+        } catch (...) {
+            std::lock_guard lock(failureLock);
+            if (!failure) failure = std::current_exception();
+            next = count;
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
+double availableMemoryBytes() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    double kib = 0.0;
+    std::string unit;
+    while (meminfo >> key >> kib >> unit)
+        if (key == "MemAvailable:") return kib * 1024.0;
+    return 1e18;  // unknown: refuse nothing
+}
+
+namespace {
+
+std::string gib(double bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
+enum class CellKind : uint8_t { Empty, Surface, UnknownInside };
+
+}  // namespace
+
+BrickPlan planBricks(const Formula& f, const GridLayout& layout, double memoryLimitBytes, int threads) {
+    BrickPlan plan;
+    plan.layout = layout;
+    const int bricks = layout.bricksAcross();
+    int top = 1, levels = 0;
+    while (top < bricks) top *= 2, ++levels;
+    const double margin = layout.background();
+    const bool flagMembership = f.membershipIsFlag();
+
+    // Cells of `size` bricks a side, by their cell coordinate; each level halves the size.
+    std::vector<std::array<int, 3>> cells{{0, 0, 0}};
+    std::vector<CellKind> kinds;
+    for (int size = top, level = 0;; size /= 2, ++level) {
+        // A surface's bricks grow 4x per halving (fractal surfaces, whose dimension is over 2,
+        // grow faster: the count is checked again at each level).
+        const double projected = double(cells.size()) * std::pow(4.0, levels - level) * kBytesPerBrick;
+        if (projected > memoryLimitBytes)
+            throw TooBigError("a " + std::to_string(layout.voxelsAcross) + "^3 lattice (voxel " +
+                              std::to_string(layout.voxel) + ") needs about " + gib(projected) + ", over the " +
+                              gib(memoryLimitBytes) + " available: lower --resolution or raise --voxel");
+        kinds.assign(cells.size(), CellKind::Empty);
+        const double halfDiagonal = 0.5 * std::sqrt(3.0) * size * kBrickSize * layout.voxel;
+        parallelFor(int64_t(cells.size()), threads, [&](int64_t i) {
+            const auto& c = cells[size_t(i)];
+            const vec3 centre =
+                layout.minCorner + (vec3(c[0], c[1], c[2]) + 0.5) * double(size * kBrickSize) * layout.voxel;
+            const Evaluation e = evaluate(f, centre);
+            if (!e.inside) {
+                if (!(e.distance > halfDiagonal + margin)) kinds[size_t(i)] = CellKind::Surface;
+            } else if (flagMembership) {
+                kinds[size_t(i)] = CellKind::UnknownInside;
+            } else if (!(-e.distance > halfDiagonal + margin)) {
+                kinds[size_t(i)] = CellKind::Surface;
+            }
+        });
+        plan.cellsEvaluated += int64_t(cells.size());
+        if (size == 1) break;
+        std::vector<std::array<int, 3>> children;
+        for (size_t i = 0; i < cells.size(); ++i) {
+            if (kinds[i] == CellKind::Empty) continue;
+            for (int dz = 0; dz < 2; ++dz)
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx) {
+                        const std::array<int, 3> child{2 * cells[i][0] + dx, 2 * cells[i][1] + dy,
+                                                       2 * cells[i][2] + dz};
+                        // Children wholly past the lattice's last brick hold no voxel.
+                        if ((child[0] * size / 2) < bricks && (child[1] * size / 2) < bricks &&
+                            (child[2] * size / 2) < bricks)
+                            children.push_back(child);
+                    }
+        }
+        cells = std::move(children);
+    }
+
+    // Bricks whose centre is inside an escape-time set: sampled beside any brick that is not.
+    auto key = [](const std::array<int, 3>& b) {
+        return (uint64_t(uint32_t(b[2])) << 42) | (uint64_t(uint32_t(b[1])) << 21) | uint64_t(uint32_t(b[0]));
+    };
+    std::vector<uint64_t> unknown;
+    for (size_t i = 0; i < cells.size(); ++i)
+        if (kinds[i] == CellKind::UnknownInside) unknown.push_back(key(cells[i]));
+    std::sort(unknown.begin(), unknown.end());
+    auto isUnknown = [&](const std::array<int, 3>& b) {
+        for (int a = 0; a < 3; ++a)
+            if (b[a] < 0 || b[a] >= bricks) return false;
+        return std::binary_search(unknown.begin(), unknown.end(), key(b));
+    };
+    for (size_t i = 0; i < cells.size(); ++i) {
+        bool sample = kinds[i] == CellKind::Surface;
+        if (kinds[i] == CellKind::UnknownInside) {
+            for (int dz = -1; dz <= 1 && !sample; ++dz)
+                for (int dy = -1; dy <= 1 && !sample; ++dy)
+                    for (int dx = -1; dx <= 1 && !sample; ++dx)
+                        sample = !isUnknown({cells[i][0] + dx, cells[i][1] + dy, cells[i][2] + dz});
+        }
+        if (sample) plan.bricks.push_back(cells[i]);
+    }
+    std::sort(plan.bricks.begin(), plan.bricks.end(),
+              [](const auto& a, const auto& b) { return std::tie(a[2], a[1], a[0]) < std::tie(b[2], b[1], b[0]); });
+    const double needed = double(plan.bricks.size()) * kBytesPerBrick;
+    if (needed > memoryLimitBytes)
+        throw TooBigError("a " + std::to_string(layout.voxelsAcross) + "^3 lattice (voxel " +
+                          std::to_string(layout.voxel) + ") needs about " + gib(needed) + " for its " +
+                          std::to_string(plan.bricks.size()) + " surface bricks, over the " + gib(memoryLimitBytes) +
+                          " available: lower --resolution or raise --voxel");
+    return plan;
+}
+
+void sampleBricks(const Formula& f, const BrickPlan& plan, int threads,
+                  const std::function<void(std::vector<SampledBrick>&)>& sink) {
+    const GridLayout& layout = plan.layout;
+    const float background = float(layout.background());
+    const bool flagMembership = f.membershipIsFlag();
+    constexpr size_t kBatch = 2048;
+    std::vector<SampledBrick> batch;
+    for (size_t first = 0; first < plan.bricks.size(); first += kBatch) {
+        batch.resize(std::min(kBatch, plan.bricks.size() - first));
+        parallelFor(int64_t(batch.size()), threads, [&](int64_t i) {
+            SampledBrick& out = batch[size_t(i)];
+            out.brick = plan.bricks[first + size_t(i)];
+            for (int z = 0; z < kBrickSize; ++z)
+                for (int y = 0; y < kBrickSize; ++y)
+                    for (int x = 0; x < kBrickSize; ++x) {
+                        const vec3 p = layout.voxelCentre(out.brick[0] * kBrickSize + x, out.brick[1] * kBrickSize + y,
+                                                          out.brick[2] * kBrickSize + z);
+                        const Evaluation e = evaluate(f, p);
+                        const int v = SampledBrick::index(x, y, z);
+                        if (!e.inside) {
+                            // A NaN estimate (an orbit's 0 / 0) counts as far outside.
+                            out.values[v] = std::isnan(e.distance)
+                                                ? background
+                                                : float(std::clamp(e.distance, 0.0, double(background)));
+                        } else if (flagMembership) {
+                            out.values[v] = -background;
+                        } else {
+                            out.values[v] = -float(std::clamp(-e.distance, 0.0, double(background)));
+                        }
+                    }
+        });
+        sink(batch);
+    }
+}
+
+}  // namespace fraktal::mesh

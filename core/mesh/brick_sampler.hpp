@@ -1,0 +1,92 @@
+// Sparse sampling of a formula's signed distance on a voxel lattice, brick by brick: the distance
+// estimate proves most of space empty (a ball of the estimate's radius about any outside point
+// holds no surface), so only the bricks near the surface are sampled, never the dense grid.
+// No OpenVDB types here: core/mesh/sdf_volume.cpp takes the bricks into an OpenVDB grid.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <vector>
+
+#include "core/formula.hpp"
+#include "core/vec.hpp"
+
+namespace fraktal::mesh {
+
+// A brick is 8 voxels a side: the size of an OpenVDB leaf node (openvdb::FloatTree's LeafNode
+// Log2Dim 3), so that a sampled brick fills exactly one leaf.
+inline constexpr int kBrickSize = 8;
+inline constexpr int kBrickVoxels = kBrickSize * kBrickSize * kBrickSize;
+// The narrow band's half width in voxels: OpenVDB's level-set default (LEVEL_SET_HALF_WIDTH).
+inline constexpr int kBandHalfWidth = 3;
+
+// The voxel lattice over the formula's bound: voxel (i, j, k) has its centre at
+// minCorner + (i + 0.5, j + 0.5, k + 0.5) * voxel, for 0 <= i, j, k < voxelsAcross.
+struct GridLayout {
+    vec3 minCorner{0.0};
+    double voxel = 0.0;
+    int voxelsAcross = 0;
+
+    int bricksAcross() const { return (voxelsAcross + kBrickSize - 1) / kBrickSize; }
+    vec3 voxelCentre(int i, int j, int k) const { return minCorner + (vec3(i, j, k) + 0.5) * voxel; }
+    double background() const { return kBandHalfWidth * voxel; }
+};
+
+// The cube [-boundRadius, boundRadius]^3 cut into `resolution` voxels a side.
+GridLayout layoutByResolution(const Formula& f, int resolution);
+// The same cube in voxels of `voxel` (the last voxel may reach past the bound).
+GridLayout layoutByVoxel(const Formula& f, double voxel);
+
+// A sampled brick: its brick coordinate and the signed distance of its voxels (x fastest),
+// clamped to the band (+-GridLayout::background()). Negative inside, by the estimator's
+// membership (Evaluation::inside). Where membership is a flag (Formula::membershipIsFlag:
+// escape-time estimators), the estimate says nothing of the distance inside: every inside voxel
+// then holds -background, for the grid to correct from its outside neighbours.
+struct SampledBrick {
+    std::array<int, 3> brick{};
+    std::array<float, kBrickVoxels> values{};
+
+    static int index(int x, int y, int z) { return x + kBrickSize * (y + kBrickSize * z); }
+};
+
+// What pruning left to sample.
+struct BrickPlan {
+    GridLayout layout;
+    std::vector<std::array<int, 3>> bricks;  // the bricks to sample, in z, y, x order
+    int64_t cellsEvaluated = 0;              // one estimate per octree cell visited
+};
+
+// Memory the mesh pipeline is expected to use per sampled brick: the grid's leaf, the
+// re-normalised copy and the mesh's share (measured: bench/mesh/README.md).
+inline constexpr double kBytesPerBrick = 24.0 * 1024.0;
+
+// Raised when a lattice would need more memory than `memoryLimitBytes`, with the estimate.
+struct TooBigError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Finds the bricks that may hold surface: an octree over the bricks, each cell's centre
+// estimated once. A cell is empty outside when the estimate exceeds its half-diagonal plus the
+// band (the estimate, deFactor included, is a lower bound of the distance), and full inside when
+// membership is the estimate's sign and its magnitude does the same. An escape-time brick whose
+// centre is inside is sampled when a neighbour (of 26) is not (the surface reaches it from
+// there); an outside pocket wholly inside 3x3x3 inside bricks is missed.
+// Before each level, the bricks the surface will need are projected (4x per halving: a
+// surface's area) and a plan over `memoryLimitBytes` is refused with TooBigError.
+BrickPlan planBricks(const Formula& f, const GridLayout& layout, double memoryLimitBytes, int threads);
+
+// Samples the plan's bricks on `threads` threads (0: all cores), handing them to `sink` in
+// batches on the calling thread (so that the caller stores them as they come, and the samples
+// never all sit in memory twice).
+void sampleBricks(const Formula& f, const BrickPlan& plan, int threads,
+                  const std::function<void(std::vector<SampledBrick>&)>& sink);
+
+// Runs body(i) for i in [0, count) on `threads` threads (0: all cores).
+void parallelFor(int64_t count, int threads, const std::function<void(int64_t)>& body);
+
+// The memory this process may still take: MemAvailable from /proc/meminfo.
+double availableMemoryBytes();
+
+}  // namespace fraktal::mesh
