@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     fraktal::cli::addEncodeCommand(app, action);
     fraktal::cli::addFarmCommand(app, action);
     fraktal::cli::addImportCommand(app, action);
+    fraktal::cli::addMeshCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

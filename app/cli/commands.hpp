@@ -19,5 +19,6 @@ void addMergeCommand(CLI::App& app, Action& action);
 void addEncodeCommand(CLI::App& app, Action& action);
 void addFarmCommand(CLI::App& app, Action& action);
 void addImportCommand(CLI::App& app, Action& action);
+void addMeshCommand(CLI::App& app, Action& action);
 
 }  // namespace fraktal::cli

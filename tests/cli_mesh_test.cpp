@@ -1,0 +1,116 @@
+// `fraktal mesh`: files that reopen and print, animation frames, and bad input refused with a
+// clear error and nothing written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "core/animation.hpp"
+#include "core/mesh/mesh_file.hpp"
+#include "core/mesh/sdf_volume.hpp"
+#include "test_support.hpp"
+
+namespace fraktal {
+namespace {
+
+std::string preset(const std::string& name) { return (test::sourceDir() / "presets" / name).string(); }
+
+std::string bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(CliMesh, StlReopensClosedAndScaledToThePrintSize) {
+    test::Sandbox box("fraktal_cli_mesh_stl_");
+    const test::CliRun run = test::runCli("mesh " + preset("mandelbulb.json") +
+                                          " --resolution 48 --print-size 10cm --threads 2 -o " + box.path("bulb.stl"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const mesh::TriangleMesh m = mesh::readMesh(box.path("bulb.stl"));
+    const mesh::ManifoldReport r = mesh::checkManifold(m);
+    EXPECT_EQ(r.boundaryEdges, 0);
+    EXPECT_EQ(r.overSharedEdges, 0);
+    EXPECT_EQ(r.misorientedEdges, 0);
+    const auto bounds = m.bounds();
+    const vec3 extent = bounds[1] - bounds[0];
+    EXPECT_NEAR(std::max(extent.x, std::max(extent.y, extent.z)), 100.0, 1e-3);
+    EXPECT_GT(m.enclosedVolume(), 0.0);
+    EXPECT_NE(run.output.find("triangles"), std::string::npos) << run.output;
+}
+
+// Known defect: where the bulb's features are under a voxel, volumeToMesh gives distinct vertices
+// the same position; an STL (positions only) welds them into degenerate triangles and pinched
+// vertices (at 48 voxels: 38 and 4). The indexed mesh is manifold (mesh_test.cpp).
+TEST(CliMesh, DISABLED_StlOfSubVoxelFeaturesIsManifoldWhenWelded) {
+    test::Sandbox box("fraktal_cli_mesh_weld_");
+    const test::CliRun run =
+        test::runCli("mesh " + preset("mandelbulb.json") + " --resolution 48 --threads 2 -o " + box.path("bulb.stl"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const mesh::ManifoldReport r = mesh::checkManifold(mesh::readMesh(box.path("bulb.stl")));
+    EXPECT_TRUE(r.manifold()) << r.pinchedVertices << " pinched, " << r.degenerateTriangles << " degenerate";
+}
+
+TEST(CliMesh, VdbReopensAsALevelSet) {
+    test::Sandbox box("fraktal_cli_mesh_vdb_");
+    const test::CliRun run =
+        test::runCli("mesh " + preset("mandelbulb.json") + " --resolution 40 --threads 2 -o " + box.path("bulb.vdb"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const mesh::VdbSummary vdb = mesh::readVdb(box.path("bulb.vdb"));
+    EXPECT_EQ(vdb.grids, 1);
+    EXPECT_EQ(vdb.gridClass, "level set");
+    EXPECT_NEAR(vdb.voxelSize, 3.0 / 40.0, 1e-9);
+    EXPECT_GT(vdb.activeVoxels, 1000);
+    EXPECT_LT(vdb.sample(vec3(0.0)), 0.0) << "the bulb's centre is inside";
+    EXPECT_GT(vdb.sample(vec3(1.45, 1.45, 1.45)), 0.0) << "the bound's corner is outside";
+}
+
+// The mesh of an animation's frame is the mesh of that frame saved as a still.
+TEST(CliMesh, FrameOfAnAnimationEqualsItsStill) {
+    test::Sandbox box("fraktal_cli_mesh_frame_");
+    const std::string animated = preset("mandelbulb_power_morph.json");
+    savePresetFile(box.path("still.json"), presetAtFrame(loadPreset(animated), 150));
+    const std::string options = " --resolution 40 --threads 2 -o ";
+    const test::CliRun frame = test::runCli("mesh " + animated + " --frame 150" + options + box.path("frame.ply"));
+    ASSERT_EQ(frame.exitCode, 0) << frame.output;
+    const test::CliRun still = test::runCli("mesh " + box.path("still.json") + options + box.path("still.ply"));
+    ASSERT_EQ(still.exitCode, 0) << still.output;
+    EXPECT_GT(bytes(box.path("frame.ply")).size(), 1000u);
+    EXPECT_EQ(bytes(box.path("frame.ply")), bytes(box.path("still.ply")));
+    // And it is not frame 0's.
+    const test::CliRun first = test::runCli("mesh " + animated + " --frame 0" + options + box.path("first.ply"));
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    EXPECT_NE(bytes(box.path("first.ply")), bytes(box.path("still.ply")));
+}
+
+struct BadMesh {
+    std::string args;     // after "mesh", with OUT for the sandbox's output path
+    std::string message;  // a part of the error
+};
+
+TEST(CliMesh, BadInputIsRefusedAndLeavesNothing) {
+    test::Sandbox box("fraktal_cli_mesh_bad_");
+    const std::string blocker = box.write("file", "not a folder");
+    const std::vector<BadMesh> cases = {
+        {preset("menger.json") + " --resolution 1000000 -o OUT.ply", "needs about"},
+        {preset("menger.json") + " -o " + blocker + "/x.ply", blocker},
+        {preset("2d/mandelbrot.json") + " -o OUT.ply", "2D preset has no surface"},
+        {preset("menger.json") + " -o OUT.xyz", "unknown output format \".xyz\""},
+        {preset("menger.json") + " --frame 3 -o OUT.ply", "the preset has no animation"},
+        {preset("mandelbulb_power_morph.json") + " --frame 999 -o OUT.ply", "outside the animation's frames 0-239"},
+        {preset("menger.json") + " --print-size 10parsecs -o OUT.ply", "--print-size"},
+        {preset("menger.json") + " --print-size 10cm -o OUT.vdb", "--print-size scales a mesh"},
+        {(test::sourceDir() / "presets" / "missing.json").string() + " -o OUT.ply", "missing.json"},
+    };
+    for (const BadMesh& c : cases) {
+        std::string args = "mesh " + c.args + " --threads 2";
+        const size_t out = args.find("OUT");
+        if (out != std::string::npos) args.replace(out, 3, box.path("out"));
+        const test::CliRun run = test::runCli(args);
+        EXPECT_NE(run.exitCode, 0) << args;
+        EXPECT_NE(run.exitCode, -1) << args << ": crashed";
+        EXPECT_NE(run.output.find(c.message), std::string::npos) << args << "\n" << run.output;
+        EXPECT_EQ(box.fileCount(), 1) << args << ": left a file";
+    }
+}
+
+}  // namespace
+}  // namespace fraktal
