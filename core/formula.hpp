@@ -78,6 +78,11 @@ struct Formula {
     double boundRadius = 4.0;
     // Multiplies the estimate: below 1 makes an overshooting hybrid safe (`fraktal check`).
     double deFactor = 1.0;
+    // The structure deFactor was settled for (stepFactorTag in core/safe_step.hpp): written by
+    // whatever measured it (the editor, `fraktal check --apply`, the import), and kept when the
+    // artist then sets the factor by hand in the editor. Empty or another structure's: never
+    // measured for this one, and the editor measures it when the file opens.
+    std::string deFactorMeasuredFor;
     // Where a ray stops (HitRule).
     HitRule hitRule = HitRule::Surface;
     // Where the fractal sits (the identity unless it is placed among others).

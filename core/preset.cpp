@@ -156,6 +156,7 @@ void parseFractal(FieldReader& r, const CustomBlocks& custom, Formula& f) {
     f.iterations = r.integer("iterations", f.iterations, 0, kMaxIterations);
     f.bailout = r.number("bailout", f.bailout, 1e-3, 1e10);
     f.deFactor = r.number("deFactor", f.deFactor, 1e-3, 2.0);
+    f.deFactorMeasuredFor = r.string("deFactorMeasuredFor", "", 64);
     const json& nodes = r.at("nodes");
     const std::string path = r.child("nodes");
     if (!nodes.is_array()) r.fail("expected an array of nodes, found " + FieldReader::typeName(nodes), "nodes");
@@ -479,6 +480,7 @@ void writeFractal(const Formula& fractal, json& f) {
     if (fractal.iterations != defaults.iterations) f["iterations"] = fractal.iterations;
     if (fractal.bailout != defaults.bailout) f["bailout"] = fractal.bailout;
     if (fractal.deFactor != defaults.deFactor) f["deFactor"] = fractal.deFactor;
+    if (!fractal.deFactorMeasuredFor.empty()) f["deFactorMeasuredFor"] = fractal.deFactorMeasuredFor;
     json nodes = json::array();
     for (const Node& n : fractal.nodes) nodes.push_back(nodeToJson(n));
     if (fractal.estimator.block) nodes.push_back(nodeToJson(fractal.estimator));  // none: a formula being built

@@ -150,15 +150,21 @@ std::string withLastElementInPlace(const std::string& text, const std::string& s
     return *edited;
 }
 
-std::string withNumberInPlace(const std::string& text, const std::string& section, const std::string& key, double value,
-                              const std::string& file) {
+namespace {
+
+// withNumberInPlace and withStringInPlace: `value` a number or a string, written as JSON writes it
+// (numbers in numberText's shortest spelling that reads back the same).
+std::string withScalarInPlace(const std::string& text, const std::string& section, const std::string& key,
+                              const nlohmann::json& value, const std::string& file) {
+    const bool number = value.is_number();
+    const std::string valueText = number ? numberText(value.get<double>()) : value.dump();
     const std::string field = section + "." + key;
     const nlohmann::json original = parsedForEdit(text, field, file);
     if (!original.is_object() || !original.contains(section) || !original[section].is_object())
         throw std::runtime_error(file + ": " + field + " was not written: the file has no " + section + " object");
-    if (original[section].contains(key) && !original[section][key].is_number())
+    if (original[section].contains(key) && original[section][key].is_number() != number)
         throw std::runtime_error(file + ": " + field + " was not written: it holds " +
-                                 original[section][key].type_name() + ", not a number");
+                                 original[section][key].type_name() + ", not a " + (number ? "number" : "string"));
 
     Scanner s{text};
     s.skipSpace();
@@ -170,7 +176,7 @@ std::string withNumberInPlace(const std::string& text, const std::string& sectio
             if (member != key) return false;
             const size_t start = s.at;
             s.skipValue();
-            edited = text.substr(0, start) + numberText(value) + text.substr(s.at);
+            edited = text.substr(0, start) + valueText + text.substr(s.at);
             return true;
         });
         if (!replaced) {
@@ -178,7 +184,7 @@ std::string withNumberInPlace(const std::string& text, const std::string& sectio
             Scanner first{text, open + 1};
             first.skipSpace();
             const std::string lead = text.substr(open + 1, first.at - (open + 1));
-            const std::string member = "\"" + key + "\": " + numberText(value);
+            const std::string member = "\"" + key + "\": " + valueText;
             const bool empty = first.at < text.size() && text[first.at] == '}';
             edited = text.substr(0, open + 1) + (empty ? member : lead + member + (lead.empty() ? ", " : ",")) +
                      text.substr(open + 1);
@@ -190,6 +196,18 @@ std::string withNumberInPlace(const std::string& text, const std::string& sectio
     if (!edited || nlohmann::json::parse(*edited) != expected)
         throw std::runtime_error(file + ": " + field + " could not be edited in place");
     return *edited;
+}
+
+}  // namespace
+
+std::string withNumberInPlace(const std::string& text, const std::string& section, const std::string& key, double value,
+                              const std::string& file) {
+    return withScalarInPlace(text, section, key, value, file);
+}
+
+std::string withStringInPlace(const std::string& text, const std::string& section, const std::string& key,
+                              const std::string& value, const std::string& file) {
+    return withScalarInPlace(text, section, key, value, file);
 }
 
 }  // namespace fraktal

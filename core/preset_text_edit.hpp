@@ -16,6 +16,10 @@ namespace fraktal {
 std::string withNumberInPlace(const std::string& text, const std::string& section, const std::string& key, double value,
                               const std::string& file);
 
+// The same for a string value (the step factor's tag, formula.deFactorMeasuredFor).
+std::string withStringInPlace(const std::string& text, const std::string& section, const std::string& key,
+                              const std::string& value, const std::string& file);
+
 // `text` with the last element of the top-level object's `section`.`key` array replaced by
 // `value`, written on one line (`fraktal check --fit --apply` writing the fitted estimator, which
 // closes formula.nodes). Checked and refused as withNumberInPlace is: the array must exist and

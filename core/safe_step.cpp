@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <functional>
 
 namespace fraktal {
@@ -113,6 +115,17 @@ EstimatorMeasurement measureSafeStep(const Formula& f, const SafeStepRays& rays,
 EstimatorMeasurement measureSafeStep(const Formula& f, const Camera& camera, const SafeStepOptions& options) {
     CpuSampler s(f);
     return measureSafeStep(s, camera, options);
+}
+
+std::string stepFactorTag(const Formula& f) {
+    uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a, 64 bits
+    for (const unsigned char c : f.structureKey()) {
+        hash ^= c;
+        hash *= 0x100000001b3ull;
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
 }
 
 Node linearEstimator() { return Node::make(*findBlock("escape_linear")); }

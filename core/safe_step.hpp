@@ -190,6 +190,13 @@ EstimatorMeasurement measureSafeStep(const Formula& f, const SafeStepRays& rays,
 // The linear estimator r / w.
 Node linearEstimator();
 
+// The tag of a formula's structure that Formula::deFactorMeasuredFor holds once its factor was
+// measured: 16 hex digits of the FNV-1a hash of Formula::structureKey (stable across runs and
+// machines, unlike std::hash).
+std::string stepFactorTag(const Formula& f);
+// Whether f's factor was measured for the structure it has now.
+inline bool stepFactorMeasured(const Formula& f) { return f.deFactorMeasuredFor == stepFactorTag(f); }
+
 // The formula's own estimator and, for escape-time formulas, linear r / w, log and potential, then
 // the gradient twins of those measured (a primitive's too; none after a step that jumps), each
 // measured on the same rays (they share the membership, so the object is the same); best first

@@ -19,6 +19,7 @@
 #include "core/de_check.hpp"
 #include "core/preset.hpp"
 #include "core/preset_text_edit.hpp"
+#include "core/safe_step.hpp"
 #include "test_support.hpp"
 #include "user_stacks.hpp"
 
@@ -176,6 +177,10 @@ TEST(CheckFit, FitApplyWritesTheFittedFormulaAndKeepsTheRestOfTheFile) {
     expected = withNumberInPlace(expected, "formula", "bailout", written.formula.bailout, "twisted.json");
     expected = withNumberInPlace(expected, "formula", "boundRadius", written.formula.boundRadius, "twisted.json");
     expected = withNumberInPlace(expected, "formula", "deFactor", written.formula.deFactor, "twisted.json");
+    // The tag of the structure measured: the editor opens the file as it is, measuring nothing.
+    expected =
+        withStringInPlace(expected, "formula", "deFactorMeasuredFor", stepFactorTag(written.formula), "twisted.json");
+    EXPECT_TRUE(stepFactorMeasured(written.formula));
     EXPECT_EQ(fileText(preset), expected);
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.dir), std::filesystem::directory_iterator{}), 1);
 
@@ -290,6 +295,7 @@ TEST(CheckFit, ApplyWritesTheSafeFactorOfAUselessEstimateAndFails) {
     expected = withNumberInPlace(expected, "formula", "bailout", w.bailout, "x.json");
     expected = withNumberInPlace(expected, "formula", "boundRadius", w.boundRadius, "x.json");
     expected = withNumberInPlace(expected, "formula", "deFactor", w.deFactor, "x.json");
+    expected = withStringInPlace(expected, "formula", "deFactorMeasuredFor", stepFactorTag(w), "x.json");
     EXPECT_EQ(fileText(file), expected);
     EXPECT_EQ(dir.fileCount(), 1);
 }
@@ -324,9 +330,11 @@ TEST(CheckFit, WhenNoFittedEstimatorMeetsTheObjectTheFilesIsKept) {
                               "object)"),
               std::string::npos)
         << fit.output;
-    const double factor = loadPreset(file).formula.deFactor;
+    const Formula written = loadPreset(file).formula;
+    const double factor = written.deFactor;
     EXPECT_LT(factor, 1.0);
-    EXPECT_EQ(fileText(file), withNumberInPlace(text, "formula", "deFactor", factor, "x.json"));
+    EXPECT_EQ(fileText(file), withStringInPlace(withNumberInPlace(text, "formula", "deFactor", factor, "x.json"),
+                                                "formula", "deFactorMeasuredFor", stepFactorTag(written), "x.json"));
     EXPECT_TRUE(freshCheck(file).report.conservative());
 }
 

@@ -685,7 +685,11 @@ TEST(PresetMigration, LegacyPresetsMigrateToTheirCurrentCounterpart) {
                 EXPECT_EQ(old.render, now.render);
                 EXPECT_EQ(old.shading, now.shading);
                 EXPECT_EQ(old.name, now.name);
-                EXPECT_EQ(presetToJson(old), presetToJson(now));
+                // The step factor's tag records a measurement (the editor measures a file without
+                // it when it opens it), which a migration does not make: the one field apart.
+                Preset nowUnmeasured = now;
+                nowUnmeasured.formula.deFactorMeasuredFor.clear();
+                EXPECT_EQ(presetToJson(old), presetToJson(nowUnmeasured));
             }
         }
     }

@@ -21,6 +21,7 @@
 #include "app/editor/document/slow_stack.hpp"
 #include "core/preset.hpp"
 #include "core/scene/formula_fit.hpp"
+#include "test_support.hpp"
 
 using namespace fraktal;
 
@@ -622,6 +623,60 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     ASSERT_TRUE(editor::removeNode(f, 0));
     EXPECT_TRUE(a.update(f, p.camera));
     EXPECT_EQ(f.deFactor, 0.3);
+}
+
+// A file whose factor was never measured for its structure (no tag, or another structure's: a file
+// written by hand, or edited in a text editor since) is measured when the editor opens it, as after
+// a structure change; the measurement tags the formula, so that the saved file opens as it is.
+TEST(SafeStep, EditorMeasuresAnOpenedFileWhoseFactorWasNeverMeasured) {
+    Preset p = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/juliabulb.json");
+    Formula& f = p.formula;
+    ASSERT_TRUE(stepFactorMeasured(f));
+    const double own = f.deFactor;
+    // An artist adds a twist in a text editor: the tag no longer names the structure.
+    ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
+    EXPECT_FALSE(stepFactorMeasured(f));
+    editor::AutoStepFactor a = editor::AutoStepFactor::adopting(f);
+    ASSERT_TRUE(a.update(f, p.camera));
+    if (a.refining()) finishRefining(a, f, p.camera);
+    std::printf("opened untagged: factor %.3f measured (the file held %.3f)\n", f.deFactor, own);
+    EXPECT_EQ(f.deFactor, a.measured);
+    EXPECT_NE(f.deFactor, own);
+    EXPECT_TRUE(stepFactorMeasured(f));
+    EXPECT_LE(checkConservativeness(f, p.camera, {40, 2000, 5}).worstRatio, 1.0);
+    // Saved and opened again: adopted as it is, nothing measured.
+    Formula reopened = parsePreset(presetToJson(p).dump(), "reopened.json").formula;
+    EXPECT_TRUE(stepFactorMeasured(reopened));
+    editor::AutoStepFactor again = editor::AutoStepFactor::adopting(reopened);
+    EXPECT_FALSE(again.update(reopened, p.camera));
+    EXPECT_EQ(reopened.deFactor, f.deFactor);
+}
+
+// Every shipped preset says its factor was settled for the structure it has, so none is measured
+// again when it opens (and none opens changed). A preset whose nodes were edited without measuring
+// fails here: `fraktal check --apply` measures and tags it.
+TEST(SafeStep, EveryShippedPresetCarriesItsStructuresTag) {
+    for (const auto& path : test::shippedPresets()) {
+        const Preset p = loadPreset(path);
+        EXPECT_TRUE(stepFactorMeasured(p.formula))
+            << path << ": formula.deFactorMeasuredFor is \"" << p.formula.deFactorMeasuredFor
+            << "\", its structure's is " << stepFactorTag(p.formula) << " (fraktal check --apply " << path.filename()
+            << ")";
+    }
+}
+
+// The tag is the structure's alone: values, the factor and the camera leave it, a node changes it.
+TEST(SafeStep, TheStepFactorTagFollowsTheStructure) {
+    Preset p = loadPreset(std::string(FRAKTAL_SOURCE_DIR) + "/presets/mandelbulb.json");
+    Formula f = p.formula;
+    const std::string tag = stepFactorTag(f);
+    EXPECT_EQ(tag.size(), 16u);
+    f.deFactor *= 0.5;
+    f.iterations += 1;
+    f.boundRadius *= 2.0;
+    EXPECT_EQ(stepFactorTag(f), tag);
+    ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
+    EXPECT_NE(stepFactorTag(f), tag);
 }
 
 // Where the rays' tail is heavy, the editor applies the settled rounds' factor at once and the

@@ -95,13 +95,20 @@ bool fitToBlocks(Preset& preset, const SafeStepOptions& options) {
     return false;
 }
 
+// The factor and the tag of the structure it was measured for (the editor measures a file whose
+// tag is not its structure's when it opens it).
+std::string withMeasuredFactor(std::string text, const Formula& f, double factor, const std::string& file) {
+    text = withNumberInPlace(text, "formula", "deFactor", factor, file);
+    return withStringInPlace(text, "formula", "deFactorMeasuredFor", stepFactorTag(f), file);
+}
+
 // The fitted formula's estimator, bailout, bound and factor written into the preset file, every
 // other byte as it was.
 std::string withFittedFormula(std::string text, const Formula& f, double factor, const std::string& file) {
     text = withLastElementInPlace(text, "formula", "nodes", nodeToJson(f.estimator), file);
     text = withNumberInPlace(text, "formula", "bailout", f.bailout, file);
     text = withNumberInPlace(text, "formula", "boundRadius", f.boundRadius, file);
-    return withNumberInPlace(text, "formula", "deFactor", factor, file);
+    return withMeasuredFactor(text, f, factor, file);
 }
 
 // The preset as checked: the file's, or its animation's frame `o.frame`.
@@ -398,7 +405,7 @@ int runCheck(const CheckOptions& o) {
                     std::string(fileFormula.estimator.block->id).c_str(), fileFormula.bailout, fileFormula.boundRadius,
                     fileFormula.deFactor);
             } else {
-                writeFileAtomically(o.preset, withNumberInPlace(text, "formula", "deFactor", factor, o.preset));
+                writeFileAtomically(o.preset, withMeasuredFactor(text, f, factor, o.preset));
                 std::printf("applied: formula.deFactor %.3f written to %s (was %.3f)\n", factor, o.preset.c_str(),
                             fileFormula.deFactor);
             }

@@ -64,6 +64,7 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
             result.preset.render.detail =
                 std::clamp(result.preset.render.detail * m.factor / result.preset.formula.deFactor, 1e-3, 100.0);
         result.preset.formula.deFactor = m.factor;
+        if (m.report.samples > 0) result.preset.formula.deFactorMeasuredFor = stepFactorTag(result.preset.formula);
     }
     // A ray keeps the reach of 256 full steps at the factor: a file's low DE_factor that no
     // measurement replaced (an object drawn by its estimate alone, nothing inside it to measure

@@ -367,11 +367,18 @@ void AutoStepFactor::apply(const EstimatorMeasurement& m, Formula& f) {
     worst = m.report.worstRatio;
     speed = noHits || noSafeFactor ? 0.0 : m.speed();
     measured = noHits ? 0.0 : m.factor;
-    if (!overridden && !noHits) f.deFactor = measured;
+    if (!overridden && !noHits) {
+        f.deFactor = measured;
+        f.deFactorMeasuredFor = stepFactorTag(f);
+    }
 }
 
 AutoStepFactor AutoStepFactor::adopting(const Formula& f) {
     AutoStepFactor a;
+    // A factor never measured for this structure (a file written by hand or by another tool, or
+    // edited in a text editor since) is measured as after a structure change: update() finds no
+    // measured key and starts.
+    if (!stepFactorMeasured(f)) return a;
     a.measuredKey = f.structureKey();
     a.remember(true);
     return a;

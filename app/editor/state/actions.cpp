@@ -255,8 +255,11 @@ bool updateDerivedValues(EditorState& s) {
     // state of a committed one, or one brought back by undo / redo, is amended in place.
     const std::string& structure = s.stepFactor.measuredKey;
     const double factor = f.deFactor;
+    const std::string tag = f.deFactorMeasuredFor;
     s.history.amendPresent([&](Document& d) {
-        if (!d.plane && d.preset.formula.structureKey() == structure) d.preset.formula.deFactor = factor;
+        if (d.plane || d.preset.formula.structureKey() != structure) return;
+        d.preset.formula.deFactor = factor;
+        d.preset.formula.deFactorMeasuredFor = tag;
     });
     return true;
 }
