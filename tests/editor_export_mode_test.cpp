@@ -13,7 +13,7 @@
 #include "app/editor/document/export_job.hpp"
 #include "app/editor/document/preset_files.hpp"
 #include "app/editor/state/actions.hpp"
-#include "export_job_support.hpp"
+#include "editor_test_support.hpp"
 
 namespace fraktal::editor {
 namespace {

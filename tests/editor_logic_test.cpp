@@ -17,6 +17,7 @@
 #include "app/editor/input/fly_speed.hpp"
 #include "app/editor/state/actions.hpp"
 #include "core/animation.hpp"
+#include "editor_test_support.hpp"
 #include "test_support.hpp"
 
 namespace fraktal::editor {
@@ -24,12 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
-Document documentFrom(const char* name) {
-    Document d;
-    d.preset = test::shippedPreset(name);
-    return d;
-}
 
 // A scripted sequence of edits of every kind the editor makes.
 std::vector<std::function<void(Document&)>> scriptedEdits() {
@@ -55,7 +50,7 @@ std::vector<std::function<void(Document&)>> scriptedEdits() {
 }
 
 TEST(EditorUndo, ScriptedSequenceUndoesAndRedoesToEveryStateExactly) {
-    Document doc = documentFrom("mandelbulb.json");
+    Document doc = test::documentFrom("mandelbulb.json");
     UndoHistory history;
     history.reset(doc);
     std::vector<std::string> states{fingerprint(doc)};
@@ -88,7 +83,7 @@ TEST(EditorUndo, ScriptedSequenceUndoesAndRedoesToEveryStateExactly) {
 }
 
 TEST(EditorUndo, CameraMovesRecordNoStepAndUndoKeepsTheCamera) {
-    Document doc = documentFrom("mandelbulb.json");
+    Document doc = test::documentFrom("mandelbulb.json");
     UndoHistory history;
     history.reset(doc);
     setParam(doc.preset.formula, 0, 0, vec3(5.5, 0, 0));
@@ -105,7 +100,7 @@ TEST(EditorUndo, CameraMovesRecordNoStepAndUndoKeepsTheCamera) {
 }
 
 TEST(EditorUndo, LabelsSayWhatUndoAndRedoWillDo) {
-    Document doc = documentFrom("mandelbox.json");
+    Document doc = test::documentFrom("mandelbox.json");
     UndoHistory history;
     history.reset(doc);
     addNode(doc.preset.formula, *findBlock("rotate"), 1);
@@ -124,7 +119,7 @@ TEST(EditorUndo, LabelsSayWhatUndoAndRedoWillDo) {
 }
 
 TEST(EditorUndo, NewEditAfterUndoDropsTheRedoBranch) {
-    Document doc = documentFrom("menger.json");
+    Document doc = test::documentFrom("menger.json");
     UndoHistory history;
     history.reset(doc);
     doc.preset.formula.iterations = 3;
@@ -138,7 +133,7 @@ TEST(EditorUndo, NewEditAfterUndoDropsTheRedoBranch) {
 }
 
 TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
-    Document doc = documentFrom("mandelbox.json");
+    Document doc = test::documentFrom("mandelbox.json");
     doc.view.aaCap = 5;
     doc.view.reprojection = false;
     doc.view.maxCarryFrames = 7;

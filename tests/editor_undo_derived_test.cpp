@@ -14,17 +14,12 @@
 #include "app/editor/document/undo_history.hpp"
 #include "app/editor/state/actions.hpp"
 #include "core/scene/formula_fit.hpp"
+#include "editor_test_support.hpp"
 
 namespace fraktal::editor {
 namespace {
 
 namespace fs = std::filesystem;
-
-Document documentFrom(const char* name) {
-    Document d;
-    d.preset = loadPreset(fs::path(FRAKTAL_SOURCE_DIR) / "presets" / name);
-    return d;
-}
 
 // What the editor does when a measurement for the document's structure ends: the factor is
 // written into the document and into the undo history's present state when that state has the
@@ -60,7 +55,7 @@ std::vector<Edit> structureEdits() {
 TEST(UndoDerived, AFactorMeasuredAfterAnEditJoinsTheEditsStep) {
     for (const Edit& edit : structureEdits()) {
         SCOPED_TRACE(edit.label);
-        Document doc = documentFrom(edit.preset);
+        Document doc = test::documentFrom(edit.preset);
         UndoHistory history;
         history.reset(doc);
         const std::string before = fingerprint(doc);
@@ -89,7 +84,7 @@ TEST(UndoDerived, AFactorMeasuredAfterAnEditJoinsTheEditsStep) {
 TEST(UndoDerived, AFactorMeasuredAfterUndoKeepsRedo) {
     for (const Edit& edit : structureEdits()) {
         SCOPED_TRACE(edit.label);
-        Document doc = documentFrom(edit.preset);
+        Document doc = test::documentFrom(edit.preset);
         UndoHistory history;
         history.reset(doc);
         const double own = doc.preset.formula.deFactor;
@@ -114,7 +109,7 @@ TEST(UndoDerived, AFactorMeasuredAfterUndoKeepsRedo) {
 // A measurement for a structure the history has not recorded yet (an edit of the frame, not
 // committed) leaves the present state alone: the factor goes with the edit when it is committed.
 TEST(UndoDerived, AFactorForAnUncommittedEditWaitsForItsCommit) {
-    Document doc = documentFrom("mandelbulb.json");
+    Document doc = test::documentFrom("mandelbulb.json");
     UndoHistory history;
     history.reset(doc);
     const std::string before = fingerprint(doc);
@@ -229,7 +224,7 @@ TEST(UndoDerived, UndoingAValueEditLetsTheMeasurementRunOn) {
 // Labels in the artist's words: the edit where the node list says what it was, else the changed
 // fields as the panels label them; the factor measured with an edit is not named beside it.
 TEST(UndoDerived, LabelsUseThePanelsWords) {
-    const Document bulb = documentFrom("mandelbulb.json");
+    const Document bulb = test::documentFrom("mandelbulb.json");
     auto label = [&](const std::function<void(Document&)>& edit, const Document& from) {
         Document after = from;
         edit(after);
@@ -260,7 +255,7 @@ TEST(UndoDerived, LabelsUseThePanelsWords) {
     EXPECT_EQ(label([](Document& d) { setEstimator(d.preset, *findBlock("escape_log")); }, bulb),
               "change of estimator to " + std::string(findBlock("escape_log")->label));
 
-    const Document box = documentFrom("mandelbox.json");
+    const Document box = test::documentFrom("mandelbox.json");
     const int radius = findBlock("sphere_fold")->paramIndex("min_radius");
     EXPECT_EQ(label([&](Document& d) { setParam(d.preset.formula, 1, radius, vec3(0.3, 0, 0)); }, box),
               "change of min_radius")

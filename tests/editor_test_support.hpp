@@ -1,12 +1,22 @@
-// Helpers shared by the tests of the editor's export job (app/editor/document/export_job.hpp).
+// Helpers shared by the tests of the editor's logic (app/editor): a document from a shipped preset,
+// the export job polled as the frame loop polls it.
 #pragma once
 
 #include <chrono>
 #include <thread>
 
+#include "app/editor/document/document.hpp"
 #include "app/editor/document/export_job.hpp"
+#include "test_support.hpp"
 
 namespace fraktal::test {
+
+// A document holding the shipped 3D preset `name` ("mandelbulb.json").
+inline editor::Document documentFrom(const char* name) {
+    editor::Document d;
+    d.preset = shippedPreset(name);
+    return d;
+}
 
 // Polls like the editor's frame loop does until the job ends; false on timeout.
 inline bool pollUntilEnded(editor::ExportJob& job, double seconds) {
