@@ -37,18 +37,6 @@ TEST(CliMesh, StlReopensClosedAndScaledToThePrintSize) {
     EXPECT_NE(run.output.find("triangles"), std::string::npos) << run.output;
 }
 
-// Known defect: where the bulb's features are under a voxel, volumeToMesh gives distinct vertices
-// the same position; an STL (positions only) welds them into degenerate triangles and pinched
-// vertices (at 48 voxels: 38 and 4). The indexed mesh is manifold (mesh_test.cpp).
-TEST(CliMesh, DISABLED_StlOfSubVoxelFeaturesIsManifoldWhenWelded) {
-    test::Sandbox box("fraktal_cli_mesh_weld_");
-    const test::CliRun run =
-        test::runCli("mesh " + preset("mandelbulb.json") + " --resolution 48 --threads 2 -o " + box.path("bulb.stl"));
-    ASSERT_EQ(run.exitCode, 0) << run.output;
-    const mesh::ManifoldReport r = mesh::checkManifold(mesh::readMesh(box.path("bulb.stl")));
-    EXPECT_TRUE(r.manifold()) << r.pinchedVertices << " pinched, " << r.degenerateTriangles << " degenerate";
-}
-
 TEST(CliMesh, VdbReopensAsALevelSet) {
     test::Sandbox box("fraktal_cli_mesh_vdb_");
     const test::CliRun run =
