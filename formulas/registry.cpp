@@ -56,7 +56,9 @@
 
 namespace fraktal {
 
-namespace {
+// Named, not anonymous: the 2D registry (formulas/plane/registry.cpp) may share a unity build's unit
+// with this file, and its blocks have the same names; each using-directive stays in its own scope.
+namespace block_registry {
 using namespace blocks;
 constexpr std::array kBlocks{
     describe<AbsFold>(),
@@ -154,7 +156,8 @@ constexpr std::array kBlocks{
     describe<HypercomplexJulia>(),
     describe<DifsEstimator>(),
 };
-}  // namespace
+}  // namespace block_registry
+using block_registry::kBlocks;
 
 std::span<const BlockDesc> allBlocks() { return kBlocks; }
 

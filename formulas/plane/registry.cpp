@@ -13,7 +13,10 @@
 
 namespace fraktal {
 
-namespace {
+// A named namespace, not an anonymous one: in a unity build this file may share a unit with the 3D
+// registry, whose blocks have the same names (AbsFold, Rotate, ...), and each using-directive must
+// stay in its own scope.
+namespace plane_registry {
 using namespace plane_blocks;
 constexpr std::array kPlaneBlocks{
     describePlane<LineFold>(),         describePlane<AbsFold>(),
@@ -23,7 +26,8 @@ constexpr std::array kPlaneBlocks{
     describePlane<EscapeEstimator>(),  describePlane<TriangleEstimator>(),
     describePlane<SegmentEstimator>(),
 };
-}  // namespace
+}  // namespace plane_registry
+using plane_registry::kPlaneBlocks;
 
 std::span<const PlaneBlockDesc> allPlaneBlocks() { return kPlaneBlocks; }
 
