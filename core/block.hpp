@@ -35,6 +35,16 @@ struct ParamDecl {
     double max = 1.0;
     std::string_view help;
     bool direction = false;  // a vector used as a direction: must not be zero
+    // The name the editor shows, in an artist's words; empty: the name above with its underscores
+    // as spaces ("box_size": "Box size"). Presets keep using `name`.
+    std::string_view label = {};
+
+    // The same parameter shown as `text`: ParamDecl{...}.labelled("Trace, real part").
+    constexpr ParamDecl labelled(std::string_view text) const {
+        ParamDecl d = *this;
+        d.label = text;
+        return d;
+    }
 };
 
 // An on/off parameter: 0 or 1 (`on`) in x, range 0..1.

@@ -20,7 +20,8 @@ struct AexionEstimator {
     static constexpr Category category = Category::Estimator;
     static constexpr Membership membership = Membership::Distance;
     static constexpr std::array params{
-        ParamDecl{"cadd", ParamType::Float, {-1.3, 0.0, 0.0}, -5.0, 5.0, "Added to each folded coordinate."},
+        ParamDecl{"cadd", ParamType::Float, {-1.3, 0.0, 0.0}, -5.0, 5.0, "Added to each folded coordinate."}.labelled(
+            "Fold offset"),
         ParamDecl{"orbit", ParamType::Float, {12.0, 0.0, 0.0}, 1.0, 1000.0, "Iterations of the orbit."},
         ParamDecl{"escape", ParamType::Float, {10000.0, 0.0, 0.0}, 2.0, 1e7, "Escape radius of the orbit."},
         ParamDecl{"scale",

@@ -18,9 +18,21 @@ struct Kleinian {
     static constexpr std::string_view jump =
         "its map jumps where it wraps x and z into its box and where it turns half above the separation line";
     static constexpr std::array params{
-        ParamDecl{"klein_r", ParamType::Float, {1.94, 0.0, 0.0}, 1.5, 2.1, "Real part a of the generator's trace."},
-        ParamDecl{
-            "klein_i", ParamType::Float, {0.03, 0.0, 0.0}, -0.5, 0.5, "Imaginary part b of the generator's trace."},
+        ParamDecl{"klein_r",
+                  ParamType::Float,
+                  {1.94, 0.0, 0.0},
+                  1.5,
+                  2.1,
+                  "Shapes the circles of the set: near 2 they pack tightly (the real part a of the generator's "
+                  "trace)."}
+            .labelled("Packing"),
+        ParamDecl{"klein_i",
+                  ParamType::Float,
+                  {0.03, 0.0, 0.0},
+                  -0.5,
+                  0.5,
+                  "Leans the set sideways; 0 keeps it symmetric (the imaginary part b of the generator's trace)."}
+            .labelled("Lean"),
         ParamDecl{"box_size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.1, 4.0, "Wrap half-widths in x and z (y unused)."},
         ParamDecl{
             "separation", ParamType::Float, {1.0, 0.0, 0.0}, 0.0, 1.0, "Bend of the separation line (0: straight)."},
@@ -80,9 +92,21 @@ struct JosKleinian {
     static constexpr std::string_view jump =
         "its map jumps where it wraps the point into its box and where it turns half above the separation line";
     static constexpr std::array params{
-        ParamDecl{"klein_r", ParamType::Float, {2.0, 0.0, 0.0}, 1.5, 2.1, "Real part a of the generator's trace."},
-        ParamDecl{
-            "klein_i", ParamType::Float, {0.0, 0.0, 0.0}, -0.5, 0.5, "Imaginary part b of the generator's trace."},
+        ParamDecl{"klein_r",
+                  ParamType::Float,
+                  {2.0, 0.0, 0.0},
+                  1.5,
+                  2.1,
+                  "Shapes the circles of the set: near 2 they pack tightly (the real part a of the generator's "
+                  "trace)."}
+            .labelled("Packing"),
+        ParamDecl{"klein_i",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  -0.5,
+                  0.5,
+                  "Leans the set sideways; 0 keeps it symmetric (the imaginary part b of the generator's trace)."}
+            .labelled("Lean"),
         ParamDecl{"box_size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.1, 4.0, "Wrap sizes s (y's period is a s.y)."},
     };
 
@@ -133,10 +157,17 @@ struct KleinianEstimator {
     static constexpr Category category = Category::Estimator;
     static constexpr Membership membership = Membership::Distance;
     static constexpr std::array params{
-        ParamDecl{
-            "klein_r", ParamType::Float, {1.94, 0.0, 0.0}, 1.5, 2.1, "Strip height a: the kleinian step's klein_r."},
-        ParamDecl{"clamp_y", ParamType::Float, {0.3, 0.0, 0.0}, 0.01, 2.0, "Cap of the distance to the planes."},
-        ParamDecl{"clamp_df", ParamType::Float, {2.0, 0.0, 0.0}, 0.1, 8.0, "Least running derivative divided by."},
+        ParamDecl{"klein_r", ParamType::Float, {1.94, 0.0, 0.0}, 1.5, 2.1, "Strip height: the Kleinian step's Packing."}
+            .labelled("Packing"),
+        ParamDecl{"clamp_y", ParamType::Float, {0.3, 0.0, 0.0}, 0.01, 2.0, "Caps the distance to the planes."}.labelled(
+            "Plane distance cap"),
+        ParamDecl{"clamp_df",
+                  ParamType::Float,
+                  {2.0, 0.0, 0.0},
+                  0.1,
+                  8.0,
+                  "The least the distance is divided by: larger makes the rays step more carefully."}
+            .labelled("Step caution"),
     };
 
     static constexpr std::string_view glsl = R"(

@@ -22,7 +22,7 @@ struct Mandelbulb {
     static constexpr std::string_view id = "mandelbulb";
     static constexpr std::string_view label = "Mandelbulb power";
     static constexpr std::string_view help =
-        "Spherical power v -> v^n (seed convention: theta = acos(y/r), phi = atan2(x, z)).";
+        "Raises each point to a power in spherical coordinates: power 8 makes the classic Mandelbulb.";
     static constexpr Category category = Category::Power;
     static constexpr DerivativeBound derivative = DerivativeBound::Local;
     static constexpr Degree degree{"power"};

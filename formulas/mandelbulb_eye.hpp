@@ -30,7 +30,8 @@ struct MandelbulbEye {
                   1.0,
                   "Per axis, 1 folds the axis to its absolute value before the power (0 leaves it)."},
         ParamDecl{"theta_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the angle from +z."},
-        ParamDecl{"theta2_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the angle from -z."},
+        ParamDecl{"theta2_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the angle from -z."}
+            .labelled("Second theta scale"),
         ParamDecl{"phi_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the azimuth."},
         toggleParam("phi_mirror", false, "The mirrored azimuth is pi - phi rather than atan2(-y, x)."),
         ParamDecl{"abs_after",

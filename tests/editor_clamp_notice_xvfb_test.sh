@@ -79,7 +79,7 @@ wait_for '[.paramWidgets[] | select(.name == "power")] | length' 1
 type_at $(rect_centre "$(q '.paramWidgets[] | select(.name == "power") | .rect')") 1000
 [ "$(q '.document.formula.nodes[0].params.power')" = 32 ] ||
     fail "typing 1000 left the power at $(q '.document.formula.nodes[0].params.power')"
-expect_notice "$out/power.png" "power: 1000 is outside 1 .. 32, set to 32"
+expect_notice "$out/power.png" "Power: 1000 is outside 1 .. 32, set to 32"
 
 # A Scene tab's setting.
 wait_for '.lights.widgets["lens.aperture"] != null' true

@@ -148,7 +148,8 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     // The parameter widgets of the selected node as drawn (window coordinates) and the help text
     // of the parameter tooltip shown, as the widget wrote them this frame.
     json widgets = json::array();
-    for (const auto& w : s.paramWidgets.widgets) widgets.push_back({{"name", w.name}, {"rect", {w.x, w.y, w.w, w.h}}});
+    for (const auto& w : s.paramWidgets.widgets)
+        widgets.push_back({{"name", w.name}, {"label", w.label}, {"rect", {w.x, w.y, w.w, w.h}}});
     j["paramWidgets"] = widgets;
     j["tooltipParam"] = s.paramWidgets.tooltipParam;
     j["tooltip"] = s.paramWidgets.tooltip;

@@ -99,13 +99,22 @@ void sectionHeader(const char* title) {
     ImGui::Separator();
 }
 
-void ParamWidgetsShown::noteLastItem(std::string name) {
+void ParamWidgetsShown::noteLastItem(std::string name, std::string label) {
     const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-    widgets.push_back({std::move(name), at.x, at.y, size.x, size.y});
+    if (label.empty()) label = name;
+    widgets.push_back({std::move(name), std::move(label), at.x, at.y, size.x, size.y});
+}
+
+std::string paramLabel(const ParamDecl& d) {
+    if (!d.label.empty()) return std::string(d.label);
+    std::string label(d.name);
+    std::replace(label.begin(), label.end(), '_', ' ');
+    if (!label.empty() && label[0] >= 'a' && label[0] <= 'z') label[0] = char(label[0] - 'a' + 'A');
+    return label;
 }
 
 bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown) {
-    const std::string name(d.name);
+    const std::string name(d.name), label = paramLabel(d);
     ImGui::PushID(name.c_str());
     bool changed = false;
     const double lo = d.min, hi = d.max;
@@ -113,7 +122,7 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
     const float speed = float(std::max((hi - lo) / 400.0, 1e-6));
     const float resetWidth = ImGui::GetFrameHeight();
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - resetWidth - ImGui::GetStyle().ItemInnerSpacing.x -
-                            ImGui::CalcTextSize(name.c_str()).x - ImGui::GetStyle().ItemInnerSpacing.x);
+                            ImGui::CalcTextSize(label.c_str()).x - ImGui::GetStyle().ItemInnerSpacing.x);
     if (d.type == ParamType::Toggle) {
         // One click flips it: the checkbox is active for that frame only, so the editor commits
         // one undo step per click.
@@ -123,10 +132,10 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
             changed = true;
         }
     } else if (d.type == ParamType::Float) {
-        changed = dragClamped("##v", &value.x, 1, speed, lo, hi, "%.4g", 0, name);
+        changed = dragClamped("##v", &value.x, 1, speed, lo, hi, "%.4g", 0, label);
     } else {
         double v[3] = {value.x, value.y, value.z};
-        changed = dragClamped("##v", v, 3, speed, lo, hi, "%.3g", 0, name);
+        changed = dragClamped("##v", v, 3, speed, lo, hi, "%.3g", 0, label);
         if (changed) {
             const vec3 next(v[0], v[1], v[2]);
             // A direction may not be zero: refuse the edit that would make it so.
@@ -136,7 +145,7 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
                 value = next;
         }
     }
-    if (shown) shown->noteLastItem(name);
+    if (shown) shown->noteLastItem(name, label);
     tooltip(d, shown);
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     const bool isDefault = value == d.defaultValue;
@@ -148,7 +157,7 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Reset to default");
     ImGui::EndDisabled();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::TextUnformatted(name.c_str());
+    ImGui::TextUnformatted(label.c_str());
     tooltip(d, shown);
     ImGui::PopID();
     return changed;

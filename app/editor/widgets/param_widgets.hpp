@@ -18,16 +18,21 @@ namespace fraktal::editor {
 // editor clears it before drawing a frame; the widgets fill it.
 struct ParamWidgetsShown {
     struct Widget {
-        std::string name;
+        std::string name;                  // the parameter's name in presets
+        std::string label;                 // what the widget shows (paramLabel)
         float x = 0, y = 0, w = 0, h = 0;  // the drag or checkbox, in window coordinates
     };
     std::vector<Widget> widgets;
     std::string tooltipParam;  // the parameter whose tooltip is shown (empty: none)
     std::string tooltip;       // its declaration's help text, as the tooltip shows it
     void clear() { *this = {}; }
-    // Records the last ImGui item as `name`.
-    void noteLastItem(std::string name);
+    // Records the last ImGui item as parameter `name` showing `label` (empty: the name).
+    void noteLastItem(std::string name, std::string label = {});
 };
+
+// The name a parameter's widget shows: its declared label, else its name in words ("box_size":
+// "Box size").
+std::string paramLabel(const ParamDecl& decl);
 
 // Draws the widget for one parameter; returns whether the value changed this frame. The value
 // is clamped to the declared range (a typed value outside it is reported: dragClamped); a toggle
