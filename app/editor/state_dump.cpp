@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/editor/widgets/text_fit.hpp"
 #include "core/atomic_file.hpp"
 
 namespace fraktal::editor {
@@ -156,6 +157,12 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["lights"] = lightsJson(s.doc.preset.lighting, s.lights);
     j["exportDialog"] = exportJson(s);
     j["document"] = json::parse(fingerprint(s.doc));
+    // Text cut by the edge of its window, cell or box this frame (widgets/text_fit.hpp): the
+    // layout tests hold it empty at the default window sizes.
+    json clipped = json::array();
+    for (const ClippedText& c : clippedText())
+        clipped.push_back({{"window", c.window}, {"text", c.text}, {"hidden", c.hidden}});
+    j["clippedText"] = clipped;
     // Text the editor shows may hold bytes that are not UTF-8 (a file's name, an error quoting a
     // binary file): they are replaced, never a reason to write no state.
     return j.dump(1, ' ', false, json::error_handler_t::replace);

@@ -4,12 +4,14 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "app/editor/document/document.hpp"
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
+#include "app/editor/widgets/text_fit.hpp"
 
 namespace fraktal::editor {
 
@@ -27,12 +29,17 @@ void drawExportDialog(EditorState& s) {
     ExportJob& job = s.exportJob;
     pollExport(job);
     if (!s.dialogs.exportStill) return;
-    ImGui::SetNextWindowSize(ImVec2(520, 0), ImGuiCond_Appearing);
+    // The dialog sizes itself to what it shows (the log opened, a longer status), its text
+    // wrapped at a fixed width, so that nothing in it is cut or scrolls out of sight.
+    const float width = ImGui::GetFontSize() * 36.0f;
     ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::Begin("Export still", &s.dialogs.exportStill, ImGuiWindowFlags_NoCollapse)) {
+    if (!ImGui::Begin("Export still", &s.dialogs.exportStill,
+                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
         return;
     }
+    ImGui::PushItemWidth(width * 0.55f);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
     ExportOptions& o = job.options;
     const bool running = exportActive(job);
     const bool plane = s.doc.plane.has_value();
@@ -48,6 +55,8 @@ void drawExportDialog(EditorState& s) {
                 o.sizeIndex = i;
             }
         ImGui::EndCombo();
+    } else {
+        checkComboFits("Size", kExportSizes[o.sizeIndex].label);
     }
     const ExportSize& size = kExportSizes[o.sizeIndex];
     if (size.width > 0) {
@@ -63,15 +72,17 @@ void drawExportDialog(EditorState& s) {
     ImGui::EndDisabled();
     if (!plane) {
         int mode = o.pathTraced ? 1 : 0;
-        if (ImGui::Combo("Render mode", &mode, "Fast\0Path traced\0")) {
+        const char* modes[] = {"Fast", "Path traced"};
+        if (ImGui::Combo("Render mode", &mode, modes, IM_ARRAYSIZE(modes))) {
             edited |= o.pathTraced != (mode == 1);
             o.pathTraced = mode == 1;
         }
+        checkComboFits("Render mode", modes[mode]);
         noteWidgetRect(s.layout, "export:Render mode");
         helpMarker(
-            "Fast: the still renderer (the viewport's image while it moves). Path traced: `fraktal render --mode "
-            "path`, the preset's lights, environment map and lens (the viewport's image at rest in its path-traced "
-            "mode). It starts as the Render tab's render mode.");
+            "Fast: the renderer of the moving viewport. Path traced: the scene's lights, environment map and lens, "
+            "as the viewport shows it at rest in its path-traced mode. It starts as the Render tab's render "
+            "mode.");
     }
     edited |= dragClamped("Samples per pixel", o.pathTraced ? &o.pathSpp : &o.spp, 1, 0.25f, 1, 4096, "%d");
     noteWidgetRect(s.layout, "export:Samples per pixel");
@@ -84,21 +95,21 @@ void drawExportDialog(EditorState& s) {
     }
     if (!plane)
         if (const std::string lights = exportLightsText(s.doc.preset.lighting, o.pathTraced); !lights.empty()) {
-            ImGui::PushTextWrapPos(0.0f);
             if (o.pathTraced)
                 ImGui::TextDisabled("%s", lights.c_str());
             else
                 ImGui::TextColored(ImVec4(0.95f, 0.75f, 0.35f, 1), "%s", lights.c_str());
-            ImGui::PopTextWrapPos();
         }
     sectionHeader("Output");
     edited |= ImGui::InputText("File (no extension)", &o.output);
     noteWidgetRect(s.layout, "export:File");
-    ImGui::TextDisabled("OpenEXR (scene-linear, AOVs, the preset embedded) is always written.");
+    ImGui::TextDisabled(
+        "An OpenEXR file is always written: the full range of light, with depth, normals and "
+        "the other passes, and the scene itself, so that the file opens again in the editor.");
     edited |= ImGui::Checkbox("Half float", &o.halfFloat);
     ImGui::SameLine();
     edited |= ImGui::Checkbox("PNG preview", &o.pngPreview);
-    helpMarker("Through the Render tab's OCIO view and exposure, as the viewport shows it.");
+    helpMarker("With the Render tab's view and exposure, as the viewport shows it.");
     ImGui::EndDisabled();
     // A finished job's Done, Failed or Cancelled speaks of its own files, not of the options now.
     if (edited) exportOptionsEdited(job);
@@ -117,7 +128,6 @@ void drawExportDialog(EditorState& s) {
     ImGui::SameLine();
     const double elapsed = running ? s.now - job.startedAt : 0.0;
     const std::string status = exportStatusText(job);
-    ImGui::PushTextWrapPos(0.0f);
     switch (job.status) {
         case ExportStatus::Running:
             if (job.progress >= 0.0) {
@@ -139,13 +149,25 @@ void drawExportDialog(EditorState& s) {
         case ExportStatus::Cancelled:
         case ExportStatus::Idle: ImGui::TextDisabled("%s", status.c_str()); break;
     }
-    ImGui::PopTextWrapPos();
-    if (ImGui::CollapsingHeader("Command and log")) {
-        ImGui::PushTextWrapPos(0.0f);
+    // The command line and the renderer's output, for a bug report or a render farm: wrapped,
+    // in a region as tall as the log up to half the window, then scrolled to its newest line.
+    const bool logOpen = ImGui::CollapsingHeader("Command and log");
+    noteWidgetRect(s.layout, "export:Command and log");
+    if (logOpen) {
         ImGui::TextDisabled("%s", joined(exportCommand("fraktal", "<preset>", o)).c_str());
+        const std::string log = job.log.empty() ? std::string("(nothing yet)") : job.log;
+        const float textHeight = ImGui::CalcTextSize(log.c_str(), nullptr, false, width).y;
+        const float height = std::min(textHeight + ImGui::GetStyle().WindowPadding.y * 2.0f,
+                                      ImGui::GetMainViewport()->WorkSize.y * 0.5f);
+        ImGui::BeginChild("log", ImVec2(width, height), true);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(log.c_str());
         ImGui::PopTextWrapPos();
-        ImGui::InputTextMultiline("##log", &job.log, ImVec2(-1, 140), ImGuiInputTextFlags_ReadOnly);
+        if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);
+        ImGui::EndChild();
     }
+    ImGui::PopTextWrapPos();
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 

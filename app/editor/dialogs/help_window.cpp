@@ -28,33 +28,50 @@ constexpr Shortcut kShortcuts[] = {
     {"Ctrl+click", "Focus the lens on the surface under the cursor (depth of field on in the Lights tab)"},
     {"Right or middle drag", "Pan"},
     {"Wheel", "Zoom towards the target"},
-    {"Space (over the viewport or the timeline)", "Play / pause the animation"},
-    {"Delete (over the timeline)", "Remove the selected key"},
+    {"Space", "Play / pause the animation (cursor over the viewport or the timeline)"},
+    {"Delete", "Remove the selected key (cursor over the timeline)"},
     {"Diamond before a value", "Key it at the current frame (filled: a key here; orange: edited since)"},
-    {"Camera keys (cursor over the viewport, or after a click in it; never while typing):", ""},
-    {"  F", "Frame the object"},
-    {"  V", "Orbit / fly mode"},
-    {"  W A S D, Q E (fly)", "Move; Shift: 4x"},
-    {"  Home", "Reset view"},
-    {"  1..4 / Ctrl+1..4", "Recall / store a view"},
 };
+
+// Over the viewport, or after a click in it; never while typing.
+constexpr Shortcut kCameraKeys[] = {
+    {"F", "Frame the object"},
+    {"V", "Orbit / fly mode"},
+    {"W A S D, Q E (fly)", "Move; Shift: 4x"},
+    {"Home", "Reset view"},
+    {"1..4 / Ctrl+1..4", "Recall / store a view"},
+};
+
+// Two columns, the keys as wide as the widest, the actions wrapped at the window's edge.
+template <size_t N>
+void shortcutTable(const char* id, const Shortcut (&rows)[N]) {
+    if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg)) return;
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+    for (const Shortcut& k : rows) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(k.keys);
+        ImGui::TableNextColumn();
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("%s", k.action);
+        ImGui::PopTextWrapPos();
+    }
+    ImGui::EndTable();
+}
 
 }  // namespace
 
 void drawShortcutHelp(EditorState& s) {
     if (!s.panels.help) return;
-    ImGui::SetNextWindowSize(ImVec2(560, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 40.0f, 0), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Shortcuts", &s.panels.help, ImGuiWindowFlags_NoSavedSettings)) {
-        if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg)) {
-            for (const Shortcut& k : kShortcuts) {
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                ImGui::TextUnformatted(k.keys);
-                ImGui::TableNextColumn();
-                ImGui::TextDisabled("%s", k.action);
-            }
-            ImGui::EndTable();
-        }
+        shortcutTable("shortcuts", kShortcuts);
+        ImGui::Spacing();
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted("Camera keys (cursor over the viewport, or after a click in it; never while typing):");
+        ImGui::PopTextWrapPos();
+        shortcutTable("camera_keys", kCameraKeys);
     }
     ImGui::End();
 }

@@ -9,6 +9,7 @@
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/timeline/timeline_panel.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
+#include "app/editor/widgets/text_fit.hpp"
 #include "core/scene/formula_fit.hpp"
 
 namespace fraktal::editor {
@@ -23,14 +24,15 @@ void drawCameraTab(EditorState& s) {
     ImGui::SameLine();
     ImGui::TextDisabled("(V over the viewport)");
     s.cameraControls.mode = CameraMode(mode);
+    // Every line of text wraps at the panel's edge, and the fields leave their labels room.
     ImGui::PushTextWrapPos(0.0f);
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize("Speed per distance").x + ImGui::GetStyle().ItemInnerSpacing.x));
     if (s.cameraControls.mode == CameraMode::Orbit)
         ImGui::TextDisabled("Left drag: orbit. Right/middle drag: pan. Wheel: zoom.");
     else
         ImGui::TextDisabled(
             "W/A/S/D: move, Q/E: down/up, left drag: look, Shift: 4x. "
             "Speed follows the distance to the surface.");
-    ImGui::PopTextWrapPos();
 
     // A pinhole up to 120 degrees (wider stretches the edges); the wide projections to the whole sphere.
     const double fovLo = 5.0, fovHi = cam.projection == Projection::Perspective ? 120.0 : 360.0;
@@ -45,17 +47,20 @@ void drawCameraTab(EditorState& s) {
     ImGui::TextDisabled("Orientation (a key never flips)");
     if (ImGui::Button("Reset view")) cam = defaultViewFor(f, cam);
     noteWidgetRect(s.layout, "button:Reset view");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Shortcut: Home");
+    // On the same line, so that the rows below keep their places; the combo takes what its label
+    // and help marker leave.
     ImGui::SameLine();
-    ImGui::TextDisabled("(Home)");
-    // On the same line, so that the rows below keep their places.
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Projection").x -
+                            ImGui::CalcTextSize("(?)").x - style.ItemInnerSpacing.x - style.ItemSpacing.x);
     int projection = int(cam.projection);
     const char* projections[] = {"Perspective", "Fish eye", "Equirectangular"};
     if (ImGui::Combo("Projection", &projection, projections, IM_ARRAYSIZE(projections))) {
         cam.projection = Projection(projection);
         if (cam.projection == Projection::Perspective) cam.fovY = std::min(cam.fovY, 120.0);
     }
+    checkComboFits("Projection", projections[projection]);
     noteWidgetRect(s.layout, "combo:Projection");
     helpMarker(
         "Perspective: a pinhole. Fish eye: the angle from the centre grows with the distance from it (a dome "
@@ -65,7 +70,7 @@ void drawCameraTab(EditorState& s) {
     sectionHeader("Fly speed");
     const DistanceAt de = s.eyeDistance.of(f);
     const double d = safeDistance(f, de, cam.position);
-    ImGui::Text("Distance to surface (%s DE): %.4g", s.eyeDistance.onGpu() ? "GPU" : "CPU", d);
+    ImGui::Text("Distance to the surface: %.4g", d);
     ImGui::Text("Fly speed: %.4g units/s", flySpeed(f, de, cam.position, s.cameraControls.fly));
     const double lo = 0.05, hi = 20.0;
     dragClamped("Speed per distance", &s.cameraControls.fly.speedPerDistance, 1, 0.01f, lo, hi, "%.2f /s",
@@ -90,6 +95,8 @@ void drawCameraTab(EditorState& s) {
         ImGui::EndDisabled();
         ImGui::PopID();
     }
+    ImGui::PopItemWidth();
+    ImGui::PopTextWrapPos();
 }
 
 }  // namespace fraktal::editor

@@ -72,8 +72,8 @@ void globalSettings(Formula& f, AutoStepFactor& stepFactor, Layout& layout) {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
     if (dragClamped("DE factor", &f.deFactor, 1, 0.005f, facLo, facHi, "%.3f")) stepFactor.overridden = true;
     helpMarker(
-        "Multiplies the distance estimate. Set from `fraktal check`'s measurement after every structure "
-        "change unless set by hand (Render tab).");
+        "How far a ray steps towards the surface: smaller is safer (no specks or holes) and slower. Measured "
+        "after every change of the nodes, unless set by hand (Render tab, Step size).");
 }
 
 // A slow stack explains itself (SlowStackAdvice): what keeps the estimate loose, and the faster

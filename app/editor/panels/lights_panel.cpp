@@ -219,9 +219,9 @@ void drawEnvironment(EditorState& s, LightsPanel& p) {
         return;
     }
     keyMarker(s, "environment.intensity", {e.intensity});
-    dragDouble("Env. intensity", e.intensity, 0.0, 1e6, 0.01f, "%.3f", "Multiplies the map's radiance.");
+    dragDouble("Map intensity", e.intensity, 0.0, 1e6, 0.01f, "%.3f", "How brightly the map lights the scene.");
     keyMarker(s, "environment.rotation", {e.rotation});
-    dragDouble("Rotation", e.rotation, -360.0, 360.0, 0.5f, "%.1f deg", "About +y.");
+    dragDouble("Rotation", e.rotation, -360.0, 360.0, 0.5f, "%.1f deg", "Turns the map about the vertical axis.");
     ImGui::Checkbox("Visible as background", &e.visible);
     helpMarker("Off: the map lights the scene but camera rays see the Shading tab's background.");
     ImGui::TextDisabled("Colour space: %s", e.colorSpace.c_str());
@@ -235,7 +235,7 @@ void drawLens(EditorState& s, LightsPanel& p) {
     const Camera& cam = s.doc.preset.camera;
     if (!lens.enabled()) {
         p.pickFocus = false;
-        ImGui::TextDisabled("DOF off. A radius above 0 gives depth of field.");
+        ImGui::TextDisabled("No depth of field: a radius above 0 gives it.");
         return;
     }
     dragDouble("Focus distance", lens.focusDistance, 0.0, 1e5, 0.01f, "%.3f", nullptr);
@@ -248,16 +248,16 @@ void drawLens(EditorState& s, LightsPanel& p) {
     if (ImGui::Combo("Blades", &blades, kBlades, int(std::size(kBlades)))) lens.blades = blades == 0 ? 0 : blades + 2;
     if (ImGui::Button(p.pickFocus ? "Click the object..." : "Pick focus")) p.pickFocus = !p.pickFocus;
     record(p, "lens.pickFocus");
-    ImGui::SameLine();
-    ImGui::TextDisabled(p.pickFocus ? "(click again to cancel)" : "(or Ctrl+click the viewport)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip(p.pickFocus ? "Click again to cancel" : "Or Ctrl+click the viewport");
 }
 
 void drawPathTrace(LightsPanel& p, PathTraceSettings& t) {
     sectionHeader("Path tracer");
     dragInt("Bounces", t.bounces, 0, 16, 0.05f, nullptr);
     recordWithHelp(p, "pathTrace.bounces", "Surface interactions after the first hit.");
-    dragDouble("Roughness", t.roughness, 0.02, 1.0, 0.002f, "%.3f", "GGX roughness of the glossy lobe.");
-    dragDouble("Specular", t.specular, 0.0, 1.0, 0.002f, "%.3f", "Reflectance at normal incidence (Fresnel F0).");
+    dragDouble("Roughness", t.roughness, 0.02, 1.0, 0.002f, "%.3f",
+               "How blurred the glossy reflections are: low is mirror-like, 1 is matte.");
+    dragDouble("Specular", t.specular, 0.0, 1.0, 0.002f, "%.3f", "How much light the surface reflects seen face on.");
     dragDouble("Emission", t.emission, 0.0, 1e4, 0.01f, "%.3f", "The surface colour glows with this factor.");
 }
 
@@ -278,14 +278,17 @@ void drawLightsTab(EditorState& s) {
     p.widgets.clear();
     Lighting& lighting = s.doc.preset.lighting;
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("What `fraktal render --mode path` renders; the viewport lights with the Shading tab.");
-    ImGui::PopTextWrapPos();
+    ImGui::TextDisabled(
+        "The lights of path-traced images: the export's Path traced mode and the viewport's Path traced at rest "
+        "(Render tab). The fast viewport is lit by the Shading tab.");
+    // Every line of text below wraps at the panel's edge too.
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     drawLightList(s, lighting, p);
     drawEnvironment(s, p);
     drawLens(s, p);
     drawPathTrace(p, lighting.pathTrace);
     ImGui::PopItemWidth();
+    ImGui::PopTextWrapPos();
     if (!p.message.empty()) {
         ImGui::Spacing();
         ImGui::PushTextWrapPos(0.0f);

@@ -29,6 +29,12 @@ void scan(PresetBrowser& b) {
     b.scanned = true;
 }
 
+// The thumbnails' region where it shows (inside its child window, before any thumbnail).
+void noteThumbnails(Layout& layout) {
+    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    layout.widgetRects["child:Presets thumbnails"] = {at.x, at.y, size.x, size.y};
+}
+
 }  // namespace
 
 void drawPresetsTab(EditorState& s) {
@@ -47,8 +53,13 @@ void drawPresetsTab(EditorState& s) {
     if (ImGui::SmallButton("Rescan")) scan(b);
     ImGui::SameLine();
     ImGui::TextDisabled("%zu presets", b.entries.size());
+    ImGui::PushTextWrapPos(0.0f);
     for (const fs::path& folder : b.folders) ImGui::TextDisabled("%s", folder.string().c_str());
+    ImGui::PopTextWrapPos();
 
+    // The thumbnails scroll in their own region under the tab bar, which stays in place.
+    ImGui::BeginChild("thumbnails", ImVec2(0, 0));
+    noteThumbnails(s.layout);
     const float thumbW = 136.0f, thumbH = 85.0f;
     const int columns =
         std::max(1, int(ImGui::GetContentRegionAvail().x / (thumbW + ImGui::GetStyle().ItemSpacing.x + 8)));
@@ -71,6 +82,7 @@ void drawPresetsTab(EditorState& s) {
         ImGui::TextUnformatted(t.name.c_str());
         ImGui::PopTextWrapPos();
         ImGui::EndGroup();
+        if (i == 0) noteWidgetRect(s.layout, "thumbnail:1");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\nClick to open", t.file.string().c_str());
         if (clicked) requestAction(s, {PendingKind::Open, t.file});
         ImGui::PopID();
@@ -79,6 +91,7 @@ void drawPresetsTab(EditorState& s) {
         else
             column = 0;
     }
+    ImGui::EndChild();
 }
 
 }  // namespace fraktal::editor

@@ -1,7 +1,7 @@
 // The Render tab: the viewport's budget (the document's ViewSettings), the march settings of the
 // preset's `render` section, and its colour settings: working space, OCIO display and view and
-// exposure. The viewport and the still export read the same preset fields, so what the viewport
-// shows is what the export writes.
+// exposure; the renderer's own knobs under a closed Advanced header. The viewport and the still export read the same
+// preset fields, so what the viewport shows is what the export writes.
 #include <imgui.h>
 
 #include <string>
@@ -11,6 +11,7 @@
 #include "app/editor/timeline/timeline_panel.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
 #include "app/editor/widgets/setting_widgets.hpp"
+#include "app/editor/widgets/text_fit.hpp"
 #include "core/safe_step.hpp"
 
 namespace fraktal::editor {
@@ -27,6 +28,8 @@ bool nameCombo(const char* label, std::string& value, const std::vector<std::str
                 changed = true;
             }
         ImGui::EndCombo();
+    } else {
+        checkComboFits(label, value);
     }
     return changed;
 }
@@ -57,126 +60,134 @@ std::vector<std::string> workingSpacesOf(const OCIO::ConstConfigRcPtr& c) {
 void drawViewportSection(ViewSettings& v, Layout& layout) {
     sectionHeader("Viewport");
     int mode = v.pathTraceAtRest ? 1 : 0;
-    if (ImGui::Combo("Render mode", &mode, "Fast\0Path traced at rest\0")) v.pathTraceAtRest = mode == 1;
+    const char* modes[] = {"Fast", "Path traced at rest"};
+    if (ImGui::Combo("Render mode", &mode, modes, IM_ARRAYSIZE(modes))) v.pathTraceAtRest = mode == 1;
+    checkComboFits("Render mode", modes[mode]);
     noteWidgetRect(layout, "Render mode");
     helpMarker(
         "Fast: the real-time renderer, always. Path traced at rest: the fast renderer while the camera or a "
-        "parameter moves; once the view rests the viewport path-traces it at full resolution with the "
-        "document's lights, as `fraktal render --mode path` does, adding samples every frame up to the cap. "
+        "parameter moves; once the view rests the viewport path-traces it at full resolution with the scene's "
+        "lights (the Lights tab), as a path-traced export does, adding samples every frame up to the limit. "
         "Any change returns to the fast renderer.");
     if (v.pathTraceAtRest)
-        dragInt("Path spp cap", v.pathSppCap, 1, 65536, 1.0f,
-                "Samples per pixel the path tracer accumulates at rest; then the viewport idles.");
-    dragInt("Steps per frame", v.stepsPerFrame, 1, 1000, 0.5f,
-            "March steps per ray per frame. Unfinished rays go on next frame: a smaller budget keeps the UI "
-            "responsive on a CPU renderer.");
+        dragInt("Samples at rest", v.pathSppCap, 1, 65536, 1.0f,
+                "Samples per pixel the path tracer adds up while the view rests; then the viewport idles.");
     dragDouble("Resolution", v.renderScale, 0.1, 1.0, 0.005f, "%.2f x",
                "Share of the window's pixels the viewport renders (upscaled for display).");
     dragDouble("Frame-time target", v.frameTimeTargetMs, 0.0, 1000.0, 0.5f, "%.0f ms",
                "While the camera or a parameter moves, the viewport renders fewer pixels to hold this frame time, "
                "then refines at full resolution when the view rests. 0: always full resolution.");
+    dragInt("Anti-aliasing", v.aaCap, 1, 256, 0.1f,
+            "Samples per pixel added up while the camera rests, for smooth edges; then the viewport idles.");
+}
+
+// How the viewport keeps up while the view moves: knobs of the renderer itself, under a header
+// that starts closed.
+void drawAdvancedSection(ViewSettings& v, RenderSettings& r, Layout& layout) {
+    ImGui::Spacing();
+    const bool open = ImGui::CollapsingHeader("Advanced");
+    noteWidgetRect(layout, "header:Advanced");
+    if (!open) return;
+    dragInt("Steps per frame", v.stepsPerFrame, 1, 1000, 0.5f,
+            "How far each ray marches in one frame; unfinished rays go on in the next. Smaller keeps the editor "
+            "responsive on a slow machine.");
     dragDouble("Lowest motion scale", v.motionMinScale, 1.0 / 16.0, 1.0, 0.002f, "%.3f x",
-               "The smallest share of each side the viewport goes down to under motion to hold the frame-time "
-               "target (on a loaded machine it may need an eighth).");
+               "The smallest share of each side the viewport goes down to while the view moves, to hold the "
+               "frame-time target (on a busy machine it may need an eighth).");
     ImGui::Checkbox("Reprojection", &v.reprojection);
-    helpMarker("Carry march distances over when the camera moves (seed 4.2). Off: every move restarts the rays.");
-    dragInt("AA cap (spp)", v.aaCap, 1, 256, 0.1f,
-            "Jittered samples per pixel accumulated while the camera rests; then the viewport idles.");
-    dragInt("Cone pre-pass tile", v.coneTile, 0, 32, 0.1f,
-            "A low-resolution cone march in tiles of this many pixels finds where full-resolution rays may start "
-            "(0: off).");
-    dragInt("Colour carry (frames)", v.maxCarryFrames, 0, 64, 0.1f,
-            "Under motion a reprojected hit keeps the colour carried with its surface point for at most this many "
-            "frames, then it is shaded again (specular and fog depend on the view). 0: shade every hit.");
-    ImGui::Checkbox("Motion filter", &v.motionFilter);
     helpMarker(
-        "Under motion, show each pixel as a reconstruction from the samples scattered around it "
-        "(reprojected colours lie anywhere in their pixel) instead of its one sample.");
+        "Keep what the rays found when the camera moves, so that the image sharpens sooner. Off: every move "
+        "starts the rays again.");
+    dragInt("Cone pre-pass tile", v.coneTile, 0, 32, 0.1f,
+            "A coarse first pass over tiles of this many pixels finds where the rays can start, which saves "
+            "time on open scenes (0: off).");
+    noteWidgetRect(layout, "Cone pre-pass tile");
+    dragInt("Colour carry", v.maxCarryFrames, 0, 64, 0.1f,
+            "While the view moves, a point of the surface keeps its colour for at most this many frames before it "
+            "is shaded again (highlights and fog change with the view). 0: shade every frame.");
+    ImGui::Checkbox("Motion filter", &v.motionFilter);
+    helpMarker("While the view moves, smooth each pixel from the samples around it instead of showing its one sample.");
     if (v.motionFilter)
         dragDouble("Filter radius", v.motionFilterRadius, viewport::ViewportOptions::kMinFilterRadius,
                    viewport::ViewportOptions::kMaxFilterRadius, 0.01f, "%.2f px",
-                   "The motion filter's reach. 1 px leaves samples at pixel centres as they are; wider is softer "
-                   "and closer to the anti-aliased image the view settles to.");
+                   "How far the motion filter reaches. 1 px leaves the samples as they are; wider is softer and "
+                   "closer to the image the view settles to.");
     ImGui::Checkbox("Coarse hits", &v.coarseHits);
     helpMarker(
-        "Under motion, a ray that keeps the colour carried to its pixel stops within two pixel footprints of the "
-        "surface instead of marching on: about a quarter fewer DE evaluations, and thin parts look slightly "
-        "thicker while the camera moves. At rest every ray marches on to the surface.");
+        "While the view moves, rays stop a little short of the surface: about a quarter faster, and thin parts "
+        "look slightly thicker until the camera rests.");
+    dragDouble("Over-relaxation", r.overRelaxation, 1.0, 1.9, 0.005f, "%.2f",
+               "How boldly rays stride towards the surface at first (1: cautious steps).");
 }
 
 void drawMarchSection(RenderSettings& r) {
-    sectionHeader("Marching (viewport and export)");
-    dragInt("Max steps per ray", r.maxSteps, 8, kMaxMarchSteps, 1.0f, "Sphere-tracing steps before a ray gives up.");
+    sectionHeader("Detail (viewport and export)");
     dragDouble("Detail", r.detail, 0.01, 10.0, 0.005f, "%.3f px",
-               "Hit threshold in pixel footprints: smaller is finer and slower.");
-    dragDouble("Over-relaxation", r.overRelaxation, 1.0, 1.9, 0.005f, "%.2f",
-               "Initial step factor of the over-relaxed marcher (1: plain sphere tracing).");
+               "How close a ray comes to the surface before it stops, in pixels: smaller is finer and slower.");
+    dragInt("Max steps per ray", r.maxSteps, 8, kMaxMarchSteps, 1.0f,
+            "How many steps a ray takes before it gives up: raise it when far parts show holes.");
 }
 
 // The DE step factor: the check's (AutoStepFactor) after every structure change, or the user's.
 void drawStepFactorSection(AutoStepFactor& a, Formula& f) {
-    sectionHeader("DE step factor");
+    sectionHeader("Step size");
     if (ImGui::Checkbox("Set by hand", &a.overridden) && !a.overridden && a.measured > 0.0) f.deFactor = a.measured;
     helpMarker(
-        "Off: the factor `fraktal check` measures for the formula is applied after every change of its "
-        "structure, so the march never overshoots. On: the value below is kept.");
+        "Off: after every change of the nodes the editor measures the largest step that never jumps through "
+        "the surface and uses it. On: the value below is kept.");
     ImGui::BeginDisabled(!a.overridden);
     dragDouble("Step factor", f.deFactor, kMinStepFactor, kMaxStepFactor, 0.005f, "%.3f",
-               "Multiplies the distance estimate: smaller is safer and slower.");
+               "How far a ray steps towards the surface: smaller is safer (no specks or holes) and slower.");
     ImGui::EndDisabled();
     if (a.noHits)
-        ImGui::TextDisabled("Not measured: no ray of the check met the object from this camera; the factor is kept.");
+        ImGui::TextDisabled("Not measured: from this camera no test ray met the object; the factor is kept.");
     else if (a.noSafeFactor)
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1),
-                           "No safe factor: the estimate overshoots %.3g times the distance (jumps or dust); "
-                           "marching at %.3f may still show specks.",
+                           "No safe factor: rays can jump %.3g times past the surface (jumps or dust); at "
+                           "%.3f specks may still show.",
                            a.worst, f.deFactor);
     else if (a.measured > 0.0 && a.refining())
-        ImGui::TextDisabled("Measured for this structure: %.3f on %d rays; sampling more for the rare worst ones...",
+        ImGui::TextDisabled("Measured for these nodes: %.3f on %d rays; testing more for the rare worst ones...",
                             a.measured, a.rays);
     else if (a.measured > 0.0)
-        ImGui::TextDisabled("Measured for this structure: %.3f on %d rays (%.2f s)", a.measured, a.rays, a.seconds);
+        ImGui::TextDisabled("Measured for these nodes: %.3f on %d rays (%.2f s)", a.measured, a.rays, a.seconds);
     else
-        ImGui::TextDisabled("The preset's own factor (measured after a structure change).");
-    if (const int k = firstJumpingStep(f.nodes); k >= 0) {
-        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("The preset's own factor (measured after a change of the nodes).");
+    if (const int k = firstJumpingStep(f.nodes); k >= 0)
         ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1),
-                           "Step %d (%s) jumps (a non-integer power's cut, a pole, a wrap): the factor is measured "
-                           "on sampled rays, not proven. Rare rays near the jump may overshoot: lower it by hand "
-                           "if specks show.",
+                           "Node %d (%s) has a seam where the shape jumps: the factor is measured on test rays, "
+                           "not proven. Rays near the seam may jump past the surface: lower it by hand if specks "
+                           "show.",
                            k + 1, std::string(f.nodes[size_t(k)].block->label).c_str());
-        ImGui::PopTextWrapPos();
-    }
 }
 
 void drawColourSection(EditorState& s, RenderSettings& r) {
-    sectionHeader("Colour (OCIO)");
+    sectionHeader("Colour");
     if (!s.color) {
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "No OCIO config.");
         return;
     }
     const OCIO::ConstConfigRcPtr config = s.color->config();
     nameCombo("Working space", r.workingSpace, workingSpacesOf(config));
-    helpMarker("Scene-linear space the image is rendered in (the EXR's space).");
+    helpMarker("The colour space the image is rendered and saved in (the EXR's).");
     if (nameCombo("Display", r.display, displaysOf(config))) {
         const std::vector<std::string> views = viewsOf(config, r.display);
         if (!views.empty()) r.view = views.front();
     }
     nameCombo("View", r.view, viewsOf(config, r.display));
-    helpMarker("The OCIO view: the viewport and the export's PNG go through the same display/view transform.");
+    helpMarker("How the image is turned into the display's colours: the viewport and the exported PNG look the same.");
     keyMarker(s, "colorManagement.exposure", {r.exposure});
     dragDouble("Exposure", r.exposure, -20.0, 20.0, 0.02f, "%+.2f EV",
                "Applied at display only, before the view transform: the rendered data stays linear.");
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("Config: %s", s.color->configPath().c_str());
-    ImGui::PopTextWrapPos();
+    ImGui::TextDisabled("Colour configuration: %s", s.color->configPath().c_str());
 }
 
 }  // namespace
 
 void drawRenderTab(EditorState& s) {
-    // Leave the labels room: they name what a preset field does.
+    // Leave the labels room, and wrap every line of text at the panel's edge.
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    ImGui::PushTextWrapPos(0.0f);
     if (s.doc.plane) {
         // A 2D document has no march; its view refines by itself (the View tab).
         drawColourSection(s, s.doc.plane->render);
@@ -185,7 +196,9 @@ void drawRenderTab(EditorState& s) {
         drawMarchSection(s.doc.preset.render);
         drawStepFactorSection(s.stepFactor, s.doc.preset.formula);
         drawColourSection(s, s.doc.preset.render);
+        drawAdvancedSection(s.doc.view, s.doc.preset.render, s.layout);
     }
+    ImGui::PopTextWrapPos();
     ImGui::PopItemWidth();
 }
 

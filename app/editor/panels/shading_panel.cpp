@@ -18,11 +18,11 @@ std::vector<double> keyValue(const vec3& v) { return {v.x, v.y, v.z}; }
 void drawLightSection(EditorState& s, ShadingSettings& sh) {
     sectionHeader("Light");
     keyMarker(s, "shading.lightDirection", keyValue(sh.lightDirection));
-    directionEdit("Light direction", sh.lightDirection, "Toward the key light (normalised on use).");
+    directionEdit("Light direction", sh.lightDirection, "Where the main light comes from.");
     keyMarker(s, "shading.lightColor", keyValue(sh.lightColor));
-    colorEdit("Light colour", sh.lightColor, "Key light colour and intensity (linear Rec.709).");
+    colorEdit("Light colour", sh.lightColor, "The main light's colour; above 1 is brighter.");
     keyMarker(s, "shading.fillColor", keyValue(sh.fillColor));
-    colorEdit("Fill colour", sh.fillColor, "Sky / fill hemisphere light.");
+    colorEdit("Fill colour", sh.fillColor, "The soft light from the sky that fills the shadows.");
     keyMarker(s, "shading.specular", {sh.specular});
     dragDouble("Specular", sh.specular, 0.0, 4.0, 0.005f, "%.3f", nullptr);
     keyMarker(s, "shading.shininess", {sh.shininess});
@@ -30,10 +30,11 @@ void drawLightSection(EditorState& s, ShadingSettings& sh) {
     bool shadows = sh.shadowSteps > 0;
     if (ImGui::Checkbox("Shadows", &shadows)) sh.shadowSteps = shadows ? ShadingSettings{}.shadowSteps : 0;
     if (shadows) {
-        dragInt("Shadow steps", sh.shadowSteps, 1, 1000, 0.5f, "March steps of a shadow ray.");
+        dragInt("Shadow steps", sh.shadowSteps, 1, 1000, 0.5f,
+                "How far shadows are traced: more catches thin shadow casters.");
         keyMarker(s, "shading.shadowSoftness", {sh.shadowSoftness});
         dragDouble("Shadow softness", sh.shadowSoftness, 0.5, 200.0, 0.1f, "%.1f",
-                   "Penumbra factor k of the soft-shadow estimate: larger is sharper.");
+                   "How sharp the edges of shadows are: larger is sharper.");
     }
     bool ao = sh.aoSteps > 0;
     if (ImGui::Checkbox("Ambient occlusion", &ao)) sh.aoSteps = ao ? ShadingSettings{}.aoSteps : 0;
@@ -50,8 +51,9 @@ void drawPaletteSection(EditorState& s, ShadingSettings& sh) {
     sectionHeader("Orbit-trap palette");
     paletteChoice(sh.paletteA, sh.paletteB, sh.paletteC, sh.paletteD);
     helpMarker(
-        "colour = a + b cos(2 pi (c t + d)), t = offset + scale * dot(weights, trap); trap = the orbit's "
-        "closest approach to the planes and the origin (seed 3.3).");
+        "Colours the surface by how close each point's orbit came to three planes and to the centre (the trap "
+        "weights say how much each counts), times the trap scale plus the trap offset, looked up in a palette "
+        "of waves: a is the base colour, b how far it swings, c how often it cycles, d where it starts.");
     double w[4] = {sh.trapWeights.x, sh.trapWeights.y, sh.trapWeights.z, sh.trapWeights.w};
     if (dragClamped("Trap weights", w, 4, 0.005f, -4.0, 4.0, "%.2f")) sh.trapWeights = vec4(w[0], w[1], w[2], w[3]);
     keyMarker(s, "shading.trapScale", {sh.trapScale});
@@ -64,11 +66,12 @@ void drawPaletteSection(EditorState& s, ShadingSettings& sh) {
 void drawAtmosphereSection(EditorState& s, ShadingSettings& sh) {
     sectionHeader("Fog, reflection, background");
     keyMarker(s, "shading.fogDensity", {sh.fogDensity});
-    dragDouble("Fog density", sh.fogDensity, 0.0, 20.0, 0.005f, "%.3f", "Per bound radius travelled (0: no fog).");
+    dragDouble("Fog density", sh.fogDensity, 0.0, 20.0, 0.005f, "%.3f", "How thick the fog is (0: no fog).");
     keyMarker(s, "shading.fogColor", keyValue(sh.fogColor));
     colorEdit("Fog colour", sh.fogColor, nullptr);
     keyMarker(s, "shading.reflection", {sh.reflection});
-    dragDouble("Reflection", sh.reflection, 0.0, 1.0, 0.002f, "%.3f", "Fresnel F0 of the surface (0: no reflections).");
+    dragDouble("Reflection", sh.reflection, 0.0, 1.0, 0.002f, "%.3f",
+               "How much the surface mirrors its surroundings (0: not at all).");
     colorEdit("Background top", sh.backgroundTop, nullptr);
     colorEdit("Background bottom", sh.backgroundBottom, nullptr);
 }

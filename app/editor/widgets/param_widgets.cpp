@@ -9,6 +9,8 @@
 #include <string>
 #include <type_traits>
 
+#include "app/editor/widgets/text_fit.hpp"
+
 namespace fraktal::editor {
 
 namespace {
@@ -34,6 +36,7 @@ bool dragClampedOf(const char* label, T* values, int count, float speed, T lo, T
         for (int i = 0; i < count; ++i) values[i] = T(v[i]);
     }
     if (gClampReports) gClampReports->drawn(id, std::move(notice), changed, ImGui::IsItemDeactivated());
+    checkItemFits(label);
     return changed;
 }
 
@@ -82,6 +85,7 @@ bool dragClamped(const char* label, int* values, int count, float speed, int lo,
 void helpMarker(const char* help) {
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
+    checkItemFits("(?)");
     if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
@@ -158,6 +162,7 @@ bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown
     ImGui::EndDisabled();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::TextUnformatted(label.c_str());
+    checkItemFits(label);
     tooltip(d, shown);
     ImGui::PopID();
     return changed;
