@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/editor/widgets/node_list_widgets.hpp"
 #include "app/editor/widgets/text_fit.hpp"
 #include "core/atomic_file.hpp"
 
@@ -79,6 +80,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["cameraGesture"] = s.cameraGesture;
     j["uiDraw"] = uiDrawName(ui);  // how this frame drew the window (viewport/ui_redraw.hpp)
     j["shortcutHelp"] = s.panels.help;
+    j["tour"] = {{"shown", s.panels.tour}, {"text", s.panels.tourText.size()}};
     j["blockEditorOpen"] = s.customBlockEditor.open;
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;
     j["undoDepth"] = s.history.undoDepth();
@@ -124,6 +126,11 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["widgets"] = s.layout.widgetRects;
     j["timeline"] = timelineJson(s.timeline);
     j["selectedNode"] = s.selectedNode;
+    // The node list's rows as it names them.
+    json rows = json::array();
+    for (size_t i = 0; i < s.doc.preset.formula.nodes.size(); ++i)
+        if (s.doc.preset.formula.nodes[i].block) rows.push_back(nodeLabel(s.doc.preset.formula.nodes[i], int(i)));
+    j["nodeLabels"] = rows;
     // The step factor the check measured after the last structure change (AutoStepFactor).
     const AutoStepFactor& a = s.stepFactor;
     j["stepFactor"] = {{"measured", a.measured},

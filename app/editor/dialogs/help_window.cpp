@@ -1,5 +1,11 @@
-// Help > Shortcuts (F1): every keyboard shortcut and mouse gesture the editor knows.
+// The Help menu's windows: Shortcuts (F1), every keyboard shortcut and mouse gesture the editor
+// knows, and Tour, the artist's tour of the editor (app/editor/TOUR.md) as text.
 #include <imgui.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <string_view>
 
 #include "app/editor/panels/panels.hpp"
 
@@ -60,9 +66,61 @@ void shortcutTable(const char* id, const Shortcut (&rows)[N]) {
     ImGui::EndTable();
 }
 
+// The tour's Markdown as plain paragraphs: headings stand out, images are left out, and the marks
+// of emphasis and code are dropped.
+void drawTourText(const std::string& markdown) {
+    std::istringstream lines(markdown);
+    std::string line, paragraph;
+    const auto flush = [&paragraph] {
+        if (paragraph.empty()) return;
+        ImGui::TextUnformatted(paragraph.c_str());
+        ImGui::Spacing();
+        paragraph.clear();
+    };
+    while (std::getline(lines, line)) {
+        if (line.starts_with("![")) continue;
+        std::string plain;
+        for (char c : line)
+            if (c != '*' && c != '`') plain += c;
+        if (plain.starts_with("#")) {
+            flush();
+            const size_t text = plain.find_first_not_of("# ");
+            ImGui::Spacing();
+            ImGui::TextColored(ImVec4(0.95f, 0.8f, 0.5f, 1), "%s",
+                               plain.substr(text == std::string::npos ? 0 : text).c_str());
+            ImGui::Separator();
+        } else if (plain.find_first_not_of(' ') == std::string::npos) {
+            flush();
+        } else {
+            paragraph += (paragraph.empty() ? "" : " ") + plain;
+        }
+    }
+    flush();
+}
+
+void drawTour(EditorState& s) {
+    if (!s.panels.tour) return;
+    if (s.panels.tourText.empty()) {
+        std::ifstream in(std::string(FRAKTAL_SOURCE_DIR) + "/app/editor/TOUR.md");
+        std::ostringstream text;
+        text << in.rdbuf();
+        s.panels.tourText = in ? text.str() : "The tour (app/editor/TOUR.md) could not be read.";
+    }
+    const ImGuiViewport* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 40.0f, vp->WorkSize.y * 0.8f), ImGuiCond_Appearing);
+    ImGui::SetNextWindowPos(vp->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (ImGui::Begin("Tour", &s.panels.tour, ImGuiWindowFlags_NoSavedSettings)) {
+        ImGui::PushTextWrapPos(0.0f);
+        drawTourText(s.panels.tourText);
+        ImGui::PopTextWrapPos();
+    }
+    ImGui::End();
+}
+
 }  // namespace
 
 void drawShortcutHelp(EditorState& s) {
+    drawTour(s);
     if (!s.panels.help) return;
     ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 40.0f, 0), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Shortcuts", &s.panels.help, ImGuiWindowFlags_NoSavedSettings)) {

@@ -47,12 +47,20 @@ void drawMenuBar(EditorState& s) {
         noteWidgetRect(s.layout, "menu:" + redoText);
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("View")) {
+    const bool viewOpen = ImGui::BeginMenu("View");
+    if (!viewOpen) noteWidgetRect(s.layout, "menu:View");
+    if (viewOpen) {
+        // The items are noted by their text, as the Edit menu's: what the menu offers, for the tests.
+        std::erase_if(s.layout.widgetRects, [](const auto& w) { return w.first.starts_with("menu:View/"); });
         if (ImGui::MenuItem("Formula panel", "F2", &s.panels.formula) && s.panels.formula) s.panels.collapsed = false;
+        noteWidgetRect(s.layout, "menu:View/Formula panel");
         if (ImGui::MenuItem("Scene panel", "F3", &s.panels.sidebar) && s.panels.sidebar) s.panels.collapsed = false;
+        noteWidgetRect(s.layout, "menu:View/Scene panel");
         bool column = !s.panels.collapsed;
         if (ImGui::MenuItem("Side panels", "Ctrl+\\", &column)) s.panels.collapsed = !column;
+        noteWidgetRect(s.layout, "menu:View/Side panels");
         ImGui::MenuItem("Stats overlay", "F4", &s.panels.stats);
+        noteWidgetRect(s.layout, "menu:View/Stats overlay");
         ImGui::Separator();
         bool fly = s.cameraControls.mode == CameraMode::Fly;
         if (ImGui::MenuItem("Fly camera", "V", &fly, !s.doc.plane))
@@ -65,12 +73,15 @@ void drawMenuBar(EditorState& s) {
             else
                 s.doc.preset.camera = defaultViewFor(s.doc.preset.formula, s.doc.preset.camera);
         }
-        ImGui::Separator();
-        ImGui::MenuItem("ImGui metrics", nullptr, &s.panels.demo);
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("Help")) {
+    const bool helpOpen = ImGui::BeginMenu("Help");
+    if (!helpOpen) noteWidgetRect(s.layout, "menu:Help");
+    if (helpOpen) {
+        if (ImGui::MenuItem("Tour", nullptr, &s.panels.tour)) ImGui::SetWindowFocus("Tour");
+        noteWidgetRect(s.layout, "menu:Help/Tour");
         ImGui::MenuItem("Shortcuts", "F1", &s.panels.help);
+        noteWidgetRect(s.layout, "menu:Help/Shortcuts");
         ImGui::EndMenu();
     }
     // Folds the side column away and back (Ctrl+Backslash): the arrow points where it goes.

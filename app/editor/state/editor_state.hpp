@@ -40,7 +40,9 @@ struct PanelVisibility {
     bool sidebar = true;     // camera, render, presets
     bool collapsed = false;  // the side column folded away (Ctrl+Backslash): the viewport takes the width
     bool stats = true;
-    bool demo = false;      // ImGui's own metrics, for bug reports
+    bool demo = false;      // ImGui's own metrics, for bug reports (no menu offers it: set it in a debugger)
+    bool tour = false;      // Help > Tour
+    std::string tourText;   // the tour's text, read when first shown
     bool help = false;      // the shortcut list (F1)
     std::string selectTab;  // a Scene tab to bring to front on the next frame ("Render", ...)
 };

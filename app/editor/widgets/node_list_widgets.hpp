@@ -28,10 +28,14 @@ struct NodeListRequest {
 // A compile error, wrapped, in the error colour.
 void errorUnder(const std::string& error);
 
+// When a node runs, counting iterations from 1 as the artist does: "every 2nd iteration from
+// the 1st", "iterations 3 to 8", "every 3rd iteration from the 2nd, iterations 2 to 9".
+std::string scheduleText(const IterationSchedule& s);
+
 template <class NodeT>
 std::string nodeLabel(const NodeT& n, int index) {
     std::string label = std::to_string(index + 1) + ". " + std::string(n.block->label);
-    if (!n.always()) label += "  (" + n.describe() + ")";
+    if (!n.always()) label += "  (" + scheduleText(n.schedule()) + ")";
     return label;
 }
 
