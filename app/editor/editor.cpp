@@ -434,6 +434,7 @@ int runEditor(const EditorOptions& o) {
             drawRecoveryDialog(s);
             drawShortcutHelp(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);
+            s.layout.popupOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
             if (s.browser.visible) renderNextThumbnail(thumbnails, s.browser, *s.color);
             reportClamps.reset();
             // A typed value the slider brought into its range: said on the next frame's status line.

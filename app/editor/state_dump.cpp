@@ -121,6 +121,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                                {"pathSppCap", s.doc.view.pathSppCap},
                                {"modeCombo", widgetRect(s.layout, "Render mode")}};
     j["sceneTab"] = s.layout.sceneTab;
+    j["popupOpen"] = s.layout.popupOpen;
     // Window events queued for later frames (imgui_input.hpp): tests wait until none are.
     j["inputPending"] = s.input.pendingCount();
     j["widgets"] = s.layout.widgetRects;

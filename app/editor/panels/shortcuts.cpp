@@ -3,11 +3,14 @@
 // and released within one event poll, is not lost.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the popup stack, ClosePopupToLevel
 
 #include <algorithm>
+#include <vector>
 
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/node_list_edits.hpp"
+#include "app/editor/input/popup_escape.hpp"
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/state/actions.hpp"
 #include "app/editor/state/plane_edits.hpp"
@@ -40,9 +43,26 @@ void handlePlaneShortcuts(EditorState& s, const Keys& pressed) {
     s.planeSelection = clampedSelection(s.doc.plane->formula, s.planeSelection);
 }
 
+// Escape closes the menu or popup in front (popup_escape.hpp). Run before the frame's windows,
+// so the popup is not drawn this frame and the next click reaches what lies under it. The press
+// is then used up: a dialog under a closed combo must not take it as its Cancel too.
+void closePopupOnEscape(std::vector<KeyPress>& presses) {
+    const auto escape = [](const KeyPress& p) { return p.key == GLFW_KEY_ESCAPE; };
+    if (std::none_of(presses.begin(), presses.end(), escape)) return;
+    const ImVector<ImGuiPopupData>& stack = ImGui::GetCurrentContext()->OpenPopupStack;
+    std::vector<bool> modal;
+    // A popup opened this frame has no window yet: left open, as a modal would be.
+    for (const ImGuiPopupData& p : stack) modal.push_back(!p.Window || (p.Window->Flags & ImGuiWindowFlags_Modal));
+    const int left = popupsLeftOpenByEscape(modal, ImGui::IsAnyItemActive());
+    if (left == stack.Size) return;
+    ImGui::ClosePopupToLevel(left, true);
+    std::erase_if(presses, escape);
+}
+
 }  // namespace
 
 void handleShortcuts(EditorState& s) {
+    closePopupOnEscape(s.keyPresses);
     const ImGuiIO& io = ImGui::GetIO();
     const Keys pressed{s.keyPresses};
     // Undo/redo also while typing would fight the text field's own undo: only when not typing.

@@ -58,7 +58,8 @@ struct Layout {
     // Widgets as last drawn, by name ("tab:Render", "button:Store 1", "Render mode"): x, y, w, h
     // in window coordinates, for tests that click them (the state file).
     std::map<std::string, std::array<float, 4>> widgetRects;
-    std::string sceneTab;  // the Scene panel's tab in front
+    std::string sceneTab;    // the Scene panel's tab in front
+    bool popupOpen = false;  // a menu or popup is open after the frame (the state file)
 };
 
 // The editor window's place on the screen, remembered between runs (panel_ini.cpp); 0 size: unknown.
