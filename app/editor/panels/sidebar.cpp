@@ -3,7 +3,7 @@
 // left whose width and split the ini file remembers). A 2D document shows its view, render
 // (colour) and colouring settings and the browser.
 #include <imgui.h>
-#include <imgui_internal.h>  // MarkIniSettingsDirty
+#include <imgui_internal.h>  // MarkIniSettingsDirty, BringWindowToDisplayBack
 
 #include <algorithm>
 #include <span>
@@ -43,7 +43,15 @@ void beginSideColumnWindow(EditorState& s, const char* name, bool* open, bool to
     ImGui::SetNextWindowSizeConstraints(ImVec2(kMinPanelWidth, splitResizes ? kMinPanelHeight : height),
                                         ImVec2(maxWidth, splitResizes ? maxSplit : height));
     ImGui::SetNextWindowSize(ImVec2(l.leftWidth, height), ImGuiCond_Always);
-    ImGui::Begin(name, open, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::Begin(name, open,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    // The column's panels lie behind every floating window, the Formula panel above the Scene
+    // panel (drawn first, so sent back first). ImGui hands a press near a window's edge to the
+    // front-most window whose rectangle, grown by the resize grip's reach, holds the pointer: with
+    // the Scene panel in front (clicked last) it took every press on the split, and the Formula
+    // panel's lower edge, the split's only grip, never moved.
+    ImGui::BringWindowToDisplayBack(ImGui::GetCurrentWindow());
     // A drag of the window's edge this frame: the column and the split follow it from now on.
     if (ImGui::GetWindowWidth() != l.leftWidth) ImGui::MarkIniSettingsDirty();
     l.leftWidth = ImGui::GetWindowWidth();
