@@ -297,9 +297,12 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     const std::string& error = v.compileError();
     const int errorNode = error.empty() ? -2 : nodeNamedInLog(error, int(f.nodes.size()));
     NodeListRequest req;
-    for (int i = 0; i < int(f.nodes.size()); ++i)
+    for (int i = 0; i < int(f.nodes.size()); ++i) {
         if (nodeRow(f.nodes[size_t(i)], i, s.selectedNode == i, i == errorNode ? &error : nullptr, kNodePayload, req))
             s.selectedNode = i;
+        // The row's Del button, last on the row's line (an error, when shown, comes after it).
+        if (i != errorNode) noteWidgetRect(s.layout, "button:Del " + std::to_string(i + 1));
+    }
 
     // The estimator closes the list; it is always last and cannot be removed, only replaced.
     ImGui::PushID("estimator");
@@ -382,6 +385,8 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     }
     objectsSection(s);
     fractalsSection(s);
+    // A node selected with fewer parameters below it leaves the rows above where they were.
+    keepWindowScroll();
     ImGui::End();
 }
 

@@ -19,6 +19,10 @@ void beginFormulaWindow(EditorState& s);                       // formula_panel.
 // Begin() of one of them at its place, with the edges that resize the column and the split.
 bool sideColumnShows(const PanelVisibility& p, bool top);
 void beginSideColumnWindow(EditorState& s, const char* name, bool* open, bool top);
+// Ends the current window's content with the blank space that keeps its scroll when the content
+// got shorter (scroll_keep.hpp): called last before End() by the panels whose clicks change what
+// lies below the pointer.
+void keepWindowScroll();
 // The 2D document's panels (plane_*.cpp); `compileError` is the 2D view's.
 void drawPlaneFormulaPanel(EditorState& s, const std::string& compileError);  // plane_formula_panel.cpp
 void drawPlaneViewTab(EditorState& s);                                        // plane_view_tab.cpp

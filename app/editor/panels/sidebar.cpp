@@ -6,10 +6,12 @@
 #include <imgui_internal.h>  // MarkIniSettingsDirty, BringWindowToDisplayBack
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <utility>
 
 #include "app/editor/panels/panels.hpp"
+#include "app/editor/widgets/scroll_keep.hpp"
 
 namespace fraktal::editor {
 
@@ -59,6 +61,15 @@ void beginSideColumnWindow(EditorState& s, const char* name, bool* open, bool to
         if (ImGui::GetWindowHeight() != l.formulaHeight) ImGui::MarkIniSettingsDirty();
         l.formulaHeight = ImGui::GetWindowHeight();
     }
+}
+
+void keepWindowScroll() {
+    const ImGuiWindow* w = ImGui::GetCurrentWindow();
+    const float contentBottom = ImGui::GetCursorScreenPos().y;
+    const float shownBottom = w->InnerRect.Max.y - w->WindowPadding.y;
+    // Rounded up: ImGui rounds the content's height down, which would take the scroll back a pixel.
+    const float pad = std::ceil(paddingKeepingScroll(contentBottom, shownBottom, w->Scroll.y));
+    if (pad > 0.0f) ImGui::Dummy(ImVec2(0.0f, pad));
 }
 
 void noteWidgetRect(Layout& layout, const std::string& name) {

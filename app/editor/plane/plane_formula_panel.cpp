@@ -119,6 +119,8 @@ void drawPlaneFormulaPanel(EditorState& s, const std::string& error) {
     sectionHeader("Parameters");
     if (PlaneNode* n = selectedPlaneNode(f, s.planeSelection))
         nodeParameters(*n, s.planeSelection.list == PlaneList::Estimator, s.paramWidgets);
+    // A node selected with fewer parameters below it leaves the rows above where they were.
+    keepWindowScroll();
     ImGui::End();
 }
 
