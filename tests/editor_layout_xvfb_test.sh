@@ -27,12 +27,15 @@ echo "default viewport: $3 x $4 at $1,$2 in 1280x800"
 check "$3 > $4" || fail "the default viewport is not landscape ($3 x $4)"
 check "$3 * $4 >= 0.6 * 1280 * 800" || fail "the default viewport covers less than 60 % of the window ($3 x $4)"
 default_x=$1
-# The tooltip: the region right of and below the power slider changes when the pointer rests on it.
-region=420x140+150+485
+# The tooltip: the region right of and below the power slider changes when the pointer rests on it
+# (where the slider is: the state file's record of it, so that a row added above moves nothing here).
+set -- $(widget_centre power)
+[ $# -eq 2 ] || { fail "the state file records no widget for the power parameter"; set -- 150 477; }
+region=420x140+$1+$(($2 + 8))
 to 700 400
 wait_frames 2
 import -window root "$home/no_tooltip.png"
-to 150 477
+to "$1" "$2"
 wait_frames 5
 import -window root "$home/tooltip.png"
 for f in no_tooltip tooltip; do convert "$home/$f.png" -crop "$region" +repage "$home/$f.crop.png"; done
