@@ -33,7 +33,9 @@ convert -size 8x8 xc:red "$home/picture.png"
 
 start "$presets/mandelbulb.json" --replay-drops "$drops"
 # An edit first (the power slider, as a person drags it), so there is something to lose.
-drag_frames 150 477 60 0 6
+set -- $(widget_centre power)
+[ $# -eq 2 ] || { fail "the state file records no widget for the power parameter"; set -- 150 477; }
+drag_frames "$1" "$2" 60 0 6
 wait_frames 3
 [ "$(q .undoDepth)" = 1 ] || fail "the slider drag made no undo step"
 before=$(snapshot)

@@ -14,8 +14,6 @@ fraktal=$1
 presets=$2
 
 viewport() { q '.viewport | map(floor) | join(" ")'; }
-# The centre of parameter NAME's widget (drag or checkbox) as the editor drew it last frame.
-widget_centre() { q ".paramWidgets[] | select(.name == \"$1\") | .rect | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
 # The help text a block's declaration gives parameter NAME (a ParamDecl or toggleParam line):
 # declared_help FILE NAME (formulas/*.hpp).
 declared_help() { sed -n "s/.*\\(ParamDecl{\\|toggleParam(\\)\"$2\", .*, \"\\([^\"]*\\)\"[})],\$/\\2/p" "$1"; }

@@ -48,7 +48,9 @@ echo "drag: full speed $fast_drag; slow frames $slow_drag"
 # 4. Undo after a slider drag: the whole drag is one step, the Edit menu's label names it, and
 #    one Ctrl+Z returns the value.
 power() { q '.document.formula.nodes[0].params.power // 8'; }
-drag_frames 150 477 60 0 6
+set -- $(widget_centre power)
+[ $# -eq 2 ] || { fail "the state file records no widget for the power parameter"; set -- 150 477; }
+drag_frames "$1" "$2" 60 0 6
 # The release is seen at the start of a frame, the step committed at its end, written after the next.
 wait_frames 3
 dragged=$(power)
@@ -194,20 +196,32 @@ stop
 #    in the DE step factor section, naming the Kleinian step as one that jumps.
 bulb="$home/rotate_bulb.json"
 jq '.formula.nodes = [{"block": "rotate"}] + .formula.nodes' "$presets/mandelbulb.json" >"$bulb"
+# A file whose factor was settled for its structure (its formula.deFactorMeasuredFor) opens as it
+# is: nothing is measured.
+start "$presets/mandelbulb.json"
+wait_frames 5
+[ "$(q .stepFactor.measured)" = 0 ] || fail "opening a measured file measured its factor ($(q .stepFactor.measured))"
+stop
+# The Rotate was added by hand, so the file's tag names another structure: its factor was never
+# measured for this stack, and the editor measures it as the file opens.
 start "$bulb"
-[ "$(q .stepFactor.measured)" = 0 ] || fail "opening a file measured its factor ($(q .stepFactor.measured))"
-opened=$(q .document.formula.deFactor)
+wait_for '.stepFactor.measured > 0' true
+wait_for '.stepFactor.refining' false 600
+opened=$(q .stepFactor.measured)
+[ "$(q .document.formula.deFactor)" = "$opened" ] ||
+    fail "the file opened at factor $(q .document.formula.deFactor), not the $opened measured for it"
 set -- $(viewport_centre)
 to "$1" "$2"
 xdotool key Delete
-wait_for '.stepFactor.measured > 0' true
+# The delete is handled, and the new stack's settled rounds measured, in the frames after it.
+wait_frames 3
 wait_for '.stepFactor.refining' false 600
 measured=$(q .stepFactor.measured)
 [ "$(q .document.formula.deFactor)" = "$measured" ] ||
     fail "after the delete the factor is $(q .document.formula.deFactor), not the measured $measured"
 [ "$(q .stepFactor.noSafeFactor)" = false ] || fail "the Mandelbulb has no safe factor (worst $(q .stepFactor.worst))"
 [ "$(q .stepFactor.jumpingStep)" = -1 ] || fail "the power-8 Mandelbulb is said to jump at step $(q .stepFactor.jumpingStep)"
-echo "step factor: opened at $opened, measured $measured on $(q .stepFactor.rays) rays after deleting the Rotate"
+echo "step factor: measured $opened as the hand-edited file opened, $measured on $(q .stepFactor.rays) rays after deleting the Rotate"
 stop
 # The Amazing Surf's worst rays at bailout 100 are rare: the factor applied at once rests on the settled rounds
 # (a few hundred rays), then the check's further rounds run beside the frames and their factor
@@ -216,10 +230,13 @@ stop
 surf="$home/rotate_surf.json"
 jq '.formula.nodes = [{"block": "rotate"}] + .formula.nodes | .formula.bailout = 100' "$presets/amazing_surf.json" >"$surf"
 start "$surf"
+# Measured as it opens (the Rotate added by hand); that measurement ends before the edit.
+wait_for '.stepFactor.measured > 0' true
+wait_for '.stepFactor.refining' false 600
 set -- $(viewport_centre)
 to "$1" "$2"
 xdotool key Delete
-wait_for '.stepFactor.measured > 0' true
+wait_frames 3
 first=$(q .stepFactor.measured)
 first_rays=$(q .stepFactor.rays)
 wait_for '.stepFactor.refining' false 600

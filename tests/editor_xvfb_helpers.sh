@@ -120,4 +120,7 @@ check() { awk "BEGIN { exit !($1) }"; }
 
 # Viewport centre and panel points at the default 1280x800 layout (from the state file).
 viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1] + .viewport[3] / 2 | floor)"'; }
+# widget_centre NAME: the centre of the block parameter NAME's widget, as the state file records it
+# (where the panel draws it this frame, so that a row added above it moves nothing in a test).
+widget_centre() { q ".paramWidgets[] | select(.name == \"$1\") | .rect | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
 
