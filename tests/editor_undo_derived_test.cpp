@@ -13,6 +13,7 @@
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/undo_history.hpp"
 #include "app/editor/state/actions.hpp"
+#include "core/param_label.hpp"
 #include "core/scene/formula_fit.hpp"
 #include "editor_test_support.hpp"
 
@@ -258,8 +259,15 @@ TEST(UndoDerived, LabelsUseThePanelsWords) {
     const Document box = test::documentFrom("mandelbox.json");
     const int radius = findBlock("sphere_fold")->paramIndex("min_radius");
     EXPECT_EQ(label([&](Document& d) { setParam(d.preset.formula, 1, radius, vec3(0.3, 0, 0)); }, box),
-              "change of min_radius")
+              "change of min radius")
         << "a parameter is named as its widget shows it";
+    // A declared label ("Packing") rather than the preset's name (klein_r).
+    const Document kleinian = test::documentFrom("kleinian.json");
+    const int packing = findBlock("kleinian")->paramIndex("klein_r");
+    ASSERT_GE(packing, 0);
+    EXPECT_EQ(paramLabel(findBlock("kleinian")->params[size_t(packing)]), "Packing");
+    EXPECT_EQ(label([&](Document& d) { setParam(d.preset.formula, 0, packing, vec3(1.9, 0, 0)); }, kleinian),
+              "change of packing");
     EXPECT_EQ(label(
                   [](Document& d) {
                       setNodeEnabled(d.preset.formula, 0, false);

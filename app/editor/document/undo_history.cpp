@@ -6,6 +6,7 @@
 
 #include "app/editor/document/lights_edits.hpp"
 #include "app/editor/document/timeline_edits.hpp"
+#include "core/param_label.hpp"
 
 namespace fraktal::editor {
 
@@ -179,14 +180,38 @@ const std::map<std::string, std::string, std::less<>>& fieldLabels() {
 
 // The fields a change at `parts` with `value` names: each field of an added or removed section,
 // else the innermost named one (a parameter's name, or "bailout", "exposure", ...).
+// A block parameter's label as its widget shows it, lower-cased for a sentence ("change of
+// packing", not "change of klein_r"), for the path [..., "nodes", i, "params", name (, index)] of a
+// node whose JSON in `document` names a built-in block; empty for any other path.
+std::string blockParamLabel(const json& document, std::vector<std::string> parts) {
+    while (!parts.empty() && isIndex(parts.back())) parts.pop_back();  // a vector's component
+    if (parts.size() < 2 || parts[parts.size() - 2] != "params") return {};
+    json::json_pointer node;
+    for (size_t i = 0; i + 2 < parts.size(); ++i) node /= parts[i];
+    if (!document.contains(node)) return {};
+    const json& n = document.at(node);
+    if (!n.is_object() || !n.contains("block") || !n["block"].is_string()) return {};
+    const BlockDesc* block = findBlock(n["block"].get<std::string>());
+    if (!block) return {};
+    const int index = block->paramIndex(parts.back());
+    if (index < 0) return {};
+    std::string label = paramLabel(block->params[size_t(index)]);
+    if (!label.empty() && label[0] >= 'A' && label[0] <= 'Z') label[0] = char(label[0] - 'A' + 'a');
+    return label;
+}
+
 template <typename Add>
-void nameFields(std::vector<std::string> parts, const json& value, const Add& add) {
+void nameFields(const json& document, std::vector<std::string> parts, const json& value, const Add& add) {
     if (value.is_object() && !value.empty()) {
         for (auto it = value.begin(); it != value.end(); ++it) {
             parts.push_back(it.key());
-            nameFields(parts, it.value(), add);
+            nameFields(document, parts, it.value(), add);
             parts.pop_back();
         }
+        return;
+    }
+    if (std::string label = blockParamLabel(document, parts); !label.empty()) {
+        add(std::move(label));
         return;
     }
     for (auto it = parts.rbegin(); it != parts.rend(); ++it)
@@ -240,7 +265,7 @@ std::string describeChange(const Document& before, const Document& after) {
         // Fields at their default are not written: an added or removed section names the fields
         // inside it ({"params": {"power": 5.5}} is a change of power).
         const json& value = op.value("op", "") == "remove" ? a.at(json::json_pointer(path)) : op.value("value", json());
-        nameFields(components(path), value, add);
+        nameFields(op.value("op", "") == "remove" ? a : b, components(path), value, add);
     }
     if (names.empty()) return "change";
     std::string text = "change of " + names[0];

@@ -109,14 +109,6 @@ void ParamWidgetsShown::noteLastItem(std::string name, std::string label) {
     widgets.push_back({std::move(name), std::move(label), at.x, at.y, size.x, size.y});
 }
 
-std::string paramLabel(const ParamDecl& d) {
-    if (!d.label.empty()) return std::string(d.label);
-    std::string label(d.name);
-    std::replace(label.begin(), label.end(), '_', ' ');
-    if (!label.empty() && label[0] >= 'a' && label[0] <= 'z') label[0] = char(label[0] - 'a' + 'A');
-    return label;
-}
-
 bool paramWidget(const ParamDecl& d, ParamValue& value, ParamWidgetsShown* shown) {
     const std::string name(d.name), label = paramLabel(d);
     ImGui::PushID(name.c_str());

@@ -10,6 +10,7 @@
 
 #include "app/editor/widgets/value_clamp.hpp"
 #include "core/block.hpp"
+#include "core/param_label.hpp"  // the name a parameter's widget shows
 
 namespace fraktal::editor {
 
@@ -29,10 +30,6 @@ struct ParamWidgetsShown {
     // Records the last ImGui item as parameter `name` showing `label` (empty: the name).
     void noteLastItem(std::string name, std::string label = {});
 };
-
-// The name a parameter's widget shows: its declared label, else its name in words ("box_size":
-// "Box size").
-std::string paramLabel(const ParamDecl& decl);
 
 // Draws the widget for one parameter; returns whether the value changed this frame. The value
 // is clamped to the declared range (a typed value outside it is reported: dragClamped); a toggle
