@@ -57,7 +57,6 @@ shards=$((2 * $(nproc)))
 shard_pids=()
 for ((shard = 0; shard < shards; shard++)); do
   GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp" \
     build-asan/tests/fraktal_tests --gtest_brief=1 --gtest_filter="-$release_only" >"build-asan/shard$shard.log" 2>&1 &
   shard_pids+=($!)
 done
