@@ -14,15 +14,6 @@ presets=$2
 out=$3
 mkdir -p "$out"
 
-# A key or chord held for a frame, as a hand presses it (ImGui 1.86 polls keys once a frame).
-press() {
-    xdotool keydown "$@"
-    wait_frames 1
-    for k in "$@"; do last="$k $(echo ${last:-})"; done
-    xdotool keyup $last
-    last=
-    wait_frames 1
-}
 # type_at X Y TEXT: Ctrl+click the drag at (X, Y) to type into it, replace its text, Enter.
 type_at() {
     to "$1" "$2"
@@ -33,10 +24,10 @@ type_at() {
     wait_frames 2
     xdotool keyup ctrl
     wait_frames 2
-    press ctrl a
+    press_keys ctrl a
     xdotool type --delay 30 "$3"
     wait_frames 1
-    press Return
+    press_keys Return
     wait_frames 3
 }
 rect_centre() { echo "$1" | jq -r '"\(.[0] + .[2] / 2 | floor) \(.[1] + .[3] / 2 | floor)"'; }

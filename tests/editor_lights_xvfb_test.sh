@@ -20,15 +20,6 @@ wait_for() {
     while [ "$(q "$1")" != true ] && [ $tries -lt 100 ]; do wait_frames 1; tries=$((tries + 1)); done
     wait_frames 2 # the undo step is committed after the frame that shows the edit
 }
-# A key or chord held for a frame, as a hand presses it (ImGui 1.86 polls keys once a frame).
-press() {
-    xdotool keydown "$@"
-    wait_frames 1
-    for k in "$@"; do last="$k $(echo ${last:-})"; done
-    xdotool keyup $last
-    last=
-    wait_frames 1
-}
 # The centre of the Lights tab's widget $1 as last drawn (window coordinates).
 widget() { q ".lights.widgets[\"$1\"] | \"\(.[0] + .[2] / 2 | floor) \(.[1] + .[3] / 2 | floor)\""; }
 click_widget() {
@@ -54,10 +45,10 @@ ctrl_click() {
 type_into() {
     set -- "$1" "$2" $(widget "$1")
     ctrl_click "$3" "$4"
-    press ctrl a
+    press_keys ctrl a
     xdotool type --delay 30 "$2"
     wait_frames 1
-    press Return
+    press_keys Return
     wait_frames 2
 }
 focus() { q .lights.focusDistance; }
@@ -132,7 +123,7 @@ wait_for '.fileBrowser.shown'
 [ "$(q .fileBrowser.shown)" = true ] || fail "Browse... did not open the file browser"
 xdotool type --delay 30 "$home/sky2.exr"
 wait_frames 1
-press Return
+press_keys Return
 wait_for '.lights.environmentMap == "sky2.exr"'
 [ "$(q .lights.environmentMap)" = sky2.exr ] || fail "the browser's choice was not taken as the map ($(q .lights.environmentMap))"
 [ "$(q .fileBrowser.shown)" = false ] || fail "the file browser stays open after choosing"

@@ -19,14 +19,6 @@ key_at() { q ".document.animation.tracks[]? | select(.target == \"$track\") | .k
 frame_x() { q "(.timeline.bar[0] + ($1 - .timeline.shownFrames[0]) / (.timeline.shownFrames[1] - .timeline.shownFrames[0]) * .timeline.bar[2]) | round"; }
 ruler_y() { q '.timeline.bar[1] + 8 | round'; }
 scrub_to() { to "$(frame_x "$1")" "$(ruler_y)"; xdotool click 1; wait_frames 3; }
-press() {
-    xdotool keydown "$@"
-    wait_frames 1
-    for k in "$@"; do last="$k $(echo ${last:-})"; done
-    xdotool keyup $last
-    last=
-    wait_frames 1
-}
 # click_marker: a click on the key marker beside the height, as a person does.
 click_marker() {
     wait_for ".timeline.keyMarkers[\"$track\"] != null" true
@@ -69,10 +61,10 @@ xdotool click 1
 wait_frames 2
 xdotool keyup ctrl
 wait_frames 2
-press ctrl a
+press_keys ctrl a
 xdotool type --delay 30 3.6
 wait_frames 1
-press Return
+press_keys Return
 wait_frames 3
 [ "$(height)" = 3.6 ] || fail "typing 3.6 set the height to $(height)"
 click_marker

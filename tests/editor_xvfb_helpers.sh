@@ -124,3 +124,13 @@ viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1
 # (where the panel draws it this frame, so that a row added above it moves nothing in a test).
 widget_centre() { q ".paramWidgets[] | select(.name == \"$1\") | .rect | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
 
+# press_keys KEY...: a key or chord held for a frame, as a hand presses it (ImGui 1.86 polls keys
+# once a frame): down in order, up in reverse.
+press_keys() {
+    xdotool keydown "$@"
+    wait_frames 1
+    for k in "$@"; do last="$k $(echo ${last:-})"; done
+    xdotool keyup $last
+    last=
+    wait_frames 1
+}

@@ -112,18 +112,7 @@ std::string withFittedFormula(std::string text, const Formula& f, double factor,
 }
 
 // The preset as checked: the file's, or its animation's frame `o.frame`.
-Preset checkedPreset(const CheckOptions& o) {
-    Preset preset = loadSceneFile(o.preset);
-    if (!o.frame) return preset;
-    const Animation& a = preset.animation;
-    if (a.empty())
-        throw std::runtime_error(o.preset + ": --frame " + std::to_string(*o.frame) + ": the preset has no animation");
-    if (*o.frame < a.firstFrame || *o.frame > a.lastFrame)
-        throw std::runtime_error(o.preset + ": --frame " + std::to_string(*o.frame) +
-                                 ": outside the animation's frames " + std::to_string(a.firstFrame) + "-" +
-                                 std::to_string(a.lastFrame));
-    return presetAtFrame(preset, *o.frame);
-}
+Preset checkedPreset(const CheckOptions& o) { return sceneAtFrame(o.preset, o.frame); }
 
 // GPU (float) against CPU (double) at random points in the bound; the count that agree.
 void compareGpuWithCpu(const Formula& f, gl::DEProbe& probe, uint64_t seed) {
@@ -426,6 +415,18 @@ int runCheck(const CheckOptions& o) {
 }
 
 }  // namespace
+
+Preset sceneAtFrame(const std::string& file, std::optional<int> frame) {
+    Preset preset = loadSceneFile(file);
+    if (!frame) return preset;
+    const Animation& a = preset.animation;
+    if (a.empty())
+        throw std::runtime_error(file + ": --frame " + std::to_string(*frame) + ": the preset has no animation");
+    if (*frame < a.firstFrame || *frame > a.lastFrame)
+        throw std::runtime_error(file + ": --frame " + std::to_string(*frame) + ": outside the animation's frames " +
+                                 std::to_string(a.firstFrame) + "-" + std::to_string(a.lastFrame));
+    return presetAtFrame(preset, *frame);
+}
 
 void addCheckCommand(CLI::App& app, Action& action) {
     auto o = std::make_shared<CheckOptions>();

@@ -3,6 +3,10 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
+#include <string>
+
+#include "core/preset.hpp"
 
 namespace fraktal::cli {
 
@@ -20,5 +24,9 @@ void addEncodeCommand(CLI::App& app, Action& action);
 void addFarmCommand(CLI::App& app, Action& action);
 void addImportCommand(CLI::App& app, Action& action);
 void addMeshCommand(CLI::App& app, Action& action);
+
+// A scene file (preset or .fract) as loaded, or its animation's `frame` (`--frame N` of check and
+// mesh); a frame on a still or outside the animation is an error naming the file.
+Preset sceneAtFrame(const std::string& file, std::optional<int> frame);
 
 }  // namespace fraktal::cli

@@ -48,16 +48,7 @@ double parsePrintSize(const std::string& text) {
 Preset meshedPreset(const MeshOptions& o) {
     if (isPlanePresetFile(o.preset))
         throw std::runtime_error(o.preset + ": a 2D preset has no surface to mesh (mesh a 3D preset)");
-    Preset preset = loadSceneFile(o.preset);
-    if (!o.frame) return preset;
-    const Animation& a = preset.animation;
-    if (a.empty())
-        throw std::runtime_error(o.preset + ": --frame " + std::to_string(*o.frame) + ": the preset has no animation");
-    if (*o.frame < a.firstFrame || *o.frame > a.lastFrame)
-        throw std::runtime_error(o.preset + ": --frame " + std::to_string(*o.frame) +
-                                 ": outside the animation's frames " + std::to_string(a.firstFrame) + "-" +
-                                 std::to_string(a.lastFrame));
-    return presetAtFrame(preset, *o.frame);
+    return sceneAtFrame(o.preset, o.frame);
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
