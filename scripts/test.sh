@@ -47,8 +47,17 @@ stage "sanitizer build"
 # 80 MiB under ASan once, from 1.25 GiB, likely that): they run in Release only. The random-stack
 # property test of the step factor (200 stacks, ~20 s of CPU) runs in Release only, and so does the
 # comparison of imported Mandelbulber2 files with mandelbulber2's own renders (the import's code
-# runs under the sanitizers in the other import tests).
+# runs under the sanitizers in the other import tests). So do the tests that spend ten seconds or
+# more of Release time measuring step factors or fitting estimators over thousands of rays (three to
+# five times that under the sanitizers): their code runs under the sanitizers in the shorter tests
+# of the same suites, on fewer rays.
 release_only='CliRender.LargeImagePeakMemoryIsBounded:SoakViewport.*:SafeStep.RandomStacksWithTheCheckedFactorNeverOvershoot:ImportVsMandelbulber2.*'
+release_only+=':UndoDerived.EditorUndoesAndRedoesADeleteAcrossTheMeasurement:UndoDerived.UndoingAValueEditLetsTheMeasurementRunOn'
+release_only+=':SafeStep.BulbPresetsShipWithAMeasuredFactorOfAtLeast08:SafeStep.EditorAppliesTheChecksFurtherRoundsWhenTheyEnd'
+release_only+=':CheckFit.ApplyWritesTheSafeFactorOfAUselessEstimateAndFails:CheckFit.AUselessEstimateFailsAndNamesTheEstimatorTheFitChooses'
+release_only+=':CheckFit.FitApplyWritesTheFittedFormulaAndKeepsTheRestOfTheFile:CheckFit.TheFitTakesNoEstimatorUnderWhichNoRayMeetsTheObject'
+release_only+=':KleinianPresets.CameraInsideTheObjectFailsTheCheck:KleinianPresets.WrapOutsideItsGroupHasNoSafeStepFactor'
+release_only+=':Preset.CheckCommandChecksAnAnimationFrame'
 # Shards side by side, two a core (the tests already run side by side under ctest; gtest deals the
 # tests out by number, and with one shard a core the slow ones left one shard running 3 minutes
 # after the other): each shard's output is printed whole once it ends, and any failing shard fails

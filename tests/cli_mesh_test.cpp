@@ -13,8 +13,6 @@
 namespace fraktal {
 namespace {
 
-std::string preset(const std::string& name) { return (test::sourceDir() / "presets" / name).string(); }
-
 std::string bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -22,7 +20,7 @@ std::string bytes(const std::string& path) {
 
 TEST(CliMesh, StlReopensClosedAndScaledToThePrintSize) {
     test::Sandbox box("fraktal_cli_mesh_stl_");
-    const test::CliRun run = test::runCli("mesh " + preset("mandelbulb.json") +
+    const test::CliRun run = test::runCli("mesh " + test::shippedPresetFile("mandelbulb.json") +
                                           " --resolution 48 --print-size 10cm --threads 2 -o " + box.path("bulb.stl"));
     ASSERT_EQ(run.exitCode, 0) << run.output;
     const mesh::TriangleMesh m = mesh::readMesh(box.path("bulb.stl"));
@@ -39,8 +37,8 @@ TEST(CliMesh, StlReopensClosedAndScaledToThePrintSize) {
 
 TEST(CliMesh, VdbReopensAsALevelSet) {
     test::Sandbox box("fraktal_cli_mesh_vdb_");
-    const test::CliRun run =
-        test::runCli("mesh " + preset("mandelbulb.json") + " --resolution 40 --threads 2 -o " + box.path("bulb.vdb"));
+    const test::CliRun run = test::runCli("mesh " + test::shippedPresetFile("mandelbulb.json") +
+                                          " --resolution 40 --threads 2 -o " + box.path("bulb.vdb"));
     ASSERT_EQ(run.exitCode, 0) << run.output;
     const mesh::VdbSummary vdb = mesh::readVdb(box.path("bulb.vdb"));
     EXPECT_EQ(vdb.grids, 1);
@@ -54,7 +52,7 @@ TEST(CliMesh, VdbReopensAsALevelSet) {
 // The mesh of an animation's frame is the mesh of that frame saved as a still.
 TEST(CliMesh, FrameOfAnAnimationEqualsItsStill) {
     test::Sandbox box("fraktal_cli_mesh_frame_");
-    const std::string animated = preset("mandelbulb_power_morph.json");
+    const std::string animated = test::shippedPresetFile("mandelbulb_power_morph.json");
     savePresetFile(box.path("still.json"), presetAtFrame(loadPreset(animated), 150));
     const std::string options = " --resolution 40 --threads 2 -o ";
     const test::CliRun frame = test::runCli("mesh " + animated + " --frame 150" + options + box.path("frame.ply"));
@@ -78,15 +76,16 @@ TEST(CliMesh, BadInputIsRefusedAndLeavesNothing) {
     test::Sandbox box("fraktal_cli_mesh_bad_");
     const std::string blocker = box.write("file", "not a folder");
     const std::vector<BadMesh> cases = {
-        {preset("menger.json") + " --resolution 1000000 -o OUT.ply", "needs about"},
-        {preset("menger.json") + " -o " + blocker + "/x.ply", blocker},
-        {preset("2d/mandelbrot.json") + " -o OUT.ply", "2D preset has no surface"},
-        {preset("menger.json") + " -o OUT.xyz", "unknown output format \".xyz\""},
-        {preset("menger.json") + " --frame 3 -o OUT.ply", "the preset has no animation"},
-        {preset("mandelbulb_power_morph.json") + " --frame 999 -o OUT.ply", "outside the animation's frames 0-239"},
-        {preset("menger.json") + " --print-size 10parsecs -o OUT.ply", "--print-size"},
-        {preset("menger.json") + " --print-size 10cm -o OUT.vdb", "--print-size scales a mesh"},
-        {(test::sourceDir() / "presets" / "missing.json").string() + " -o OUT.ply", "missing.json"},
+        {test::shippedPresetFile("menger.json") + " --resolution 1000000 -o OUT.ply", "needs about"},
+        {test::shippedPresetFile("menger.json") + " -o " + blocker + "/x.ply", blocker},
+        {test::shippedPresetFile("2d/mandelbrot.json") + " -o OUT.ply", "2D preset has no surface"},
+        {test::shippedPresetFile("menger.json") + " -o OUT.xyz", "unknown output format \".xyz\""},
+        {test::shippedPresetFile("menger.json") + " --frame 3 -o OUT.ply", "the preset has no animation"},
+        {test::shippedPresetFile("mandelbulb_power_morph.json") + " --frame 999 -o OUT.ply",
+         "outside the animation's frames 0-239"},
+        {test::shippedPresetFile("menger.json") + " --print-size 10parsecs -o OUT.ply", "--print-size"},
+        {test::shippedPresetFile("menger.json") + " --print-size 10cm -o OUT.vdb", "--print-size scales a mesh"},
+        {test::shippedPresetFile("missing.json") + " -o OUT.ply", "missing.json"},
     };
     for (const BadMesh& c : cases) {
         std::string args = "mesh " + c.args + " --threads 2";

@@ -26,7 +26,7 @@ struct Sandbox : test::Sandbox {
     Sandbox() : test::Sandbox("fraktal_cli_") {}
 };
 
-std::string preset(const std::string& name) { return (test::sourceDir() / "presets" / (name + ".json")).string(); }
+std::string preset(const std::string& name) { return test::shippedPresetFile(name + ".json"); }
 
 std::string readFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -68,7 +68,7 @@ std::vector<float> readChannel(const std::string& path, const char* name, int& w
 // render STILL.exr` renders the same image again (its size, samples and view, not the file's).
 TEST(CliRender, A2dStillReRendersFromItsExrToTheSameImage) {
     Sandbox box;
-    const std::string julia = (test::sourceDir() / "presets" / "2d" / "julia.json").string();
+    const std::string julia = test::shippedPresetFile("2d/julia.json");
     const auto first = runCli("render " + julia + " -o " + box.path("a.exr") + " --size 24x16 --spp 2 --float -q");
     ASSERT_EQ(first.exitCode, 0) << first.output;
     const auto info = runCli("info " + box.path("a.exr"));

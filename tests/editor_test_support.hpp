@@ -18,6 +18,20 @@ inline editor::Document documentFrom(const char* name) {
     return d;
 }
 
+// Runs `frame` (one of the editor's frames) every 10 ms while `busy` holds, for at most `seconds`
+// (a deadline, not a count of frames: under the sanitizers a step-factor measurement takes
+// minutes); then one frame more. False if `busy` still holds.
+template <class Busy, class Frame>
+bool framesWhile(Busy busy, Frame frame, double seconds = 600.0) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (busy() && std::chrono::steady_clock::now() < end) {
+        frame();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    frame();
+    return !busy();
+}
+
 // Polls like the editor's frame loop does until the job ends; false on timeout.
 inline bool pollUntilEnded(editor::ExportJob& job, double seconds) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);

@@ -136,11 +136,7 @@ TEST(UndoDerived, EditorUndoesAndRedoesADeleteAcrossTheMeasurement) {
         s.history.commit(s.doc);
     };
     auto measuredToTheEnd = [&] {
-        for (int i = 0; i < 6000 && (s.stepFactor.refining() || s.stepFactor.measuredKey.empty()); ++i) {
-            frame();
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-        frame();
+        test::framesWhile([&] { return s.stepFactor.refining() || s.stepFactor.measuredKey.empty(); }, frame);
         ASSERT_FALSE(s.stepFactor.refining());
     };
     auto blocks = [&] {
@@ -211,11 +207,7 @@ TEST(UndoDerived, UndoingAValueEditLetsTheMeasurementRunOn) {
     EXPECT_EQ(s.doc.preset.formula.iterations, 12);
     EXPECT_TRUE(s.stepFactor.refining()) << "undoing a value edit stopped the measurement";
     EXPECT_EQ(s.stepFactor.measuringSince, since) << "undoing a value edit measured again";
-    for (int i = 0; i < 6000 && s.stepFactor.refining(); ++i) {
-        frame();
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    frame();
+    ASSERT_TRUE(test::framesWhile([&] { return s.stepFactor.refining(); }, frame));
     EXPECT_EQ(s.doc.preset.formula.deFactor, s.stepFactor.measured);
     EXPECT_EQ(s.history.present().preset.formula.deFactor, s.stepFactor.measured);
     EXPECT_EQ(s.history.undoLabel(), "add Rotate");

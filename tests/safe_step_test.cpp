@@ -36,13 +36,15 @@ Preset amazingSurfWithAHeavyTail() {
     return p;
 }
 
-// Polls the editor's step factor, as its frames do, until the further rounds have ended.
+// Polls the editor's step factor, as its frames do, until the further rounds have ended (a
+// deadline, not a count of polls: under the sanitizers the rounds take minutes).
 void finishRefining(editor::AutoStepFactor& a, Formula& f, const Camera& camera) {
-    for (int i = 0; i < 6000 && a.refining(); ++i) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::minutes(10);
+    while (a.refining() && std::chrono::steady_clock::now() < end) {
         if (a.update(f, camera)) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    ASSERT_FALSE(a.refining()) << "the further rounds did not end in two minutes";
+    ASSERT_FALSE(a.refining()) << "the further rounds did not end in ten minutes";
 }
 
 std::vector<const BlockDesc*> stepBlocks() {

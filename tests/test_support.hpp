@@ -20,8 +20,11 @@ namespace fraktal::test {
 
 inline std::filesystem::path sourceDir() { return FRAKTAL_SOURCE_DIR; }
 
+// The path of a shipped preset by its name under presets/ ("mandelbulb.json", "2d/julia.json").
+inline std::string shippedPresetFile(const std::string& name) { return (sourceDir() / "presets" / name).string(); }
+
 // A shipped 3D preset by file name ("mandelbulb.json").
-inline Preset shippedPreset(const std::string& name) { return loadPreset(sourceDir() / "presets" / name); }
+inline Preset shippedPreset(const std::string& name) { return loadPreset(shippedPresetFile(name)); }
 
 // Every preset shipped in presets/, by file name.
 inline std::vector<std::filesystem::path> shippedPresets() {

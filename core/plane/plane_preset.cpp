@@ -41,7 +41,7 @@ std::vector<PlaneNode> parseNodeList(const ReadContext& context, FieldReader& r,
     return nodes;
 }
 
-PlaneFormula parseFormula(const ReadContext& context, const json& j) {
+PlaneFormula parsePlaneFormula(const ReadContext& context, const json& j) {
     FieldReader r(context, j, "formula");
     const std::string& file = context.file;
     PlaneFormula f;
@@ -85,7 +85,7 @@ PlaneViewRect parseView(const ReadContext& context, const json& j) {
 
 // The 2D renderer uses the image size and samples of the 3D "render" section; its colour
 // management is the shared "colorManagement" section.
-void parseRender(const ReadContext& context, const json& j, RenderSettings& s) {
+void parsePlaneRender(const ReadContext& context, const json& j, RenderSettings& s) {
     FieldReader r(context, j, "render");
     readImageSize(r, s);
     r.finish();
@@ -117,9 +117,9 @@ PlanePreset readPlanePreset(const PresetDocument& doc, const std::string& file) 
     p.migrationNotes = doc.migration.notes;
     p.name = r.string("name", "");
     p.description = r.string("description", "", 65536);
-    p.formula = parseFormula(context, r.at("formula"));
+    p.formula = parsePlaneFormula(context, r.at("formula"));
     if (r.has("view")) p.view = parseView(context, r.at("view"));
-    if (r.has("render")) parseRender(context, r.at("render"), p.render);
+    if (r.has("render")) parsePlaneRender(context, r.at("render"), p.render);
     if (r.has("colorManagement")) parseColorManagement(context, r.at("colorManagement"), p.render);
     if (r.has("colouring")) p.colouring = parseColouring(context, r.at("colouring"));
     r.finish();
