@@ -53,6 +53,7 @@ benchmarks=(
   "viewport|bench/viewport/run.sh $build"
   "viewport_passes|for p in mandelbulb menger; do echo \"## \$p\"; $fraktal bench viewport presets/\$p.json --size 640x360 --frames 8 --degrees 0.5 --from-rest --time-passes; done"
   "editor_load|bench/viewport/editor_load.sh $build 2"
+  "editor_rest_frames|bench/viewport/rest_frames.sh $build 20"
   "editor_pathtrace|FRAKTAL_PATHTRACE_MEASURE=1 tests/editor_pathtrace_xvfb_test.sh $fraktal presets $out/editor_pathtrace"
   # bench/stills
   "equal_quality|bench/stills/equal_quality.sh $build 640x360"

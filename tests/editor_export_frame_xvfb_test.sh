@@ -28,7 +28,7 @@ for size in 1600x800 900x900; do
     ew=${size%x*}; eh=${size#*x}
     shot="$out/guide_$size.png"
     HOME="$home" xvfb-run -a -s "-screen 0 1280x800x24" "$fraktal" edit "$preset" --export-size "$size" \
-        --frames 400 --screenshot "$shot" --frame-log "$out/guide_$size.jsonl" > /dev/null
+        --frames 3000 --until-settled --screenshot "$shot" --frame-log "$out/guide_$size.jsonl" > /dev/null
     # The guide in window pixels (app/editor/viewport/export_frame.cpp), inset 2 px from its outline, and
     # below the stats overlay.
     set -- $(tail -n 1 "$out/guide_$size.jsonl" | python3 -c "

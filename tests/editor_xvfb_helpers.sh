@@ -45,13 +45,13 @@ wait_for() {
         tries=$((tries + 1))
     done
 }
-# Waits until the viewport's image has converged at full resolution (at most 600 frames): a
-# structure edit compiles in the background and the image then refines over many frames.
+# Waits until the viewport's image has converged at full resolution (at most 300 s): a structure
+# edit compiles in the background and the image then refines over many frames, at rest as many
+# as its march steps need within the frame-time target (a heavy formula takes short frames).
 wait_settled() {
-    tries=0
-    while [ "$(q .viewportSettled)" != true ] && [ $tries -lt 600 ]; do
+    settle_end=$(($(date +%s) + 300))
+    while [ "$(q .viewportSettled)" != true ] && [ "$(date +%s)" -lt $settle_end ]; do
         wait_frames 1
-        tries=$((tries + 1))
     done
 }
 # start PRESET [OPTIONS...]: the editor in the background, after its first frames.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -109,4 +110,45 @@ TEST(ResolutionControl, NoTargetMeansFullResolution) {
 }
 
 }  // namespace
+}  // namespace fraktal::viewport
+
+// At rest a frame marches every unfinished ray by its steps: against a simulated renderer whose
+// frame costs a fixed part plus a part per step, the steps settle where the frame holds the
+// target (a heavy formula: one step's worth is all that fits, never less than one step), a light
+// formula gets the whole cap, a fixed part over the target gets twice its time for the march
+// (not one step: that frame would be hardly shorter and the view would settle far later), and
+// the steps grow at most twice a frame.
+namespace fraktal::viewport {
+TEST(ResolutionControl, StepsAtRestFitTheFrameTimeTarget) {
+    struct Case {
+        double fixedMs, msPerStep;
+        int settleAt;  // the steps it must settle at
+    };
+    constexpr double target = 50.0;
+    // kleinian-like (900 ms for 30 steps), a medium one, a light one; a loaded machine whose
+    // fixed part is over the target, with a light and with a heavy formula.
+    for (const Case c :
+         {Case{5.0, 30.0, 1}, Case{5.0, 2.0, 22}, Case{2.0, 0.5, 30}, Case{300.0, 10.0, 30}, Case{100.0, 20.0, 10}}) {
+        SCOPED_TRACE(c.msPerStep);
+        RestSteps control;
+        int steps = 30;
+        for (int frame = 0; frame < 40; ++frame) {
+            const int next = control.next(steps, c.fixedMs + c.msPerStep * steps, target, 30);
+            EXPECT_GE(next, 1);
+            EXPECT_LE(next, 30);
+            EXPECT_LE(next, 2 * steps);
+            steps = next;
+        }
+        EXPECT_NEAR(steps, c.settleAt, 1);
+        if (c.settleAt < 30) {
+            EXPECT_NEAR(control.msPerStep(), c.msPerStep, 1e-9) << "the part per step";
+        }
+        const double frameMs = c.fixedMs + c.msPerStep * steps;
+        if (c.settleAt > 1 && c.settleAt < 30) {
+            EXPECT_LE(frameMs, std::max(target, 3 * c.fixedMs) * 1.1);
+        }
+    }
+    EXPECT_EQ(RestSteps{}.next(3, 900.0, 0.0, 30), 30) << "no target: the settings' steps";
+    EXPECT_EQ(RestSteps{}.next(1, 1.0, 50.0, 30), 2) << "growth at most twice a frame";
+}
 }  // namespace fraktal::viewport

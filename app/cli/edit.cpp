@@ -17,6 +17,7 @@ struct EditOptions {
     std::string preset;
     int frames = 0;
     std::string screenshot;
+    bool untilSettled = false;
     std::string tab;
     int width = 0, height = 0;  // 0: the editor's remembered size
     std::string stateFile;
@@ -33,6 +34,7 @@ int runEdit(const EditOptions& o) {
     e.preset = o.preset;
     e.frames = o.frames;
     e.screenshot = o.screenshot;
+    e.untilSettled = o.untilSettled;
     e.width = o.width;
     e.height = o.height;
     e.sidebarTab = o.tab;
@@ -64,6 +66,9 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("preset", o->preset, "Preset file (JSON) or exported EXR to open")->check(CLI::ExistingFile);
     cmd->add_option("--frames", o->frames, "Draw this many frames, then exit")->check(CLI::Range(1, 100000));
     cmd->add_option("--screenshot", o->screenshot, "With --frames: save a PNG of the whole window at the end")
+        ->needs("--frames");
+    cmd->add_flag("--until-settled", o->untilSettled,
+                  "With --frames: end at the first frame the view has finished refining (at most --frames)")
         ->needs("--frames");
     cmd->add_option("--tab", o->tab, "Scene panel tab to show first (2D documents: View, Render, Colouring, Presets)")
         ->check(CLI::IsMember({"Camera", "Render", "Shading", "Lights", "Presets", "View", "Colouring"}));

@@ -362,6 +362,10 @@ int runEditor(const EditorOptions& o) {
             compiler = std::make_unique<BackgroundCompiler>(
                 [compileContext] { glfwMakeContextCurrent(compileContext); }, [] { glfwMakeContextCurrent(nullptr); });
         std::unique_ptr<ViewportView> viewport = makeViewportView(*s.color, compiler.get());
+        // A scripted run (--frames, a screenshot at the end) draws the same frames on every
+        // machine: its steps per frame at rest are the settings', not fitted to this machine's
+        // frame time.
+        viewport->setStepsFitAtRest(o.frames == 0);
         PlaneViewport planeViewport(*s.color);
         ThumbnailRenderer thumbnails;
         UiRedrawState uiRedraw;
@@ -467,8 +471,16 @@ int runEditor(const EditorOptions& o) {
                 if (uiDraw == UiDraw::FullAndCapture) uiLayers.capture(fbW, fbH, viewportPixels);
             }
 
+            const bool viewSettled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
+            const auto logThisFrame = [&] {
+                const float viewportRect[4] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW,
+                                               s.layout.viewportH};
+                if (!s.doc.plane)
+                    logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect, uiDraw);
+            };
             // A scripted run counts frames the viewport drew, not frames spent waiting for a compile.
-            if (o.frames > 0 && !(!s.doc.plane && viewport->stats().compiling) && ++frame >= o.frames) {
+            if (o.frames > 0 && !(!s.doc.plane && viewport->stats().compiling) &&
+                (++frame >= o.frames || (o.untilSettled && viewSettled))) {
                 if (!o.screenshot.empty()) {
                     try {
                         saveWindowScreenshot(o.screenshot, fbW, fbH);
@@ -482,15 +494,15 @@ int runEditor(const EditorOptions& o) {
                     std::fprintf(stderr, "fraktal: %s\n", compileError.c_str());
                     status = 2;
                 }
+                logThisFrame();  // the frame the run ends on (what the screenshot shows)
                 break;
             }
             glfwSwapBuffers(window);
             ++framesDrawn;
             if (!o.stateFile.empty()) {
                 try {
-                    const bool viewportSettled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
                     writeStateFile(o.stateFile,
-                                   stateJson(s, framesDrawn, compileError, viewportSettled,
+                                   stateJson(s, framesDrawn, compileError, viewSettled,
                                              s.doc.plane ? nullptr : &viewport->stats(), uiDraw),
                                    lastState);
                 } catch (const std::exception& e) {
@@ -498,10 +510,7 @@ int runEditor(const EditorOptions& o) {
                 }
             }
             if (o.slowFrameMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.slowFrameMs));
-            const float viewportRect[4] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW,
-                                           s.layout.viewportH};
-            if (!s.doc.plane)
-                logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect, uiDraw);
+            logThisFrame();
 
             // One undo step per finished gesture: commit only when nothing is being dragged.
             if (!ImGui::IsAnyItemActive() && !s.cameraGesture) s.history.commit(s.doc);

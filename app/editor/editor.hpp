@@ -10,6 +10,7 @@ struct EditorOptions {
     std::filesystem::path preset;           // opened at start (empty: a new document)
     int frames = 0;                         // > 0: draw this many frames, then exit
     std::filesystem::path screenshot;       // with frames: a PNG of the whole window after the last
+    bool untilSettled = false;              // with frames: end at the first frame the view has settled
     int width = 0, height = 0;              // 0: the size remembered from the last run, else 1280x800
     bool useIniFile = true;                 // false for reproducible screenshots
     std::string sidebarTab;                 // Scene tab shown first: Camera, Render, Shading or Presets

@@ -29,4 +29,20 @@ double ResolutionController::next(bool changed, double lastFrameMs) {
     return scale_ = chosen;
 }
 
+int RestSteps::next(int steps, double frameMs, double targetMs, int cap) {
+    if (targetMs <= 0.0) return cap;
+    if (lastSteps_ > 0 && steps != lastSteps_) {
+        const double slope = (frameMs - lastMs_) / double(steps - lastSteps_);
+        if (slope > 0.0) msPerStep_ = msPerStep_ < 0.0 ? slope : 0.5 * (msPerStep_ + slope);
+    }
+    lastSteps_ = steps;
+    lastMs_ = frameMs;
+    // Before two frames tell the parts apart, the whole frame counts as march.
+    const double fixedMs = msPerStep_ < 0.0 ? 0.0 : std::clamp(frameMs - msPerStep_ * steps, 0.0, frameMs);
+    const double marchMs = frameMs - fixedMs;
+    const double marchBudgetMs = std::max(targetMs - fixedMs, 2.0 * fixedMs);
+    const double fitting = steps * marchBudgetMs / std::max(marchMs, 1e-3);
+    return int(std::clamp(fitting, 1.0, double(std::max(std::min(2 * steps, cap), 1))));
+}
+
 }  // namespace fraktal::viewport

@@ -89,8 +89,8 @@ void drawAdvancedSection(ViewSettings& v, RenderSettings& r, Layout& layout) {
     noteWidgetRect(layout, "header:Advanced");
     if (!open) return;
     dragInt("Steps per frame", v.stepsPerFrame, 1, 1000, 0.5f,
-            "How far each ray marches in one frame; unfinished rays go on in the next. Smaller keeps the editor "
-            "responsive on a slow machine.");
+            "How far each ray marches in one frame at most; unfinished rays go on in the next. While the view "
+            "rests, a heavy fractal marches fewer steps a frame so that the editor stays responsive.");
     dragDouble("Lowest motion scale", v.motionMinScale, 1.0 / 16.0, 1.0, 0.002f, "%.3f x",
                "The smallest share of each side the viewport goes down to while the view moves, to hold the "
                "frame-time target (on a busy machine it may need an eighth).");

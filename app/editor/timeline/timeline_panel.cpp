@@ -13,6 +13,7 @@
 
 #include "app/editor/state/actions.hpp"
 #include "app/editor/viewport/camera_input.hpp"
+#include "app/editor/widgets/param_widgets.hpp"
 
 namespace fraktal::editor {
 
@@ -127,21 +128,21 @@ void controlsRow(EditorState& s) {
     label("Frame");
     ImGui::SetNextItemWidth(field);
     int frame = t.frame;
-    if (ImGui::InputInt("##frame", &frame, 0, 0)) {
-        t.frame = std::clamp(frame, a.firstFrame, shownLastFrame(a));
+    if (inputClamped("##frame", &frame, 0, 0, a.firstFrame, shownLastFrame(a), "Frame")) {
+        t.frame = frame;
         t.playing = false;
     }
     label("Start");
     ImGui::SetNextItemWidth(field);
     int first = a.firstFrame, last = shownLastFrame(a);
-    if (ImGui::InputInt("##start", &first, 0, 0)) a.firstFrame = std::clamp(first, 0, last);
+    if (inputClamped("##start", &first, 0, 0, 0, last, "Start")) a.firstFrame = first;
     label("End");
     ImGui::SetNextItemWidth(field);
-    if (ImGui::InputInt("##end", &last, 0, 0)) a.lastFrame = std::clamp(last, a.firstFrame, 10000000);
+    if (inputClamped("##end", &last, 0, 0, a.firstFrame, 10000000, "End")) a.lastFrame = last;
     label("fps");
     ImGui::SetNextItemWidth(field);
     double fps = a.fps;
-    if (ImGui::InputDouble("##fps", &fps, 0.0, 0.0, "%.4g")) a.fps = std::clamp(fps, 1e-3, 1000.0);
+    if (inputClamped("##fps", &fps, 1e-3, 1000.0, "%.4g", "fps")) a.fps = fps;
     ImGui::SameLine();
     const ImVec2 pathAt = ImGui::GetCursorScreenPos();
     ImGui::Checkbox("Path", &t.showCameraPath);

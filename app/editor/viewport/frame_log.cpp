@@ -22,6 +22,7 @@ void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camer
     const nlohmann::json line = {{"t", now},
                                  {"frame_ms", frameMs},
                                  {"render_ms", stats.renderMs},
+                                 {"steps_per_frame", stats.stepsPerFrame},
                                  {"scale", stats.internalScale},
                                  {"width", stats.width},
                                  {"height", stats.height},

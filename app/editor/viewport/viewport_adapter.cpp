@@ -1,5 +1,6 @@
 #include "app/editor/viewport/viewport_adapter.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -80,9 +81,20 @@ const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {
 bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevision& revision,
                                    const ViewSettings& settings, int width, int height) {
     const Formula& formula = preset.formula;
+    // The editor's whole last frame (the UI, the display, the swap too: all of it holds the window)
+    // if it refined the view at rest: the steps the next one at rest gets.
+    const double restTargetMs = std::max(settings.frameTimeTargetMs, viewport::kRestFrameTargetMs);
+    if (previousRestSteps_ > 0 && previousFrameMs_ > 0.0)
+        restSteps_ = restStepsControl_.next(previousRestSteps_, previousFrameMs_, restTargetMs, settings.stepsPerFrame);
+    previousRestSteps_ = 0;
+    // At rest the march gets the steps that fit the rest frame-time target (restSteps_); in motion
+    // the dynamic resolution holds the target and the view settings' steps apply.
+    const bool resting = fitStepsAtRest_ && lastAction_ == viewport::FrameAction::Continue &&
+                         resolution_.scale() == 1.0 && settings.frameTimeTargetMs > 0.0 && restSteps_ > 0;
     lastAction_ = viewport::FrameAction::Reset;
     if (!failedStructure_.empty() && revision.structure == failedStructure_) return false;
-    const viewport::ViewportOptions options = viewportOptions(settings);
+    viewport::ViewportOptions options = viewportOptions(settings);
+    if (resting) options.stepsPerFrame = std::min(restSteps_, settings.stepsPerFrame);
     if (!sameOptions(options, viewport_.options())) viewport_.setOptions(options);
     workingShading(preset);
     if (!programsReady(formula)) return false;
@@ -109,6 +121,10 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
     const bool idle = frame.settled && frame.action == viewport::FrameAction::Continue && frame.deEvalsPerPixel == 0.0;
     stats_.renderMs =
         idle ? 0.0 : std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (frame.action == viewport::FrameAction::Continue && !idle && settings.frameTimeTargetMs > 0.0 &&
+        resolution_.scale() == 1.0)
+        previousRestSteps_ = options.stepsPerFrame;
+    stats_.stepsPerFrame = options.stepsPerFrame;
     stats_.deEvaluationsPerPixel = frame.deEvalsPerPixel;
     stats_.reprojectedShare = frame.shareReprojected;
     stats_.convergedShare = frame.shareConverged;
@@ -156,6 +172,7 @@ double CoreViewportView::chooseScale(const scene::SceneRevision& revision, const
     const double frameMs =
         lastFrameStart_ ? std::chrono::duration<double, std::milli>(now - *lastFrameStart_).count() : 0.0;
     lastFrameStart_ = now;
+    previousFrameMs_ = frameMs;
     viewport::ResolutionControl control = resolution_.control();
     control.targetMs = settings.frameTimeTargetMs;
     control.minScale = settings.motionMinScale;
@@ -168,6 +185,7 @@ void CoreViewportView::render(const Preset& preset, const ViewSettings& settings
     const scene::SceneRevision revision = scene::sceneRevision(preset);
     if (path_ && !pathStillValid(revision, settings, fullWidth, fullHeight)) dropPath();
     if (path_) {
+        previousRestSteps_ = 0;  // a path-traced frame says nothing about the fast mode's steps
         pathFrame(preset, settings);
         return;
     }

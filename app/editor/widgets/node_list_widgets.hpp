@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/editor/widgets/param_widgets.hpp"
@@ -79,6 +80,21 @@ bool nodeRow(NodeT& n, int i, bool selected, const std::string* error, const cha
     return clicked;
 }
 
+// Whether `word` is one of the words of `text`, case aside.
+inline bool containsWord(std::string_view text, std::string_view word) {
+    auto lower = [](char c) { return char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c); };
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t end = std::min(text.find(' ', start), text.size());
+        const std::string_view w = text.substr(start, end - start);
+        if (w.size() == word.size() &&
+            std::equal(w.begin(), w.end(), word.begin(), [&](char a, char b) { return lower(a) == lower(b); }))
+            return true;
+        start = end + 1;
+    }
+    return false;
+}
+
 // The selected node's block, help, period and phase (not for estimators) and parameters;
 // `beforeParam(k)` draws what goes before parameter k's widget on its line (a key marker);
 // `shown` records the widgets (ParamWidgetsShown).
@@ -86,9 +102,14 @@ template <class NodeT>
 void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
                     const std::function<void(size_t)>& beforeParam = {}) {
     if (!n.block) return;
-    ImGui::Text("%s", std::string(n.block->label).c_str());
-    ImGui::SameLine();
-    ImGui::TextDisabled("%s", std::string(categoryName(n.block->category)).c_str());
+    const std::string label(n.block->label), category(categoryName(n.block->category));
+    ImGui::Text("%s", label.c_str());
+    // The kind of block beside its name, unless the name says it ("Mandelbulb power", not
+    // "Mandelbulb power power").
+    if (!containsWord(label, category)) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", category.c_str());
+    }
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", std::string(n.block->help).c_str());
     ImGui::PopTextWrapPos();
@@ -97,14 +118,14 @@ void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
         // iterations only): structure edits. Two lines, so that the parameters keep their place.
         const float field = ImGui::GetContentRegionAvail().x * 0.22f;
         ImGui::SetNextItemWidth(field);
-        if (ImGui::InputInt("Period", &n.period, 1, 1)) n.period = std::clamp(n.period, 1, kMaxPeriod);
+        inputClamped("Period", &n.period, 1, 1, 1, kMaxPeriod);
         ImGui::SameLine();
         ImGui::SetNextItemWidth(field);
-        if (ImGui::InputInt("Phase", &n.phase, 1, 1)) n.phase = std::clamp(n.phase, 0, n.period - 1);
+        inputClamped("Phase", &n.phase, 1, 1, 0, n.period - 1);
         n.phase = std::clamp(n.phase, 0, n.period - 1);
         helpMarker("The node runs on iterations i with i % period == phase (hybrids alternate blocks).");
         ImGui::SetNextItemWidth(field);
-        if (ImGui::InputInt("From", &n.start, 1, 10)) n.start = std::clamp(n.start, 0, kMaxIterations - 1);
+        inputClamped("From", &n.start, 1, 10, 0, kMaxIterations - 1);
         shown.noteLastItem("schedule:From");
         ImGui::SameLine();
         bool untilSet = n.stop < kMaxIterations;
@@ -113,7 +134,7 @@ void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
         if (untilSet) {
             ImGui::SameLine();
             ImGui::SetNextItemWidth(field);
-            if (ImGui::InputInt("##stop", &n.stop, 1, 10)) n.stop = std::clamp(n.stop, 1, kMaxIterations - 1);
+            inputClamped("##stop", &n.stop, 1, 10, 1, kMaxIterations - 1, "Before");
             shown.noteLastItem("schedule:Before iteration");
         }
         helpMarker(

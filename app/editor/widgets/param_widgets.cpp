@@ -18,25 +18,49 @@ namespace {
 // The reports of the ReportClamps alive (null: none; clamps then go unreported).
 ClampReports* gClampReports = nullptr;
 
+// After a widget over `values` was drawn: brings what it changed into [lo, hi] and hands the
+// clamp to the ReportClamps alive, named `name` (by default the label's visible text).
 template <typename T>
-bool dragClampedOf(const char* label, T* values, int count, float speed, T lo, T hi, const char* format, int flags,
-                   std::string_view name) {
-    constexpr bool integer = std::is_same_v<T, int>;
-    constexpr ImGuiDataType type = integer ? ImGuiDataType_S32 : ImGuiDataType_Double;
-    const ImGuiID id = ImGui::GetID(label);
-    flags &= ~ImGuiSliderFlags_AlwaysClamp;  // clamped below, where the typed value is still known
-    const bool changed = count == 1 ? ImGui::DragScalar(label, type, values, speed, &lo, &hi, format, flags)
-                                    : ImGui::DragScalarN(label, type, values, count, speed, &lo, &hi, format, flags);
+void clampAndReport(ImGuiID id, const char* label, T* values, int count, T lo, T hi, bool changed,
+                    std::string_view name) {
     std::optional<ClampNotice> notice;
     if (changed) {
         double v[4];
         std::copy(values, values + count, v);
         notice = clampIntoRange(name.empty() ? visibleLabel(label) : name, std::span(v, size_t(count)), double(lo),
-                                double(hi), integer);
+                                double(hi), std::is_same_v<T, int>);
         for (int i = 0; i < count; ++i) values[i] = T(v[i]);
     }
     if (gClampReports) gClampReports->drawn(id, std::move(notice), changed, ImGui::IsItemDeactivated());
     checkItemFits(label);
+}
+
+template <typename T>
+constexpr ImGuiDataType dataType() {
+    return std::is_same_v<T, int> ? ImGuiDataType_S32 : ImGuiDataType_Double;
+}
+
+template <typename T>
+bool dragClampedOf(const char* label, T* values, int count, float speed, T lo, T hi, const char* format, int flags,
+                   std::string_view name) {
+    const ImGuiID id = ImGui::GetID(label);
+    flags &= ~ImGuiSliderFlags_AlwaysClamp;  // clamped below, where the typed value is still known
+    const bool changed = count == 1
+                             ? ImGui::DragScalar(label, dataType<T>(), values, speed, &lo, &hi, format, flags)
+                             : ImGui::DragScalarN(label, dataType<T>(), values, count, speed, &lo, &hi, format, flags);
+    clampAndReport(id, label, values, count, lo, hi, changed, name);
+    return changed;
+}
+
+template <typename T>
+bool inputClampedOf(const char* label, T* value, T step, T stepFast, T lo, T hi, const char* format,
+                    std::string_view name) {
+    const bool changed = ImGui::InputScalar(label, dataType<T>(), value, step > 0 ? &step : nullptr,
+                                            stepFast > 0 ? &stepFast : nullptr, format);
+    // The ID after the widget: ImGui 1.86's GetID keeps the active ID alive, and asked before the
+    // input box's group (its +/- buttons) it hides the box's activity from the group, whose edit
+    // then fails ImGui's MarkItemEdited assertion.
+    clampAndReport(ImGui::GetID(label), label, value, 1, lo, hi, changed, name);
     return changed;
 }
 
@@ -80,6 +104,14 @@ bool dragClamped(const char* label, double* values, int count, float speed, doub
 bool dragClamped(const char* label, int* values, int count, float speed, int lo, int hi, const char* format, int flags,
                  std::string_view name) {
     return dragClampedOf(label, values, count, speed, lo, hi, format, flags, name);
+}
+
+bool inputClamped(const char* label, int* value, int step, int stepFast, int lo, int hi, std::string_view name) {
+    return inputClampedOf(label, value, step, stepFast, lo, hi, "%d", name);
+}
+
+bool inputClamped(const char* label, double* value, double lo, double hi, const char* format, std::string_view name) {
+    return inputClampedOf(label, value, 0.0, 0.0, lo, hi, format, name);
 }
 
 void helpMarker(const char* help) {

@@ -58,6 +58,13 @@ bool dragClamped(const char* label, double* values, int count, float speed, doub
 bool dragClamped(const char* label, int* values, int count, float speed, int lo, int hi, const char* format,
                  int flags = 0, std::string_view name = {});
 
+// ImGui's input box for one int (with +/- buttons when `step` > 0) or one double over [lo, hi]
+// that clamps and reports a typed value as dragClamped does (the schedule's and the timeline's
+// number fields).
+bool inputClamped(const char* label, int* value, int step, int stepFast, int lo, int hi, std::string_view name = {});
+bool inputClamped(const char* label, double* value, double lo, double hi, const char* format,
+                  std::string_view name = {});
+
 // A "(?)" marker whose tooltip shows `help` (used beside headers and settings).
 void helpMarker(const char* help);
 
