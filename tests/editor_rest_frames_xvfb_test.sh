@@ -1,7 +1,7 @@
 #!/bin/sh
 # A heavy formula does not hold the window at rest, in the real editor under Xvfb (Mesa llvmpipe):
 # kleinian.json opened and left alone, the pointer over the viewport. Its first frames at rest
-# march the settings' 30 steps a ray (4-8 s a frame on two cores); after them each frame at rest
+# march the settings' 30 steps a ray (3.5-8 s a frame on two cores); after them each frame at rest
 # marches the steps that fit the frame-time target (viewport::RestSteps), fewer than 30, and
 # the frames come at least twice as often as the 30-step frame did, measured in the same
 # run from the editor's frame log. A click on the Scene panel's Render tab during these frames

@@ -27,15 +27,17 @@ struct ResolutionControl {
 // At rest the viewport refines at full size, and a frame marches every unfinished ray by its
 // steps per frame. RestSteps picks the steps of the next frame at rest from the last ones. A
 // frame's time (the editor's whole frame) is a fixed part (the viewport's shading and
-// accumulation over the whole view, the UI, the display, whatever the steps) plus a part per step; the part per step is
-// estimated from two frames in a row with different steps (their busy rays change little from one frame to the next),
-// the fixed part is the rest. The march gets what the target leaves after the fixed part, but never less than twice the
-// fixed part: where that alone is over the target (a loaded machine, a large view, llvmpipe), fewer steps would make
-// the frames hardly shorter and the view much slower to settle. With twice the fixed part a view settles within 1.5
-// times its pure march time (the settings' 30 steps took about 1.3 times on the Mandelbulb under load). GPU timestamps
-// cannot tell the parts apart on llvmpipe, which runs a dispatch when a later pass needs its result. The steps grow at
-// most twice a frame (a frame that found little left to march says little about the next one) and stay within 1..cap
-// (<= 0 target: `cap`, always).
+// accumulation over the whole view, the UI, the display, whatever the steps) plus a part per
+// step; the part per step is estimated from two frames in a row with different steps (their busy
+// rays change little from one frame to the next), the fixed part is the rest. The march gets what
+// the target leaves after the fixed part, but never less than twice the fixed part: where that
+// alone is over the target (a loaded machine, a large view, llvmpipe), fewer steps would make the
+// frames hardly shorter and the view much slower to settle. With twice the fixed part, settling
+// takes at most 1.5 times the pure march time by this model; against the fixed 30 steps it took
+// 1.2-1.7 times as long on five heavy presets (bench/viewport/README.md). GPU timestamps cannot
+// tell the parts apart on llvmpipe, which runs a dispatch when a later pass needs its result. The
+// steps grow at most twice a frame (a frame that found little left to march says little about
+// the next one) and stay within 1..cap (<= 0 target: `cap`, always).
 class RestSteps {
    public:
     // The steps for the next frame at rest; the last one took `frameMs` with `steps`.

@@ -178,8 +178,6 @@ const std::map<std::string, std::string, std::less<>>& fieldLabels() {
     return labels;
 }
 
-// The fields a change at `parts` with `value` names: each field of an added or removed section,
-// else the innermost named one (a parameter's name, or "bailout", "exposure", ...).
 // A block parameter's label as its widget shows it, lower-cased for a sentence ("change of
 // packing", not "change of klein_r"), for the path [..., "nodes", i, "params", name (, index)] of a
 // node whose JSON in `document` names a built-in block; empty for any other path.
@@ -200,6 +198,9 @@ std::string blockParamLabel(const json& document, std::vector<std::string> parts
     return label;
 }
 
+// The fields a change at `parts` with `value` names: each field of an added or removed section,
+// else the innermost named one (a block parameter's label, or "bailout", "exposure", ...);
+// `document` is the side of the change that holds the path.
 template <typename Add>
 void nameFields(const json& document, std::vector<std::string> parts, const json& value, const Add& add) {
     if (value.is_object() && !value.empty()) {
@@ -264,8 +265,9 @@ std::string describeChange(const Document& before, const Document& after) {
         if (!onlyDerived && isDerived(path)) continue;
         // Fields at their default are not written: an added or removed section names the fields
         // inside it ({"params": {"power": 5.5}} is a change of power).
-        const json& value = op.value("op", "") == "remove" ? a.at(json::json_pointer(path)) : op.value("value", json());
-        nameFields(op.value("op", "") == "remove" ? a : b, components(path), value, add);
+        const bool removed = op.value("op", "") == "remove";
+        const json& value = removed ? a.at(json::json_pointer(path)) : op.value("value", json());
+        nameFields(removed ? a : b, components(path), value, add);
     }
     if (names.empty()) return "change";
     std::string text = "change of " + names[0];
