@@ -471,7 +471,10 @@ int runEditor(const EditorOptions& o) {
                 if (uiDraw == UiDraw::FullAndCapture) uiLayers.capture(fbW, fbH, viewportPixels);
             }
 
-            const bool viewSettled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
+            // Settled: the image on screen is this document's final one. Further rounds of the step
+            // factor's measurement may still change the factor, and the image with it.
+            const bool viewSettled =
+                s.doc.plane ? !planeViewport.refining() : viewport->stats().settled && !s.stepFactor.refining();
             const auto logThisFrame = [&] {
                 const float viewportRect[4] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW,
                                                s.layout.viewportH};

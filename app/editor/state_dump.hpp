@@ -12,7 +12,8 @@
 
 namespace fraktal::editor {
 
-// `viewportSettled`: the viewport's image is converged at full resolution (nothing left to refine).
+// `viewportSettled`: the viewport's image is converged at full resolution, and nothing pending (a
+// compile, the step factor's further rounds) will change it.
 // `viewport`: the 3D viewport's statistics (null for a 2D document), for its render mode.
 std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
                       const ViewportStats* viewport = nullptr, UiDraw ui = UiDraw::Full);

@@ -56,6 +56,8 @@ bool CoreViewportView::programsReady(const Formula& formula) {
     if (!result) {
         compiler_->request(formula);
         stats_.compiling = true;
+        // The image shown is the old structure's: not the settled picture of this document.
+        stats_.settled = false;
         return false;
     }
     if (!result->programs) {

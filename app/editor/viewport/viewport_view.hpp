@@ -24,7 +24,7 @@ struct ViewportStats {
     const char* action = "reset";   // what the last frame did: reset, reproject, hold or continue
     int aaLevel = 0;                // samples per pixel being worked on (the cap once settled)
     int aaCap = 1;
-    bool settled = false;        // every pixel has all its samples: frames cost nothing now
+    bool settled = false;        // every pixel of this document's image has all its samples (never while compiling)
     int width = 0, height = 0;   // render resolution
     double internalScale = 1.0;  // dynamic resolution: the share of the full size rendered (1 at rest)
     int compiles = 0;            // formula programs built so far (a value edit must not add one)
