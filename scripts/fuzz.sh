@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the preset loader and the Mandelbulber2 importer with libFuzzer (clang, AddressSanitizer +
 # UBSan) for a bounded time, seeded with the shipped presets, the malformed-preset corpus and
-# Mandelbulber2's toolbar settings files. Usage: scripts/fuzz.sh [SECONDS | build]
-# ("build" builds the fuzzer, if its sources changed, and runs nothing).
+# Mandelbulber2's toolbar settings files. Usage: scripts/fuzz.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
@@ -27,7 +26,6 @@ if [ ! -x "$out/preset_fuzzer" ] || [ -n "$(find "${sources[@]}" core/*.hpp core
   for job in $(jobs -p); do wait "$job"; done
   clang++ "${flags[@]}" "${objects[@]}" -o "$out/preset_fuzzer"
 fi
-[ "$seconds" != build ] || exit 0
 # The first folder collects new inputs; the seeds are only read.
 corpus="$out/corpus"
 mkdir -p "$corpus"

@@ -15,12 +15,7 @@ stage() {
   echo "-- stage '$1' took $((SECONDS - stage_start)) s"
   stage_start=$SECONDS
 }
-side_pid=
-report() {
-  [ -z "$side_pid" ] || kill -- "-$side_pid" 2>/dev/null || true
-  for i in "${!stage_names[@]}"; do printf "stage %-48s %5d s\n" "${stage_names[$i]}" "${stage_seconds[$i]}"; done
-}
-trap report EXIT
+trap 'for i in "${!stage_names[@]}"; do printf "stage %-32s %5d s\n" "${stage_names[$i]}" "${stage_seconds[$i]}"; done' EXIT
 
 # Every benchmark table names its command, date and commit (no build needed).
 scripts/check_bench_tables.sh
@@ -29,43 +24,20 @@ stage "install"
 scripts/build.sh
 stage "Release build"
 
-# The sanitizer build and the fuzzer's build compile beside the Release tests at idle priority
-# (SCHED_IDLE: they get a core only when no test wants it). The tests spend much of their time
-# waiting on the editor's frames and its background compiles, so on two cores the builds finish
-# mostly in that idle time instead of after the tests; a test's own time barely changes. Their
-# output is printed when the tests end.
-echo "== the sanitizer and fuzzing builds, beside the Release tests"
-idle=()
-if chrt --idle 0 true 2>/dev/null; then idle=(chrt --idle 0); else idle=(nice -n 19); fi
-mkdir -p build-asan
-set -m  # the side builds run in a process group of their own, which the exit trap stops whole
-(
-  # The test files that make a GL context are left out of this build (tests/CMakeLists.txt,
-  # FRAKTAL_TESTS_WITHOUT_GL): their work runs in Mesa's uninstrumented driver, and they run in
-  # the Release build.
-  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DFRAKTAL_SANITIZE=ON -DFRAKTAL_BUILD_EDITOR=OFF -DFRAKTAL_TESTS_WITHOUT_GL=ON \
-    $(command -v ccache >/dev/null && echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache) >/dev/null
-  "${idle[@]}" cmake --build build-asan --parallel "$(nproc)" --target fraktal_tests fraktal
-  "${idle[@]}" scripts/fuzz.sh build
-) >build-asan/side-builds.log 2>&1 &
-side_pid=$!
-set +m
-
 echo "== tests (Release)"
 # The soak test measures its own resident memory over time: it runs alone, after the others.
 (cd build && ctest --output-on-failure --parallel "$(nproc)" --timeout 900 -E '^SoakViewport' &&
     ctest --output-on-failure --timeout 900 -R '^SoakViewport')
 stage "Release tests"
 
-side_status=0
-wait "$side_pid" || side_status=$?
-side_pid=
-echo "== the sanitizer and fuzzing builds"
-tail -n 40 build-asan/side-builds.log
-[ "$side_status" = 0 ] || { echo "the sanitizer or fuzzing build failed (build-asan/side-builds.log)" >&2; exit 1; }
-stage "sanitizer and fuzzing builds, after the tests"
-
 echo "== tests under AddressSanitizer + UBSan"
+# The test files that make a GL context are left out of this build (tests/CMakeLists.txt,
+# FRAKTAL_TESTS_WITHOUT_GL): their work runs in Mesa's uninstrumented driver, and they run in the
+# Release build above.
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DFRAKTAL_SANITIZE=ON -DFRAKTAL_BUILD_EDITOR=OFF -DFRAKTAL_TESTS_WITHOUT_GL=ON \
+  $(command -v ccache >/dev/null && echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache) >/dev/null
+cmake --build build-asan --parallel "$(nproc)" --target fraktal_tests fraktal
+stage "sanitizer build"
 # Leak detection is on in the test binary; the command lines it starts run without it
 # (tests/child_sanitizer_options.cpp), and scripts/cli_leak_check.sh checks the command line's own
 # paths for leaks instead, one process each. Mesa's driver, which keeps allocations until exit, is
