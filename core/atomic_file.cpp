@@ -78,17 +78,36 @@ void AtomicFile::commit(bool keepBackup) {
     syncPath(folder.empty() ? fs::path(".") : folder, O_RDONLY | O_DIRECTORY);
 }
 
+void AtomicFile::commitForReaders() {
+    std::error_code ec;
+    fs::rename(temp_, destination_, ec);
+    if (ec) throw std::runtime_error(destination_.string() + ": cannot replace with the new file: " + ec.message());
+    committed_ = true;
+}
+
+namespace {
+
+void writeTemporary(const AtomicFile& file, std::string_view text) {
+    FILE* out = std::fopen(file.tempPath().c_str(), "wb");
+    if (!out) throw std::runtime_error(file.destination().string() + ": cannot write (" + std::strerror(errno) + ")");
+    const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+    const int err = errno;
+    if (std::fclose(out) != 0 || !ok)
+        throw std::runtime_error(file.destination().string() + ": cannot write (" + std::strerror(err) + ")");
+}
+
+}  // namespace
+
 void writeFileAtomically(const fs::path& destination, std::string_view text, bool keepBackup) {
     AtomicFile file(destination);
-    {
-        FILE* out = std::fopen(file.tempPath().c_str(), "wb");
-        if (!out) throw std::runtime_error(destination.string() + ": cannot write (" + std::strerror(errno) + ")");
-        const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
-        const int err = errno;
-        if (std::fclose(out) != 0 || !ok)
-            throw std::runtime_error(destination.string() + ": cannot write (" + std::strerror(err) + ")");
-    }
+    writeTemporary(file, text);
     file.commit(keepBackup);
+}
+
+void replaceFileForReaders(const fs::path& destination, std::string_view text) {
+    AtomicFile file(destination);
+    writeTemporary(file, text);
+    file.commitForReaders();
 }
 
 }  // namespace fraktal

@@ -26,6 +26,11 @@ class AtomicFile {
     // complete new file. With keepBackup, the old file is kept as "<destination>.bak" first
     // (by a hard link, so the destination never goes missing). Throws on failure.
     void commit(bool keepBackup = false);
+    // Renames the temporary file over the destination without flushing anything to disk: readers
+    // see the complete old or the complete new file, and a crash may lose the new one. For files
+    // that mirror live state many times a second (the editor's --state-file), where two flushes a
+    // write cost more than the write. Throws on failure.
+    void commitForReaders();
 
    private:
     std::filesystem::path destination_, temp_;
@@ -34,5 +39,7 @@ class AtomicFile {
 
 // Writes `text` to `destination` through an AtomicFile.
 void writeFileAtomically(const std::filesystem::path& destination, std::string_view text, bool keepBackup = false);
+// The same, committed for readers only (AtomicFile::commitForReaders: nothing flushed to disk).
+void replaceFileForReaders(const std::filesystem::path& destination, std::string_view text);
 
 }  // namespace fraktal

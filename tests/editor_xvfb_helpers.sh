@@ -21,19 +21,29 @@ failures=0
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 q() { jq -r "$1" "$state"; }
-frame() { if [ -f "$state" ]; then q .frame; else echo 0; fi; }
-pending_input() { if [ -f "$state" ]; then q '.inputPending // 0'; else echo 0; fi; }
+# The editor's tick: the frame count, the window events it holds for later frames and whether the
+# view settled, from the line it writes beside the state file every frame (frameTickLine in
+# app/editor/state_dump.hpp), read by the shell itself: the polls below run ten times a second, and
+# a jq process each cost a story a third of a core that the editor's frames wanted.
+editor_tick() {
+    tick_frame=0 tick_pending=0 tick_settled=false
+    [ ! -f "$state.frame" ] || read -r tick_frame tick_pending tick_settled < "$state.frame" || true
+}
+frame() { editor_tick; echo "$tick_frame"; }
+pending_input() { editor_tick; echo "$tick_pending"; }
 # Waits until the editor has drawn N more frames (events are handled at the start of a frame) and
 # has handed every window event it received to a frame (app/editor/input/imgui_input.hpp: a move, a
 # press and a release that arrive between two frames take a frame each).
 # (sh has no local variables: its counter is its own, not the callers' `tries`.)
 wait_frames() {
-    target=$(($(frame) + $1))
+    editor_tick
+    target=$((tick_frame + $1))
     polls=0
-    while [ "$(frame)" -lt "$target" ] || [ "$(pending_input)" != 0 ]; do
+    while [ "$tick_frame" -lt "$target" ] || [ "$tick_pending" != 0 ]; do
         polls=$((polls + 1))
         [ $polls -lt 600 ] || { echo "the editor stopped drawing frames"; exit 1; }
         sleep 0.1
+        editor_tick
     done
 }
 # wait_for QUERY VALUE [N]: waits until the state file's QUERY reads VALUE, at most N frames
@@ -50,13 +60,14 @@ wait_for() {
 # as its march steps need within the frame-time target (a heavy formula takes short frames).
 wait_settled() {
     settle_end=$(($(date +%s) + 300))
-    while [ "$(q .viewportSettled)" != true ] && [ "$(date +%s)" -lt $settle_end ]; do
+    editor_tick
+    while [ "$tick_settled" != true ] && [ "$(date +%s)" -lt $settle_end ]; do
         wait_frames 1
     done
 }
 # start PRESET [OPTIONS...]: the editor in the background, after its first frames.
 start() {
-    rm -f "$state"
+    rm -f "$state" "$state.frame"
     preset=$1
     shift
     HOME="$home" "$fraktal" edit "$preset" --state-file "$state" "$@" &

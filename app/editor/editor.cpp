@@ -33,6 +33,7 @@
 #include "app/editor/viewport/ui_layer_cache.hpp"
 #include "app/editor/viewport/ui_redraw.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
+#include "core/atomic_file.hpp"
 
 namespace fraktal::editor {
 
@@ -508,6 +509,8 @@ int runEditor(const EditorOptions& o) {
                                    stateJson(s, framesDrawn, compileError, viewSettled,
                                              s.doc.plane ? nullptr : &viewport->stats(), uiDraw),
                                    lastState);
+                    replaceFileForReaders(frameTickFile(o.stateFile),
+                                          frameTickLine(framesDrawn, s.input.pendingCount(), viewSettled));
                 } catch (const std::exception& e) {
                     std::fprintf(stderr, "fraktal: %s\n", e.what());
                 }

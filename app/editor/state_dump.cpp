@@ -178,8 +178,17 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
 
 void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last) {
     if (text == last) return;
-    writeFileAtomically(file, text);
+    replaceFileForReaders(file, text);
     last = text;
+}
+
+std::string frameTickLine(int frame, int pendingInput, bool viewportSettled) {
+    return std::to_string(frame) + " " + std::to_string(pendingInput) + " " + (viewportSettled ? "true" : "false") +
+           "\n";
+}
+
+std::filesystem::path frameTickFile(const std::filesystem::path& stateFile) {
+    return std::filesystem::path(stateFile.string() + ".frame");
 }
 
 }  // namespace fraktal::editor

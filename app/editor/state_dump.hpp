@@ -18,7 +18,15 @@ namespace fraktal::editor {
 std::string stateJson(const EditorState& s, int frame, const std::string& compileError, bool viewportSettled,
                       const ViewportStats* viewport = nullptr, UiDraw ui = UiDraw::Full);
 
-// Writes `text` to `file` atomically when it differs from `last` (then updates `last`).
+// Writes `text` to `file` atomically when it differs from `last` (then updates `last`); readers
+// see a whole file, but nothing is flushed to disk (replaceFileForReaders).
 void writeStateFile(const std::filesystem::path& file, const std::string& text, std::string& last);
+
+// The frame's tick beside the state file, "<file>.frame": one line "FRAME PENDING SETTLED" (the
+// frame count, the window events queued for later frames, and viewportSettled as true or false),
+// which a test's shell reads with its own `read` on every poll while it waits on the editor
+// (tests/editor_xvfb_helpers.sh): a jq process per poll cost the stories a third of a core each.
+std::string frameTickLine(int frame, int pendingInput, bool viewportSettled);
+std::filesystem::path frameTickFile(const std::filesystem::path& stateFile);
 
 }  // namespace fraktal::editor

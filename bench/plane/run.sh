@@ -29,7 +29,6 @@ done
 echo
 echo "## Renderer alone: GL fp64 vs fp32 vs CPU reference"
 echo
-g++ -O2 -std=c++20 -I"$root" -DFRAKTAL_SOURCE_DIR="\"$root\"" "$root/bench/plane/plane_bench.cpp" \
-  "$root/$build/core/libfraktal_core.a" $(pkg-config --cflags --libs epoxy egl OpenEXR OpenColorIO) \
-  -o "$tmp/plane_bench"
+cmake --build "$root/$build" --target bench_plane_bench > /dev/null
+cp "$root/$build/bench/bench_plane_bench" "$tmp/plane_bench"
 "$tmp/plane_bench" "$glsize" "$spp" "$cpusize" "$root"/presets/2d/*.json

@@ -7,8 +7,8 @@ build="${1:-build}"; what="${2:-8192x8192}"
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 # The harness links the core library that BUILD_DIR built (the writer and the strip layout).
-g++ -O2 -std=c++20 -I"$root" "$root/bench/stills/exr_write.cpp" "$root/$build/core/libfraktal_core.a" \
-  $(pkg-config --cflags --libs OpenEXR) -o "$tmp/exr_write"
+cmake --build "$root/$build" --target bench_exr_write > /dev/null
+cp "$root/$build/bench/bench_exr_write" "$tmp/exr_write"
 if [[ "$what" == *.exr ]]; then in="$what"; else
   in="$tmp/in.exr"
   cat > "$tmp/cheap.json" <<'JSON'

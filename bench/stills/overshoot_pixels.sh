@@ -5,9 +5,11 @@
 # footprint), and the depth (Z) of the two compared: pixels where the small-factor reference meets
 # the object and the shipped factor does not, where the shipped factor lands more than 10 % behind
 # the reference's hit (a step through a surface), and where it meets something the reference does
-# not. Both march with up to 6000 steps, so a miss is a step past the surface, not a ray giving up.
+# not. Both march with up to 6000 steps, so a miss is a step past the surface, not a ray giving up;
+# the reference with plain steps (over-relaxation 1: no relaxed or adaptive step).
 # Frame 0 of animated presets, as the file holds it. FACTOR "shipped" takes each preset's own step
 # factor; a number replaces it (1.0: what the estimates give before any measured factor).
+# PRESETS (environment) names the preset files instead of presets/*.json.
 # Usage: bench/stills/overshoot_pixels.sh BUILD_DIR [WxH] [FACTOR]   (default 640x360, shipped)
 set -euo pipefail
 build="${1:-build}"; size="${2:-640x360}"; override="${3:-shipped}"
@@ -17,7 +19,8 @@ tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 g++ -O2 -std=c++20 "$root/bench/stills/depth_compare.cpp" $(pkg-config --cflags --libs OpenEXR) -o "$tmp/depth_compare"
 echo "| preset | step factor | reference factor | reference hit pixels | missed | behind by > 10 % | extra hits |"
 echo "|---|---|---|---|---|---|---|"
-for preset in "$root"/presets/*.json; do
+read -r -a presets <<< "${PRESETS:-$(echo "$root"/presets/*.json)}"
+for preset in "${presets[@]}"; do
   name=$(basename "$preset" .json)
   factor=$(jq '.formula.deFactor // 1' "$preset")
   if [ "$override" != shipped ]; then
@@ -27,7 +30,7 @@ for preset in "$root"/presets/*.json; do
   fi
   detail=$(jq '.render.detail // 0.5' "$preset")
   quarter=$(awk -v f="$factor" 'BEGIN { printf "%.6g", f / 4 }')
-  jq --argjson f "$quarter" '.formula.deFactor = $f' "$preset" > "$tmp/reference.json"
+  jq --argjson f "$quarter" '.formula.deFactor = $f | .render.overRelaxation = 1' "$preset" > "$tmp/reference.json"
   "$fraktal" render "$preset" -o "$tmp/shipped.exr" --size "$size" --spp 1 --float --max-steps 6000 -q
   "$fraktal" render "$tmp/reference.json" -o "$tmp/reference.exr" --size "$size" --spp 1 --float --max-steps 6000 \
     --detail "$(awk -v d="$detail" 'BEGIN { printf "%.6g", d / 4 }')" -q

@@ -13,8 +13,8 @@ build="${1:-build}"; size="${2:-1280x720}"; ref="${3:-4096}"; mbspp="${4:-64}"
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 source "$root/bench/stills/peer.sh"
-g++ -O2 -std=c++20 -I"$root" "$root/bench/stills/pathtrace.cpp" "$root/$build/core/libfraktal_core.a" \
-  $(pkg-config --cflags --libs OpenEXR OpenColorIO epoxy egl) -o "$tmp/pathtrace"
+cmake --build "$root/$build" --target bench_pathtrace > /dev/null
+cp "$root/$build/bench/bench_pathtrace" "$tmp/pathtrace"
 python3 - "$root/presets/mandelbulb.json" "$tmp/lit.json" "$root/presets/env/sky.exr" <<'PY'
 import json, sys
 p = json.load(open(sys.argv[1]))

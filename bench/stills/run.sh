@@ -29,8 +29,8 @@ tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 
 source "$root/bench/stills/peer.sh"
 
-g++ -O2 -std=c++20 -I"$root" "$root/bench/stills/de_count.cpp" "$root/$build/core/libfraktal_core.a" \
-  $(pkg-config --cflags --libs OpenEXR OpenColorIO epoxy egl) -o "$tmp/de_count"
+cmake --build "$root/$build" --target bench_de_count > /dev/null
+cp "$root/$build/bench/bench_de_count" "$tmp/de_count"
 seconds() { echo "$2 - $1" | bc -l | xargs printf %.2f; }
 psnr() { compare -metric PSNR "$1" "$2" null: 2>&1 | awk '{printf "%.1f", $1}' || true; }
 render() {  # PRESET OUT SPP TOLERANCE

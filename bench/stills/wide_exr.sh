@@ -11,8 +11,8 @@ set -euo pipefail
 build="${1:-build}"
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
-g++ -O2 -std=c++20 -I"$root" "$root/bench/stills/exr_write.cpp" "$root/$build/core/libfraktal_core.a" \
-  $(pkg-config --cflags --libs OpenEXR) -o "$tmp/exr_write"
+cmake --build "$root/$build" --target bench_exr_write > /dev/null
+cp "$root/$build/bench/bench_exr_write" "$tmp/exr_write"
 for spec in "16384 32 64" "32768 64 128"; do
   set -- $spec
   /usr/bin/time -f "render ${1} wide, 256 rows (part $2/$3): %e s wall, %U s user, peak RSS %M KiB" \
