@@ -538,7 +538,9 @@ json presetToJson(const Preset& p) {
     if (json r = renderJson(p.render); !r.empty()) j["render"] = r;
     if (json c = colorManagementJson(p.render); !c.empty()) j["colorManagement"] = c;
     if (json s = shadingJson(p.shading); !s.empty()) j["shading"] = s;
-    if (!p.animation.empty()) j["animation"] = animationJson(p.animation);
+    // Without keys too: frames per second and the frame range an artist set on the timeline are
+    // the document's, and a save must not drop them.
+    if (p.animation != Animation{}) j["animation"] = animationJson(p.animation);
     writeLighting(p.lighting, j);
     p.unknownFields.writeBack(j);
     for (const auto& [key, value] : p.extra.items())

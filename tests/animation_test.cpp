@@ -337,8 +337,21 @@ TEST(Animation, BadTracksNameFileFieldAndReason) {
 TEST(Animation, StillPresetsHaveNoAnimationSection) {
     for (const auto& path : test::shippedPresets()) {
         const Preset p = loadPreset(path);
-        EXPECT_EQ(presetToJson(p).contains("animation"), !p.animation.empty()) << path;
+        EXPECT_EQ(presetToJson(p).contains("animation"), p.animation != Animation{}) << path;
     }
+}
+
+// The timeline's frames per second and range, set on a document without keys, are the document's:
+// a save keeps them (it wrote no animation section without tracks, and they were lost).
+TEST(Animation, AFrameRateAndRangeWithoutKeysSurviveASave) {
+    Preset p = loadPreset(test::shippedPresetFile("mandelbulb.json"));
+    ASSERT_TRUE(p.animation.empty());
+    p.animation.fps = 30.0;
+    p.animation.firstFrame = 10;
+    p.animation.lastFrame = 250;
+    const Preset back = parsePreset(serializePreset(p), "saved.json");
+    EXPECT_EQ(back.animation, p.animation);
+    EXPECT_EQ(serializePreset(back), serializePreset(p));
 }
 
 // The editor keys the closing estimator's parameters as "formula.estimator.params.NAME": such a

@@ -3,7 +3,8 @@
 # driven with real X input (xdotool): on the Mandelbulb with the Lights tab open, 0 typed into the
 # Formula panel's Bound radius (Ctrl+click, type, Enter), 1000 into the Mandelbulb's power (a
 # block parameter's widget), 50 into the lens's Aperture radius (a Scene tab's setting) and 5000
-# into the power node's From (an input box of its schedule) are each clamped to the nearer end of the range, and the status line names the slider, what was
+# into the power node's From (an input box of its schedule) and 5000 into the timeline's frames per
+# second are each clamped to the nearer end of the range, and the status line names the slider, what was
 # typed and what it became: in the state file, and on screen in the error colour where the
 # screenshot before showed none. A value typed inside the range says nothing.
 # Usage: editor_clamp_notice_xvfb_test.sh FRAKTAL PRESET_DIR OUT_DIR
@@ -95,6 +96,21 @@ kill -0 "$pid" 2>/dev/null || fail "the editor is gone after typing into From"
 [ "$(q '.document.formula.nodes[0].start')" = 999 ] ||
     fail "typing 5000 into From left the node's start at $(q '.document.formula.nodes[0].start')"
 expect_notice "$out/schedule_from.png" "From: 5000 is outside 0 .. 999, set to 999"
+
+# A number box of the timeline (its frames per second): click into it, type, Enter.
+wait_for '.widgets["timeline:fps"] != null' true
+set -- $(rect_centre "$(q '.widgets["timeline:fps"]')")
+to "$1" "$2"
+wait_frames 1
+xdotool click 1
+wait_frames 2
+press_keys ctrl a
+xdotool type --delay 30 5000
+wait_frames 1
+press_keys Return
+wait_frames 3
+[ "$(q '.document.animation.fps')" = 1000 ] || fail "typing 5000 into fps left it at $(q '.document.animation.fps')"
+expect_notice "$out/timeline_fps.png" "fps: 5000 is outside 0.001 .. 1000, set to 1000"
 
 # Inside the range: taken as typed, and nothing said about it.
 [ "$(q '.widgets["Bound radius"] != null')" = true ] && type_at $(rect_centre "$(q '.widgets["Bound radius"]')") 2.5

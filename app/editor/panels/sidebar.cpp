@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "app/editor/panels/panels.hpp"
+#include "app/editor/widgets/item_rects.hpp"
 #include "app/editor/widgets/scroll_keep.hpp"
 
 namespace fraktal::editor {
@@ -72,10 +73,7 @@ void keepWindowScroll() {
     if (pad > 0.0f) ImGui::Dummy(ImVec2(0.0f, pad));
 }
 
-void noteWidgetRect(Layout& layout, const std::string& name) {
-    const ImVec2 lo = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-    layout.widgetRects[name] = {lo.x, lo.y, size.x, size.y};
-}
+void noteWidgetRect(Layout& layout, const std::string& name) { noteItemRect(layout.widgetRects, name); }
 
 void drawSidebar(EditorState& s) {
     if (!sideColumnShows(s.panels, false)) return;

@@ -13,6 +13,7 @@
 
 #include "app/editor/state/actions.hpp"
 #include "app/editor/viewport/camera_input.hpp"
+#include "app/editor/widgets/item_rects.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
 
 namespace fraktal::editor {
@@ -132,17 +133,21 @@ void controlsRow(EditorState& s) {
         t.frame = frame;
         t.playing = false;
     }
+    noteItemRect(s.layout.widgetRects, "timeline:Frame");
     label("Start");
     ImGui::SetNextItemWidth(field);
     int first = a.firstFrame, last = shownLastFrame(a);
     if (inputClamped("##start", &first, 0, 0, 0, last, "Start")) a.firstFrame = first;
+    noteItemRect(s.layout.widgetRects, "timeline:Start");
     label("End");
     ImGui::SetNextItemWidth(field);
     if (inputClamped("##end", &last, 0, 0, a.firstFrame, 10000000, "End")) a.lastFrame = last;
+    noteItemRect(s.layout.widgetRects, "timeline:End");
     label("fps");
     ImGui::SetNextItemWidth(field);
     double fps = a.fps;
     if (inputClamped("##fps", &fps, 1e-3, 1000.0, "%.4g", "fps")) a.fps = fps;
+    noteItemRect(s.layout.widgetRects, "timeline:fps");
     ImGui::SameLine();
     const ImVec2 pathAt = ImGui::GetCursorScreenPos();
     ImGui::Checkbox("Path", &t.showCameraPath);
