@@ -15,6 +15,14 @@ presets=$2
 out=$3
 mkdir -p "$out"
 
+# replace_text TEXT: in the field being edited, select all, type TEXT, Enter.
+replace_text() {
+    press_keys ctrl a
+    xdotool type --delay 30 "$1"
+    wait_frames 1
+    press_keys Return
+    wait_frames 3
+}
 # type_at X Y TEXT: Ctrl+click the drag at (X, Y) to type into it, replace its text, Enter.
 type_at() {
     to "$1" "$2"
@@ -25,11 +33,15 @@ type_at() {
     wait_frames 2
     xdotool keyup ctrl
     wait_frames 2
-    press_keys ctrl a
-    xdotool type --delay 30 "$3"
+    replace_text "$3"
+}
+# box_type X Y TEXT: click into the number box at (X, Y), replace its text, Enter.
+box_type() {
+    to "$1" "$2"
     wait_frames 1
-    press_keys Return
-    wait_frames 3
+    xdotool click 1
+    wait_frames 2
+    replace_text "$3"
 }
 rect_centre() { echo "$1" | jq -r '"\(.[0] + .[2] / 2 | floor) \(.[1] + .[3] / 2 | floor)"'; }
 # The share of the status line's corner of the viewport in the error colour (1, 0.45, 0.4).
@@ -82,16 +94,7 @@ expect_notice "$out/aperture.png" "Aperture radius: 50 is outside 0 .. 10, set t
 # A number field of the node's schedule (an input box with +/- buttons, not a slider): click into
 # it, type, Enter.
 wait_for '[.paramWidgets[] | select(.name == "schedule:From")] | length' 1
-set -- $(q '.paramWidgets[] | select(.name == "schedule:From") | .rect | "\(.[0] + 12 | floor) \(.[1] + .[3] / 2 | floor)"')
-to "$1" "$2"
-wait_frames 1
-xdotool click 1
-wait_frames 2
-press_keys ctrl a
-xdotool type --delay 30 5000
-wait_frames 1
-press_keys Return
-wait_frames 3
+box_type $(q '.paramWidgets[] | select(.name == "schedule:From") | .rect | "\(.[0] + 12 | floor) \(.[1] + .[3] / 2 | floor)"') 5000
 kill -0 "$pid" 2>/dev/null || fail "the editor is gone after typing into From"
 [ "$(q '.document.formula.nodes[0].start')" = 999 ] ||
     fail "typing 5000 into From left the node's start at $(q '.document.formula.nodes[0].start')"
@@ -99,16 +102,7 @@ expect_notice "$out/schedule_from.png" "From: 5000 is outside 0 .. 999, set to 9
 
 # A number box of the timeline (its frames per second): click into it, type, Enter.
 wait_for '.widgets["timeline:fps"] != null' true
-set -- $(rect_centre "$(q '.widgets["timeline:fps"]')")
-to "$1" "$2"
-wait_frames 1
-xdotool click 1
-wait_frames 2
-press_keys ctrl a
-xdotool type --delay 30 5000
-wait_frames 1
-press_keys Return
-wait_frames 3
+box_type $(rect_centre "$(q '.widgets["timeline:fps"]')") 5000
 [ "$(q '.document.animation.fps')" = 1000 ] || fail "typing 5000 into fps left it at $(q '.document.animation.fps')"
 expect_notice "$out/timeline_fps.png" "fps: 5000 is outside 0.001 .. 1000, set to 1000"
 
