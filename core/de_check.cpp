@@ -8,6 +8,8 @@
 #include <random>
 #include <vector>
 
+#include "core/random_vec.hpp"
+
 namespace fraktal {
 
 namespace {
@@ -93,7 +95,7 @@ RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const Conse
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     auto randomInBall = [&](double radius) {
         vec3 v;
-        do v = vec3(uniform(rng), uniform(rng), uniform(rng));
+        do v = randomVec3(uniform, rng);
         while (dot(v, v) > 1.0);
         return v * radius;
     };
@@ -104,7 +106,8 @@ RaySamples sampleRays(FormulaSampler& sampler, const Camera& camera, const Conse
         vec3 origin, dir;
         if (ray % 2 == 0) {
             origin = camera.position;
-            dir = camera.rayDirection(uniform(rng), uniform(rng), 1.0);
+            const vec2 film = randomVec2(uniform, rng);
+            dir = camera.rayDirection(film.x, film.y, 1.0);
         } else {
             origin = normalize(randomInBall(1.0)) * f.boundRadius;
             dir = normalize(randomInBall(0.5 * f.boundRadius) - origin);

@@ -31,12 +31,10 @@ echo "== tests (Release)"
 stage "Release tests"
 
 echo "== tests under AddressSanitizer + UBSan"
-# The test files that make a GL context are left out of this build (tests/CMakeLists.txt,
-# FRAKTAL_TESTS_WITHOUT_GL): their work runs in Mesa's uninstrumented driver, and they run in the
-# Release build above.
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DFRAKTAL_SANITIZE=ON -DFRAKTAL_BUILD_EDITOR=OFF -DFRAKTAL_TESTS_WITHOUT_GL=ON \
-  $(command -v ccache >/dev/null && echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache) >/dev/null
-cmake --build build-asan --parallel "$(nproc)" --target fraktal_tests fraktal
+# Built with clang (scripts/sanitize-build.sh), with the preset fuzzer of stage 3. The test files
+# that make a GL context are left out of this build (tests/CMakeLists.txt, FRAKTAL_TESTS_WITHOUT_GL):
+# their work runs in Mesa's uninstrumented driver, and they run in the Release build above.
+scripts/sanitize-build.sh fraktal_tests fraktal preset_fuzzer
 stage "sanitizer build"
 # Leak detection is on in the test binary; the command lines it starts run without it
 # (tests/child_sanitizer_options.cpp), and scripts/cli_leak_check.sh checks the command line's own

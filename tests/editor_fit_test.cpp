@@ -9,6 +9,7 @@
 
 #include "app/editor/document/formula_edits.hpp"
 #include "core/preset.hpp"
+#include "core/random_vec.hpp"
 #include "core/scene/formula_fit.hpp"
 #include "user_stacks.hpp"
 
@@ -105,7 +106,7 @@ TEST(EditorFormulaFit, BoundHoldsASmallObjectInAWideSearch) {
     const DistanceAt de = cpuDistance(bulb);
     std::mt19937 random(3);
     std::normal_distribution<double> gauss;
-    auto direction = [&] { return normalize(vec3(gauss(random), gauss(random), gauss(random))); };
+    auto direction = [&] { return normalize(randomVec3(gauss, random)); };
     double reach = 0.0;
     for (int ray = 0; ray < 2000; ++ray) {
         const vec3 from = direction() * 3.0, dir = normalize(direction() * 1.5 - from);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/gl/de_probe.hpp"
+#include "core/random_vec.hpp"
 #include "test_support.hpp"
 
 using namespace fraktal;
@@ -103,7 +104,7 @@ Formula formulaFor(const BlockDesc& block, uint64_t seed, bool togglesOn) {
     for (size_t i = 0; i < block.params.size(); ++i) {
         const ParamDecl& d = block.params[i];
         std::uniform_real_distribution<double> u(d.min, d.max);
-        const vec3 target(u(rng), u(rng), u(rng));
+        const vec3 target = randomVec3(u, rng);
         vec3 v = d.defaultValue + 0.25 * (target - d.defaultValue);
         if (d.type == ParamType::Float) v = vec3(v.x, 0.0, 0.0);
         if (d.type == ParamType::Toggle) v = vec3(togglesOn ? 1.0 : 0.0, 0.0, 0.0);

@@ -20,6 +20,7 @@
 
 #include "core/import/fract_import.hpp"
 #include "core/import/mb2_sequence.hpp"
+#include "core/random_vec.hpp"
 #include "test_support.hpp"
 
 namespace fraktal {
@@ -474,7 +475,7 @@ TEST(FractImport, HypercomplexRunsItsOwnOrbit) {
     std::uniform_real_distribution<double> u(-1.5, 1.5);
     int inside = 0;
     for (int k = 0; k < 2000; ++k) {
-        const vec3 point(u(random), u(random), u(random));
+        const vec3 point = randomVec3(u, random);
         double x = point.x, y = point.y, z = point.z, w = 0.3;
         bool escaped = false;
         for (int i = 0; i < 20 && !escaped; ++i) {
@@ -508,7 +509,7 @@ TEST(FractImport, HypercomplexJuliaAddsItsConstant) {
     std::uniform_real_distribution<double> u(-1.5, 1.5);
     int inside = 0;
     for (int k = 0; k < 2000; ++k) {
-        const vec3 point(u(random), u(random), u(random));
+        const vec3 point = randomVec3(u, random);
         double x = point.x, y = point.y, z = point.z, w = 0.0;
         bool escaped = false;
         for (int i = 0; i < 12 && !escaped; ++i) {
@@ -607,7 +608,7 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
         int inside = 0, differ = 0;
         const int points = 2000;
         for (int k = 0; k < points; ++k) {
-            const vec3 point(u(random), u(random), u(random));
+            const vec3 point = randomVec3(u, random);
             vec3 z = point;
             double de = 1.0, a = 0.0, dist = 1000.0;
             for (int i = 0; i < f.iterations; ++i) {
@@ -747,7 +748,7 @@ TEST(FractImport, AexionRunsItsOwnOrbit) {
     std::uniform_real_distribution<double> u(-1.5, 1.5);
     int inside = 0;
     for (int k = 0; k < 2000; ++k) {
-        const vec3 point(u(random), u(random), u(random));
+        const vec3 point = randomVec3(u, random);
         auto fold = [](const vec3& v) {
             return std::array<double, 4>{std::abs(v.x + v.y + v.z) - 1.2, std::abs(-v.x - v.y + v.z) - 1.2,
                                          std::abs(-v.x + v.y - v.z) - 1.2, std::abs(v.x - v.y - v.z) - 1.2};
@@ -787,7 +788,7 @@ TEST(FractImport, BenesiPowersAndThePineTree) {
     std::uniform_real_distribution<double> u(-2.0, 2.0);
     int inside = 0;
     for (int k = 0; k < 2000; ++k) {
-        const vec3 point(u(random), u(random), u(random));
+        const vec3 point = randomVec3(u, random);
         const vec3 c = point * vec3(1.0, 0.5, 0.75);
         vec3 z = point;
         bool escaped = false;
@@ -832,7 +833,7 @@ void expectOrbitsFollowMandelbulber2(const OrbitCase& c) {
     int inside = 0, differ = 0;
     const int points = 2000;
     for (int k = 0; k < points; ++k) {
-        const vec3 point(u(random), u(random), u(random));
+        const vec3 point = randomVec3(u, random);
         vec3 z = point;
         bool escaped = false;
         for (int i = 0; i < f.iterations && !escaped; ++i) {
@@ -1105,7 +1106,7 @@ TEST(FractImport, PlatonicSolidScalesByMandelbulber2sWave) {
     std::mt19937 random(11);
     std::uniform_real_distribution<double> u(-3.0, 3.0);
     for (int k = 0; k < 100; ++k) {
-        const vec3 v(u(random), u(random), u(random));
+        const vec3 v = randomVec3(u, random);
         const double f = 0.3, theta = std::cos(f * v.x) * std::sin(f * v.y) + std::cos(f * v.y) * std::sin(f * v.z) +
                                       std::cos(f * v.z) * std::sin(f * v.x);
         const vec3 expected = v * (theta * 1.9 + std::sqrt(length(v)) * 0.7);
@@ -1123,7 +1124,7 @@ TEST(FractImport, PlatonicSolidScalesByMandelbulber2sWave) {
     const Node& blended = second.preset.formula.nodes.front();
     ASSERT_EQ(blended.block->id, "platonic_solid");
     for (int k = 0; k < 100; ++k) {
-        const vec3 v(u(random), u(random), u(random));
+        const vec3 v = randomVec3(u, random);
         const double theta =
             std::abs(std::cos(v.x) * std::sin(v.y) + std::cos(v.y) * std::sin(v.z) + std::cos(v.z) * std::sin(v.x));
         const double rho = std::sqrt(length(v)) + (length(v) - std::sqrt(length(v))) * 0.4;
@@ -1407,7 +1408,7 @@ void expectTrapFollowsMandelbulber2(const char* body, const std::vector<std::str
     std::uniform_real_distribution<double> u(-2.0, 2.0);
     int differ = 0;
     for (int k = 0; k < 2000; ++k) {
-        const vec3 point(u(random), u(random), u(random));
+        const vec3 point = randomVec3(u, random);
         vec3 z = point;
         double least = 1e20;
         for (int i = 0; i < r.preset.formula.iterations; ++i) {
@@ -1536,7 +1537,7 @@ TEST(FractImport, JosKleinianIsMandelbulber2sStepAndDistance) {
     std::uniform_real_distribution<double> u(-1.5, 1.5);
     int differ = 0;
     for (int k = 0; k < 2000; ++k) {
-        const vec3 point(u(random), u(random), u(random));
+        const vec3 point = randomVec3(u, random);
         vec3 z = point;
         double de = 1.0;
         for (int i = 0; i < 7; ++i) {
@@ -1885,7 +1886,7 @@ TEST(FractImport, FourDFormulasCarryTheFourthCoordinate) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-1.5, 1.5);
     for (int k = 0; k < 200; ++k) {
-        const vec3 pos(u(rng), u(rng), u(rng));
+        const vec3 pos = randomVec3(u, rng);
         EXPECT_NEAR(evaluate(m.preset.formula, pos).distance / m.preset.formula.deFactor,
                     mandelbulber2(pos, 0.333333, 12, m.preset.formula.bailout, menger, 3.0), 1e-9)
             << pos.x << " " << pos.y << " " << pos.z;
@@ -1914,7 +1915,7 @@ TEST(FractImport, FractalPositionRotationAndRepeatPlaceTheFormula) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-8.0, 8.0);
     for (int k = 0; k < 100; ++k) {
-        const vec3 p(u(rng), u(rng) / 4.0, u(rng) / 4.0);
+        const vec3 p = randomVec3(u, rng) * vec3(1.0, 0.25, 0.25);
         vec3 q = p - vec3(0.5, -1.0, 0.25);
         q.x -= 6.0 * std::floor(q.x / 6.0 + 0.5);
         EXPECT_NEAR(evaluate(placed.preset.formula, p).distance,

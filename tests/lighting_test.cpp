@@ -14,6 +14,7 @@
 #include "core/color/color_pipeline.hpp"
 #include "core/cpu_render/cpu_path_tracer.hpp"
 #include "core/image/environment.hpp"
+#include "core/random_vec.hpp"
 #include "core/render/path_tracer.hpp"
 #include "core/render/still_renderer.hpp"
 #include "core/viewport/converge.hpp"
@@ -213,7 +214,8 @@ TEST(EnvironmentMap, ImportanceSamplingIsNormalisedAndFindsTheSun) {
             }
     for (int i = 0; i < n; ++i) {
         double pdf;
-        const vec3 d = map.sample(u(rng), u(rng), pdf);
+        const vec2 uv = randomVec2(u, rng);
+        const vec3 d = map.sample(uv.x, uv.y, pdf);
         ASSERT_GT(pdf, 0.0);
         EXPECT_NEAR(pdf, map.pdf(d), 1e-9 * pdf);
         importance += map.radiance(d).g / pdf;
@@ -237,7 +239,8 @@ TEST(PathTracer, ApertureSamplesLieOnTheLens) {
     for (int blades : {0, 3, 6}) {
         vec2 mean(0.0);
         for (int i = 0; i < 4000; ++i) {
-            const vec2 p = sampleAperture(u(rng), u(rng), blades);
+            const vec2 lens = randomVec2(u, rng);
+            const vec2 p = sampleAperture(lens.x, lens.y, blades);
             EXPECT_LE(length(p), 1.0 + 1e-12);
             if (blades >= 3) {  // inside the polygon: within the apothem along every edge normal
                 for (int k = 0; k < blades; ++k) {

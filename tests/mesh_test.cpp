@@ -6,6 +6,7 @@
 
 #include "core/mesh/mesh_file.hpp"
 #include "core/mesh/mesh_formula.hpp"
+#include "core/random_vec.hpp"
 #include "test_support.hpp"
 
 namespace fraktal {
@@ -63,7 +64,7 @@ TEST(Mesh, SphereIsWithinOneVoxelAndItsVolume) {
     std::normal_distribution<double> n;
     const Hausdorff h = hausdorff(
         out.mesh, [](const vec3& p) { return glm::length(p) - 1.0; },
-        [&](std::mt19937_64& rng) { return glm::normalize(vec3(n(rng), n(rng), n(rng))); }, 300);
+        [&](std::mt19937_64& rng) { return glm::normalize(randomVec3(n, rng)); }, 300);
     EXPECT_LT(h.worst(), s.layout.voxel) << "vertex to sphere " << h.meshToSurface << ", sphere to mesh "
                                          << h.surfaceToMesh;
     // Sparse: the bricks sampled are the shell's, a small part of the (64 / 8)^3 of the bound.
@@ -86,7 +87,7 @@ TEST(Mesh, BoxIsWithinOneVoxelAndItsVolume) {
     // A point on one of the six faces, picked by area.
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     auto onBox = [&](std::mt19937_64& rng) {
-        vec3 p(u(rng) * half.x, u(rng) * half.y, u(rng) * half.z);
+        vec3 p = randomVec3(u, rng) * half;
         const double areas[3] = {half.y * half.z, half.x * half.z, half.x * half.y};
         double pick = (u(rng) + 1.0) * 0.5 * (areas[0] + areas[1] + areas[2]);
         int axis = pick < areas[0] ? 0 : pick < areas[0] + areas[1] ? 1 : 2;

@@ -7,12 +7,15 @@
 #include <random>
 
 #include "core/plane/plane_preset.hpp"
+#include "core/random_vec.hpp"
 #include "tests/test_support.hpp"
 
 namespace fraktal {
 namespace {
 
-PlanePreset shippedPlanePreset(const std::string& name) { return loadPlanePreset(test::sourceDir() / "presets/2d" / name); }
+PlanePreset shippedPlanePreset(const std::string& name) {
+    return loadPlanePreset(test::sourceDir() / "presets/2d" / name);
+}
 
 const double kSqrt3 = std::sqrt(3.0);
 
@@ -55,8 +58,10 @@ double areaInside(const PlaneFormula& f, real2 lo, real2 hi, int n, uint32_t see
     long inside = 0;
     const real2 cell = (hi - lo) / double(n);
     for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-            inside += evaluatePlane(f, lo + cell * real2(i + u(rng), j + u(rng))).inside;
+        for (int i = 0; i < n; ++i) {
+            const vec2 jitter = randomVec2(u, rng);
+            inside += evaluatePlane(f, lo + cell * real2(i + jitter.x, j + jitter.y)).inside;
+        }
     return double(inside) / (double(n) * n) * (hi.x - lo.x) * (hi.y - lo.y);
 }
 
@@ -91,7 +96,7 @@ TEST(PlaneKoch, AreaMatchesClosedFormAtEachDepthAndConvergesToEightFifths) {
     // Points of the starting triangle and of the first bumps are in; beyond the hull, out.
     p.formula.iterations = 6;
     EXPECT_TRUE(evaluatePlane(p.formula, real2(0.0, 0.0)).inside);
-    EXPECT_TRUE(evaluatePlane(p.formula, real2(0.0, -0.5 - 0.25)).inside);  // bump below the bottom side
+    EXPECT_TRUE(evaluatePlane(p.formula, real2(0.0, -0.5 - 0.25)).inside);   // bump below the bottom side
     EXPECT_FALSE(evaluatePlane(p.formula, real2(0.0, -0.5 - 0.55)).inside);  // beyond the bump's apex
     EXPECT_FALSE(evaluatePlane(p.formula, real2(1.2, 1.2)).inside);
 }
@@ -146,7 +151,8 @@ TEST(PlaneMandelbrot, AreaWithinOnePercentOfPublishedValue) {
     long inside = 0;
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
-            const real2 c = lo + (hi - lo) * real2((i + u(rng)) / nx, (j + u(rng)) / ny);
+            const vec2 jitter = randomVec2(u, rng);
+            const real2 c = lo + (hi - lo) * real2((i + jitter.x) / nx, (j + jitter.y) / ny);
             inside += evaluatePlane(f, c).inside;
         }
     const double area = 2.0 * double(inside) / (double(nx) * ny) * (hi.x - lo.x) * (hi.y - lo.y);
@@ -173,7 +179,7 @@ TEST(PlaneMandelbrot, MultibrotPowerThreeIsSymmetricUnderThirdTurns) {
     std::uniform_real_distribution<double> u(-1.3, 1.3);
     int agree = 0, insideCount = 0;
     for (int i = 0; i < 400; ++i) {
-        const real2 c(u(rng), u(rng));
+        const real2 c = randomVec2(u, rng);
         const bool a = evaluatePlane(f, c).inside, b = evaluatePlane(f, -c).inside;
         agree += a == b;
         insideCount += a;
@@ -217,13 +223,15 @@ TEST(PlanePreset, BadInputNamesFieldAndReason) {
         return std::string("no error");
     };
     const std::string head = R"({"format": "fraktal-preset", "version": 1, "dimension": 2, )";
-    EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "mandelbulb"}]}})").find(
-                  "formula.nodes[0].block: unknown 2D block 'mandelbulb' (known 2D blocks: line_fold,"),
+    EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "mandelbulb"}]}})")
+                  .find("formula.nodes[0].block: unknown 2D block 'mandelbulb' (known 2D blocks: line_fold,"),
               0u);
-    EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "power"}]}})"),
-              "formula.nodes[0]: the node list must end with a 2D estimator (escape, triangle, segment), found 'power'");
-    EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "power", "params": {"power": 99}}, {"block": "escape"}]}})"),
-              "formula.nodes[0].params.power: block 1 'power': value 99 is outside the range [1, 16]");
+    EXPECT_EQ(
+        error(head + R"("formula": {"nodes": [{"block": "power"}]}})"),
+        "formula.nodes[0]: the node list must end with a 2D estimator (escape, triangle, segment), found 'power'");
+    EXPECT_EQ(
+        error(head + R"("formula": {"nodes": [{"block": "power", "params": {"power": 99}}, {"block": "escape"}]}})"),
+        "formula.nodes[0].params.power: block 1 'power': value 99 is outside the range [1, 16]");
     EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "escape"}]}, "view": {"width": -1}})"),
               "view.width: value -1 is outside the range [1e-300, 10000]");
     EXPECT_EQ(error(head + R"("formula": {"nodes": [{"block": "escape"}]}, "camera": {}})"), "camera: unknown field");

@@ -20,6 +20,7 @@
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/slow_stack.hpp"
 #include "core/preset.hpp"
+#include "core/random_vec.hpp"
 #include "core/scene/formula_fit.hpp"
 #include "test_support.hpp"
 
@@ -64,7 +65,7 @@ Node randomNode(const BlockDesc& block, std::mt19937_64& rng) {
         const ParamDecl& d = block.params[i];
         std::uniform_real_distribution<double> u(d.min, d.max);
         if (d.type == ParamType::Toggle || d.name.starts_with("julia")) continue;
-        n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : vec3(u(rng), u(rng), u(rng));
+        n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : randomVec3(u, rng);
     }
     return n;
 }
@@ -111,7 +112,7 @@ Node drawnNode(const std::vector<const BlockDesc*>& blocks, uint64_t stackSeed, 
             continue;
         }
         std::uniform_real_distribution<double> u(d.min, d.max);
-        n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : vec3(u(rng), u(rng), u(rng));
+        n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : randomVec3(u, rng);
     }
     return n;
 }
@@ -172,8 +173,8 @@ TEST(SafeStep, EveryFoldAndTransformBoundsItsJacobian) {
         for (int trial = 0; trial < 400; ++trial) {
             const Node n = randomNode(*block, rng);
             if (block->id == "derivative_tweak" && block->derivativeAt(n.args()) == DerivativeBound::None) continue;
-            const vec3 x = vec3(u(rng), u(rng), u(rng)) * 2.5;
-            vec3 dir = vec3(u(rng), u(rng), u(rng));
+            const vec3 x = randomVec3(u, rng) * 2.5;
+            vec3 dir = randomVec3(u, rng);
             if (length(dir) < 1e-3) continue;
             dir = normalize(dir);
             P4 p{x, 1.0};
@@ -207,8 +208,8 @@ TEST(SafeStep, GlobalBoundsHoldBetweenDistantPoints) {
         ++blocks;
         for (int trial = 0; trial < 4000; ++trial) {
             const Node n = randomNode(*block, rng);
-            const vec3 x = vec3(u(rng), u(rng), u(rng)) * 3.0;
-            const vec3 y = x + vec3(u(rng), u(rng), u(rng)) * (trial % 2 ? 1.0 : 0.05);
+            const vec3 x = randomVec3(u, rng) * 3.0;
+            const vec3 y = x + randomVec3(u, rng) * (trial % 2 ? 1.0 : 0.05);
             P4 px{x, 1.0}, py{y, 1.0};
             block->apply(px, c, n.args());
             block->apply(py, c, n.args());
@@ -234,8 +235,8 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
         for (int trial = 0; trial < 3000; ++trial) {
             Node n = randomNode(block, rng);
             if (block.paramIndex("power") >= 0) n.values[size_t(block.paramIndex("power"))].x = double(2 + trial % 11);
-            const vec3 x = vec3(u(rng), u(rng), u(rng)) * 1.5;
-            const vec3 dir = vec3(u(rng), u(rng), u(rng));
+            const vec3 x = randomVec3(u, rng) * 1.5;
+            const vec3 dir = randomVec3(u, rng);
             if (length(x) < 0.05 || length(dir) < 1e-3) continue;
             P4 p{x, 1.0};
             block.apply(p, c, n.args());
@@ -774,8 +775,11 @@ TEST(SafeStep, MandelbulbDerivativeIsItsLargestStretch) {
     for (int trial = 0; trial < 2000; ++trial) {
         Node n = Node::make(block);
         n.values[0].x = double(2 + trial % 11);
-        vec3 x = vec3(u(rng), u(rng), u(rng)) * 1.5;
-        if (trial % 4 == 0) x = vec3(1e-3 * u(rng), x.y, 1e-3 * u(rng));  // near the pole
+        vec3 x = randomVec3(u, rng) * 1.5;
+        if (trial % 4 == 0) {  // near the pole
+            const vec2 xz = randomVec2(u, rng) * 1e-3;
+            x = vec3(xz.x, x.y, xz.y);
+        }
         const double r = length(x);
         if (r < 0.05 || std::hypot(x.x, x.z) < 1e-6) continue;
         const double theta = std::atan2(std::hypot(x.x, x.z), x.y), phi = std::atan2(x.x, x.z);

@@ -15,6 +15,7 @@
 
 #include "core/gl/context.hpp"
 #include "core/preset.hpp"
+#include "core/random_vec.hpp"
 
 namespace fraktal::test {
 
@@ -39,7 +40,7 @@ inline std::vector<vec3> randomPoints(size_t n, double halfSize, uint64_t seed) 
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-halfSize, halfSize);
     std::vector<vec3> points(n);
-    for (vec3& p : points) p = vec3(u(rng), u(rng), u(rng));
+    for (vec3& p : points) p = randomVec3(u, rng);
     return points;
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/de_check.hpp"
 #include "core/preset.hpp"
+#include "core/random_vec.hpp"
 
 namespace fraktal::test {
 
@@ -27,7 +28,7 @@ inline Node drawnNode(const BlockDesc& block, std::mt19937_64& rng) {
         const ParamDecl& d = block.params[i];
         if (d.type == ParamType::Toggle) continue;
         std::uniform_real_distribution<double> u(d.min, d.max);
-        n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : vec3(u(rng), u(rng), u(rng));
+        n.values[i] = d.type == ParamType::Float ? vec3(u(rng), 0.0, 0.0) : randomVec3(u, rng);
     }
     return n;
 }

@@ -6,6 +6,7 @@
 #include <random>
 #include <set>
 
+#include "core/random_vec.hpp"
 #include "core/viewport/camera_path.hpp"
 #include "core/viewport/frame_logic.hpp"
 #include "core/viewport/image_error.hpp"
@@ -183,7 +184,7 @@ TEST(ViewportLogic, ParkedRaysStayPastTheBoundSphereAfterACameraMove) {
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     auto direction = [&] {
         vec3 v;
-        do v = vec3(uniform(rng), uniform(rng), uniform(rng)) * 2.0 - 1.0;
+        do v = randomVec3(uniform, rng) * 2.0 - 1.0;
         while (length(v) < 1e-3 || length(v) > 1.0);
         return normalize(v);
     };

@@ -18,6 +18,7 @@
 #include "core/plane/plane_renderer.hpp"
 #include "core/preset.hpp"
 #include "core/preset_text_edit.hpp"
+#include "core/random_vec.hpp"
 #include "core/safe_step.hpp"
 #include "core/scene/formula_fit.hpp"
 #include "core/scene/scene_import.hpp"
@@ -119,7 +120,7 @@ void compareGpuWithCpu(const Formula& f, gl::DEProbe& probe, uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-f.boundRadius, f.boundRadius);
     std::vector<vec3> points(2000);
-    for (vec3& p : points) p = vec3(u(rng), u(rng), u(rng));
+    for (vec3& p : points) p = randomVec3(u, rng);
     const auto gpu = probe.evaluate(f, points);
     size_t agree = 0;
     for (size_t i = 0; i < points.size(); ++i) {

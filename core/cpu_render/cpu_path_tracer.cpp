@@ -204,8 +204,8 @@ struct Tracer {
         }
         const double eps = cpu::surfaceEpsilon(march, s.t, pixelAngle);
         vec3 pos = ro + rd * s.t;
-        vec3 throughput(1.0), direct(0.0), diffuseDirect(0.0), specular(0.0), emission(0.0), bsdfDirect(0.0),
-            indirect(0.0), ratioDiffuse(0.0), ratioSpecular(0.0);
+        vec3 throughput(1.0), diffuseDirect(0.0), specular(0.0), emission(0.0), bsdfDirect(0.0), indirect(0.0),
+            ratioDiffuse(0.0), ratioSpecular(0.0);
         const PathTraceSettings& pt = lighting.pathTrace;
         for (int depth = 0;; ++depth) {
             const vec3 n = cpu::surfaceNormal(march, pos, rd, eps, deEvals);

@@ -8,6 +8,7 @@
 
 #include "core/animation.hpp"
 #include "core/de_check.hpp"
+#include "core/random_vec.hpp"
 
 namespace fraktal {
 
@@ -58,7 +59,7 @@ std::vector<vec3> firstPointsInside(const Formula& f, int rays) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     auto inBall = [&] {
         vec3 v;
-        do v = vec3(u(rng), u(rng), u(rng));
+        do v = randomVec3(u, rng);
         while (dot(v, v) > 1.0 || dot(v, v) < 1e-6);
         return v;
     };
@@ -87,7 +88,7 @@ double smallestBailoutKeepingTheObject(const Formula& f, double reference) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::vector<vec3> points;
     while (points.size() < 2000) {
-        const vec3 p(u(rng), u(rng), u(rng));
+        const vec3 p = randomVec3(u, rng);
         if (length(p) <= 1.0) points.push_back(p * f.boundRadius);
     }
     Formula g = f;

@@ -30,7 +30,8 @@ constexpr StateImage kStateImages[] = {
 }  // namespace
 
 PassImages::PassImages(const gl::Program& program) {
-    for (const auto& [name, location] : gl::activeImageUniforms(program.id())) {
+    for (const gl::ImageUniform& uniform : gl::activeImageUniforms(program.id())) {
+        const std::string& name = uniform.name;
         const auto found = std::find_if(std::begin(kStateImages), std::end(kStateImages),
                                         [&](const StateImage& s) { return name == s.uniform; });
         if (found == std::end(kStateImages))
@@ -42,7 +43,7 @@ PassImages::PassImages(const gl::Program& program) {
                                      " would take unit " + std::to_string(unit) +
                                      ", and OpenGL 4.5 guarantees units 0-" +
                                      std::to_string(gl::PortableLimits::imageUnits - 1));
-        glProgramUniform1i(program.id(), location, unit);
+        glProgramUniform1i(program.id(), uniform.location, unit);
         units_.push_back(&*found);
     }
 }
