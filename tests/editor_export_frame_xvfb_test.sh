@@ -12,8 +12,6 @@ fraktal=$1
 preset=$2
 out=$3
 mkdir -p "$out"
-# The shared shader cache under a private HOME: see tests/editor_xvfb_helpers.sh.
-export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/mesa_shader_cache}"
 home=$(mktemp -d)
 trap 'rm -rf "$home"' EXIT
 # PSNR at half size: the viewport renders at 0.75 of the window and is upsampled, the export at

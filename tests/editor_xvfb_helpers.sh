@@ -8,11 +8,8 @@ if [ -z "${FRAKTAL_UNDER_XVFB:-}" ]; then
     FRAKTAL_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 ${xvfb_screen:-1280x800x24}" "$0" "$@"
 fi
 # A private HOME and config folder: the editor's ini and recent list must not leak in or out.
-# Mesa's cache of compiled shaders stays the user's, shared by every editor the suite starts, as
-# it is by every other process that makes a GL context: under the private HOME each start
-# compiled its shaders anew (one open of the presets test took 134 s of CPU with a cache per
-# editor, 75 s with one cache shared by its editors, starting empty).
-export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/mesa_shader_cache}"
+# Mesa's compiled-shader cache stays the user's (it takes the home folder from the passwd entry,
+# not from HOME), shared with every other GL test of the suite.
 home=$(mktemp -d)
 export XDG_CONFIG_HOME="$home/config"
 state="$home/state.json"

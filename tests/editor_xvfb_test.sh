@@ -9,8 +9,6 @@ fraktal=$1
 presets=$2
 out=$3
 mkdir -p "$out"
-# The shared shader cache under a private HOME: see tests/editor_xvfb_helpers.sh.
-export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/mesa_shader_cache}"
 # A private HOME: the editor's ini and recent list must not leak in or out.
 home=$(mktemp -d)
 trap 'rm -rf "$home"' EXIT
