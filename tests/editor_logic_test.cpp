@@ -17,6 +17,7 @@
 #include "app/editor/input/fly_speed.hpp"
 #include "app/editor/state/actions.hpp"
 #include "core/animation.hpp"
+#include "core/scene/scene_revision.hpp"
 #include "editor_test_support.hpp"
 #include "test_support.hpp"
 
@@ -24,7 +25,6 @@ namespace fraktal::editor {
 namespace {
 
 namespace fs = std::filesystem;
-
 
 // A scripted sequence of edits of every kind the editor makes.
 std::vector<std::function<void(Document&)>> scriptedEdits() {
@@ -166,22 +166,26 @@ TEST(EditorUndo, EditorSectionRoundTripsThroughTheSavedPreset) {
 }
 
 TEST(EditorRecompile, ValueEditsKeepTheProgramStructureEditsRecompile) {
-    Formula f = test::shippedPreset("hybrid_menger_octahedral.json").formula;
-    ProgramTracker tracker;
-    EXPECT_TRUE(tracker.needsRecompile(f)) << "no program yet";
-    tracker.compiled(f);
+    // The viewport recompiles when the frame's scene revision says the structure changed
+    // (scene::sceneChange, the one owner of "what changed"); a value edit only restarts.
+    Preset p = test::shippedPreset("hybrid_menger_octahedral.json");
+    const scene::SceneRevision compiled = scene::sceneRevision(p);
+    EXPECT_TRUE(scene::sceneChange(nullptr, compiled).structure) << "no program yet";
 
     // Values: parameters, iterations, bailout, bound, factor, estimator parameters.
+    Formula& f = p.formula;
     setParam(f, 2, 0, vec3(2.5, 0, 0));
     setParam(f, int(f.nodes.size()), 0, vec3(0.9, 1.1, 1.0));
     f.iterations = 7;
     f.bailout = 50.0;
     f.boundRadius = 3.0;
     f.deFactor = 0.8;
-    EXPECT_FALSE(tracker.needsRecompile(f));
+    const scene::SceneChange values = scene::sceneChange(&compiled, scene::sceneRevision(p));
+    EXPECT_FALSE(values.structure);
+    EXPECT_TRUE(values.restarts());
 
-    // Each structure edit on its own needs a new program.
-    const Formula base = f;
+    // Each structure edit on its own needs a new program, once.
+    const Preset base = p;
     const std::vector<std::pair<const char*, std::function<void(Formula&)>>> structural{
         {"add", [](Formula& g) { addNode(g, *findBlock("sphere_fold")); }},
         {"remove", [](Formula& g) { removeNode(g, 0); }},
@@ -192,12 +196,12 @@ TEST(EditorRecompile, ValueEditsKeepTheProgramStructureEditsRecompile) {
         {"estimator", [](Formula& g) { setEstimator(g, *findBlock("sphere")); }},
     };
     for (const auto& [name, edit] : structural) {
-        Formula g = base;
-        edit(g);
-        EXPECT_TRUE(tracker.needsRecompile(g)) << name;
-        ProgramTracker t2 = tracker;
-        t2.compiled(g);
-        EXPECT_FALSE(t2.needsRecompile(g)) << name << ": compiled once, no second compile";
+        Preset g = base;
+        edit(g.formula);
+        const scene::SceneRevision recompiled = scene::sceneRevision(g);
+        EXPECT_TRUE(scene::sceneChange(&compiled, recompiled).structure) << name;
+        EXPECT_FALSE(scene::sceneChange(&recompiled, scene::sceneRevision(g)).structure)
+            << name << ": compiled once, no second compile";
     }
 }
 

@@ -232,7 +232,9 @@ void drawExportGuide(const EditorState& s, const ExportFrame& f) {
 
 // The viewport of the current document: the 3D one, or the 2D view for a 2D document. Returns
 // the compile error to report (empty when none).
-const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, PlaneViewport& plane) {
+// `structure`: the document formula's structureKey(), computed once this frame.
+const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, PlaneViewport& plane,
+                                        const std::string& structure) {
     const Layout& l = s.layout;
     const ImGuiIO& io = ImGui::GetIO();
     const double scale = s.doc.view.renderScale * io.DisplayFramebufferScale.x;
@@ -247,12 +249,13 @@ const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, 
     updateCamera(s);
     viewport.setPresetFile(s.file.path.string());
     const ExportFrame frame = exportFrameOf(s);
+    // The frame's one revision of the scene: every part of the viewport decides on it.
     if (frame.viewFovY == s.doc.preset.camera.fovY) {
-        viewport.render(s.doc.preset, s.doc.view, width, height);
+        viewport.render(s.doc.preset, scene::sceneRevision(s.doc.preset, structure), s.doc.view, width, height);
     } else {  // a wider export: the viewport widens its view to hold the whole export frame
         Preset shown = s.doc.preset;
         shown.camera.fovY = frame.viewFovY;
-        viewport.render(shown, s.doc.view, width, height);
+        viewport.render(shown, scene::sceneRevision(shown, structure), s.doc.view, width, height);
     }
     drawViewportImage(s, viewport.displayTexture());
     drawExportGuide(s, frame);
@@ -425,12 +428,17 @@ int runEditor(const EditorOptions& o) {
             else
                 drawFormulaPanel(s, *viewport);
             drawSidebar(s);
+            // The formula's structure as the panels left it, computed once for the frame: nothing
+            // later in the frame edits the node list (the timeline keys values, the viewport moves
+            // the camera; the custom-block editor and the dialogs draw after the viewport), so the
+            // step factor and the viewport's scene revision share it.
+            const std::string structure = s.doc.plane ? std::string() : s.doc.preset.formula.structureKey();
             // The step factor measured for a new structure joins the edit's undo step.
-            updateDerivedValues(s);
+            updateDerivedValues(s, structure);
             if (!s.doc.plane) s.slowStack.update(s.doc.preset.formula, s.doc.preset.camera, s.stepFactor);
             layoutViewport(s, io.DisplaySize.x, io.DisplaySize.y);
             drawTimelinePanel(s);
-            const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport);
+            const std::string compileError = drawDocumentViewport(s, *viewport, planeViewport, structure);
             drawCameraPathOverlay(s);
             drawStatusLine(s);
             drawExportDialog(s);

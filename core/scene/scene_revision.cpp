@@ -1,5 +1,8 @@
 #include "core/scene/scene_revision.hpp"
 
+#include <cassert>
+#include <utility>
+
 namespace fraktal::scene {
 
 using nlohmann::json;
@@ -40,9 +43,12 @@ void erasePath(json& j, const std::string& path) {
 
 }  // namespace
 
-SceneRevision sceneRevision(const Preset& preset) {
+SceneRevision sceneRevision(const Preset& preset) { return sceneRevision(preset, preset.formula.structureKey()); }
+
+SceneRevision sceneRevision(const Preset& preset, std::string structure) {
+    assert(structure == preset.formula.structureKey());
     SceneRevision r;
-    r.structure = preset.formula.structureKey();
+    r.structure = std::move(structure);
     r.camera = preset.camera;
     json j = presetToJson(preset);
     for (const IgnoredField& f : fieldsNoRenderReads()) erasePath(j, f.path);

@@ -44,6 +44,10 @@ struct SceneChange {
 };
 
 SceneRevision sceneRevision(const Preset& preset);
+// The same, with the formula's structure already computed this frame (the editor computes it once,
+// after the panels that edit the node list, for the step factor and the viewport alike).
+// `structure` must be preset.formula.structureKey() (checked where assertions are on).
+SceneRevision sceneRevision(const Preset& preset, std::string structure);
 // `before` null: everything changed (a first frame).
 SceneChange sceneChange(const SceneRevision* before, const SceneRevision& after);
 

@@ -45,7 +45,7 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     FrameKey key = frameKey(formula, camera, render, shading, width, height, lens, revision);
     const ShadingParams& params = key.shading;
     // Compile first: if it fails, the old programs and image stay.
-    if (!programs_ || programs_->structure != key.structure) programs_ = std::make_unique<ViewportPrograms>(formula);
+    if (needsPrograms(key.structure)) programs_ = std::make_unique<ViewportPrograms>(formula);
     // A new size keeps the previous grid for this frame: a reprojected frame scatters its points
     // into the new grid, and every pixel not yet finished shows the previous image, upsampled.
     std::unique_ptr<MarchState> previousGrid;

@@ -58,11 +58,10 @@ class Viewport {
                       const ShadingSettings& shading, int width, int height, const ThinLens& lens = {},
                       const scene::SceneRevision* revision = nullptr) const;
 
-    // Whether render() with this formula would compile first: the current programs were built for
+    // Whether render() of a formula of this structure (Formula::structureKey, as the frame's
+    // scene::SceneRevision holds it) would compile first: the current programs were built for
     // another structure (or none yet).
-    bool needsPrograms(const Formula& formula) const {
-        return !programs_ || programs_->structure != formula.structureKey();
-    }
+    bool needsPrograms(const std::string& structure) const { return !programs_ || programs_->structure != structure; }
     // Programs compiled elsewhere, e.g. on a shared context in a background thread (the editor's
     // BackgroundCompiler), so that render() of their structure does not compile.
     void adoptPrograms(std::unique_ptr<ViewportPrograms> programs) { programs_ = std::move(programs); }

@@ -407,9 +407,8 @@ void AutoStepFactor::restore(const Formula& f) {
     rays = m.rays, noHits = m.noHits, noSafeFactor = m.noSafeFactor;
 }
 
-bool AutoStepFactor::update(Formula& f, const Camera& camera) {
-    std::string key = f.structureKey();
-    if (key == measuredKey) {
+bool AutoStepFactor::update(Formula& f, const Camera& camera, const std::string& structure) {
+    if (structure == measuredKey) {
         if (!further.valid() || further.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
         std::future<EstimatorMeasurement> ended = std::move(further);
         furtherWorker = {};  // ended: joins at once
@@ -424,7 +423,7 @@ bool AutoStepFactor::update(Formula& f, const Camera& camera) {
     }
     furtherWorker = {};  // stops the rounds measuring the previous structure
     further = {};
-    measuredKey = std::move(key);
+    measuredKey = structure;
     if (!f.cpuEvaluable() || !f.estimator.block) return false;
     measuringSince = std::chrono::steady_clock::now();
     const EstimatorMeasurement m = measureSafeStep(f, camera, options());

@@ -1,6 +1,6 @@
 // Edits of a formula's node list, as the formula panel performs them. Pure functions on the
 // data, so the panel stays thin and the rules are unit-tested. Which edits need a recompile is
-// decided by Formula::structureKey() alone (see ProgramTracker).
+// decided by Formula::structureKey() alone, through the frame's scene::SceneRevision.
 #pragma once
 
 #include <chrono>
@@ -98,19 +98,6 @@ const CustomBlock* findCustomBlock(const Formula& f, std::string_view id);
 // leaving the formula alone; empty on success. A GLSL compile error shows later, at the node.
 std::string upsertCustomBlock(Formula& f, CustomBlock::Definition definition);
 
-// Remembers which structure the current program was built for. A value edit keeps the key;
-// a block added, removed, moved, enabled/disabled or re-phased changes it.
-struct ProgramTracker {
-    std::string compiledKey;
-    bool hasProgram = false;
-
-    bool needsRecompile(const Formula& f) const { return !hasProgram || f.structureKey() != compiledKey; }
-    void compiled(const Formula& f) {
-        compiledKey = f.structureKey();
-        hasProgram = true;
-    }
-};
-
 // The step factor `fraktal check` measures (core/safe_step.hpp), applied after every change of
 // structure so that a new stack never shows overshoot specks; a factor set by hand is kept
 // (`overridden`) until the user hands it back to the check. An opened document keeps its own.
@@ -184,8 +171,10 @@ struct AutoStepFactor {
     // formulas with custom GLSL blocks keep their factor) and, unless overridden, sets
     // f.deFactor (not when noHits); starts the further rounds where the tail calls for them.
     // Otherwise, when the further rounds have ended: applies their factor the same way.
-    // True when it measured or applied.
-    bool update(Formula& f, const Camera& camera);
+    // True when it measured or applied. `structure` is f.structureKey(), computed once a frame by
+    // the editor (the two-argument form computes it).
+    bool update(Formula& f, const Camera& camera, const std::string& structure);
+    bool update(Formula& f, const Camera& camera) { return update(f, camera, f.structureKey()); }
     bool refining() const { return further.valid(); }
 
    private:

@@ -246,14 +246,14 @@ void redo(EditorState& s) {
     clampSelection(s);
 }
 
-bool updateDerivedValues(EditorState& s) {
+bool updateDerivedValues(EditorState& s, const std::string& structure) {
     if (s.doc.plane) return false;
     Formula& f = s.doc.preset.formula;
-    if (!s.stepFactor.update(f, s.doc.preset.camera)) return false;
+    if (!s.stepFactor.update(f, s.doc.preset.camera, structure)) return false;
     if (s.stepFactor.overridden || s.stepFactor.noHits) return true;  // the factor was left alone
     // An edit not committed yet (its frame) takes the factor with it when it is committed; the
-    // state of a committed one, or one brought back by undo / redo, is amended in place.
-    const std::string& structure = s.stepFactor.measuredKey;
+    // state of a committed one, or one brought back by undo / redo, is amended in place (the
+    // measurement is of `structure`: update() measured or applied for it).
     const double factor = f.deFactor;
     const std::string tag = f.deFactorMeasuredFor;
     s.history.amendPresent([&](Document& d) {

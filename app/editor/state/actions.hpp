@@ -38,7 +38,10 @@ void redo(EditorState& s);
 // present state (the edit that made it committed, or brought back by undo / redo), to that state
 // in place: the factor is part of the edit's step, never a step of its own, and redo is kept.
 // Returns whether a factor was measured or applied.
-bool updateDerivedValues(EditorState& s);
+bool updateDerivedValues(EditorState& s, const std::string& structure);
+inline bool updateDerivedValues(EditorState& s) {
+    return updateDerivedValues(s, s.doc.plane ? std::string() : s.doc.preset.formula.structureKey());
+}
 // Runs `action` now, or asks first when there are unsaved changes.
 void requestAction(EditorState& s, PendingAction action);
 void runPending(EditorState& s);

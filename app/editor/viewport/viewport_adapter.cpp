@@ -48,10 +48,9 @@ bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOpt
 CoreViewportView::CoreViewportView(const ColorPipeline& color, BackgroundCompiler* compiler)
     : color_(color), compiler_(compiler) {}
 
-bool CoreViewportView::programsReady(const Formula& formula) {
+bool CoreViewportView::programsReady(const Formula& formula, const std::string& structure) {
     stats_.compiling = false;
-    if (!compiler_ || !viewport_.needsPrograms(formula)) return true;
-    const std::string structure = formula.structureKey();
+    if (!compiler_ || !viewport_.needsPrograms(structure)) return true;
     std::optional<BackgroundCompiler::Result> result = compiler_->take(structure);
     if (!result) {
         compiler_->request(formula);
@@ -99,8 +98,10 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
     if (resting) options.stepsPerFrame = std::min(restSteps_, settings.stepsPerFrame);
     if (!sameOptions(options, viewport_.options())) viewport_.setOptions(options);
     workingShading(preset);
-    if (!programsReady(formula)) return false;
-    const bool newStructure = tracker_.needsRecompile(formula);
+    // A structure the viewport has no programs for: adopted from the background compiler below,
+    // or compiled by render() where there is none.
+    const bool newStructure = viewport_.needsPrograms(revision.structure);
+    if (!programsReady(formula, revision.structure)) return false;
     const auto start = std::chrono::steady_clock::now();
     viewport::FrameStats frame;
     try {
@@ -112,10 +113,7 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
         if (newStructure) failedStructure_ = revision.structure;
         return false;
     }
-    if (newStructure) {
-        tracker_.compiled(formula);
-        ++stats_.compiles;
-    }
+    if (newStructure) ++stats_.compiles;
     compileError_.clear();
     failedStructure_.clear();
     lastAction_ = frame.action;
@@ -182,9 +180,9 @@ double CoreViewportView::chooseScale(const scene::SceneRevision& revision, const
     return resolution_.next(changed, frameMs);
 }
 
-void CoreViewportView::render(const Preset& preset, const ViewSettings& settings, int fullWidth, int fullHeight) {
-    // What changed since the last frame is decided here, once, for every consumer below.
-    const scene::SceneRevision revision = scene::sceneRevision(preset);
+void CoreViewportView::render(const Preset& preset, const scene::SceneRevision& revision, const ViewSettings& settings,
+                              int fullWidth, int fullHeight) {
+    // What changed since the last frame is decided on `revision`, once, by every consumer below.
     if (path_ && !pathStillValid(revision, settings, fullWidth, fullHeight)) dropPath();
     if (path_) {
         previousRestSteps_ = 0;  // a path-traced frame says nothing about the fast mode's steps

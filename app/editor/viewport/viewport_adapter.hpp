@@ -47,7 +47,9 @@ class CoreViewportView final : public ViewportView {
     CoreViewportView(const CoreViewportView&) = delete;
     CoreViewportView& operator=(const CoreViewportView&) = delete;
 
-    void render(const Preset& preset, const ViewSettings& settings, int width, int height) override;
+    using ViewportView::render;
+    void render(const Preset& preset, const scene::SceneRevision& revision, const ViewSettings& settings, int width,
+                int height) override;
     GLuint displayTexture() const override { return displayTarget_.texture(); }
     int width() const override { return displayTarget_.width(); }
     int height() const override { return displayTarget_.height(); }
@@ -78,9 +80,10 @@ class CoreViewportView final : public ViewportView {
     void copyPathImage();  // the tracer's whole passes into pathImage_
     void dropPath();
 
-    // Asks the compiler for the formula's programs; true once the viewport has them (or when
-    // there is no compiler: render() compiles). False while compiling or when it failed.
-    bool programsReady(const Formula& formula);
+    // Asks the compiler for the programs of the formula (of this structure); true once the
+    // viewport has them (or when there is no compiler: render() compiles). False while compiling
+    // or when it failed.
+    bool programsReady(const Formula& formula, const std::string& structure);
     // Dynamic resolution: the share of (width, height) to render this frame at.
     double chooseScale(const scene::SceneRevision& revision, const ViewSettings& settings);
 
@@ -88,7 +91,6 @@ class CoreViewportView final : public ViewportView {
     BackgroundCompiler* compiler_ = nullptr;
     viewport::Viewport viewport_;
     OcioDisplayPass display_;
-    ProgramTracker tracker_;
     std::string failedStructure_;  // a structure whose compile failed: not retried every frame
     std::string compileError_, displayError_;
     // Cache of shadingInWorkingSpace (an OCIO processor per colour is not free every frame).

@@ -12,6 +12,7 @@
 #include "app/editor/document/view_settings.hpp"
 #include "core/color/color_pipeline.hpp"
 #include "core/preset.hpp"
+#include "core/scene/scene_revision.hpp"
 
 namespace fraktal::editor {
 
@@ -41,10 +42,17 @@ class ViewportView {
    public:
     virtual ~ViewportView() = default;
     // Advances the image of this preset by one frame's work on the current GL context, and
-    // refreshes displayTexture() through the preset's OCIO display/view and exposure. A structure
-    // change (Formula::structureKey) recompiles; a value change only re-uploads uniforms. When
-    // the compile fails, compileError() says why and the last good image stays.
-    virtual void render(const Preset& preset, const ViewSettings& settings, int width, int height) = 0;
+    // refreshes displayTexture() through the preset's OCIO display/view and exposure. What the
+    // frame does is decided on `revision` (scene::sceneRevision of `preset`, built once a frame by
+    // the caller): a structure change recompiles, a value change restarts with new uniforms, a
+    // camera change reprojects, a display change only redisplays. When the compile fails,
+    // compileError() says why and the last good image stays.
+    virtual void render(const Preset& preset, const scene::SceneRevision& revision, const ViewSettings& settings,
+                        int width, int height) = 0;
+    // The same for a caller without a revision of its own (thumbnails, tests).
+    void render(const Preset& preset, const ViewSettings& settings, int width, int height) {
+        render(preset, scene::sceneRevision(preset), settings, width, height);
+    }
     // The display-referred RGBA8 image, top row first (draw with ImGui uv (0,0)-(1,1)). 0 before
     // the first frame.
     virtual GLuint displayTexture() const = 0;
