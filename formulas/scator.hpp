@@ -9,8 +9,10 @@ namespace fraktal::blocks {
 // 1 + z^2 / x^2 and 1 + y^2 / x^2. Imaginary form: x^2 - y^2 - z^2 and the factors 1 - z^2 / x^2,
 // 1 - y^2 / x^2. The terms over x^2 blow up at the plane x = 0 (x^2 is held above 1e-30 so that
 // the orbit escapes there rather than turning into NaN). The running derivative takes
-// Mandelbulber2's 2 |v|, or with `ratio` the larger of that and 2 ratio_scale |v'| / |v| (its
-// "vector DE"): estimates, so `fraktal check` measures the step factor.
+// Mandelbulber2's 2 r, r the scator magnitude (x^2 + y^2 + z^2 + y^2 z^2 / x^2)^(1/2) of the point
+// (Mandelbulber2 measures a scator orbit by it: compute_fractal.cl), or with `ratio` the larger
+// of that and 2 ratio_scale |v'| / |v| (its "vector DE"): estimates, so `fraktal check` measures
+// the step factor.
 struct ScatorSquare {
     static constexpr std::string_view id = "scator_power2";
     static constexpr std::string_view menuGroup = "Mandelbulber2";
@@ -37,8 +39,8 @@ struct ScatorSquare {
     vec3 n = vec3(q.x + sg * (q.y + q.z), v.x * v.y, v.x * v.z) * multiplier;
     n += vec3(q.y * q.z / x2, 0.0, 0.0);
     n.yz *= vec2(1.0 + sg * q.z / x2, 1.0 + sg * q.y / x2);
-    float r = length(v);
-    p.w *= 2.0 * (ratio > 0.5 && r > 0.0 ? max(r, ratio_scale * length(n) / r) : r);
+    float r = sqrt(q.x + q.y + q.z + q.y * q.z / x2), len = length(v);
+    p.w *= 2.0 * (ratio > 0.5 && len > 0.0 ? max(r, ratio_scale * length(n) / len) : r);
     p.xyz = n;
 )";
     static void apply(P4& p, const vec3&, Args a) {
@@ -50,8 +52,8 @@ struct ScatorSquare {
         n.x += q.y * q.z / x2;
         n.y *= 1.0 + sg * q.z / x2;
         n.z *= 1.0 + sg * q.y / x2;
-        const double r = length(v);
-        p.w *= 2.0 * (ratio > 0.5 && r > 0.0 ? std::max(r, ratio_scale * length(n) / r) : r);
+        const double r = std::sqrt(q.x + q.y + q.z + q.y * q.z / x2), len = length(v);
+        p.w *= 2.0 * (ratio > 0.5 && len > 0.0 ? std::max(r, ratio_scale * length(n) / len) : r);
         p.xyz = n;
     }
 };
