@@ -29,6 +29,7 @@
 #include "formulas/mandelbox_smooth.hpp"
 #include "formulas/mandelbulb.hpp"
 #include "formulas/mandelbulb_eye.hpp"
+#include "formulas/mandelbulb_kali_multi.hpp"
 #include "formulas/mandelbulb_variants.hpp"
 #include "formulas/menger_fold.hpp"
 #include "formulas/menger_rotate.hpp"
@@ -47,6 +48,7 @@
 #include "formulas/rotate.hpp"
 #include "formulas/scale.hpp"
 #include "formulas/scale_vary.hpp"
+#include "formulas/scator.hpp"
 #include "formulas/sierpinski_fold.hpp"
 #include "formulas/sin_cos_max.hpp"
 #include "formulas/smooth_box_fold.hpp"
@@ -131,6 +133,8 @@ constexpr std::array kBlocks{
     describe<StartW>(),
     describe<Menger4d>(),
     describe<Sierpinski4d>(),
+    describe<MandelbulbKaliMulti>(),
+    describe<ScatorSquare>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -1711,6 +1711,135 @@ void mapTransfRotation(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.rotation(setRotation2(r.vector("transf_rotation")));
 }
 
+// One of Mandelbulber2's six axis orders (mandelbulbMulti_order_of_xyz and its kin), written as its
+// number or its name: 0 xyz, 1 xzy, 2 yxz, 3 yzx, 4 zxy, 5 zyx; -1 for anything else.
+int axisOrder(Reader& r, const std::string& key) {
+    static constexpr std::array<std::string_view, 6> kNames{"xyz", "xzy", "yxz", "yzx", "zxy", "zyx"};
+    const std::string v = r.raw(key);
+    for (int k = 0; k < 6; ++k)
+        if (v == kNames[size_t(k)] || v == std::to_string(k)) return k;
+    r.unsupported(key + " " + v + ": not an axis order");
+    return -1;
+}
+// A two-way choice written as its number or its name (mandelbulbMulti_acos_or_asin: acos or asin;
+// _atan_or_atan2: atan or atan2): whether it is the second.
+bool secondChoice(Reader& r, const std::string& key, const std::string& second) {
+    const std::string v = r.raw(key);
+    return v == "1" || v == second;
+}
+
+// Kali's multi Mandelbulb: the axes made positive first where transf_function_enabled_false and
+// enabledA{x,y,z}_false say (each a plane fold), the bulb of both measurements, then the formula's
+// own multiple of c in mandelbulbMulti_order_of_xyz_C (xyz, or yxz as add_c_axes' swap_xy).
+void mapMandelbulbKaliMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("analyticDE_enabled_false", "a tweak of the bulb's running derivative");
+    if (r.boolean("transf_function_enabled_false"))
+        for (int k = 0; k < 3; ++k)
+            if (r.boolean(std::string("transf_function_enabledA") + "xyz"[k] + "_false")) {
+                vec3 normal(0.0);
+                normal[k] = 1.0;
+                b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+            }
+    const int order = axisOrder(r, "mandelbulbMulti_order_of_xyz");
+    const bool own = r.boolean("transf_function_enabledx_false");  // the second measurement's own choices
+    const int second = own ? axisOrder(r, "mandelbulbMulti_order_of_xyz_2") : order;
+    const std::string suffix = own ? "_A" : "";
+    b.add("mandelbulb_kali_multi",
+          {N::f("power", r.number("transf_pwr_8")), N::f("order", std::max(order, 0)),
+           N::f("order_second", std::max(second, 0)),
+           N::f("theta_asin", secondChoice(r, "mandelbulbMulti_acos_or_asin", "asin")),
+           N::f("theta_asin_second", secondChoice(r, "mandelbulbMulti_acos_or_asin" + suffix, "asin")),
+           N::f("phi_atan", !secondChoice(r, "mandelbulbMulti_atan_or_atan2", "atan2")),
+           N::f("phi_atan_second", !secondChoice(r, "mandelbulbMulti_atan_or_atan2" + suffix, "atan2")),
+           N::f("sine_first", r.boolean("transf_function_enabledBx_false")),
+           N::f("sine_second", r.boolean("transf_function_enabledz_false")),
+           N::f("theta_scale", r.number("transf_scaleA_1")), N::f("phi_scale", r.number("transf_scaleB_1")),
+           N::f("theta_offset", r.number("beta_angle_offset")), N::f("phi_offset", r.number("alpha_angle_offset")),
+           N::f("theta_offset_second", r.number("transf_beta_angle_offset"))});
+    if (!r.boolean("transf_addCpixel_enabled_false")) return;
+    r.mustBeDefault("transf_alternate_enabled_false", "c's axes reordered anew each iteration");
+    const int orderC = axisOrder(r, "mandelbulbMulti_order_of_xyz_C");
+    if (orderC != 0 && orderC != 2)
+        return r.unsupported("mandelbulbMulti_order_of_xyz_C " + r.raw("mandelbulbMulti_order_of_xyz_C") +
+                             ": c's axes in an order other than xyz or yxz");
+    b.add("add_c_axes", {N::v("weights", r.vector("transf_constant_multiplierC_111")), N::f("julia", 0.0),
+                         N::f("swap_xy", orderC == 2 ? 1.0 : 0.0)});
+}
+
+// Benesi's power-2 Mandelbulb (benesi_pwr2_mandelbulb): Benesi's T1 on its window, his power 2 with
+// c times transf_constant_multiplierA_100 per axis on window F (x alone by default), Julia mode's
+// offset on window E. Its prism fold, pine-tree step, cosine wrap, second rotation and DE tweak
+// are refused.
+void mapBenesiPwr2Mandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledP_false", "the prism fold before Benesi's T1");
+    r.mustBeDefault("transf_addCpixel_enabled_false", "Benesi's pine-tree power inside the formula");
+    r.mustBeDefault("transf_function_enabledBx_false", "x wrapped by the cosine and sine of y");
+    r.mustBeDefault("transf_rotation2_enabled_false", "a rotation after the formula");
+    r.mustBeDefault("analyticDE_enabled_false", "a tweak of the running derivative");
+    if (r.boolean("transf_benesi_T1_enabled"))
+        b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), [&] {
+            r.mustBeDefault("transf_rotation_enabled", "a rotation inside Benesi's frame");
+            b.add("benesi_t1",
+                  {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
+        });
+    if (r.boolean("transf_addCpixel_enabled"))
+        b.within(r.integer("transf_start_iterations_F"), r.integer("transf_stop_iterations_F"), [&] {
+            b.add("benesi_pow2", {});
+            const vec3 weights = r.vector("transf_constant_multiplierA_100");
+            if (weights == vec3(1.0))
+                b.add("add_c", {});
+            else if (weights != vec3(0.0))
+                b.add("add_c_axes", {N::v("weights", weights), N::f("julia", 0.0)});
+        });
+    if (r.boolean("transf_constant_julia_mode"))
+        b.within(r.integer("transf_start_iterations_E"), r.integer("transf_stop_iterations_E"),
+                 [&] { b.add("translate", {N::v("offset", r.vector("transf_offset_000"))}); });
+}
+
+// transf_zvector_axis_swap: the axes in mandelbulbMulti_order_of_xyz, those that
+// transf_function_enabled{x,y,z}_false name negated, then (transf_function_enabled_false, on its
+// window) x and y turned 45 degrees about z. The reordering is one orthogonal map: a rotation, or
+// a rotation and the mirror through the origin where it reverses handedness.
+void mapTransfZvectorAxisSwap(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const int order = axisOrder(r, "mandelbulbMulti_order_of_xyz");
+    if (order < 0) return;
+    static constexpr int kSource[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    glm::dmat3 m(0.0);  // column-major: m[column][row]; row k reads axis kSource[order][k]
+    for (int k = 0; k < 3; ++k)
+        m[kSource[order][k]][k] = r.boolean(std::string("transf_function_enabled") + "xyz"[k] + "_false") ? -1.0 : 1.0;
+    if (glm::determinant(m) > 0.0) {
+        b.rotation(m);
+    } else {
+        b.rotation(-m);
+        b.add("axis_scale", {N::v("scale", vec3(-1.0))});
+    }
+    if (r.boolean("transf_function_enabled_false"))
+        b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"),
+                 [&] { b.rotation(rotationZYX(45.0, 0.0, 0.0)); });
+}
+
+// The scator square (scator_power2): its real or imaginary form and multiplier, the formula's own
+// multiple of c on window E, and its running derivative, 2 r (or the larger of that and the
+// stretch of |v| with analyticDE_enabled_false) times analyticDE_scale_1 plus analyticDE_offset_1.
+// Mandelbulber2's bailout and log estimate of a scator orbit read its scator magnitude, fraktal's
+// |v|: the silhouettes differ (IoU 0.28 to 0.78 on the three files that use it), so the formula is
+// refused by that reason; the nodes are still written for a lenient import.
+void mapScatorPower2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("analyticDE_enabled", "the running derivative left as it is");
+    r.unsupported(
+        "the scator magnitude (|v|^2 + y^2 z^2 / x^2)^(1/2) as the orbit's r (Mandelbulber2's bailout and "
+        "log estimate of a scator orbit; fraktal's measure |v|)");
+    const bool ratio = r.boolean("analyticDE_enabled_false");
+    if (ratio && r.boolean("transf_addCpixel_enabled_false"))
+        r.unsupported("analyticDE_enabled_false with transf_addCpixel_enabled_false: the stretch measured after c");
+    b.add("scator_power2", {N::f("imaginary", r.boolean("transf_function_enabled_false")),
+                            N::v("multiplier", r.vector("transf_constant_multiplier_122")), N::f("ratio", ratio),
+                            N::f("ratio_scale", r.number("transf_scaleA_1"))});
+    const double scale = r.number("analyticDE_scale_1"), offset = r.number("analyticDE_offset_1");
+    if (scale != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", offset)});
+    extraMultipleOfC(r, b, "E");
+}
+
 using MapFn = void (*)(Reader&, NodeBuilder&, std::vector<ImportItem>& approximated);
 struct Mapping {
     int id;
@@ -1789,6 +1918,10 @@ constexpr Mapping kMappings[] = {
     {603, mapDifsCylinder},
     {604, mapDifsSphere},
     {1084, mapTransfSinAndCosMax},
+    {93, mapMandelbulbKaliMulti},
+    {105, mapBenesiPwr2Mandelbulb},
+    {1022, mapTransfZvectorAxisSwap},
+    {173, mapScatorPower2},
 };
 
 MapFn findMapping(int id) {
