@@ -55,7 +55,7 @@ int RestSlices::choose(bool newView, double targetMs, int maxSlices) const {
     if (targetMs <= 0.0) return 1;
     const double estimate = newView ? newViewMs_ : viewMs_;
     if (estimate < 0.0) return most;
-    const double budget = std::max(targetMs - otherMs_, targetMs / 3.0);
+    const double budget = std::max(targetMs - otherMs_, targetMs / 2.0);
     int slices = 1;
     while (slices < most && estimate / slices > budget) slices *= 2;
     if (!newView) slices = std::max(slices, lastSlices_ / 2);

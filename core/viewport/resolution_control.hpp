@@ -30,8 +30,8 @@ struct ResolutionControl {
 // the slices; the whole view's is estimated from each measured frame (render time times its
 // slices, an upper bound: the render has parts over the whole view too). The next frame gets the
 // fewest slices, a power of two, that fit the render into what the target leaves after the other
-// work, but at least a third of the target (on a loaded machine the other work alone can take
-// most of it, and the view must still refine). A new view (a reset: every ray starts from the
+// work, but at least half the target (on a loaded machine the other work alone can take most of
+// it, and each frame's other work then slows the view's settling the more, the more slices). A new view (a reset: every ray starts from the
 // camera, the costliest frames) is sized from the last new view's cost, or gets the most slices
 // when none was measured; a continued view from its own frames, rising at once when a frame was
 // over and falling through an average and by at most half a frame (its rays finish, and the
