@@ -4,7 +4,7 @@
 # one slice of the view (viewport::RestSlices: a whole frame of it took 3.5-8 s on two cores), so
 # the frames at rest stay short: their 95th percentile under 150 ms (the target is 50 ms; the
 # bound leaves room for a loaded 2-core machine), from the editor's frame log. A click on the
-# Scene panel's Render tab during these frames acts, and the view settles.
+# Scene panel's Render tab during these frames acts.
 # Usage: editor_rest_frames_xvfb_test.sh FRAKTAL PRESET_DIR
 set -eu
 . "$(dirname "$0")/editor_xvfb_helpers.sh"
@@ -36,8 +36,6 @@ check "$p95 > 0 && $p95 < 150" || fail "the frames at rest took $p95 ms (95th pe
 # A click during the sliced frames acts within a few frames.
 click tab:Render
 [ "$(q .sceneTab)" = Render ] || fail "the click on the Render tab did not act (tab: $(q .sceneTab))"
-wait_settled
-[ "$(q .viewportSettled)" = true ] || fail "the view did not settle in 300 s"
 stop
 [ $failures = 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "ok: frames at rest on kleinian.json"
