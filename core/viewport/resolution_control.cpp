@@ -38,8 +38,12 @@ int floorPowerOfTwo(int n) {
 
 void RestSlices::measure(const RestFrame& f) {
     if (f.renderMs <= 0.0 || f.slices < 1 || f.scale <= 0.0) return;
-    const double whole = f.renderMs * f.slices / (f.scale * f.scale);
     const bool fullSize = f.scale >= 1.0;
+    // The render's part that slicing does not divide (passes over the whole view, the read-back):
+    // at most the cheapest frame at full size seen, as the most finely sliced frames show it.
+    if (fullSize && !f.newView) fixedMs_ = fixedMs_ < 0.0 ? f.renderMs : std::min(fixedMs_, f.renderMs);
+    const double sliced = fullSize && fixedMs_ > 0.0 ? std::max(f.renderMs - fixedMs_, 0.0) : f.renderMs;
+    const double whole = sliced * f.slices / (f.scale * f.scale);
     if (f.newView) newViewMs_ = whole;
     if (!fullSize) return;
     if (f.newView || viewMs_ < 0.0 || whole > viewMs_)
@@ -56,8 +60,9 @@ int RestSlices::choose(bool newView, double targetMs, int maxSlices) const {
     const double estimate = newView ? newViewMs_ : viewMs_;
     if (estimate < 0.0) return most;
     const double budget = std::max(targetMs - otherMs_, targetMs / 2.0);
+    const double sliceBudget = std::max(budget - std::max(fixedMs_, 0.0), budget / 4.0);
     int slices = 1;
-    while (slices < most && estimate / slices > budget) slices *= 2;
+    while (slices < most && estimate / slices > sliceBudget) slices *= 2;
     if (!newView) slices = std::max(slices, lastSlices_ / 2);
     return std::clamp(slices, 1, most);
 }

@@ -27,15 +27,16 @@ struct ResolutionControl {
 // Sliced refinement at rest (ViewportOptions::slices): how many slices of the view the next frame
 // at rest refines one of. A frame at rest is the editor's other work (panels, display, swap: about
 // the same every frame) plus the viewport's render, whose cost is about the whole view's divided by
-// the slices; the whole view's is estimated from each measured frame (render time times its
-// slices, an upper bound: the render has parts over the whole view too). The next frame gets the
-// fewest slices, a power of two, that fit the render into what the target leaves after the other
-// work, but at least half the target (on a loaded machine the other work alone can take most of
-// it, and each frame's other work then slows the view's settling the more, the more slices). A new view (a reset: every ray starts from the
-// camera, the costliest frames) is sized from the last new view's cost, or gets the most slices
-// when none was measured; a continued view from its own frames, rising at once when a frame was
-// over and falling through an average and by at most half a frame (its rays finish, and the
-// frames grow cheap). Pure logic, unit-tested (tests/resolution_control_test.cpp).
+// the slices; the whole view's is estimated from each measured frame (render time, less the part
+// that slicing does not divide, times its slices). That part (passes over the whole view, the
+// counters' read-back) is taken as the cheapest render at full size seen: counted into the
+// estimate, it kept 256-1024 slices on views that needed a few, and their settling 2-4x as long. The next frame gets
+// the fewest slices, a power of two, that fit the render into what the target leaves after the other work, but at least
+// half the target (on a loaded machine the other work alone can take most of it, and each frame's other work then slows
+// the view's settling the more, the more slices). A new view (a reset: every ray starts from the camera, the costliest
+// frames) is sized from the last new view's cost, or gets the most slices when none was measured; a continued view from
+// its own frames, rising at once when a frame was over and falling through an average and by at most half a frame (its
+// rays finish, and the frames grow cheap). Pure logic, unit-tested (tests/resolution_control_test.cpp).
 struct RestFrame {
     bool newView = false;   // the frame started a new view (a reset)
     int slices = 1;         // it refined one slice of this many
@@ -58,6 +59,7 @@ class RestSlices {
     double viewMs_ = -1.0;     // a whole frame of the view being refined
     double newViewMs_ = -1.0;  // a whole frame that starts a new view
     double otherMs_ = 0.0;     // the editor's frame beside the render
+    double fixedMs_ = -1.0;    // the render's part slicing does not divide (< 0: none measured)
     int lastSlices_ = 0;
 };
 
