@@ -33,9 +33,13 @@ bool sampleOf(ivec2 q, ivec4 info, out vec2 position, out float depth) {
 #endif
 uniform int u_maxSamples;
 uniform float u_initialOmega;
+// Sliced refinement (viewport_march.comp): dispatched over the tiles of the frame's slice alone,
+// the only pixels the frame changed; 1: the whole view.
+uniform int u_sliceCount;
+uniform int u_sliceIndex;
 
 void main() {
-    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 px = slicePixel(u_sliceCount, u_sliceIndex, ivec2(gl_WorkGroupSize.xy));
     if (any(greaterThanEqual(px, u_size))) return;
     ivec4 info = imageLoad(u_rayInfo, px);
     vec4 accum = imageLoad(u_accum, px);

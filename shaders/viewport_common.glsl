@@ -74,6 +74,18 @@ void appendToMarchList(ivec2 px, int stepsLeft) {
 // The pixel of a list entry's index.
 ivec2 listedPixel(uint index) { return ivec2(int(index) % u_size.x, int(index) / u_size.x); }
 
+// Sliced refinement (core/viewport/march_pass.cpp, dispatchOverSlice): a pass dispatched in one
+// dimension over the tiles of a slice, a workgroup a tile. The view's tiles are its workgroups
+// numbered row by row; the slice holds those whose number modulo sliceCount is sliceIndex, and
+// workgroup k of the dispatch is the slice's k-th. With sliceCount 1 the dispatch covers the view.
+// `group`: the caller's gl_WorkGroupSize.xy (declared after this file).
+ivec2 slicePixel(int sliceCount, int sliceIndex, ivec2 group) {
+    int tilesX = (u_size.x + group.x - 1) / group.x;
+    int k = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);  // rows of groups past the count limit
+    int tile = k * sliceCount + sliceIndex;
+    return ivec2(tile % tilesX, tile / tilesX) * group + ivec2(gl_LocalInvocationID.xy);
+}
+
 // Mirror of fraktal::viewport::aaJitter (R2 sequence, Roberts 2018).
 vec2 aaJitter(int sampleIndex) {
     if (sampleIndex <= 0) return vec2(0.0);

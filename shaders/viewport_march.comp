@@ -35,14 +35,26 @@ uniform int u_maxSteps;
 uniform int u_atRest;
 uniform int u_coarseHits;  // ViewportOptions::coarseHits
 uniform int u_deferAfter;  // the full-screen pass's steps before a ray goes on the march list
+// Sliced refinement (core/viewport/march_pass.cpp): the frame advances only the tiles (the
+// workgroups of the view, numbered row by row) whose number modulo u_sliceCount is u_sliceIndex,
+// and the resuming variant is dispatched over those alone (one dimension, a workgroup a tile). A
+// sliced new view first starts every ray with the START_ONLY variant, which takes no step and so
+// holds no DE code (llvmpipe would run a loop's body once for every pixel, marching or not), then
+// marches the slice with the resuming variant. A pixel's own sequence of steps, shading and
+// samples is the same however the frames slice the view: only when it comes differs.
+uniform int u_sliceCount;  // 1: every pixel
+uniform int u_sliceIndex;
 
 void main() {
 #if FROM_LIST
     uint entry = gl_GlobalInvocationID.x;
     if (entry >= ml_count) return;
     ivec2 px = listedPixel(ml_entries[entry].x);
-#else
+#elif START
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(px, u_size))) return;
+#else
+    ivec2 px = slicePixel(u_sliceCount, u_sliceIndex, ivec2(gl_WorkGroupSize.xy));
     if (any(greaterThanEqual(px, u_size))) return;
 #endif
     vec3 ro = u_cameraPosition;
@@ -105,6 +117,9 @@ void main() {
         budget = verifying ? 1 + min(u_stepsPerFrame, u_maxSteps - 1) : min(u_stepsPerFrame, u_maxSteps - s.steps);
         int stepsHere = u_deferAfter;
 #endif
+#if defined(START_ONLY)
+        budget = 0;  // started: the resuming variant marches it when a frame's slice holds it
+#else
         for (; i < budget && i < stepsHere && s.status == MARCH_MARCHING; ++i) {
             float t0 = s.t;
             // The last accepted step went omega * lastD from a point whose DE was lastD: up to
@@ -142,6 +157,7 @@ void main() {
             if (sampleIndex == 0 && s.status == MARCH_MARCHING && s.t > t0)
                 covered = extendConeCoverage(covered, t0, s.lastD, tanHalf);
         }
+#endif
         marchedToHit = s.status == MARCH_HIT;
         // Out of steps: as the still renderer (still.frag), a ray crawling along a grazing surface
         // is a hit; anything else is background. (With i < budget the ray has steps left, on the

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
+
+#include "core/viewport/frame_logic.hpp"
 
 namespace fraktal::viewport {
 namespace {
@@ -44,6 +47,23 @@ TEST(ResolutionControl, ConvergesToTheScaleThatHoldsTheTarget) {
     // The largest step that still holds the target: one step more would not.
     EXPECT_GT(r.frameMs(settled + c.control().step), 33.0 * 0.9);
     for (size_t i = 20; i < scales.size(); ++i) EXPECT_EQ(scales[i], settled) << "frame " << i;
+}
+
+// The frames at rest measured the view (a heavy one: 3.5 s a whole frame): the first frame of the
+// first motion is already small, where unseeded it renders the whole view at full size.
+TEST(ResolutionControl, TheFirstMotionStartsFromTheEstimateAtRest) {
+    ResolutionController c;
+    c.seedFullFrameMs(3500.0);
+    c.next(false, 0.0);
+    EXPECT_EQ(c.scale(), 1.0) << "at rest: full size";
+    EXPECT_EQ(c.next(true, 0.0), c.control().minScale);
+    // A measurement under motion replaces the seed.
+    SimulatedRenderer r{8.0, 200.0};
+    const std::vector<double> scales = drive(c, r, 60);
+    EXPECT_LE(r.frameMs(scales.back()), 33.0);
+    EXPECT_GT(scales.back(), 0.25);
+    c.seedFullFrameMs(1e6);
+    EXPECT_EQ(c.next(true, r.frameMs(c.scale())), scales.back()) << "a seed after a measurement changes nothing";
 }
 
 TEST(ResolutionControl, NoisyFramesDoNotMakeItOscillate) {
@@ -112,43 +132,116 @@ TEST(ResolutionControl, NoTargetMeansFullResolution) {
 }  // namespace
 }  // namespace fraktal::viewport
 
-// At rest a frame marches every unfinished ray by its steps: against a simulated renderer whose
-// frame costs a fixed part plus a part per step, the steps settle where the frame holds the
-// target (a heavy formula: one step's worth is all that fits, never less than one step), a light
-// formula gets the whole cap, a fixed part over the target gets twice its time for the march
-// (not one step: that frame would be hardly shorter and the view would settle far later), and
-// the steps grow at most twice a frame.
+// Sliced refinement at rest: against a simulated view whose render costs a fixed part plus a part
+// proportional to the slice it refines, and an editor frame around it, the slices settle where the
+// frame holds the target (a heavy formula: many slices; a light one: the whole view); a loaded
+// machine whose other work fills the target still leaves the render half of it; a new view gets
+// the most slices until one was measured, then the last new view's; the slices fall at most by
+// half a frame; slices come back as powers of two within the maximum; no target: the whole view.
 namespace fraktal::viewport {
-TEST(ResolutionControl, StepsAtRestFitTheFrameTimeTarget) {
-    struct Case {
-        double fixedMs, msPerStep;
-        int settleAt;  // the steps it must settle at
-    };
-    constexpr double target = 50.0;
-    // kleinian-like (900 ms for 30 steps), a medium one, a light one; a loaded machine whose
-    // fixed part is over the target, with a light and with a heavy formula.
-    for (const Case c :
-         {Case{5.0, 30.0, 1}, Case{5.0, 2.0, 22}, Case{2.0, 0.5, 30}, Case{300.0, 10.0, 30}, Case{100.0, 20.0, 10}}) {
-        SCOPED_TRACE(c.msPerStep);
-        RestSteps control;
-        int steps = 30;
-        for (int frame = 0; frame < 40; ++frame) {
-            const int next = control.next(steps, c.fixedMs + c.msPerStep * steps, target, 30);
-            EXPECT_GE(next, 1);
-            EXPECT_LE(next, 30);
-            EXPECT_LE(next, 2 * steps);
-            steps = next;
-        }
-        EXPECT_NEAR(steps, c.settleAt, 1);
-        if (c.settleAt < 30) {
-            EXPECT_NEAR(control.msPerStep(), c.msPerStep, 1e-9) << "the part per step";
-        }
-        const double frameMs = c.fixedMs + c.msPerStep * steps;
-        if (c.settleAt > 1 && c.settleAt < 30) {
-            EXPECT_LE(frameMs, std::max(target, 3 * c.fixedMs) * 1.1);
-        }
+namespace {
+struct SimulatedView {
+    double fixedMs, wholeMs, otherMs;
+    double renderMs(int slices) const { return fixedMs + wholeMs / slices; }
+};
+int settle(RestSlices& control, const SimulatedView& v, double target, int frames) {
+    int slices = control.choose(false, target, kMaxRestSlices);
+    for (int frame = 0; frame < frames; ++frame) {
+        const double render = v.renderMs(slices);
+        control.measure(RestFrame{false, slices, 1.0, render, render + v.otherMs});
+        const int next = control.choose(false, target, kMaxRestSlices);
+        EXPECT_GE(next, std::max(slices / 2, 1)) << "falls at most by half";
+        EXPECT_EQ(next, floorPowerOfTwo(next)) << "a power of two";
+        EXPECT_LE(next, kMaxRestSlices);
+        slices = next;
     }
-    EXPECT_EQ(RestSteps{}.next(3, 900.0, 0.0, 30), 30) << "no target: the settings' steps";
-    EXPECT_EQ(RestSteps{}.next(1, 1.0, 50.0, 30), 2) << "growth at most twice a frame";
+    return slices;
+}
+}  // namespace
+
+TEST(ResolutionControl, SlicesAtRestFitTheFrameTimeTarget) {
+    constexpr double target = 50.0;
+    {
+        // Three Kleinian nodes: 950 ms for the whole view, 15 ms of panels and display.
+        RestSlices control;
+        const SimulatedView v{3.0, 950.0, 15.0};
+        const int slices = settle(control, v, target, 40);
+        EXPECT_GE(slices, 16);
+        EXPECT_LE(v.renderMs(slices) + v.otherMs, target);
+    }
+    {
+        // A light formula: the whole view fits.
+        RestSlices control;
+        EXPECT_EQ(settle(control, SimulatedView{1.0, 12.0, 10.0}, target, 40), 1);
+    }
+    {
+        // A loaded machine: the panels alone take 48 ms; the render still gets half the target.
+        RestSlices control;
+        const SimulatedView v{3.0, 950.0, 48.0};
+        const int slices = settle(control, v, target, 40);
+        EXPECT_LE(v.renderMs(slices), target / 2.0);
+        EXPECT_GE(slices, 32);
+    }
+    RestSlices none;
+    EXPECT_EQ(none.choose(false, 0.0, 64), 1) << "no target: the whole view";
+    EXPECT_EQ(none.choose(true, 50.0, 64), 64) << "nothing measured: the most slices";
+    EXPECT_EQ(none.choose(true, 50.0, 40), 32) << "the most a power of two";
+}
+
+TEST(ResolutionControl, ANewViewIsSlicedByTheLastNewViewsCost) {
+    RestSlices control;
+    // A reset of a heavy view at 64 slices took 80 ms: 5 s for the whole view.
+    control.measure(RestFrame{true, 64, 1.0, 80.0, 95.0});
+    // Its refinement grew cheap as its rays finished, down to the whole view in a frame.
+    for (int i = 0; i < 20; ++i) control.measure(RestFrame{false, 1, 1.0, 5.0, 20.0});
+    EXPECT_EQ(control.choose(false, 50.0, 64), 1);
+    EXPECT_EQ(control.choose(true, 50.0, 64), 64) << "the next reset is as costly as the last";
+    // A reset under motion at a quarter of the size measures the new view's cost too.
+    control.measure(RestFrame{true, 1, 0.25, 10.0, 30.0});
+    EXPECT_EQ(control.choose(true, 50.0, 64), 8);
+    control.forgetNewView();
+    EXPECT_EQ(control.choose(true, 50.0, 64), 64) << "a new structure: nothing known";
+    EXPECT_EQ(floorPowerOfTwo(0), 1);
+    EXPECT_EQ(floorPowerOfTwo(100), 64);
+}
+
+// Each slice comes once in a cycle, powers of two in bit-reversed order.
+TEST(ResolutionControl, SlicesComeOnceACycle) {
+    for (int slices : {1, 2, 3, 8, 64}) {
+        std::vector<int> seen(size_t(slices), 0);
+        for (int frame = 0; frame < slices; ++frame) ++seen[size_t(sliceOfFrame(frame + 5 * slices, slices))];
+        for (int n : seen) EXPECT_EQ(n, 1) << slices;
+    }
+    EXPECT_EQ(sliceOfFrame(1, 8), 4);
+    EXPECT_EQ(sliceOfFrame(2, 8), 2);
+    EXPECT_EQ(sliceOfFrame(3, 8), 6);
+}
+}  // namespace fraktal::viewport
+
+// A sliced view settles when every slice was counted since the view began with no busy pixel; a
+// new view, or a new slicing, forgets the counts.
+namespace fraktal::viewport {
+TEST(ResolutionControl, ASlicedViewSettlesWhenEverySliceIsIdle) {
+    SliceProgress p;
+    EXPECT_FALSE(p.settled()) << "nothing counted";
+    p.record(true, 4, 0, 0, 10);
+    EXPECT_FALSE(p.settled()) << "three slices not counted yet";
+    p.record(false, 4, 2, 0, 10);
+    p.record(false, 4, 1, 0, 10);
+    EXPECT_FALSE(p.settled());
+    p.record(false, 4, 3, 5, 7);
+    EXPECT_FALSE(p.settled()) << "a busy slice";
+    EXPECT_EQ(p.convergedPixels(), 37u);
+    p.record(false, 4, 3, 0, 12);
+    EXPECT_TRUE(p.settled());
+    p.record(true, 4, 1, 0, 10);
+    EXPECT_FALSE(p.settled()) << "a new view forgets the other slices";
+    p.record(false, 2, 0, 0, 10);
+    p.record(false, 2, 1, 0, 10);
+    EXPECT_TRUE(p.settled()) << "a new slicing counted whole";
+    p.record(false, 1, 0, 3, 10);
+    EXPECT_FALSE(p.settled());
+    p.record(false, 1, 0, 0, 10);
+    EXPECT_TRUE(p.settled()) << "the whole view a frame";
 }
 }  // namespace fraktal::viewport

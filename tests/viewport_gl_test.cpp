@@ -390,6 +390,43 @@ TEST(ViewportGL, MarchListTakesTheSameStepsAsOneFullScreenPass) {
     }
 }
 
+// Sliced refinement (ViewportOptions::slices): a reset and the frames at rest refine one slice of
+// the view each. A pixel takes the same steps, shading and samples as with the whole view a frame,
+// so the settled image is the same to the bit, from a reset and after an orbit (whose reprojected
+// frames march the whole view); a sliced frame costs a fraction of a whole one.
+TEST(ViewportGL, SlicedRefinementSettlesToTheSameImage) {
+    test::glContext();
+    for (const char* name : {"mandelbulb.json", "kleinian.json"}) {
+        SCOPED_TRACE(name);
+        const Scene s = loadScene(test::sourceDir() / "presets" / name);
+        ViewportOptions whole;
+        whole.maxSamples = 4;
+        const std::vector<float> reference = freshRender(s, s.preset.camera, whole);
+        const AfterOrbit wholeOrbit = orbitThenSettle(s, whole);
+        ASSERT_TRUE(wholeOrbit.settled.settled);
+        for (int slices : {3, 4}) {
+            SCOPED_TRACE("slices " + std::to_string(slices));
+            ViewportOptions sliced = whole;
+            sliced.slices = slices;
+            Viewport v(sliced);
+            const FrameStats first = v.render(s.preset.formula, s.preset.camera, s.render, s.preset.shading, kW, kH);
+            EXPECT_EQ(first.slices, slices);
+            Viewport w(whole);
+            const FrameStats firstWhole =
+                w.render(s.preset.formula, s.preset.camera, s.render, s.preset.shading, kW, kH);
+            EXPECT_LT(first.deEvalsPerPixel, 0.6 * firstWhole.deEvalsPerPixel)
+                << "a sliced reset marched the whole view";
+            const Converged c = renderUntilSettled(v, s.preset.formula, s.preset.camera, s.render, s.preset.shading, kW,
+                                                   kH, slices * kMaxFrames);
+            ASSERT_TRUE(c.settled);
+            EXPECT_TRUE(c.image == reference) << "the sliced settled image differs from the whole one's";
+            const AfterOrbit orbit = orbitThenSettle(s, sliced);
+            ASSERT_TRUE(orbit.settled.settled);
+            EXPECT_TRUE(orbit.settled.image == wholeOrbit.settled.image) << "after an orbit the settled images differ";
+        }
+    }
+}
+
 TEST(ViewportGL, SettledFrameCostsUnderTwoDeEvaluationsPerPixel) {
     test::glContext();
     const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbox.json");

@@ -367,9 +367,8 @@ int runEditor(const EditorOptions& o) {
                 [compileContext] { glfwMakeContextCurrent(compileContext); }, [] { glfwMakeContextCurrent(nullptr); });
         std::unique_ptr<ViewportView> viewport = makeViewportView(*s.color, compiler.get());
         // A scripted run (--frames, a screenshot at the end) draws the same frames on every
-        // machine: its steps per frame at rest are the settings', not fitted to this machine's
-        // frame time.
-        viewport->setStepsFitAtRest(o.frames == 0);
+        // machine: each refines the whole view, not a slice fitted to this machine's frame time.
+        viewport->setSlicedAtRest(o.frames == 0);
         PlaneViewport planeViewport(*s.color);
         ThumbnailRenderer thumbnails;
         UiRedrawState uiRedraw;

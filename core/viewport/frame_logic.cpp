@@ -1,5 +1,6 @@
 #include "core/viewport/frame_logic.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -84,6 +85,37 @@ bool carriedColourExpires(int carryAge, int maxCarryFrames, int px, int py) {
     if (carryAge <= maxCarryFrames - maxCarryFrames / 4) return false;
     if (carryAge > maxCarryFrames) return true;
     return hash01(uint32_t(px), uint32_t(py), uint32_t(carryAge)) * double(maxCarryFrames - carryAge + 2) < 1.0;
+}
+
+int sliceOfFrame(int frame, int slices) {
+    if (slices <= 1) return 0;
+    const int position = ((frame % slices) + slices) % slices;
+    if ((slices & (slices - 1)) != 0) return position;
+    int reversed = 0;
+    for (int bit = 1, mirror = slices >> 1; bit < slices; bit <<= 1, mirror >>= 1)
+        if (position & bit) reversed |= mirror;
+    return reversed;
+}
+
+void SliceProgress::record(bool newView, int slices, int slice, uint64_t busyPixels, uint64_t convergedPixels) {
+    slices = std::max(slices, 1);
+    if (newView || busy.size() != size_t(slices)) {
+        busy.assign(size_t(slices), -1);
+        converged.assign(size_t(slices), 0);
+    }
+    const size_t at = size_t(std::clamp(slice, 0, slices - 1));
+    busy[at] = int64_t(busyPixels);
+    converged[at] = convergedPixels;
+}
+
+bool SliceProgress::settled() const {
+    return !busy.empty() && std::all_of(busy.begin(), busy.end(), [](int64_t b) { return b == 0; });
+}
+
+uint64_t SliceProgress::convergedPixels() const {
+    uint64_t sum = 0;
+    for (uint64_t c : converged) sum += c;
+    return sum;
 }
 
 FrameStats summarize(const FrameCounters& c, int width, int height, FrameAction action) {

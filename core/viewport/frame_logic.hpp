@@ -129,6 +129,34 @@ double hash01(uint32_t x, uint32_t y, uint32_t z);
 // Mirrored in shaders/viewport_common.glsl.
 bool carriedColourExpires(int carryAge, int maxCarryFrames, int px, int py);
 
+// Sliced refinement: which slice of `slices` the frame numbered `frame` (counting every sliced
+// frame) advances. A power of two goes through its slices in bit-reversed order (0, 4, 2, 6, 1,
+// ... of 8), so that the tiles refined so far spread over the whole view rather than filling it
+// from the top; any other count in plain order. Every slice comes once in `slices` frames.
+int sliceOfFrame(int frame, int slices);
+
+// The tiles a view is sliced by: the 32x8 workgroups of the passes that run per pixel
+// (shaders/viewport_common.glsl, slicePixel; viewport_march.comp says why 32x8).
+inline constexpr int kSliceTileWidth = 32, kSliceTileHeight = 8;
+inline int viewTiles(int width, int height) {
+    return ((width + kSliceTileWidth - 1) / kSliceTileWidth) * ((height + kSliceTileHeight - 1) / kSliceTileHeight);
+}
+
+// What the frames of a sliced view have counted, slice by slice: a sliced frame accumulates its
+// slice alone (the only pixels it changed), so it counts only that slice's busy (not yet settled)
+// and converged pixels, and a pixel outside it keeps its count until its slice comes again. The
+// view has settled when every slice was counted since the view began (or the slicing changed)
+// with no busy pixel.
+struct SliceProgress {
+    std::vector<int64_t> busy;  // per slice; -1: not counted yet
+    std::vector<uint64_t> converged;
+    // One frame's counts: `newView` started every pixel afresh (a reset or a reprojection);
+    // `slices` 1: the frame counted the whole view.
+    void record(bool newView, int slices, int slice, uint64_t busyPixels, uint64_t convergedPixels);
+    bool settled() const;
+    uint64_t convergedPixels() const;
+};
+
 // Raw counters the GPU passes add to during one frame (one uint each, see viewport_common.glsl).
 struct FrameCounters {
     uint64_t deEvals = 0;       // every DE call: march, verification, cone pre-pass and shading
@@ -154,6 +182,7 @@ struct FrameStats {
     double shareReprojected = 0.0, shareRestarted = 0.0, shareConverged = 0.0, shareShaded = 0.0;
     double shareMarchListed = 0.0;    // rays marched on from the march list (ViewportOptions::deferAfterSteps)
     int samplesAtRest = 0;            // the AA sample index the frame worked on (0 under motion)
+    int slices = 1;                   // the frame advanced one slice of this many (1: the whole view)
     bool settled = false;             // every pixel is finished at the AA cap: further frames cost nothing
     double milliseconds = 0.0;        // wall time incl. glFinish; filled in by whoever times the frame
     std::vector<PassTime> passTimes;  // per pass, only with ViewportOptions::timePasses

@@ -26,27 +26,48 @@ void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const Fra
     glUniform1i(at.coarseHits, c.options.coarseHits ? 1 : 0);
     const int deferAfter = stepsBeforeList(c, action);
     glUniform1i(at.deferAfter, deferAfter > 0 ? deferAfter : INT_MAX);
+    glUniform1i(at.sliceCount, std::max(c.sliceCount, 1));
+    glUniform1i(at.sliceIndex, c.sliceIndex);
 }
 
 }  // namespace
 
 void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action) {
     const bool newView = action != FrameAction::Continue;
-    const FormulaProgram& pass = newView ? p.marchFromStart : p.march;
-    const GLuint program = pass.program.id();
-    setMarchUniforms(pass, s, c, action);
+    s.clearShadeList();
+    s.clearMarchList();
     if (newView) {
+        // A sliced new view (a reset) starts every ray without a step, then marches the slice's.
+        const bool sliced = c.sliceCount > 1;
+        const FormulaProgram& pass = sliced ? p.startOnly : p.marchFromStart;
+        setMarchUniforms(pass, s, c, action);
         glUniform1i(pass.uniforms.resetAll, action == FrameAction::Reset ? 1 : 0);
         glUniform1i(pass.uniforms.coneTile, c.options.coneTile);
         glBindTextureUnit(1, s.reprojColor);
         glBindTextureUnit(2, s.reprojCarried);
         // MarchState::accum needs no reset: every pixel starts a new sample 0, whose colour
         // replaces the sum (viewport_accumulate.comp).
+        gl::dispatchOver(pass.program.id(), s.width(), s.height());
+        imageBarrier();
+        if (!sliced) return;
     }
-    s.clearShadeList();
-    s.clearMarchList();
-    gl::dispatchOver(program, s.width(), s.height());
+    setMarchUniforms(p.march, s, c, action);
+    dispatchOverSlice(p.march.program.id(), p.march.uniforms, s, c);
     imageBarrier();
+}
+
+void dispatchOverSlice(GLuint program, const PassUniforms& at, const MarchState& s, const FrameContext& c) {
+    const int slices = std::max(c.sliceCount, 1);
+    glUniform1i(at.sliceCount, slices);
+    glUniform1i(at.sliceIndex, slices > 1 ? c.sliceIndex : 0);
+    GLint group[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, group);
+    const int tiles = ((s.width() + group[0] - 1) / group[0]) * ((s.height() + group[1] - 1) / group[1]);
+    const int inSlice = slices > 1 ? std::max(tiles - c.sliceIndex + slices - 1, 0) / slices : tiles;
+    // In rows of at most 65535 groups, OpenGL 4.5's least count limit (a tile past the slice's last
+    // lies outside the view and returns).
+    const int row = std::min(inSlice, 65535);
+    if (inSlice > 0) glDispatchCompute(GLuint(row), GLuint((inSlice + row - 1) / row), 1);
 }
 
 void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action) {

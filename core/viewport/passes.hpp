@@ -22,6 +22,10 @@ struct FrameContext {
     int maxSteps;
     bool atRest;    // FrameAction::Continue: the AA level may rise
     ThinLens lens;  // the AA samples' lens (sample 0, the one reprojection carries, is a pinhole ray)
+    // The frame's slice of the view (sliced refinement, Viewport::render): the march advances the
+    // tiles whose number modulo sliceCount is sliceIndex (dispatchOverSlice). 1: the whole view.
+    int sliceCount = 1;
+    int sliceIndex = 0;
 };
 
 // Reprojection (reproject_pass.cpp): scatters the previous frame's points (`from`'s images, seen
@@ -33,9 +37,12 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& from, const M
 
 void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
 // Advances the rays. On a new view (action Reset or Reproject) it first starts them: from the
-// camera on a reset, else from the reprojection. On a reprojected frame, rays it leaves marching
-// with steps left (ViewportOptions::deferAfterSteps) go on the march list, which
-// runMarchListPass marches on.
+// camera on a reset, else from the reprojection. With a slice (c.sliceCount > 1; a continued view
+// or a reset, never a reprojected one, whose starts are verified in their first step) only the
+// slice's rays step: a sliced reset starts every ray without a step (ViewportPrograms::startOnly),
+// and the march is dispatched over the slice's tiles alone, so that it and the shading (the shade
+// list holds what it finished) cost about a sliceCount-th of the whole view's. On a reprojected frame, rays it leaves
+// marching with steps left (ViewportOptions::deferAfterSteps) go on the march list, which runMarchListPass marches on.
 void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
 void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);
@@ -44,6 +51,12 @@ void runResolvePass(const ViewportPrograms& p, const MarchState& s, const FrameC
 
 // Exposure and the sRGB curve, from the scene-linear image into the bound framebuffer.
 void runDisplayPass(const ViewportPrograms& p, const MarchState& s, float exposure, bool flipY, GLuint vertexArray);
+
+// Runs a 2D pass over the view, or with a slice (c.sliceCount > 1) over the slice's tiles alone:
+// the view's workgroups numbered row by row, those whose number modulo sliceCount is sliceIndex
+// (the shader finds its tile with slicePixel, shaders/viewport_common.glsl, from u_sliceCount and
+// u_sliceIndex, which this sets on the bound program).
+void dispatchOverSlice(GLuint program, const PassUniforms& at, const MarchState& s, const FrameContext& c);
 
 // Between passes that write images and passes that read them.
 inline void imageBarrier() {

@@ -18,8 +18,9 @@ double ResolutionController::next(bool changed, double lastFrameMs) {
             fullFrameMs_ += 0.25 * (measured - fullFrameMs_);
     }
     if (!moving()) return scale_ = 1.0;
-    if (fullFrameMs_ < 0.0) return scale_ = motionScale_;  // nothing measured yet
-    const double ideal = std::clamp(std::sqrt(control_.targetMs / fullFrameMs_), control_.minScale, 1.0);
+    const double fullFrameMs = fullFrameMs_ >= 0.0 ? fullFrameMs_ : seededMs_;
+    if (fullFrameMs < 0.0) return scale_ = motionScale_;  // nothing measured yet
+    const double ideal = std::clamp(std::sqrt(control_.targetMs / fullFrameMs), control_.minScale, 1.0);
     const double stepped = std::clamp(std::floor(ideal / control_.step) * control_.step, control_.minScale, 1.0);
     // Lower at once when over the target; raise only by a whole step beyond the current scale.
     const double current = wasMoving ? scale_ : motionScale_;
@@ -29,20 +30,41 @@ double ResolutionController::next(bool changed, double lastFrameMs) {
     return scale_ = chosen;
 }
 
-int RestSteps::next(int steps, double frameMs, double targetMs, int cap) {
-    if (targetMs <= 0.0) return cap;
-    if (lastSteps_ > 0 && steps != lastSteps_) {
-        const double slope = (frameMs - lastMs_) / double(steps - lastSteps_);
-        if (slope > 0.0) msPerStep_ = msPerStep_ < 0.0 ? slope : 0.5 * (msPerStep_ + slope);
-    }
-    lastSteps_ = steps;
-    lastMs_ = frameMs;
-    // Before two frames tell the parts apart, the whole frame counts as march.
-    const double fixedMs = msPerStep_ < 0.0 ? 0.0 : std::clamp(frameMs - msPerStep_ * steps, 0.0, frameMs);
-    const double marchMs = frameMs - fixedMs;
-    const double marchBudgetMs = std::max(targetMs - fixedMs, 2.0 * fixedMs);
-    const double fitting = steps * marchBudgetMs / std::max(marchMs, 1e-3);
-    return int(std::clamp(fitting, 1.0, double(std::max(std::min(2 * steps, cap), 1))));
+int floorPowerOfTwo(int n) {
+    int p = 1;
+    while (p <= n / 2) p *= 2;
+    return p;
+}
+
+void RestSlices::measure(const RestFrame& f) {
+    if (f.renderMs <= 0.0 || f.slices < 1 || f.scale <= 0.0) return;
+    const bool fullSize = f.scale >= 1.0;
+    // The render's part that slicing does not divide (passes over the whole view, the read-back):
+    // at most the cheapest frame at full size seen, as the most finely sliced frames show it.
+    if (fullSize && !f.newView) fixedMs_ = fixedMs_ < 0.0 ? f.renderMs : std::min(fixedMs_, f.renderMs);
+    const double sliced = fullSize && fixedMs_ > 0.0 ? std::max(f.renderMs - fixedMs_, 0.0) : f.renderMs;
+    const double whole = sliced * f.slices / (f.scale * f.scale);
+    if (f.newView) newViewMs_ = whole;
+    if (!fullSize) return;
+    if (f.newView || viewMs_ < 0.0 || whole > viewMs_)
+        viewMs_ = whole;
+    else
+        viewMs_ = 0.5 * (viewMs_ + whole);
+    otherMs_ = f.frameMs > f.renderMs ? f.frameMs - f.renderMs : 0.0;
+    lastSlices_ = f.slices;
+}
+
+int RestSlices::choose(bool newView, double targetMs, int maxSlices) const {
+    const int most = floorPowerOfTwo(std::max(maxSlices, 1));
+    if (targetMs <= 0.0) return 1;
+    const double estimate = newView ? newViewMs_ : viewMs_;
+    if (estimate < 0.0) return most;
+    const double budget = std::max(targetMs - otherMs_, targetMs / 2.0);
+    const double sliceBudget = std::max(budget - std::max(fixedMs_, 0.0), budget / 4.0);
+    int slices = 1;
+    while (slices < most && estimate / slices > sliceBudget) slices *= 2;
+    if (!newView) slices = std::max(slices, lastSlices_ / 2);
+    return std::clamp(slices, 1, most);
 }
 
 }  // namespace fraktal::viewport

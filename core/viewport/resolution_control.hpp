@@ -24,38 +24,58 @@ struct ResolutionControl {
     int restFrames = 3;      // unchanged frames in a row before the view counts as at rest
 };
 
-// At rest the viewport refines at full size, and a frame marches every unfinished ray by its
-// steps per frame. RestSteps picks the steps of the next frame at rest from the last ones. A
-// frame's time (the editor's whole frame) is a fixed part (the viewport's shading and
-// accumulation over the whole view, the UI, the display, whatever the steps) plus a part per
-// step; the part per step is estimated from two frames in a row with different steps (their busy
-// rays change little from one frame to the next), the fixed part is the rest. The march gets what
-// the target leaves after the fixed part, but never less than twice the fixed part: where that
-// alone is over the target (a loaded machine, a large view, llvmpipe), fewer steps would make the
-// frames hardly shorter and the view much slower to settle. With twice the fixed part, settling
-// takes at most 1.5 times the pure march time by this model; against the fixed 30 steps it took
-// 1.2-1.7 times as long on five heavy presets (bench/viewport/README.md). GPU timestamps cannot
-// tell the parts apart on llvmpipe, which runs a dispatch when a later pass needs its result. The
-// steps grow at most twice a frame (a frame that found little left to march says little about
-// the next one) and stay within 1..cap (<= 0 target: `cap`, always).
-class RestSteps {
-   public:
-    // The steps for the next frame at rest; the last one took `frameMs` with `steps`.
-    int next(int steps, double frameMs, double targetMs, int cap);
-    double msPerStep() const { return msPerStep_; }  // < 0: not measured yet
-
-   private:
-    int lastSteps_ = 0;
-    double lastMs_ = 0.0;
-    double msPerStep_ = -1.0;
+// Sliced refinement at rest (ViewportOptions::slices): how many slices of the view the next frame
+// at rest refines one of. A frame at rest is the editor's other work (panels, display, swap: about
+// the same every frame) plus the viewport's render, whose cost is about the whole view's divided by
+// the slices; the whole view's is estimated from each measured frame (render time, less the part
+// that slicing does not divide, times its slices). That part (passes over the whole view, the
+// counters' read-back) is taken as the cheapest render at full size seen: counted into the
+// estimate, it kept 256-1024 slices on views that needed a few, and their settling 2-4x as long. The next frame gets
+// the fewest slices, a power of two, that fit the render into what the target leaves after the other work, but at least
+// half the target (on a loaded machine the other work alone can take most of it, and each frame's other work then slows
+// the view's settling the more, the more slices). A new view (a reset: every ray starts from the camera, the costliest
+// frames) is sized from the last new view's cost, or gets the most slices when none was measured; a continued view from
+// its own frames, rising at once when a frame was over and falling through an average and by at most half a frame (its
+// rays finish, and the frames grow cheap). Pure logic, unit-tested (tests/resolution_control_test.cpp).
+struct RestFrame {
+    bool newView = false;   // the frame started a new view (a reset)
+    int slices = 1;         // it refined one slice of this many
+    double scale = 1.0;     // at this share of the full size (a reset under motion: slices 1)
+    double renderMs = 0.0;  // the viewport's render (0: it refined nothing)
+    double frameMs = 0.0;   // the editor's whole frame (0: unknown)
 };
 
-// The render time a frame at rest aims at when the motion target is shorter: a frame at rest
-// also shades, accumulates and draws the whole view, so steps fitted to 33 ms leave much of the
-// frame to that fixed work and the view takes longer to settle; 50 ms keeps the window at 20
-// frames a second or more while it refines (three Kleinian nodes took 900-965 ms a frame at rest
-// with 30 steps a frame).
+class RestSlices {
+   public:
+    // Takes a frame's measurement into the estimates.
+    void measure(const RestFrame& frame);
+    // The slices for the next frame at full size, at most maxSlices (a power of two).
+    int choose(bool newView, double targetMs, int maxSlices) const;
+    // A new structure: the last new view's cost says nothing about the next one.
+    void forgetNewView() { newViewMs_ = -1.0; }
+    double wholeViewMs() const { return viewMs_; }  // < 0: not measured yet
+
+   private:
+    double viewMs_ = -1.0;     // a whole frame of the view being refined
+    double newViewMs_ = -1.0;  // a whole frame that starts a new view
+    double otherMs_ = 0.0;     // the editor's frame beside the render
+    double fixedMs_ = -1.0;    // the render's part slicing does not divide (< 0: none measured)
+    int lastSlices_ = 0;
+};
+
+// The largest power of two up to `n` (1 for n < 1).
+int floorPowerOfTwo(int n);
+
+// The render time a frame at rest aims at when the motion target is shorter: 50 ms keeps the
+// window at 20 frames a second or more while it refines (three Kleinian nodes took 900-965 ms a
+// frame at rest when every frame marched the whole view).
 inline constexpr double kRestFrameTargetMs = 50.0;
+
+// The most slices a frame at rest cuts the view into (never more than the view's tiles): a
+// 1280x800 window's viewport has about 1400 tiles of 32x8 pixels, so a frame then refines one or
+// two of them; three Kleinian nodes took 0.9-1 s to march the whole view 30 steps a ray on two
+// idle cores, and 125 ms a frame at 256 slices on loaded ones.
+inline constexpr int kMaxRestSlices = 1024;
 
 class ResolutionController {
    public:
@@ -66,6 +86,12 @@ class ResolutionController {
     // rendered at scale(); 0 or less when unknown (the previous frame was not under motion).
     double next(bool changed, double lastFrameMs);
 
+    // Until a frame under motion is measured, the estimate of a full-resolution frame is this one
+    // (the frames at rest measure it: RestSlices::wholeViewMs), so that the first frame of the
+    // first motion does not render the whole view at full size (kleinian.json: 3.5 s).
+    void seedFullFrameMs(double ms) {
+        if (fullFrameMs_ < 0.0 && ms > 0.0) seededMs_ = ms;
+    }
     double scale() const { return scale_; }
     bool moving() const { return framesUnchanged_ < control_.restFrames; }
     const ResolutionControl& control() const { return control_; }
@@ -76,6 +102,7 @@ class ResolutionController {
     double scale_ = 1.0;
     double motionScale_ = 1.0;    // the scale motion last used: the next motion starts from it
     double fullFrameMs_ = -1.0;   // estimated time of a full-resolution frame (< 0: none yet)
+    double seededMs_ = -1.0;      // seedFullFrameMs's, until fullFrameMs_ is measured
     int framesUnchanged_ = 1000;  // at rest until the first change
 };
 

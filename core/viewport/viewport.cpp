@@ -71,8 +71,14 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
         return idle;
     }
 
-    const FrameContext context{formula, camera, params, options_, render.maxSteps, action == FrameAction::Continue,
-                               lens};
+    FrameContext context{formula, camera, params, options_, render.maxSteps, action == FrameAction::Continue, lens};
+    // Sliced refinement: at rest and on a reset, never on a reprojected frame (its starts are
+    // verified by their first step, which every pixel needs this frame).
+    if (options_.slices > 1 && action != FrameAction::Reproject) {
+        context.sliceCount = options_.slices;
+        context.sliceIndex = sliceOfFrame(slicedFrames_, options_.slices);
+        slicedFrames_ = (slicedFrames_ + 1) % (1 << 20);  // a whole cycle of any power of two up to 2^20
+    }
     const bool timed = options_.timePasses;
     auto mark = [&](const char* pass) {
         if (timed) timer_->mark(pass);
@@ -103,9 +109,14 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     // On a new view every pixel either reprojected or restarted; the march pass counts only the first.
     if (action != FrameAction::Continue) counts.restarted = uint64_t(width) * height - counts.reprojected;
     counts.marchListed = state_->marchListCount();
+    // A sliced frame counted its slice alone: the view's counts are the slices' last ones.
+    sliceProgress_.record(action != FrameAction::Continue, context.sliceCount, context.sliceIndex,
+                          counters_->busyPixels(), counts.converged);
+    counts.converged = sliceProgress_.convergedPixels();
     FrameStats stats = summarize(counts, width, height, decided);
+    stats.slices = context.sliceCount;
     if (timed) stats.passTimes = timer_->read();
-    settled_ = decided == FrameAction::Continue && counters_->busyPixels() == 0;
+    settled_ = decided == FrameAction::Continue && sliceProgress_.settled();
     stats.settled = settled_;
     previous_ = std::move(key);
     previousAction_ = decided;

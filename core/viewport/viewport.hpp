@@ -103,6 +103,8 @@ class Viewport {
     FrameAction previousAction_ = FrameAction::Reset;
     bool settled_ = false;
     bool forceReset_ = false;
+    int slicedFrames_ = 0;  // sliced frames so far: the next one's slice (sliceOfFrame)
+    SliceProgress sliceProgress_;
     GLuint resampleFramebuffers_[2] = {0, 0};
     GLuint displayVertexArray_ = 0;
     gl::ColorTarget display_{GL_RGBA8};  // readDisplay's image

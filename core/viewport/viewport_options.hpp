@@ -36,6 +36,13 @@ struct ViewportOptions {
     int coneTile = 0;            // low-resolution cone pre-pass tile in pixels (0: off; 8 is typical)
     int coneSteps = 64;          // DE steps of a pre-pass cone
     bool timePasses = false;     // GPU timestamps around each pass into FrameStats::passTimes
+    // Sliced refinement: a continued frame (the camera at rest) and a reset advance only one slice
+    // of the view, every slices-th tile of 32x8 pixels, a different slice each frame
+    // (sliceOfFrame); the other pixels keep what they show. A pixel takes the same steps, shading
+    // and samples as with the whole view a frame, so the settled image is the same; it comes in
+    // about `slices` times as many frames, each costing about a slices-th. Reprojected frames
+    // (motion) always march the whole view. 1: the whole view every frame.
+    int slices = 1;
 };
 
 }  // namespace fraktal::viewport

@@ -25,6 +25,7 @@ struct PassUniforms {
     GLint size = -1, pixelAngle = -1, newSize = -1;
     GLint stepsPerFrame = -1, maxSteps = -1, atRest = -1, maxCarryFrames = -1, coarseHits = -1, deferAfter = -1,
           resetAll = -1;
+    GLint sliceCount = -1, sliceIndex = -1;
     GLint coneTile = -1, coneSteps = -1;
     GLint maxSamples = -1, initialOmega = -1, radius = -1;
     GLint exposure = -1, flipY = -1;
@@ -58,8 +59,9 @@ struct ViewportPrograms {
     explicit ViewportPrograms(const Formula& formula);  // throws naming the node on a GLSL error
     std::string structure;
     // march resumes the rays; marchFromStart first starts them for a new view (reset or reprojected);
-    // marchFromList marches on the rays either left on the march list.
-    FormulaProgram march, marchFromStart, marchFromList, shade, cone;
+    // marchFromList marches on the rays either left on the march list; startOnly starts them and
+    // takes no step (a sliced reset: march then marches the slice).
+    FormulaProgram march, marchFromStart, marchFromList, startOnly, shade, cone;
     // accumulateAtRest raises the AA level; accumulateMoving finds the samples' positions instead.
     Pass accumulateAtRest, accumulateMoving, resolve, display;
     // Sets the shade and march lists' group counts from their entry counts (dispatchOverList).

@@ -17,8 +17,9 @@ namespace fraktal::editor {
 struct ViewSettings {
     // March steps per ray per frame (viewport::ViewportOptions::stepsPerFrame). On llvmpipe
     // every step shows in the frame time (shared/PLATFORM.md): a modest budget keeps the UI
-    // responsive, and unfinished rays continue next frame. At rest it is the most a frame takes:
-    // a frame takes the steps that fit viewport::kRestFrameTargetMs (viewport::RestSteps).
+    // responsive, and unfinished rays continue next frame. At rest a frame refines the slice of
+    // the view that fits viewport::kRestFrameTargetMs (viewport::RestSlices), each of its rays by
+    // these steps.
     int stepsPerFrame = 30;
     // Fraction of the window's pixels the viewport renders (upscaled for display).
     double renderScale = 0.75;

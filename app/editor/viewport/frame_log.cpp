@@ -23,6 +23,7 @@ void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camer
                                  {"frame_ms", frameMs},
                                  {"render_ms", stats.renderMs},
                                  {"steps_per_frame", stats.stepsPerFrame},
+                                 {"slices", stats.slices},
                                  {"scale", stats.internalScale},
                                  {"width", stats.width},
                                  {"height", stats.height},

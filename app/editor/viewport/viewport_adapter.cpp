@@ -37,9 +37,9 @@ ShadingSettings shadingInWorkingSpace(const ShadingSettings& shading, const Colo
 namespace {
 
 bool sameOptions(const viewport::ViewportOptions& a, const viewport::ViewportOptions& b) {
-    return a.stepsPerFrame == b.stepsPerFrame && a.maxSamples == b.maxSamples && a.reproject == b.reproject &&
-           a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile && a.coneSteps == b.coneSteps &&
-           a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter &&
+    return a.stepsPerFrame == b.stepsPerFrame && a.slices == b.slices && a.maxSamples == b.maxSamples &&
+           a.reproject == b.reproject && a.overRelaxation == b.overRelaxation && a.coneTile == b.coneTile &&
+           a.coneSteps == b.coneSteps && a.maxCarryFrames == b.maxCarryFrames && a.motionFilter == b.motionFilter &&
            a.motionFilterRadius == b.motionFilterRadius && a.coarseHits == b.coarseHits;
 }
 
@@ -82,20 +82,30 @@ const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {
 bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevision& revision,
                                    const ViewSettings& settings, int width, int height) {
     const Formula& formula = preset.formula;
-    // The editor's whole last frame (the UI, the display, the swap too: all of it holds the window)
-    // if it refined the view at rest: the steps the next one at rest gets.
+    // Sliced refinement: the last frame's measurement (with the editor's whole frame around it:
+    // the UI, the display, the swap hold the window too), then this frame's slices. Only at full
+    // size and at rest: under motion the dynamic resolution holds the target, and every frame
+    // there marches the whole (smaller) view.
+    if (revision.structure != slicedStructure_) {
+        restSlices_.forgetNewView();
+        slicedStructure_ = revision.structure;
+    }
+    if (lastRefined_) {
+        lastRefined_->frameMs = previousFrameMs_;
+        restSlices_.measure(*lastRefined_);
+        lastRefined_.reset();
+    }
+    const bool newView =
+        lastAction_ != viewport::FrameAction::Continue || viewport_.width() != width || viewport_.height() != height;
+    const bool sliced =
+        sliceAtRest_ && settings.frameTimeTargetMs > 0.0 && resolution_.scale() == 1.0 && !resolution_.moving();
     const double restTargetMs = std::max(settings.frameTimeTargetMs, viewport::kRestFrameTargetMs);
-    if (previousRestSteps_ > 0 && previousFrameMs_ > 0.0)
-        restSteps_ = restStepsControl_.next(previousRestSteps_, previousFrameMs_, restTargetMs, settings.stepsPerFrame);
-    previousRestSteps_ = 0;
-    // At rest the march gets the steps that fit the rest frame-time target (restSteps_); in motion
-    // the dynamic resolution holds the target and the view settings' steps apply.
-    const bool resting = fitStepsAtRest_ && lastAction_ == viewport::FrameAction::Continue &&
-                         resolution_.scale() == 1.0 && settings.frameTimeTargetMs > 0.0 && restSteps_ > 0;
     lastAction_ = viewport::FrameAction::Reset;
     if (!failedStructure_.empty() && revision.structure == failedStructure_) return false;
     viewport::ViewportOptions options = viewportOptions(settings);
-    if (resting) options.stepsPerFrame = std::min(restSteps_, settings.stepsPerFrame);
+    if (sliced)
+        options.slices = restSlices_.choose(newView, restTargetMs,
+                                            std::min(viewport::kMaxRestSlices, viewport::viewTiles(width, height)));
     if (!sameOptions(options, viewport_.options())) viewport_.setOptions(options);
     workingShading(preset);
     // A structure the viewport has no programs for: adopted from the background compiler below,
@@ -121,10 +131,12 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
     const bool idle = frame.settled && frame.action == viewport::FrameAction::Continue && frame.deEvalsPerPixel == 0.0;
     stats_.renderMs =
         idle ? 0.0 : std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (frame.action == viewport::FrameAction::Continue && !idle && settings.frameTimeTargetMs > 0.0 &&
-        resolution_.scale() == 1.0)
-        previousRestSteps_ = options.stepsPerFrame;
+    // A frame that refined the view (a reset under motion too: it measures a new view's cost).
+    if (!idle && sliceAtRest_ && (sliced || frame.action == viewport::FrameAction::Reset))
+        lastRefined_ = viewport::RestFrame{frame.action == viewport::FrameAction::Reset, frame.slices,
+                                           resolution_.scale(), stats_.renderMs, 0.0};
     stats_.stepsPerFrame = options.stepsPerFrame;
+    stats_.slices = frame.slices;
     stats_.deEvaluationsPerPixel = frame.deEvalsPerPixel;
     stats_.reprojectedShare = frame.shareReprojected;
     stats_.convergedShare = frame.shareConverged;
@@ -177,6 +189,7 @@ double CoreViewportView::chooseScale(const scene::SceneRevision& revision, const
     control.targetMs = settings.frameTimeTargetMs;
     control.minScale = settings.motionMinScale;
     resolution_.setControl(control);
+    resolution_.seedFullFrameMs(restSlices_.wholeViewMs());
     return resolution_.next(changed, frameMs);
 }
 
@@ -185,7 +198,7 @@ void CoreViewportView::render(const Preset& preset, const scene::SceneRevision& 
     // What changed since the last frame is decided on `revision`, once, by every consumer below.
     if (path_ && !pathStillValid(revision, settings, fullWidth, fullHeight)) dropPath();
     if (path_) {
-        previousRestSteps_ = 0;  // a path-traced frame says nothing about the fast mode's steps
+        lastRefined_.reset();  // a path-traced frame says nothing about the fast mode's slices
         pathFrame(preset, settings);
         return;
     }

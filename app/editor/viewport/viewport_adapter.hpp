@@ -57,7 +57,7 @@ class CoreViewportView final : public ViewportView {
     const std::string& compileError() const override { return compileError_; }
     const std::string& displayError() const override { return displayError_; }
     void setPresetFile(const std::string& file) override { presetFile_ = file; }
-    void setStepsFitAtRest(bool fit) override { fitStepsAtRest_ = fit; }
+    void setSlicedAtRest(bool sliced) override { sliceAtRest_ = sliced; }
     // The path tracer of "Path traced at rest" (null before the first rest in that mode); it holds
     // the last accumulation, shown only while stats().pathTracing.
     const gl::PathTracer* pathTracer() const { return pathTracer_.get(); }
@@ -107,14 +107,15 @@ class CoreViewportView final : public ViewportView {
     std::optional<scene::SceneRevision> lastView_;
     std::optional<std::chrono::steady_clock::time_point> lastFrameStart_;
     viewport::FrameAction lastAction_ = viewport::FrameAction::Reset;  // the last fast frame's
-    // March steps per frame at rest, fitted to the frame-time target from the editor's last
-    // frames at rest (0: none measured yet). A heavy formula refines over more frames instead of
-    // holding the window: three Kleinian nodes took 900-965 ms a frame at rest with 30 steps.
-    int restSteps_ = 0;
-    viewport::RestSteps restStepsControl_;
-    bool fitStepsAtRest_ = true;
-    int previousRestSteps_ = 0;     // the steps of the last frame if it refined the view at rest, else 0
-    double previousFrameMs_ = 0.0;  // the editor's last frame, start to start (chooseScale)
+    // Sliced refinement at rest (viewport::ViewportOptions::slices): a heavy formula refines a
+    // slice of the view a frame instead of holding the window (three Kleinian nodes took
+    // 900-965 ms a frame at rest with the whole view a frame). The slices are fitted to the frame
+    // time from the editor's last frames (viewport::RestSlices).
+    viewport::RestSlices restSlices_;
+    bool sliceAtRest_ = true;
+    std::optional<viewport::RestFrame> lastRefined_;  // the last frame's, if it refined the view
+    std::string slicedStructure_;                     // the structure restSlices_ measured
+    double previousFrameMs_ = 0.0;                    // the editor's last frame, start to start (chooseScale)
     // Path traced at rest. The tracer is kept while the structure and size stay (its program
     // takes a while to compile); `path_` is the running accumulation.
     std::string presetFile_;

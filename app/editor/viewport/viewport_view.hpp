@@ -29,7 +29,8 @@ struct ViewportStats {
     int width = 0, height = 0;   // render resolution
     double internalScale = 1.0;  // dynamic resolution: the share of the full size rendered (1 at rest)
     int compiles = 0;            // formula programs built so far (a value edit must not add one)
-    int stepsPerFrame = 0;       // march steps per ray the last frame took (fitted to the target at rest)
+    int stepsPerFrame = 0;       // march steps per ray the last frame took
+    int slices = 1;              // the last frame refined one slice of the view of this many (1: all of it)
     bool compiling = false;      // a new structure compiles in the background; the old image stays
     // "Path traced at rest" (ViewSettings::pathTraceAtRest): whether the image shown is the path
     // tracer's, and its samples per pixel so far (0 while the fast mode shows) out of the cap.
@@ -66,10 +67,10 @@ class ViewportView {
     // The document's file, where the path tracer's relative environment map paths start (as for
     // `fraktal render`); empty for an unsaved document.
     virtual void setPresetFile(const std::string& /*file*/) {}
-    // Whether a frame at rest marches the steps that fit the frame-time target (the default) or
-    // always the settings' steps (a scripted run: the picture after N frames is then the same on
-    // every machine).
-    virtual void setStepsFitAtRest(bool /*fit*/) {}
+    // Whether a frame at rest (and a reset at rest) refines the slice of the view that fits the
+    // frame-time target (the default) or always the whole view (a scripted run: the picture after
+    // N frames is then the same on every machine, and a screenshot shows whole frames).
+    virtual void setSlicedAtRest(bool /*sliced*/) {}
 };
 
 class BackgroundCompiler;
