@@ -21,17 +21,9 @@ jq '.name = "Three Kleinian nodes" | .formula.nodes = [.formula.nodes[0], .formu
 start "$stack" --frame-log "$log"
 set -- $(viewport_centre)
 to "$1" "$2"
-at_rest='.[] | select(.scale == 1 and .render_ms > 0 and (.action == "continue" or .action == "reset"))'
-rest_frames() { jq -s "[$at_rest] | length" "$log"; }
-tries=0
-while [ "$(rest_frames)" -lt 40 ] && [ $tries -lt 600 ]; do
-    sleep 0.5
-    tries=$((tries + 1))
-    kill -0 "$pid" 2>/dev/null || { fail "the editor is gone"; break; }
-done
-[ "$(rest_frames)" -ge 40 ] || fail "only $(rest_frames) frames at full size in 300 s"
-p95=$(jq -s "[$at_rest | .frame_ms] | sort | .[length * 95 / 100 | floor] // 0" "$log")
-p50=$(jq -s "[$at_rest | .frame_ms] | sort | .[length / 2 | floor] // 0" "$log")
+wait_rest_frames 40
+p95=$(rest_frame_ms 95)
+p50=$(rest_frame_ms 50)
 echo "three Kleinian nodes at rest: frames $p50 ms (median), $p95 ms (95th percentile)"
 check "$p95 > 0 && $p95 < 300" || fail "the frames at rest took $p95 ms (95th percentile), over 300 ms"
 [ "$(q .viewportSettled)" = false ] || fail "the view settled before the input below: it tests nothing"
@@ -51,7 +43,7 @@ press_keys Escape
 wait_for .fileBrowser.shown false 5
 [ "$(q .fileBrowser.shown)" = false ] || fail "Escape did not cancel the Open dialog"
 # Frames stayed short while the input came.
-p95=$(jq -s "[$at_rest | .frame_ms] | sort | .[length * 95 / 100 | floor] // 0" "$log")
+p95=$(rest_frame_ms 95)
 check "$p95 < 300" || fail "with the input, the frames at rest took $p95 ms (95th percentile)"
 stop
 [ $failures = 0 ] || { echo "$failures failure(s)"; exit 1; }

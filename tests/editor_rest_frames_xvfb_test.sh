@@ -16,20 +16,11 @@ log="$home/frames.jsonl"
 start "$presets/kleinian.json" --frame-log "$log"
 set -- $(viewport_centre)
 to "$1" "$2"
-# Frames that refined the viewport at full size (at rest: a reset or a continued view), from the log.
-at_rest='.[] | select(.scale == 1 and .render_ms > 0 and (.action == "continue" or .action == "reset"))'
-rest_frames() { jq -s "[$at_rest] | length" "$log"; }
-tries=0
-while [ "$(rest_frames)" -lt 40 ] && [ $tries -lt 600 ]; do
-    sleep 0.5
-    tries=$((tries + 1))
-    kill -0 "$pid" 2>/dev/null || { fail "the editor is gone"; break; }
-done
-[ "$(rest_frames)" -ge 40 ] || fail "only $(rest_frames) frames at rest in 300 s"
+wait_rest_frames 40
 
-p95=$(jq -s "[$at_rest | .frame_ms] | sort | .[length * 95 / 100 | floor] // 0" "$log")
-p50=$(jq -s "[$at_rest | .frame_ms] | sort | .[length / 2 | floor] // 0" "$log")
-slices=$(jq -s "[$at_rest | .slices] | max // 0" "$log")
+p95=$(rest_frame_ms 95)
+p50=$(rest_frame_ms 50)
+slices=$(jq -s "[$rest_filter | .slices] | max // 0" "$log")
 echo "at rest: frames $p50 ms (median), $p95 ms (95th percentile), up to $slices slices a view"
 check "$slices > 1" || fail "the frames at rest refined the whole view ($slices slice)"
 check "$p95 > 0 && $p95 < 300" || fail "the frames at rest took $p95 ms (95th percentile), over 300 ms"

@@ -148,3 +148,18 @@ press_keys() {
     last=
     wait_frames 1
 }
+# The editor's frame log ($log, from `--frame-log`): the frames that refined the viewport at full
+# size at rest (a reset or a continued view). wait_rest_frames N waits until N such frames were
+# logged (at most 300 s); rest_frame_ms P gives the P-th percentile of their frame times (ms).
+rest_filter='.[] | select(.scale == 1 and .render_ms > 0 and (.action == "continue" or .action == "reset"))'
+rest_frames() { jq -s "[$rest_filter] | length" "$log"; }
+wait_rest_frames() {
+    rest_tries=0
+    while [ "$(rest_frames)" -lt "$1" ] && [ $rest_tries -lt 600 ]; do
+        sleep 0.5
+        rest_tries=$((rest_tries + 1))
+        kill -0 "$pid" 2>/dev/null || { fail "the editor is gone"; break; }
+    done
+    [ "$(rest_frames)" -ge "$1" ] || fail "only $(rest_frames) frames at rest at full size in 300 s"
+}
+rest_frame_ms() { jq -s "[$rest_filter | .frame_ms] | sort | .[length * $1 / 100 | floor] // 0" "$log"; }

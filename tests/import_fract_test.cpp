@@ -1520,7 +1520,7 @@ TEST(FractImport, KaliMultiBenesiPwr2ScatorAndAxisSwapFollowMandelbulber2sOrbits
 // partly reflecting IFS, each refused by its reason.
 TEST(FractImport, KaliMultiBenesiPwr2ScatorAndAxisSwapExamplesImport) {
     const fs::path examples = "/usr/share/mandelbulber2/examples";
-    if (!fs::exists(examples)) GTEST_SKIP() << "Mandelbulber2's examples are not installed";
+    ASSERT_TRUE(fs::exists(examples)) << "Mandelbulber2's examples are missing: scripts/install-deps.sh installs them";
     const std::string gm = "Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/";
     const std::string sj = "Sebastian Jennen collection - license Creative Commons  (CC-BY 4.0)/";
     const std::vector<std::string> files = {"benesi pwr2 mandelbulbs 001.fract", (gm + "mandelbulb_kali_p8.fract"),

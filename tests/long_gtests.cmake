@@ -1,7 +1,8 @@
 # Read by ctest after the gtest list that gtest_discover_tests writes (tests/CMakeLists.txt): the
 # gtests that took 20 s or more in CI's Release stage are started with the user stories, first, so
-# that the suite does not end on one of them running alone (CliRender.LargeImagePeakMemoryIsBounded,
-# 69 s, ran last on a fresh clone, beside nothing for most of its time). ctest orders by COST; a
+# that the suite does not end on one of them (CliRender.LargeImagePeakMemoryIsBounded, 69 s, was the
+# last test to end on a fresh clone). A name that no longer exists is ignored by ctest: it only
+# loses its place in the order. ctest orders by COST; a
 # fresh clone has no timings of its own (CTestCostData.txt). The seconds are from a fresh clone's
 # run with an empty shader cache (2026-11-29, b24a15a, `CI=true bash .ci/run`).
 set(fraktal_long_gtests
