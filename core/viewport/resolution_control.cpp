@@ -59,7 +59,10 @@ int RestSlices::choose(bool newView, double targetMs, int maxSlices) const {
     if (targetMs <= 0.0) return 1;
     const double estimate = newView ? newViewMs_ : viewMs_;
     if (estimate < 0.0) return most;
-    const double budget = std::max(targetMs - otherMs_, targetMs / 2.0);
+    // The render gets what the target leaves after the other work, but never less than half the
+    // target, nor less than the other work itself up to the target: a frame at rest then refines
+    // at least half its time, however slow the panels and display are on this machine.
+    const double budget = std::max({targetMs - otherMs_, targetMs / 2.0, std::min(otherMs_, targetMs)});
     const double sliceBudget = std::max(budget - std::max(fixedMs_, 0.0), budget / 4.0);
     int slices = 1;
     while (slices < most && estimate / slices > sliceBudget) slices *= 2;

@@ -31,9 +31,10 @@ struct ResolutionControl {
 // that slicing does not divide, times its slices). That part (passes over the whole view, the
 // counters' read-back) is taken as the cheapest render at full size seen: counted into the
 // estimate, it kept 256-1024 slices on views that needed a few, and their settling 2-4x as long. The next frame gets
-// the fewest slices, a power of two, that fit the render into what the target leaves after the other work, but at least
-// half the target (on a loaded machine the other work alone can take most of it, and each frame's other work then slows
-// the view's settling the more, the more slices). A new view (a reset: every ray starts from the camera, the costliest
+// the fewest slices, a power of two, that fit the render into what the target leaves after the other work, but at
+// least half the target, and at least the other work itself up to the target (the render never more than the target):
+// on a loaded machine the other work alone can take most of the target, and each frame's other work then slows the
+// view's settling the more, the more slices. A new view (a reset: every ray starts from the camera, the costliest
 // frames) is sized from the last new view's cost, or gets the most slices when none was measured; a continued view from
 // its own frames, rising at once when a frame was over and falling through an average and by at most half a frame (its
 // rays finish, and the frames grow cheap). Pure logic, unit-tested (tests/resolution_control_test.cpp).
