@@ -35,6 +35,12 @@ const int FLAG_REUSED = 4;       // the sample's colour is the carried one, not 
 const int FLAG_SHADED_NOW = 8;   // shaded this frame, not yet accumulated
 const int FLAG_COARSE_HIT = 16;  // a hit that stopped short of the surface under motion (isCoarseHit)
 const int FLAG_NEEDS_REFINE = 32; // a marched hit the shade pass refines first (rayState.y: the DE there)
+// The view a pixel's ray belongs to: rayInfo.w's bits from GENERATION_SHIFT up and centre.w hold
+// the generation of the view it was started in (Viewport::render numbers each new view, from 1).
+// A sliced reset starts no ray: each starts when its slice first comes (viewport_march.comp), and
+// until then its state is the previous view's, which the reprojection leaves alone.
+const int GENERATION_SHIFT = 16;
+uniform int u_generation;
 
 // Frame statistics (core/viewport/gpu_counters.cpp reads them back). Each atomicAdd in a
 // full-screen pass costs every pixel (llvmpipe loops over the SIMD lanes, active or not), so what

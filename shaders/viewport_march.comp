@@ -38,10 +38,12 @@ uniform int u_deferAfter;  // the full-screen pass's steps before a ray goes on 
 // Sliced refinement (core/viewport/march_pass.cpp): the frame advances only the tiles (the
 // workgroups of the view, numbered row by row) whose number modulo u_sliceCount is u_sliceIndex,
 // and the resuming variant is dispatched over those alone (one dimension, a workgroup a tile). A
-// sliced new view first starts every ray with the START_ONLY variant, which takes no step and so
-// holds no DE code (llvmpipe would run a loop's body once for every pixel, marching or not), then
-// marches the slice with the resuming variant. A pixel's own sequence of steps, shading and
-// samples is the same however the frames slice the view: only when it comes differs.
+// sliced reset starts no ray over the whole view: the resuming variant starts each ray of an older
+// view (u_generation, viewport_common.glsl) when its slice first comes. A whole-view pass costs
+// llvmpipe about 15 ms an image store at 690x520, whatever the pixel does: the start pass (five
+// stores) took 60-160 ms, a frame at rest's whole budget three times over. A pixel's own sequence
+// of steps, shading and samples is the same however the frames slice the view: only when it comes
+// differs.
 uniform int u_sliceCount;  // 1: every pixel
 uniform int u_sliceIndex;
 
@@ -61,7 +63,7 @@ void main() {
     float initialOmega = max(u_overRelaxation, 1.0);
 #if START
     RayStart start = startRay(px, ro, cameraRay(vec2(px) + 0.5));
-    ivec4 info = ivec4(STATUS_MARCHING, 0, 0, start.flags);
+    ivec4 info = ivec4(STATUS_MARCHING, 0, 0, start.flags | (u_generation << GENERATION_SHIFT));
     vec4 state = vec4(start.t, 0.0, initialOmega, start.restartAt);
     bool verifying = start.verify;
     bool reprojected = start.reprojected;
@@ -69,7 +71,13 @@ void main() {
     float carryAge = start.carryAge;
 #else
     ivec4 info = imageLoad(u_rayInfo, px);
-#if !FROM_LIST  // a listed ray is marching
+#if FROM_LIST  // a listed ray is marching, in this view
+    const bool fresh = false;
+#else
+    // A ray of an older view (a sliced reset starts none: this is its slice's first frame since)
+    // starts from the camera here, as the START variant's reset would have started it.
+    const bool fresh = (info.w >> GENERATION_SHIFT) != u_generation;
+    if (fresh) info = ivec4(STATUS_MARCHING, 0, 0, u_generation << GENERATION_SHIFT);
     if (info.x != STATUS_MARCHING) {
         if (u_atRest == 0 || (info.w & FLAG_COARSE_HIT) == 0) {
             // At rest a colour reused from the previous view is shaded exactly once (viewport_shade.comp).
@@ -81,11 +89,11 @@ void main() {
         info.w &= ~(FLAG_COARSE_HIT | FLAG_REUSED);
     }
 #endif
-    vec4 state = imageLoad(u_rayState, px);
+    vec4 state = fresh ? vec4(0.0, 0.0, initialOmega, 0.0) : imageLoad(u_rayState, px);
     const bool verifying = false;
     // The carried colour's depth and age (keepsCarriedColour asks only for a carried centre sample).
-    // sampleColor.a is kept with whatever colour the pixel gets.
-    float sampleDepth = imageLoad(u_sampleColor, px).a;
+    // sampleColor.a is kept with whatever colour the pixel gets (a fresh ray carries none: -1).
+    float sampleDepth = fresh ? -1.0 : imageLoad(u_sampleColor, px).a;
     bool carries = info.z == 0 && (info.w & FLAG_CARRIED) != 0;
     float tCarried = carries ? sampleDepth : 0.0;
     float carryAge = carries ? imageLoad(u_centre, px).z : 0.0;
@@ -117,9 +125,6 @@ void main() {
         budget = verifying ? 1 + min(u_stepsPerFrame, u_maxSteps - 1) : min(u_stepsPerFrame, u_maxSteps - s.steps);
         int stepsHere = u_deferAfter;
 #endif
-#if defined(START_ONLY)
-        budget = 0;  // started: the resuming variant marches it when a frame's slice holds it
-#else
         for (; i < budget && i < stepsHere && s.status == MARCH_MARCHING; ++i) {
             float t0 = s.t;
             // The last accepted step went omega * lastD from a point whose DE was lastD: up to
@@ -157,7 +162,6 @@ void main() {
             if (sampleIndex == 0 && s.status == MARCH_MARCHING && s.t > t0)
                 covered = extendConeCoverage(covered, t0, s.lastD, tanHalf);
         }
-#endif
         marchedToHit = s.status == MARCH_HIT;
         // Out of steps: as the still renderer (still.frag), a ray crawling along a grazing surface
         // is a hit; anything else is background. (With i < budget the ray has steps left, on the
@@ -181,9 +185,6 @@ void main() {
 #if START
         sampleColor.rgb = shadeBackground(rd);
         colourPoint = vec4(0.0);
-#else
-        imageStore(u_sampleColor, px, vec4(shadeBackground(rd), sampleDepth));
-        if (sampleIndex == 0) imageStore(u_colourPoint, px, vec4(0.0));
 #endif
         info.w = (info.w & ~FLAG_REUSED) | FLAG_SHADED_NOW;
     } else if (s.status == MARCH_HIT && keeps) {
@@ -200,9 +201,16 @@ void main() {
 #if START
     imageStore(u_sampleColor, px, sampleColor);
     imageStore(u_colourPoint, px, colourPoint);
-    imageStore(u_centre, px, vec4(s.t, float(s.status), carryAge, 0.0));
+    imageStore(u_centre, px, vec4(s.t, float(s.status), carryAge, float(u_generation)));
     if (reprojected) atomicAdd(c_reprojected, 1u);  // the others restarted (Viewport::render counts them)
 #else
-    if (sampleIndex == 0) imageStore(u_centre, px, vec4(s.t, float(s.status), imageLoad(u_centre, px).z, 0.0));
+    // One store each, whichever case writes it (llvmpipe pays every store for every pixel).
+    bool escaped = s.status == MARCH_ESCAPED;
+    if (escaped || fresh)
+        imageStore(u_sampleColor, px, escaped ? vec4(shadeBackground(rd), sampleDepth) : vec4(0.0, 0.0, 0.0, -1.0));
+    if ((escaped && sampleIndex == 0) || fresh) imageStore(u_colourPoint, px, vec4(0.0));
+    if (sampleIndex == 0)
+        imageStore(u_centre, px,
+                   vec4(s.t, float(s.status), fresh ? 0.0 : imageLoad(u_centre, px).z, float(u_generation)));
 #endif
 }

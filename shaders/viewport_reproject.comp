@@ -25,7 +25,7 @@
 // sample from inside that pixel however often it is carried. Keyed by anything else the colour
 // drifts by up to half a pixel per carry, and the error grew with every carry (bench/README.md).
 layout(local_size_x = 32, local_size_y = 8) in;  // viewport_common.glsl: why 32x8
-layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry age
+layout(binding = 0) uniform sampler2D u_oldCentre;  // x: t, y: status, z: carry age, w: generation
 layout(binding = 1) uniform sampler2D u_oldImage;
 layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's point, w: 1 if any
 // The previous frame's images are u_size (the points' grid, whose pixels this pass runs over); the
@@ -76,16 +76,20 @@ void main() {
     float t;
 #if CLAIM
     // The vertex at this pixel's lower right corner, at the nearest distance of the four pixels
-    // that share the corner.
-    float tMin = texelFetch(u_oldCentre, px, 0).x;
-    for (int k = 1; k < 4; ++k)
-        tMin = min(tMin, texelFetch(u_oldCentre, clamp(px + ivec2(k & 1, k >> 1), ivec2(0), u_size - 1), 0).x);
+    // that share the corner (of those whose ray is of the old view: a sliced reset leaves the
+    // pixels whose slice did not come yet with an older view's, u_generation).
+    float tMin = 1e30;
+    for (int k = 0; k < 4; ++k) {
+        vec4 centre = texelFetch(u_oldCentre, clamp(px + ivec2(k & 1, k >> 1), ivec2(0), u_size - 1), 0);
+        if (centre.w == float(u_generation)) tMin = min(tMin, centre.x);
+    }
     vec3 rd = cameraRay(vec2(px) + 1.0);
-    if (projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t))
+    if (tMin < 1e30 && projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t))
         nearestWins(target, t);
 #endif
     vec4 colourPoint = texelFetch(u_oldColourPoint, px, 0);
-    if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
+    bool ofOldView = texelFetch(u_oldCentre, px, 0).w == float(u_generation);
+    if (ofOldView && colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
         vec4 color = vec4(texelFetch(u_oldImage, px, 0).rgb, texelFetch(u_oldCentre, px, 0).z + 1.0);
         vec4 carried = vec4(colourPoint.xyz, t);
         if (nearestWins(ivec2(target.x, u_newSize.y + target.y), t)) {

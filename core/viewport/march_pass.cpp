@@ -28,6 +28,7 @@ void setMarchUniforms(const FormulaProgram& pass, const MarchState& s, const Fra
     glUniform1i(at.deferAfter, deferAfter > 0 ? deferAfter : INT_MAX);
     glUniform1i(at.sliceCount, std::max(c.sliceCount, 1));
     glUniform1i(at.sliceIndex, c.sliceIndex);
+    glUniform1i(at.generation, s.generation);
 }
 
 }  // namespace
@@ -36,10 +37,10 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
     const bool newView = action != FrameAction::Continue;
     s.clearShadeList();
     s.clearMarchList();
-    if (newView) {
-        // A sliced new view (a reset) starts every ray without a step, then marches the slice's.
-        const bool sliced = c.sliceCount > 1;
-        const FormulaProgram& pass = sliced ? p.startOnly : p.marchFromStart;
+    // A sliced new view (a reset) starts no ray here: the march below starts the slice's, as each
+    // later frame does its slice's rays of an older view (viewport_march.comp).
+    if (newView && c.sliceCount <= 1) {
+        const FormulaProgram& pass = p.marchFromStart;
         setMarchUniforms(pass, s, c, action);
         glUniform1i(pass.uniforms.resetAll, action == FrameAction::Reset ? 1 : 0);
         glUniform1i(pass.uniforms.coneTile, c.options.coneTile);
@@ -49,7 +50,7 @@ void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameCon
         // replaces the sum (viewport_accumulate.comp).
         gl::dispatchOver(pass.program.id(), s.width(), s.height());
         imageBarrier();
-        if (!sliced) return;
+        return;
     }
     setMarchUniforms(p.march, s, c, action);
     dispatchOverSlice(p.march.program.id(), p.march.uniforms, s, c);

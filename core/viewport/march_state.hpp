@@ -17,6 +17,10 @@ class MarchState {
 
     int width() const { return width_; }
     int height() const { return height_; }
+    // The view the rays were last started for (viewport_common.glsl, GENERATION_SHIFT): a pixel
+    // whose rayInfo and centre hold another is of an older view, not started yet. 0: none (a new
+    // state's rays, cleared to 0).
+    int generation = 0;
     // Binds the shade list at SSBO binding 2 and the march list at 3. The images are bound by
     // each pass, at the units its program gave them (pass_images.hpp).
     void bindLists() const;

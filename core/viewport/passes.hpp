@@ -39,10 +39,11 @@ void runConePass(const ViewportPrograms& p, const MarchState& s, const FrameCont
 // Advances the rays. On a new view (action Reset or Reproject) it first starts them: from the
 // camera on a reset, else from the reprojection. With a slice (c.sliceCount > 1; a continued view
 // or a reset, never a reprojected one, whose starts are verified in their first step) only the
-// slice's rays step: a sliced reset starts every ray without a step (ViewportPrograms::startOnly),
-// and the march is dispatched over the slice's tiles alone, so that it and the shading (the shade
-// list holds what it finished) cost about a sliceCount-th of the whole view's. On a reprojected frame, rays it leaves
-// marching with steps left (ViewportOptions::deferAfterSteps) go on the march list, which runMarchListPass marches on.
+// slice's rays step: a sliced reset starts no ray over the whole view (the march starts each ray
+// of an older view when its slice comes, MarchState::generation), and the march is dispatched over the slice's tiles
+// alone, so that it and the shading (the shade list holds what it finished) cost about a sliceCount-th of the whole
+// view's. On a reprojected frame, rays it leaves marching with steps left (ViewportOptions::deferAfterSteps) go on the
+// march list, which runMarchListPass marches on.
 void runMarchPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
 void runMarchListPass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c, FrameAction action);
 void runShadePass(const ViewportPrograms& p, const MarchState& s, const FrameContext& c);

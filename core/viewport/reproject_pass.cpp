@@ -24,6 +24,7 @@ void runReprojectPass(const ViewportPrograms& p, const MarchState& from, const M
         pass->use(s);
         setViewUniforms(pass->uniforms, previous, w, h);  // the points' rays
         glUniform2i(pass->uniforms.newSize, s.width(), s.height());
+        glUniform1i(pass->uniforms.generation, from.generation);  // the points' view
         gl::setCameraUniforms(pass->uniforms.newCamera, current);
         gl::dispatchOver(pass->id(), w, h);
         imageBarrier();

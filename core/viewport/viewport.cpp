@@ -55,6 +55,10 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
         if (previousGrid) {
             resampleInto(*previousGrid, &MarchState::image, *state_);
             resampleInto(*previousGrid, &MarchState::shown, *state_);
+        } else {
+            const float black[4] = {0, 0, 0, 1};
+            glClearTexImage(state_->image, 0, GL_RGBA, GL_FLOAT, black);
+            glClearTexImage(state_->shown, 0, GL_RGBA, GL_FLOAT, black);
         }
     }
 
@@ -90,7 +94,13 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
         runReprojectPass(*programs_, previousGrid ? *previousGrid : *state_, *state_, previous_->camera, camera);
         mark("reproject");
     }
-    if (action != FrameAction::Continue && options_.coneTile > 0) {
+    // A new view's rays: numbered after the reprojection, which reads the old view's.
+    if (action != FrameAction::Continue) {
+        generation_ = generation_ % kMaxGeneration + 1;
+        state_->generation = generation_;
+    }
+    // (A sliced reset's rays start slice by slice from the camera, past no cone.)
+    if (action != FrameAction::Continue && options_.coneTile > 0 && context.sliceCount <= 1) {
         runConePass(*programs_, *state_, context);
         mark("cone");
     }

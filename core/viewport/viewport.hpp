@@ -104,6 +104,10 @@ class Viewport {
     bool settled_ = false;
     bool forceReset_ = false;
     int slicedFrames_ = 0;  // sliced frames so far: the next one's slice (sliceOfFrame)
+    // The last new view's number (MarchState::generation), 1 to kMaxGeneration and round again:
+    // rayInfo.w holds it above its flags, 15 bits of a positive int.
+    static constexpr int kMaxGeneration = (1 << 15) - 1;
+    int generation_ = 0;
     SliceProgress sliceProgress_;
     GLuint resampleFramebuffers_[2] = {0, 0};
     GLuint displayVertexArray_ = 0;

@@ -66,6 +66,7 @@ PassUniforms::PassUniforms(GLuint program)
     resetAll = at("u_resetAll");
     sliceCount = at("u_sliceCount");
     sliceIndex = at("u_sliceIndex");
+    generation = at("u_generation");
     coneTile = at("u_coneTile");
     coneSteps = at("u_coneSteps");
     maxSamples = at("u_maxSamples");
@@ -97,8 +98,6 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
         "march.glsl",           "shade.glsl",          "camera.glsl",        "lens.glsl",
         "viewport_common.glsl", "viewport_start.glsl", "viewport_march.comp"};
     marchFromStart = compileFormulaPass(f, g, "viewport_march.comp", "#define START 1\n#define FROM_LIST 0", start);
-    startOnly = compileFormulaPass(f, g, "viewport_march.comp",
-                                   "#define START 1\n#define FROM_LIST 0\n#define START_ONLY 1", start);
     shade = compileFormulaPass(
         f, g, "viewport_shade.comp", "",
         {"march.glsl", "shade.glsl", "camera.glsl", "lens.glsl", "viewport_common.glsl", "viewport_shade.comp"});
@@ -117,9 +116,18 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
 }
 
 std::vector<const gl::Program*> ViewportPrograms::all() const {
-    return {&march.program, &marchFromStart.program,   &marchFromList.program,    &startOnly.program, &shade.program,
-            &cone.program,  &accumulateAtRest.program, &accumulateMoving.program, &resolve.program,   &display.program,
-            &listGroups,    &reprojectClaim.program,   &reprojectWrite.program};
+    return {&march.program,
+            &marchFromStart.program,
+            &marchFromList.program,
+            &shade.program,
+            &cone.program,
+            &accumulateAtRest.program,
+            &accumulateMoving.program,
+            &resolve.program,
+            &display.program,
+            &listGroups,
+            &reprojectClaim.program,
+            &reprojectWrite.program};
 }
 
 void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, int height, const ThinLens& lens) {

@@ -25,7 +25,7 @@ struct PassUniforms {
     GLint size = -1, pixelAngle = -1, newSize = -1;
     GLint stepsPerFrame = -1, maxSteps = -1, atRest = -1, maxCarryFrames = -1, coarseHits = -1, deferAfter = -1,
           resetAll = -1;
-    GLint sliceCount = -1, sliceIndex = -1;
+    GLint sliceCount = -1, sliceIndex = -1, generation = -1;
     GLint coneTile = -1, coneSteps = -1;
     GLint maxSamples = -1, initialOmega = -1, radius = -1;
     GLint exposure = -1, flipY = -1;
@@ -59,9 +59,9 @@ struct ViewportPrograms {
     explicit ViewportPrograms(const Formula& formula);  // throws naming the node on a GLSL error
     std::string structure;
     // march resumes the rays; marchFromStart first starts them for a new view (reset or reprojected);
-    // marchFromList marches on the rays either left on the march list; startOnly starts them and
-    // takes no step (a sliced reset: march then marches the slice).
-    FormulaProgram march, marchFromStart, marchFromList, startOnly, shade, cone;
+    // marchFromList marches on the rays either left on the march list. march also starts the rays
+    // of an older view in the slice it marches (a sliced reset starts none over the whole view).
+    FormulaProgram march, marchFromStart, marchFromList, shade, cone;
     // accumulateAtRest raises the AA level; accumulateMoving finds the samples' positions instead.
     Pass accumulateAtRest, accumulateMoving, resolve, display;
     // Sets the shade and march lists' group counts from their entry counts (dispatchOverList).
