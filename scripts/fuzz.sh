@@ -14,9 +14,14 @@ mkdir -p "$corpus"
 seeds=$(mktemp -d)
 trap 'rm -rf "$seeds"' EXIT
 find presets tests/bad_presets tests/legacy_presets -maxdepth 3 -type f -name '*.json' -size -64k -exec cp {} "$seeds"/ \;
+# Fragmentarium frags, each after a comment line: text that starts with '/' goes to the .frag parser.
+n=0
+for frag in $(find tests/data/frag -type f -name '*.frag' -size -64k); do
+  { echo "// $frag"; cat "$frag"; } >"$seeds/frag$((n += 1)).frag"
+done
 if [ -d /usr/share/mandelbulber2/toolbar ]; then
   find /usr/share/mandelbulber2/toolbar -name '*.fract' -size -64k -exec cp {} "$seeds"/ \;
 fi
 build-asan/tests/preset_fuzzer -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
   -print_final_stats=1 "$corpus" "$seeds" 2>&1 | tail -n 12
-echo "fuzz: the preset loader and the importer survived ${seconds} s"
+echo "fuzz: the preset loader, the importer and the frag parser survived ${seconds} s"
