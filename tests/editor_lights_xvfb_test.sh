@@ -1,7 +1,8 @@
 #!/bin/sh
 # The Lights tab in the real editor under Xvfb, driven with real X input (xdotool), on a unit cube
 # (the box estimator with no folds) seen straight on its +z face: Add light > Sphere adds one light
-# (one undo step); a drag of its intensity is one undo step that Ctrl+Z takes back whole; a typed
+# (one undo step); at the default layout its settings are in view and the wheel scrolls the tab's
+# body under a tab bar that stays; a drag of its intensity is one undo step that Ctrl+Z takes back whole; a typed
 # aperture turns depth of field on; a bad environment map is refused with a message and the
 # document keeps its map, a real EXR is taken (typed, and through Browse...); Pick focus and a
 # click on the cube, and a Ctrl+click near the face's corner, set the focus distance to the face's
@@ -61,9 +62,6 @@ cat >"$home/cube.json" <<'EOF'
  "camera": {"position": [0.0, 0.0, 4.0], "target": [0.0, 0.0, 0.0], "fovY": 40.0}}
 EOF
 start "$home/cube.json" --tab Lights
-# F2 hides the Formula panel: the Scene panel takes the column's height, the whole tab in view.
-xdotool key F2
-wait_frames 3
 wait_for '.lights.widgets.addLight != null'
 [ "$(q .lights.count)" = 0 ] || fail "the cube preset opened with $(q .lights.count) lights"
 
@@ -77,6 +75,31 @@ wait_for '.lights.count == 1'
 added_depth=$(depth)
 intensity=$(q '.lights.items[0].intensity')
 echo "add: $(q '.lights.items[0].type') light, intensity $intensity, undo depth $added_depth"
+
+# At the default layout of a 1280x800 window (the Formula panel above the Scene panel), the new
+# light's settings lie in the tab's view, and the tab's body scrolls under the tab bar, which stays.
+# in_body WIDGET: the Lights tab's WIDGET lies whole within the visible part of the tab's body.
+in_body() {
+    q "(.lights.widgets[\"$1\"]) as \$w | .widgets[\"child:Scene tab body\"] as \$b |
+       \$w != null and \$b != null and \$w[1] >= \$b[1] and \$w[1] + \$w[3] <= \$b[1] + \$b[3]"
+}
+for setting in light.color light.intensity light.position; do
+    [ "$(in_body $setting)" = true ] || fail "at 1280x800 the light's $setting is not in the Scene panel's view"
+done
+tabs=$(q '.widgets["tab:Lights"][1]')
+intensity_y=$(q '.lights.widgets["light.intensity"][1]')
+set -- $(centre "child:Scene tab body")
+to "$1" "$2"
+wait_frames 2
+xdotool click --repeat 8 --delay 30 5
+wait_frames 5
+[ "$(q '.widgets["tab:Lights"][1]')" = "$tabs" ] ||
+    fail "scrolling the Lights tab moved its tab bar from y $tabs to $(q '.widgets["tab:Lights"][1]')"
+check "$(q '.lights.widgets["light.intensity"][1]') < $intensity_y" ||
+    fail "the wheel over the Lights tab left its settings in place (intensity at y $intensity_y)"
+xdotool click --repeat 8 --delay 30 4
+wait_frames 5
+echo "default layout: the light's settings in view; the wheel scrolled them, the tab bar stayed at y $tabs"
 
 # A real drag of the intensity: one undo step; Ctrl+Z restores it, the light stays.
 set -- $(widget light.intensity)
@@ -94,6 +117,10 @@ wait_for ".lights.items[0].intensity == $intensity"
 [ "$(q .lights.count)" = 1 ] || fail "Ctrl+Z after the drag also removed the light"
 [ "$(depth)" = "$added_depth" ] || fail "Ctrl+Z took $((added_depth + 1 - $(depth))) steps back"
 echo "drag: intensity $intensity -> $dragged, Ctrl+Z -> $(q '.lights.items[0].intensity')"
+
+# F2 hides the Formula panel: the Scene panel takes the column's height, the rest of the tab in view.
+xdotool key F2
+wait_frames 3
 
 # A typed aperture turns depth of field on (one step).
 before=$(depth)

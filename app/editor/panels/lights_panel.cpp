@@ -277,11 +277,14 @@ void drawLightsTab(EditorState& s) {
     LightsPanel& p = s.lights;
     p.widgets.clear();
     Lighting& lighting = s.doc.preset.lighting;
+    // One line, the rest in its help: at 1280x800 every line here pushes the light's settings down.
+    ImGui::TextDisabled("Lights of path-traced images");
+    ImGui::SameLine();
+    helpMarker(
+        "The export's Path traced mode and the viewport's Path traced at rest (Render tab) use these lights. The "
+        "fast viewport is lit by the Shading tab.");
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled(
-        "The lights of path-traced images: the export's Path traced mode and the viewport's Path traced at rest "
-        "(Render tab). The fast viewport is lit by the Shading tab.");
-    // Every line of text below wraps at the panel's edge too.
+    // Every line of text below wraps at the panel's edge.
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     drawLightList(s, lighting, p);
     drawEnvironment(s, p);

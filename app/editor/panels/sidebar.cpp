@@ -95,7 +95,12 @@ void drawSidebar(EditorState& s) {
             noteWidgetRect(s.layout, std::string("tab:") + name);
             if (!shown) continue;
             s.layout.sceneTab = name;
+            // The tab's body scrolls in its own region under the tab bar, which stays in place:
+            // at 1280x800 the Scene panel is about 270 px tall, and most tabs run past its edge.
+            ImGui::BeginChild("tab body", ImVec2(0.0f, 0.0f));
             draw(s);
+            ImGui::EndChild();
+            noteWidgetRect(s.layout, "child:Scene tab body");
             ImGui::EndTabItem();
         }
         ImGui::EndTabBar();
