@@ -88,17 +88,12 @@ for setting in light.color light.intensity light.position; do
 done
 tabs=$(q '.widgets["tab:Lights"][1]')
 intensity_y=$(q '.lights.widgets["light.intensity"][1]')
-set -- $(centre "child:Scene tab body")
-to "$1" "$2"
-wait_frames 2
-xdotool click --repeat 8 --delay 30 5
-wait_frames 5
+wheel_over "child:Scene tab body" 5
 [ "$(q '.widgets["tab:Lights"][1]')" = "$tabs" ] ||
     fail "scrolling the Lights tab moved its tab bar from y $tabs to $(q '.widgets["tab:Lights"][1]')"
 check "$(q '.lights.widgets["light.intensity"][1]') < $intensity_y" ||
     fail "the wheel over the Lights tab left its settings in place (intensity at y $intensity_y)"
-xdotool click --repeat 8 --delay 30 4
-wait_frames 5
+wheel_over "child:Scene tab body" 4
 echo "default layout: the light's settings in view; the wheel scrolled them, the tab bar stayed at y $tabs"
 
 # A real drag of the intensity: one undo step; Ctrl+Z restores it, the light stays.

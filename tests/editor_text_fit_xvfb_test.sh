@@ -38,11 +38,7 @@ for size in 1280x800 1920x1080; do
     first=$(q '.widgets["thumbnail:1"][1]')
     [ "$thumbs" != null ] || fail "$size: the Presets tab draws no thumbnail region"
     if [ "$thumbs" != null ]; then
-        set -- $(centre "child:Presets thumbnails")
-        to "$1" "$2"
-        wait_frames 2
-        xdotool click --repeat 8 --delay 30 5
-        wait_frames 5
+        wheel_over "child:Presets thumbnails" 5
         [ "$(q '.widgets["tab:Presets"][1]')" = "$tabs" ] ||
             fail "$size: scrolling the thumbnails moved the tab bar from y $tabs to $(q '.widgets["tab:Presets"][1]')"
         check "$(q '.widgets["thumbnail:1"][1]') < $first" ||

@@ -131,6 +131,14 @@ click() {
 moved() { awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, r, " "); d = 0; n = 0;
     for (i = 1; i <= 3; i++) { d += (p[i] - r[i]) ^ 2; n += r[i] ^ 2 } print sqrt(d / n) }'; }
 check() { awk "BEGIN { exit !($1) }"; }
+# wheel_over WIDGET BUTTON: eight clicks of the wheel (button 5: down, 4: up) over WIDGET's centre.
+wheel_over() {
+    set -- $(centre "$1") "$2"
+    to "$1" "$2"
+    wait_frames 2
+    xdotool click --repeat 8 --delay 30 "$3"
+    wait_frames 5
+}
 
 # Viewport centre and panel points at the default 1280x800 layout (from the state file).
 viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1] + .viewport[3] / 2 | floor)"'; }
