@@ -19,11 +19,14 @@ double ResolutionController::next(bool changed, double lastFrameMs) {
     }
     if (!moving()) return scale_ = 1.0;
     const double fullFrameMs = fullFrameMs_ >= 0.0 ? fullFrameMs_ : seededMs_;
-    if (fullFrameMs < 0.0) return scale_ = motionScale_;  // nothing measured yet
+    // Nothing measured nor seeded (the first frames of a new editor): the smallest, not a whole
+    // frame at full size.
+    const double lastMotion = motionScale_ > 0.0 ? motionScale_ : control_.minScale;
+    if (fullFrameMs < 0.0) return scale_ = lastMotion;
     const double ideal = std::clamp(std::sqrt(control_.targetMs / fullFrameMs), control_.minScale, 1.0);
     const double stepped = std::clamp(std::floor(ideal / control_.step) * control_.step, control_.minScale, 1.0);
     // Lower at once when over the target; raise only by a whole step beyond the current scale.
-    const double current = wasMoving ? scale_ : motionScale_;
+    const double current = wasMoving ? scale_ : lastMotion;
     double chosen = current;
     if (stepped < current || stepped >= current + control_.step) chosen = stepped;
     motionScale_ = chosen;

@@ -101,7 +101,7 @@ class ResolutionController {
    private:
     ResolutionControl control_;
     double scale_ = 1.0;
-    double motionScale_ = 1.0;    // the scale motion last used: the next motion starts from it
+    double motionScale_ = -1.0;   // the scale motion last used: the next motion starts from it (< 0: none)
     double fullFrameMs_ = -1.0;   // estimated time of a full-resolution frame (< 0: none yet)
     double seededMs_ = -1.0;      // seedFullFrameMs's, until fullFrameMs_ is measured
     int framesUnchanged_ = 1000;  // at rest until the first change

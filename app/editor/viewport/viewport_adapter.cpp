@@ -177,8 +177,11 @@ void CoreViewportView::redisplay(const Preset& preset, GLuint linearImage, doubl
 double CoreViewportView::chooseScale(const scene::SceneRevision& revision, const ViewSettings& settings) {
     // Motion: anything the image is rendered from changed (a new display transform is not).
     const scene::SceneChange change = scene::sceneChange(lastView_ ? &*lastView_ : nullptr, revision);
-    const bool changed = lastView_ && (change.restarts() || change.camera);
-    lastView_ = revision;
+    // Against the last view rendered: a view not rendered yet (the first, or one whose programs
+    // are still compiling) is a change, so that it opens as a small whole view that the refinement
+    // at full size then shows under its slices, as after any motion. Opened at rest, its slices
+    // refined over black for seconds (kifs_coloured_lights: 2 % converged after 7 s at 64 slices).
+    const bool changed = !lastView_ || change.restarts() || change.camera;
     // The editor's frame time: from the start of the previous frame's render to this one's.
     const auto now = std::chrono::steady_clock::now();
     const double frameMs =
@@ -210,7 +213,10 @@ void CoreViewportView::render(const Preset& preset, const scene::SceneRevision& 
     const int height = std::max(int(std::lround(fullHeight * scale)), 2);
     stats_.internalScale = scale;
     try {
-        if (renderFrame(preset, revision, settings, width, height)) imageChanged_ = true;
+        if (renderFrame(preset, revision, settings, width, height)) {
+            imageChanged_ = true;
+            lastView_ = revision;
+        }
     } catch (const std::exception& e) {
         lastAction_ = viewport::FrameAction::Reset;
         displayError_ = e.what();  // e.g. an unknown working space

@@ -101,7 +101,7 @@ class CoreViewportView final : public ViewportView {
     bool imageChanged_ = false;
     std::optional<std::pair<DisplayKey, double>> shownDisplay_;
     ViewportStats stats_;
-    // Dynamic resolution: what the last frame showed (a change but of the display transform
+    // Dynamic resolution: what the last rendered frame showed (a change but of the display transform
     // means motion) and when it began.
     viewport::ResolutionController resolution_;
     std::optional<scene::SceneRevision> lastView_;
