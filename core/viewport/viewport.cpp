@@ -2,6 +2,10 @@
 
 namespace fraktal::viewport {
 
+namespace {
+int64_t pixels(const MarchState& s) { return int64_t(s.width()) * s.height(); }
+}  // namespace
+
 Viewport::Viewport(ViewportOptions options) : options_(options) {
     counters_ = std::make_unique<GpuCounters>();
     timer_ = std::make_unique<PassTimer>();
@@ -16,6 +20,7 @@ Viewport::~Viewport() {
 void Viewport::setOptions(const ViewportOptions& options) {
     if (options.coneTile != options_.coneTile) {
         state_.reset();  // the cone image's size depends on the tile
+        spareGrid_.reset();
         forceReset_ = true;
     }
     if (options.overRelaxation != options_.overRelaxation) forceReset_ = true;
@@ -51,7 +56,13 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     std::unique_ptr<MarchState> previousGrid;
     if (!state_ || state_->width() != width || state_->height() != height) {
         previousGrid = std::move(state_);
-        state_ = std::make_unique<MarchState>(width, height, options_.coneTile);
+        // Back to the size of the grid motion left (the view at rest again): that grid, whose rays
+        // are of an older view and start again (MarchState::generation), instead of a new one.
+        if (spareGrid_ && spareGrid_->width() == width && spareGrid_->height() == height)
+            state_ = std::move(spareGrid_);
+        else
+            state_ = std::make_unique<MarchState>(width, height, options_.coneTile);
+        if (spareGrid_ && pixels(*spareGrid_) <= pixels(*state_)) spareGrid_.reset();  // no use any more
         if (previousGrid) {
             resampleInto(*previousGrid, &MarchState::image, *state_);
             resampleInto(*previousGrid, &MarchState::shown, *state_);
@@ -128,6 +139,9 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     if (timed) stats.passTimes = timer_->read();
     settled_ = decided == FrameAction::Continue && sliceProgress_.settled();
     stats.settled = settled_;
+    // Motion went to a smaller grid: the larger one it left is kept for the return to rest (a new
+    // grid of 690x520 took 60 ms to allocate, most of the first frame at rest on llvmpipe).
+    if (previousGrid && pixels(*previousGrid) > pixels(*state_) && !spareGrid_) spareGrid_ = std::move(previousGrid);
     previous_ = std::move(key);
     previousAction_ = decided;
     return stats;

@@ -97,6 +97,9 @@ class Viewport {
     ViewportOptions options_;
     std::unique_ptr<ViewportPrograms> programs_;
     std::unique_ptr<MarchState> state_;
+    // The larger grid motion left (a smaller grid renders under motion), kept for the return to its
+    // size; at most one, dropped once the grid is as large again.
+    std::unique_ptr<MarchState> spareGrid_;
     std::unique_ptr<GpuCounters> counters_;
     std::unique_ptr<PassTimer> timer_;
     std::optional<FrameKey> previous_;
