@@ -15,6 +15,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <thread>
 
@@ -568,6 +569,40 @@ TEST(FractImport, DifsShapesCloseWithTheLeastShapeDistance) {
     EXPECT_TRUE(mentions(delta.unsupported, "main", "the dIFS DE function with the delta DE method"));
 }
 
+// The settings `body` (after [main_parameters]) are refused, `where` naming `what`.
+void expectRefused(const std::string& body, const std::string& where, const std::string& what) {
+    EXPECT_TRUE(mentions(importText("[main_parameters]\n" + body).unsupported, where, what)) << body;
+}
+
+// A file under Mandelbulber2's examples/ imports with nothing refused.
+void expectExampleImports(const std::string& file) {
+    const fs::path examples = "/usr/share/mandelbulber2/examples";
+    ASSERT_TRUE(fs::exists(examples)) << "Mandelbulber2's examples are missing: scripts/install-deps.sh installs them";
+    const mb2::FractImport r = mb2::importFract(mb2::loadFractFile(examples / file));
+    EXPECT_TRUE(r.faithful()) << file << ": " << r.unsupported.front().text();
+}
+
+// A dIFS formula's membership against Mandelbulber2's orbit written out: `distance(point)` is the
+// least shape distance along the orbit (the point inside where it is at most 0), on 2000 random
+// points of [-extent, extent]^3 drawn from `seed`. At most 1 % differ, and 1 % to 99 % are inside.
+void expectDifsMembershipFollows(const Formula& f, double extent, unsigned seed,
+                                 const std::function<double(const vec3&)>& distance) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> u(-extent, extent);
+    int inside = 0, differ = 0;
+    const int points = 2000;
+    for (int k = 0; k < points; ++k) {
+        const vec3 point = randomVec3(u, random);
+        const bool in = distance(point) <= 0.0;
+        inside += in;
+        differ += evaluate(f, point).inside != in;
+    }
+    std::printf("%s: %d of %d inside, %d differ\n", f.nodes.front().block->id.data(), inside, points, differ);
+    EXPECT_LE(differ, points / 100);
+    EXPECT_GT(inside, points / 100);
+    EXPECT_LT(inside, points - points / 100);
+}
+
 // Mandelbulber2's dIFS cylinder and sphere formulas: the shape measured where each iteration
 // starts, then |x| and |y|, the diagonal fold, the scale about the reverse offsets (x and y less 2)
 // varying with option K, offset_001. A point is inside where some shape distance along its orbit
@@ -603,12 +638,7 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
         EXPECT_EQ(f.estimator.block->id, "difs");
         const bool sphere = std::string(c.body).find("604") != std::string::npos;
         const double s = sphere ? 2.35 : 2.0;
-        std::mt19937 random(9);
-        std::uniform_real_distribution<double> u(-1.5, 1.5);
-        int inside = 0, differ = 0;
-        const int points = 2000;
-        for (int k = 0; k < points; ++k) {
-            const vec3 point = randomVec3(u, random);
+        expectDifsMembershipFollows(f, 1.5, 9, [&](const vec3& point) {
             vec3 z = point;
             double de = 1.0, a = 0.0, dist = 1000.0;
             for (int i = 0; i < f.iterations; ++i) {
@@ -622,13 +652,8 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
                 dist = std::min(dist, c.shape(start, i) / de);
                 if (length(z) > f.bailout) break;
             }
-            inside += dist <= 0.0;
-            differ += evaluate(f, point).inside != (dist <= 0.0);
-        }
-        std::printf("%s: %d of %d inside, %d differ\n", f.nodes.front().block->id.data(), inside, points, differ);
-        EXPECT_LE(differ, points / 100);
-        EXPECT_GT(inside, points / 100);
-        EXPECT_LT(inside, points - points / 100);
+            return dist;
+        });
         Formula one = f;
         one.iterations = 1;
         const vec3 x(0.9, -0.4, 1.8);
@@ -644,6 +669,117 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
     EXPECT_EQ(ring.start, 2);
     EXPECT_EQ(param(ring, "ring_radius"), 0.7);
     EXPECT_EQ(param(ring, "w_scale"), 2.0);
+}
+
+// Mandelbulber2's dIFS diagonal boxes: folds, the scale about the reverse offsets, offset_001 and
+// the turn, then the box measured where the iteration ends, over DE |s| + 1. fraktal's membership
+// follows DIFSBoxDiagonalV1Iteration and V3 (formula/opencl of 2.20) written out on random points,
+// and the first iteration's estimate is Mandelbulber2's.
+TEST(FractImport, DifsBoxDiagonalsFollowMandelbulber2) {
+    struct Case {
+        const char* body;
+        vec3 (*folds)(vec3 z, int i);  // the iteration up to the scale
+        double s, e, f;                // the scale and the reverse offsets
+        vec3 offset, size;
+        double turn;  // degrees about z, option R (RotateZ of SetRotation2: x' = x cos - y sin)
+    };
+    const Case cases[] = {
+        // V1: x and y swapped where x > y, |x|, |y| (from iteration 1), x and y less 0.8 and 0.6, the
+        // fold about x = -0.3 (option C), scale 2.2 about (0.5, 0.2), offset_001, a turn of 30 degrees about z.
+        {"formula_1 600;\nN 8;\n[fractal_1]\ntransf_addition_constantA_111 0,8 0,6 1;\n"
+         "transf_start_iterations_X 1;\ntransf_function_enabledC_false true;\ntransf_offsetC_0 -0,3;\n"
+         "transf_scale_2 2,2;\ntransf_offsetE_0 0,5;\ntransf_offsetF_0 0,2;\ntransf_offset_001 0 0,1 0,9;\n"
+         "transf_addition_constant_111 0,7 0,5 0,9;\ntransf_function_enabledR_false true;\n"
+         "transf_rotation 0 0 30;\n",
+         [](vec3 z, int i) {
+             if (z.x > z.y) std::swap(z.x, z.y);
+             if (i >= 1) z.x = std::abs(z.x);
+             z.y = std::abs(z.y);
+             z -= vec3(0.8, 0.6, 0.0);
+             if (z.x < -0.3) z.x = std::abs(z.x + 0.3) - 0.3;
+             return z;
+         },
+         2.2, 0.5, 0.2, vec3(0.0, 0.1, 0.9), vec3(0.7, 0.5, 0.9), 30.0},
+        // V3: surfBox_offset1A_111 subtracted (option A), |x|, |y|, |z|, swapped where y > x, Tglad's
+        // fold at (0.5, 0.4, 0.6) (option I), the fold about y = 0.1 (D), swapped again (Cy); scale
+        // 1.8, offset_001 from iteration 2 (window H).
+        {"formula_1 602;\nN 8;\n[fractal_1]\ntransf_function_enabledA_false true;\n"
+         "surfBox_offset1A_111 0,2 0,1 0,3;\ntransf_function_enabledAz_false true;\n"
+         "transf_function_enabledCx_false true;\ntransf_function_enabledI_false true;\n"
+         "transf_offsetA_000 0,5 0,4 0,6;\ntransf_function_enabledD_false true;\ntransf_offsetD_0 0,1;\n"
+         "transf_function_enabledCy_false true;\ntransf_scale_2 1,8;\ntransf_offset_001 0 0 0,5;\n"
+         "transf_start_iterations_H 2;\ntransf_addition_constant_111 0,5 0,6 0,4;\n",
+         [](vec3 z, int) {
+             z -= vec3(0.2, 0.1, 0.3);
+             z = glm::abs(z);
+             if (z.y > z.x) std::swap(z.x, z.y);
+             const vec3 a(0.5, 0.4, 0.6);
+             z = glm::abs(z + a) - glm::abs(z - a) - z;
+             if (z.y < 0.1) z.y = std::abs(z.y - 0.1) + 0.1;
+             if (z.y > z.x) std::swap(z.x, z.y);
+             return z;
+         },
+         1.8, 0.0, 0.0, vec3(0.0, 0.0, 0.5), vec3(0.5, 0.6, 0.4), 0.0},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.body);
+        const mb2::FractImport r = importText(std::string("[main_parameters]\n") + c.body);
+        ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+        const Formula& f = r.preset.formula;
+        EXPECT_EQ(f.estimator.block->id, "difs");
+        const bool v3 = std::string(c.body).find("602") != std::string::npos;
+        const double cs = std::cos(glm::radians(c.turn)), sn = std::sin(glm::radians(c.turn));
+        auto iterate = [&](vec3 z, int i) {
+            z = c.folds(z, i);
+            const vec3 centre(c.e, c.f, 0.0);
+            z = (z - centre) * c.s + centre;
+            if (!v3 || i >= 2) z += c.offset;
+            return vec3(cs * z.x - sn * z.y, sn * z.x + cs * z.y, z.z);
+        };
+        auto box = [&](const vec3& z) { return length(glm::max(glm::abs(z) - c.size, vec3(0.0))); };
+        expectDifsMembershipFollows(f, 2.0, 11, [&](const vec3& point) {
+            vec3 z = point;
+            double de = 1.0, dist = 1000.0;
+            for (int i = 0; i < f.iterations; ++i) {
+                z = iterate(z, i);
+                de = de * std::abs(c.s) + 1.0;
+                dist = std::min(dist, box(z) / de);
+                if (length(z) > f.bailout) break;
+            }
+            return dist;
+        });
+        Formula one = f;
+        one.iterations = 1;
+        const vec3 x(1.3, -0.4, 1.9);
+        EXPECT_NEAR(distanceEstimate(one, x), box(iterate(x, 0)) / (c.s + 1.0) * one.deFactor, 1e-9);
+    }
+    // Option Y measures the box where the iteration starts, over the derivative after the scale.
+    const mb2::FractImport start =
+        importText("[main_parameters]\nformula_1 600;\n[fractal_1]\ntransf_function_enabledY_false true;\n");
+    ASSERT_TRUE(start.faithful()) << start.unsupported.front().text();
+    const Node& first = start.preset.formula.nodes.front();
+    EXPECT_EQ(first.block->id, "difs_box");
+    EXPECT_EQ(param(first, "w_scale"), 2.0);
+    EXPECT_EQ(param(first, "w_offset"), 1.0);
+    // The curved box and V3's polygonal fold are refused by name.
+    expectRefused("formula_1 600;\n[fractal_1]\ntransf_function_enabledT_false true;\n",
+                  "slot 1 (difs_box_diagonal_v1)", "curved");
+    expectRefused("formula_1 602;\n[fractal_1]\ntransf_function_enabledP_false true;\n",
+                  "slot 1 (difs_box_diagonal_v3)", "polygonal fold");
+}
+
+// Mandelbulber2's example files of the dIFS diagonal boxes import with nothing refused, but the one
+// with a water surface beside the dIFS estimate.
+TEST(FractImport, DifsBoxDiagonalExamplesImport) {
+    const std::string gm = "Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/";
+    for (const std::string& file :
+         {gm + "DIFS Box DiagV1 pseudoKl.fract", gm + "DIFS Box DiagV3 asurf.fract",
+          gm + "DIFS Box DiagV3 complex primitive.fract", std::string("../formula/img/difs_box_diagonal_v1.fract")})
+        expectExampleImports(file);
+    const mb2::FractImport water = mb2::importFract(mb2::loadFractFile(
+        fs::path("/usr/share/mandelbulber2/examples") / (gm + "DIFS Box DiagV1 complex primitive.fract")));
+    ASSERT_FALSE(water.faithful());
+    for (const mb2::ImportItem& item : water.unsupported) EXPECT_EQ(item.where, "main") << item.text();
 }
 
 // Mandelbulber2's 4D transforms after a 3D formula: with the fourth coordinate 0 throughout they
@@ -1513,6 +1649,70 @@ TEST(FractImport, KaliMultiBenesiPwr2ScatorAndAxisSwapFollowMandelbulber2sOrbits
     const mb2::FractImport prism =
         importText("[main_parameters]\nformula_1 105;\n[fractal_1]\ntransf_function_enabledP_false true;\n");
     EXPECT_TRUE(mentions(prism.unsupported, "slot 1 (benesi_pwr2_mandelbulb)", "prism fold"));
+}
+
+// The Mandelbulb whose power varies with the iteration against MandelbulbVaryPowerV1Iteration
+// (formula/opencl/mandelbulb_vary_power_v1.cl of 2.20) written out: power 6 before iteration 1,
+// 6 + (-2) (i - 1) / 4 on iterations 1 to 4, 4 from 5 on; the angle offsets before the power; c.
+TEST(FractImport, MandelbulbVaryPowerFollowsMandelbulber2sOrbits) {
+    const OrbitCase c{
+        "formula_1 78;\nN 8;\n[fractal_1]\npower 6;\ntransf_offset_0 -2;\ntransf_start_iterations_250 1;\n"
+        "transf_stop_iterations 5;\nbeta_angle_offset 10;\nalpha_angle_offset -20;\n",
+        {"mandelbulb_sine", "mandelbulb_sine", "mandelbulb_sine", "mandelbulb_sine", "mandelbulb_sine",
+         "mandelbulb_sine", "add_c"},
+        nullptr,
+        1.5,
+        [](const vec3& z, const vec3& c, int i) {
+            double n = 6.0;
+            if (i >= 1 && i < 5) n += -2.0 * (i - 1) / 4.0;
+            if (i >= 5) n += -2.0;
+            const double r = length(z);
+            const double th = (std::asin(z.z / r) + glm::radians(10.0)) * n;
+            const double ph = (std::atan2(z.y, z.x) + glm::radians(-20.0)) * n;
+            return std::pow(r, n) * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + c;
+        }};
+    expectOrbitsFollowMandelbulber2(c);
+    // A ramp over more nodes than the import writes is refused by name.
+    expectRefused(
+        "formula_1 78;\n[fractal_1]\ntransf_offset_0 1;\ntransf_start_iterations_250 0;\n"
+        "transf_stop_iterations 40;\n",
+        "slot 1 (mandelbulb_vary_power_v1)", "varied over 40 iterations");
+    expectExampleImports("mandelbulb_vary_power_001.fract");
+}
+
+// menger_middle_mod against MengerMiddleModIteration (formula/opencl/menger_middle_mod.cl of 2.20)
+// written out: |v + (0.1, 0, 0)| sorted, Tglad's fold with its two limits and mirror, times 0.9,
+// the Menger scale 3, x and y less 2 and 1.6, z less 2 above 1, then c times 0.5 (option
+// addCpixel; Mandelbulber2 adds no other c).
+TEST(FractImport, MengerMiddleModFollowsMandelbulber2sOrbits) {
+    const OrbitCase c{
+        "formula_1 95;\nN 6;\n[fractal_1]\ntransf_addition_constantA_000 0,1 0 0;\n"
+        "transf_function_enabledBy_false true;\ntransf_addition_constant_111 1,1 1,3 0,7;\n"
+        "transf_addition_constantA_111 1,1 0,5 1,3;\ntransf_scale3D_111 1 0,7 1;\ntransf_scaleA_1 0,9;\n"
+        "transf_constant_multiplier_111 1 0,8 1;\ntransf_addCpixel_enabled_false true;\n"
+        "transf_constant_multiplierC_111 0,5 0,5 0,5;\n",
+        {"translate", "abs_fold", "menger_fold", "box_fold_general", "scale", "menger_scale", "add_c_axes"},
+        [](const vec3& v, const vec3& c) {
+            vec3 z = glm::abs(v + vec3(0.1, 0.0, 0.0));
+            if (z.x < z.y) std::swap(z.x, z.y);
+            if (z.x < z.z) std::swap(z.x, z.z);
+            if (z.y < z.z) std::swap(z.y, z.z);
+            const vec3 low(1.1, 1.3, 0.7), high(1.1, 0.5, 1.3), mirror(1.0, 0.7, 1.0);
+            z = glm::abs(z + low) - glm::abs(z - high) - z * mirror;
+            z *= 0.9 * 3.0;
+            z.x -= 2.0;
+            z.y -= 1.6;
+            if (z.z > 1.0) z.z -= 2.0;
+            return z + 0.5 * c;
+        }};
+    expectOrbitsFollowMandelbulber2(c);
+    // The box fold after the Menger fold and Tglad's fold with a term left undefined are refused.
+    expectRefused("formula_1 95;\n[fractal_1]\ntransf_function_enabledBx_false true;\n", "slot 1 (menger_middle_mod)",
+                  "box fold");
+    expectRefused(
+        "formula_1 95;\n[fractal_1]\ntransf_function_enabledBy_false true;\ntransf_function_enabledAy false;\n",
+        "slot 1 (menger_middle_mod)", "left undefined");
+    expectExampleImports("menger middle mod.fract");
 }
 
 // Mandelbulber2's example files that use these formulas import with nothing refused, but for the
@@ -2447,6 +2647,8 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         // fractal_rotation; formula/img abox_mod11's sphere fold on the Cpara curve.
         {gm + "Sierpinski 4D.fract", ""},
         {"formula/img/abox_mod11.fract", ""},
+        // Mandelbulber2's dIFS diagonal box: the box measured after the step, over its DE |s| + 1.
+        {"formula/img/difs_box_diagonal_v1.fract", ""},
     };
     // Two files at a time (each import's safe-step measurement and each render keep about one of
     // the two cores busy), each in files of its own.

@@ -473,6 +473,61 @@ void mapMengerSponge(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     b.add("menger_rotate", {N::f("scale", s), N::v("offset", vec3(2.0 / (s - 1.0)))});
 }
 
+int axisOrder(Reader& r, const std::string& key);
+
+// menger_middle_mod (MengerMiddleModIteration): |v + transf_addition_constantA_000| sorted, the main
+// rotation (window C), Tglad's fold with its two limits and mirror (transf_addition_constant_111,
+// transf_addition_constantA_111, transf_scale3D_111: option By) and transf_scaleA_1 after it
+// (window B), the Menger scale transf_scale_3 (window S), x and y less 2
+// transf_constant_multiplier_111 and z less its 2 z above 1 (or everywhere with
+// transf_function_enabled off), then c per axis in xyz order (transf_addCpixel_enabled_false).
+// The sphere inversion before it, the box fold (Bx), the fold with an axis off (its value then
+// undefined in Mandelbulber2), the varying scale and c in another order are refused.
+void mapMengerMiddleMod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_sphere_inversion_enabled_false", "the sphere inversion before the Menger step");
+    r.mustBeDefault("transf_function_enabledBx_false", "the box fold after the Menger fold");
+    r.mustBeDefault("transf_function_enabledF_false", "the scale varied with the iteration");
+    r.mustBeDefault("analyticDE_enabled_false", "a tweak of the running derivative");
+    const vec3 before = r.vector("transf_addition_constantA_000");
+    if (length(before) > 0.0) b.add("translate", {N::v("offset", before)});
+    b.add("abs_fold", {});
+    b.add("menger_fold", {});
+    if (r.boolean("mandelbox_main_rotation_enabled"))
+        inWindow(r, b, "C", "C", [&] { b.rotation(setRotation2(r.vector("mandelbox_rotation_main"))); });
+    if (r.boolean("transf_function_enabledBy_false")) {
+        for (const char* axis : {"x", "y", "z", "Ax", "Ay", "Az"})
+            if (!r.boolean(std::string("transf_function_enabled") + axis))
+                return r.unsupported(std::string("transf_function_enabled") + axis +
+                                     " false: Tglad's fold with a term left undefined");
+        b.add("box_fold_general", {N::v("low", r.vector("transf_addition_constant_111")),
+                                   N::v("high", r.vector("transf_addition_constantA_111")),
+                                   N::v("mirror", r.vector("transf_scale3D_111")), N::v("offset", vec3(0.0))});
+        const double after = r.number("transf_scaleA_1");
+        if (after != 1.0) inWindow(r, b, "B", "B", [&] { b.add("scale", {N::f("scale", after)}); });
+    }
+    const double s = r.number("transf_scale_3");
+    const vec3 m = r.vector("transf_constant_multiplier_111");
+    if (r.boolean("transf_function_enabled")) {
+        // z less 2 m.z only above 1: menger_scale with the corner 2 m / (s - 1), its threshold m.z.
+        r.mustBeDefault("transf_start_iterations_S", "the Menger scale in a window, its z shift above 1 in all");
+        r.mustBeDefault("transf_stop_iterations_S", "the Menger scale in a window, its z shift above 1 in all");
+        if (std::abs(m.z - 1.0) > 1e-9)
+            return r.unsupported("transf_constant_multiplier_111.z " + fmt(m.z) +
+                                 ": the z shift's threshold stays at 1");
+        if (std::abs(s - 1.0) < 1e-9)
+            return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+        b.add("menger_scale", {N::f("scale", s), N::v("offset", 2.0 * m / (s - 1.0))});
+    } else {
+        inWindow(r, b, "S", "S", [&] { b.add("scale", {N::f("scale", s)}); });
+        b.add("translate", {N::v("offset", -2.0 * m)});
+    }
+    if (!r.boolean("transf_addCpixel_enabled_false")) return;
+    if (axisOrder(r, "mandelbulbMulti_order_of_xyz_C") != 0)
+        return r.unsupported("mandelbulbMulti_order_of_xyz_C " + r.raw("mandelbulbMulti_order_of_xyz_C") +
+                             ": c's axes in an order other than xyz");
+    b.add("add_c_axes", {N::v("weights", r.vector("transf_constant_multiplierC_111")), N::f("julia", 0.0)});
+}
+
 void mapMengerMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const double s = r.number("transf_scale_3");
     const vec3 m = r.vector("transf_constant_multiplier_111");
@@ -535,6 +590,27 @@ void mapMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     // latitude, alpha on the azimuth): the sine bulb's theta_offset and phi_offset.
     b.add("mandelbulb_sine", {N::f("power", r.number("power")), N::f("theta_offset", r.number("beta_angle_offset")),
                               N::f("phi_offset", r.number("alpha_angle_offset"))});
+}
+
+// The Mandelbulb whose power varies with the iteration (mandelbulb_vary_power_v1): the sine bulb of
+// Mandelbulber2's power n before transf_start_iterations_250, n + transf_offset_0 (i - start) /
+// (stop - start) on iteration i of [start, stop) (stop transf_stop_iterations), n +
+// transf_offset_0 from stop on; one bulb a window. A ramp over more than 16 iterations is refused.
+void mapMandelbulbVaryPowerV1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const double power = r.number("power"), offset = r.number("transf_offset_0");
+    const int start = r.integer("transf_start_iterations_250"), stop = r.integer("transf_stop_iterations");
+    auto bulb = [&](int from, int to, double n) {
+        b.within(from, to, [&] {
+            b.add("mandelbulb_sine", {N::f("power", n), N::f("theta_offset", r.number("beta_angle_offset")),
+                                      N::f("phi_offset", r.number("alpha_angle_offset"))});
+        });
+    };
+    if (offset == 0.0) return bulb(0, kMaxIterations, power);
+    if (stop - start > 16)
+        return r.unsupported("the power varied over " + std::to_string(stop - start) + " iterations");
+    bulb(0, std::min(start, stop), power);
+    for (int i = std::max(start, 0); i < stop; ++i) bulb(i, i + 1, power + offset * (i - start) / (stop - start));
+    bulb(std::max(stop, 0), kMaxIterations, power + offset);
 }
 
 // White's power-2 triplex, z' = -2 z sqrt(x^2 + y^2): the latitude bulb of power 2, z mirrored.
@@ -1393,11 +1469,16 @@ void difsFolds(Reader& r, NodeBuilder& b, bool sphere) {
     if (sphere) fold("transf_function_enabledCy_false", "Cy", vec3(-1.0, 1.0, 0.0), 0.0);
 }
 
-// The scale about the reverse offsets (window S; x's offset in window E, y's in F), varying in
-// window K with option K; then offset_001 and the turn.
-void difsScaleAndTurn(Reader& r, NodeBuilder& b) {
+// The scale about the reverse offsets (window S; x's offset in window E, y's in F: transf_offsetE_2
+// and _F_2, or with `reverse0` transf_offsetE_0 and _F_0), varying in window K with option K; then
+// offset_001 (in window H with `offsetInH`) and the turn. With `exactDerivative` the running
+// derivative follows Mandelbulber2's DE |s| + 1 itself (a derivative_tweak adding the 1 after
+// the scale), so that a shape measured after the step divides by it alone.
+void difsScaleAndTurn(Reader& r, NodeBuilder& b, bool reverse0 = false, bool offsetInH = false,
+                      bool exactDerivative = false) {
     const bool varies = difsScaleVaries(r);
-    const double e = r.number("transf_offsetE_2"), f = r.number("transf_offsetF_2");
+    const double e = r.number(reverse0 ? "transf_offsetE_0" : "transf_offsetE_2");
+    const double f = r.number(reverse0 ? "transf_offsetF_0" : "transf_offsetF_2");
     acrossWindows(r, r.integer("transf_start_iterations_S"), r.integer("transf_stop_iterations_S"), {"E", "F", "K"},
                   [&](int start, int stop, const std::vector<bool>& covered) {
                       b.within(start, stop, [&] {
@@ -1406,10 +1487,16 @@ void difsScaleAndTurn(Reader& r, NodeBuilder& b) {
                                                N::f("limit", r.number("transf_scaleC_1")),
                                                N::f("update", varies && covered[2] ? 1.0 : 0.0),
                                                N::v("center", vec3(covered[0] ? e : 0.0, covered[1] ? f : 0.0, 0.0))});
+                          if (exactDerivative) b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", 1.0)});
                       });
                   });
     const vec3 offset = r.vector("transf_offset_001");
-    if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+    if (length(offset) > 0.0) {
+        if (offsetInH)
+            inWindow(r, b, "H", "H", [&] { b.add("translate", {N::v("offset", offset)}); });
+        else
+            b.add("translate", {N::v("offset", offset)});
+    }
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
 }
 
@@ -1442,6 +1529,64 @@ void mapDifsSphere(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     difsFolds(r, b, true);
     difsScaleAndTurn(r, b);
 }
+
+// Mandelbulber2's dIFS diagonal boxes (difs_box_diagonal_v1, _v3: DIFSBoxDiagonalV1Iteration and
+// V3 in formula/opencl of 2.20): folds, the scale about the reverse offsets (transf_offsetE_0,
+// _F_0) and the turn of the dIFS formulas above, the running derivative carried as Mandelbulber2's
+// DE |s| + 1, then the box of half-sizes transf_addition_constant_111 measured at the point the
+// iteration ends on, over that derivative; with option Y at the point it started from, over the
+// derivative after the scale, as the cylinder. V1 swaps x and y where x > y (window Cx), takes |x|, |y| (windows
+// X, Y) and subtracts transf_addition_constantA_111's x and y (window A) whatever its options say;
+// V3 subtracts surfBox_offset1A_111 (option A), takes the abs of its options Ax, Ay, Az, swaps
+// where y > x (Cx), subtracts transf_addition_constantA_111 (B) and folds Tglad's way at
+// transf_offsetA_000 (I). The box's curved and pyramid sides and V3's polygonal fold are refused.
+void mapDifsBoxDiagonal(Reader& r, NodeBuilder& b, bool v3) {
+    r.mustBeDefault("transf_function_enabledT_false", "the box's sides curved by z^2");
+    r.mustBeDefault("transf_function_enabledM_false", "the box narrowed along z (a pyramid)");
+    if (v3) r.mustBeDefault("transf_function_enabledP_false", "the polygonal fold");
+    const vec3 size = r.vector("transf_addition_constant_111");
+    const bool atStart = r.boolean("transf_function_enabledY_false");
+    if (atStart) difsShape(r, b, "difs_box", {N::v("size", size)}, {});
+    auto fold = [&](bool on, const std::string& window, const vec3& normal, double offset) {
+        if (on)
+            inWindow(r, b, window, window, [&] {
+                b.add("plane_fold", {N::v("normal", normal), N::f("offset", offset)});
+            });
+    };
+    auto shift = [&](bool on, const std::string& window, const vec3& by) {
+        if (on) inWindow(r, b, window, window, [&] { b.add("translate", {N::v("offset", -by)}); });
+    };
+    const vec3 boxFold = r.vector("transf_addition_constantA_111");
+    if (v3) {
+        shift(r.boolean("transf_function_enabledA_false"), "A", r.vector("surfBox_offset1A_111"));
+        fold(r.boolean("transf_function_enabledAx"), "X", vec3(1.0, 0.0, 0.0), 0.0);
+        fold(r.boolean("transf_function_enabledAy"), "Y", vec3(0.0, 1.0, 0.0), 0.0);
+        fold(r.boolean("transf_function_enabledAz_false"), "Z", vec3(0.0, 0.0, 1.0), 0.0);
+        fold(r.boolean("transf_function_enabledCx_false"), "Cx", vec3(1.0, -1.0, 0.0), 0.0);
+        shift(r.boolean("transf_function_enabledB_false"), "B", boxFold);
+        if (r.boolean("transf_function_enabledI_false"))
+            inWindow(r, b, "I", "I", [&] {
+                const vec3 limit = r.vector("transf_offsetA_000");
+                b.add("box_fold_general",
+                      {N::v("low", limit), N::v("high", limit), N::v("mirror", vec3(1.0)), N::v("offset", vec3(0.0))});
+            });
+    } else {
+        fold(true, "Cx", vec3(-1.0, 1.0, 0.0), 0.0);
+        fold(true, "X", vec3(1.0, 0.0, 0.0), 0.0);
+        fold(true, "Y", vec3(0.0, 1.0, 0.0), 0.0);
+        shift(true, "A", vec3(boxFold.x, boxFold.y, 0.0));
+    }
+    fold(r.boolean("transf_function_enabledC_false"), "C", vec3(1.0, 0.0, 0.0), r.number("transf_offsetC_0"));
+    fold(r.boolean("transf_function_enabledD_false"), "D", vec3(0.0, 1.0, 0.0), r.number("transf_offsetD_0"));
+    if (v3) fold(r.boolean("transf_function_enabledCy_false"), "Cy", vec3(1.0, -1.0, 0.0), 0.0);
+    difsScaleAndTurn(r, b, true, v3, true);
+    if (atStart) return;
+    b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), [&] {
+        b.add("difs_box", {N::v("size", size), N::f("w_scale", 1.0), N::f("w_offset", 0.0), N::f("w_vary", 0.0)});
+    });
+}
+void mapDifsBoxDiagonalV1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { mapDifsBoxDiagonal(r, b, false); }
+void mapDifsBoxDiagonalV3(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { mapDifsBoxDiagonal(r, b, true); }
 
 // msltoe's sym2 mod and eiffie's variant share their parameters.
 void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
@@ -1917,6 +2062,10 @@ constexpr Mapping kMappings[] = {
     {1613, mapTransfDifsGrid},
     {603, mapDifsCylinder},
     {604, mapDifsSphere},
+    {600, mapDifsBoxDiagonalV1},
+    {78, mapMandelbulbVaryPowerV1},
+    {95, mapMengerMiddleMod},
+    {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
     {93, mapMandelbulbKaliMulti},
     {105, mapBenesiPwr2Mandelbulb},
