@@ -656,7 +656,9 @@ class Scanner {
         // __VERSION__: the caller's, else the frag's own #version, else GLSL's default (110).
         version_ = version;
         if (version_ == 0) {
-            const auto d = directiveOf(out.glsl.substr(0, out.glsl.find('\n')));
+            // A view of the first line: the directive's words are views into it.
+            const std::string_view firstLine = std::string_view(out.glsl).substr(0, out.glsl.find('\n'));
+            const auto d = directiveOf(firstLine);
             if (d && d->word == "version") version_ = parseInteger(firstWord(d->rest)).value_or(110);
         }
         if (version_ == 0) version_ = 110;
