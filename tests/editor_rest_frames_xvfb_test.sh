@@ -11,6 +11,8 @@
 # Usage: editor_rest_frames_xvfb_test.sh FRAKTAL PRESET_DIR
 set -eu
 . "$(dirname "$0")/editor_xvfb_helpers.sh"
+# The refinement at rest is what this story measures: the document's own AA cap.
+story_aa_cap=
 fraktal=$1
 presets=$2
 log="$home/frames.jsonl"

@@ -241,6 +241,18 @@ TEST(UndoDerived, LabelsUseThePanelsWords) {
                   },
                   bulb),
               "change of palette");
+    // The window a node runs in, with the factor measured for its new structure and the tag of
+    // that structure.
+    EXPECT_EQ(label(
+                  [](Document& d) {
+                      d.preset.formula.nodes[0].start = 2;
+                      d.preset.formula.nodes[0].stop = 5;
+                      d.preset.formula.deFactor = 0.5;
+                      d.preset.formula.deFactorMeasuredFor = "measured";
+                  },
+                  bulb),
+              "change of iteration window");
+    EXPECT_EQ(label([](Document& d) { d.preset.formula.nodes[0].period = 2; }, bulb), "change of period");
     EXPECT_EQ(label([](Document& d) { d.preset.camera.fovY = 30.0; }, bulb), "change of field of view");
     EXPECT_EQ(label([](Document& d) { d.preset.shading.fogDensity = 0.3; }, bulb), "change of fog density");
     EXPECT_EQ(label([](Document& d) { d.preset.formula.boundRadius = 2.0; }, bulb), "change of bound radius");

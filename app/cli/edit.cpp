@@ -26,6 +26,7 @@ struct EditOptions {
     std::string exportSize;
     std::string dropReplay;
     bool fullUiRedraw = false;
+    int aaCapLimit = 0;
 };
 
 int runEdit(const EditOptions& o) {
@@ -43,6 +44,7 @@ int runEdit(const EditOptions& o) {
     e.frameLog = o.frameLog;
     e.dropReplay = o.dropReplay;
     e.uiCache = !o.fullUiRedraw;
+    e.aaCapLimit = o.aaCapLimit;
     if (!o.exportSize.empty() && std::sscanf(o.exportSize.c_str(), "%dx%d", &e.exportWidth, &e.exportHeight) != 2) {
         std::fprintf(stderr, "fraktal: --export-size: '%s' is not WIDTHxHEIGHT\n", o.exportSize.c_str());
         return 2;
@@ -83,6 +85,10 @@ void addEditCommand(CLI::App& app, Action& action) {
     cmd->add_option("--replay-drops", o->dropReplay,
                     "When this file appears, drop the files it lists (one a line) on the window, through the "
                     "window's drop callback, and remove it (for tests)");
+    cmd->add_option("--aa-cap", o->aaCapLimit,
+                    "Stop the viewport's anti-aliasing at this many samples per pixel on this machine (the "
+                    "document's own cap is kept and saved)")
+        ->check(CLI::Range(1, 256));
     cmd->add_flag("--full-ui-redraw", o->fullUiRedraw,
                   "Draw every window on every frame, also during a camera drag (for comparisons)");
     cmd->callback([&action, o] { action = [o] { return runEdit(*o); }; });

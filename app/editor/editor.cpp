@@ -249,13 +249,15 @@ const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, 
     updateCamera(s);
     viewport.setPresetFile(s.file.path.string());
     const ExportFrame frame = exportFrameOf(s);
+    ViewSettings view = s.doc.view;
+    if (s.aaCapLimit > 0) view.aaCap = std::min(view.aaCap, s.aaCapLimit);
     // The frame's one revision of the scene: every part of the viewport decides on it.
     if (frame.viewFovY == s.doc.preset.camera.fovY) {
-        viewport.render(s.doc.preset, scene::sceneRevision(s.doc.preset, structure), s.doc.view, width, height);
+        viewport.render(s.doc.preset, scene::sceneRevision(s.doc.preset, structure), view, width, height);
     } else {  // a wider export: the viewport widens its view to hold the whole export frame
         Preset shown = s.doc.preset;
         shown.camera.fovY = frame.viewFovY;
-        viewport.render(shown, scene::sceneRevision(shown, structure), s.doc.view, width, height);
+        viewport.render(shown, scene::sceneRevision(shown, structure), view, width, height);
     }
     drawViewportImage(s, viewport.displayTexture());
     drawExportGuide(s, frame);
@@ -379,6 +381,7 @@ int runEditor(const EditorOptions& o) {
             if (o.frames > 0) status = 2;  // a scripted run must not pass with the wrong scene
         }
         s.panels.selectTab = o.sidebarTab;
+        s.aaCapLimit = o.aaCapLimit;
         if (o.exportWidth > 0 && o.exportHeight > 0) {
             s.exportJob.options.sizeIndex = int(std::size(kExportSizes)) - 1;  // Custom
             s.exportJob.options.width = std::clamp(o.exportWidth, 16, 65536);

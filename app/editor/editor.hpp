@@ -21,6 +21,7 @@ struct EditorOptions {
     int exportWidth = 0, exportHeight = 0;  // > 0: the export dialog's size at start (Custom)
     std::filesystem::path dropReplay;       // tests: files listed here are dropped on the window
     bool uiCache = true;                    // false: every frame draws every window (viewport/ui_redraw.hpp)
+    int aaCapLimit = 0;                     // > 0: the viewport's AA cap at most this (the document keeps its own)
 };
 
 // Returns the process exit status. With no display it prints why and points to

@@ -119,6 +119,10 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                                {"showing", viewport->pathTracing ? "path" : "fast"},
                                {"pathSpp", viewport->pathTracing ? viewport->pathSamples : 0},
                                {"pathSppCap", s.doc.view.pathSppCap},
+                               // The fast mode's samples per pixel and the cap it stops at (the
+                               // document's, or `fraktal edit --aa-cap` where that is lower).
+                               {"aaSamples", viewport->aaLevel},
+                               {"aaCap", viewport->aaCap},
                                {"modeCombo", widgetRect(s.layout, "Render mode")}};
     j["sceneTab"] = s.layout.sceneTab;
     j["popupOpen"] = s.layout.popupOpen;

@@ -128,9 +128,11 @@ std::string lightListChange(const std::vector<Light>& before, const std::vector<
 }
 
 // Fields the editor derives from the document after an edit, not set by the user in that step:
-// the step factor measured for a new structure (AutoStepFactor). Named only when nothing else
-// changed (the factor set by hand).
-bool isDerived(const std::string& pointer) { return pointer == "/formula/deFactor"; }
+// the step factor measured for a new structure (AutoStepFactor) and the structure it was
+// measured for. Named only when nothing else changed (the factor set by hand).
+bool isDerived(const std::string& pointer) {
+    return pointer == "/formula/deFactor" || pointer == "/formula/deFactorMeasuredFor";
+}
 
 // JSON names whose panel label is not their name in words (core/preset.cpp, lighting.cpp,
 // document.cpp write them; the panels label them). A block parameter's name is its widget's
@@ -142,6 +144,9 @@ const std::map<std::string, std::string, std::less<>>& fieldLabels() {
         {"boundRadius", "bound radius"},
         {"enabled", "on/off"},
         {"hitRule", "hit rule"},
+        // A node's window of iterations (its From and Before fields).
+        {"start", "iteration window"},
+        {"stop", "iteration window"},
         // Camera tab.
         {"fovY", "field of view"},
         {"flipVertical", "vertical flip"},

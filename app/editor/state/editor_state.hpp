@@ -171,6 +171,9 @@ struct EditorState {
     ParamWidgetsShown paramWidgets;              // the parameter widgets drawn this frame (state file)
     ClampReports clampReports;                   // values typed outside a slider's range, for the status line
     LightsPanel lights;                          // the Lights tab's selection, typed map path, focus pick
+    // `fraktal edit --aa-cap N`: the viewport stops its anti-aliasing at N samples per pixel on this
+    // machine, whatever the document's cap (which is saved as it is); 0 for the document's.
+    int aaCapLimit = 0;
 };
 
 bool isDirty(const EditorState& s);
