@@ -19,6 +19,9 @@ class FormulaSampler {
     virtual ~FormulaSampler() = default;
     virtual const Formula& formula() const = 0;
     virtual void evaluate(std::span<const vec3> points, std::span<Evaluation> out) = 0;
+    // Whether evaluate may be called from several threads at once (the CPU's pure functions; a GL
+    // probe has one context).
+    virtual bool concurrent() const { return false; }
 };
 
 class CpuSampler final : public FormulaSampler {
@@ -28,6 +31,7 @@ class CpuSampler final : public FormulaSampler {
     void evaluate(std::span<const vec3> points, std::span<Evaluation> out) override {
         for (size_t i = 0; i < points.size(); ++i) out[i] = fraktal::evaluate(formula_, points[i]);
     }
+    bool concurrent() const override { return true; }
 
    private:
     const Formula& formula_;
@@ -51,6 +55,9 @@ struct ConservativenessOptions {
     int rays = 200;
     int stepsAcrossBound = 4000;  // baseline step = 2 * boundRadius / stepsAcrossBound
     uint64_t seed = 1;
+    // Threads that march the rays when the sampler is concurrent (0: one a core). The samples
+    // are the same whatever the count: each ray is drawn first and marched alone.
+    int threads = 0;
 };
 
 struct ConservativenessReport {

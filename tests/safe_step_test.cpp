@@ -459,6 +459,28 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
 // heavy tail (Pareto, as after a Kleinian wrap) is projected far beyond the sampled worst,
 // which alone would rarely cover the fresh rays; and one ray far above others at a ceiling (a
 // rare overshoot) raises the projection well above that ray.
+// The check's rays are marched on several threads (ConservativenessOptions::threads): on every
+// shipped 3D preset the samples, their true distances and the rays' ends are the same, bit for
+// bit, as on one thread.
+TEST(SafeStep, RaysMarchedOnSeveralThreadsGiveTheSameSamples) {
+    int compared = 0;
+    for (const auto& file : test::shippedPresets()) {
+        const Preset preset = loadPreset(file.string());
+        CpuSampler sampler(preset.formula);
+        ConservativenessOptions one{24, 600, 7, 1}, several{24, 600, 7, 3};
+        const RaySamples a = sampleRays(sampler, preset.camera, one), b = sampleRays(sampler, preset.camera, several);
+        SCOPED_TRACE(file.filename().string());
+        EXPECT_EQ(a.rays, b.rays);
+        EXPECT_EQ(a.raysHit, b.raysHit);
+        EXPECT_EQ(a.rayEnds, b.rayEnds);
+        EXPECT_EQ(a.distances, b.distances);
+        ASSERT_EQ(a.points.size(), b.points.size());
+        for (size_t i = 0; i < a.points.size(); ++i) ASSERT_EQ(a.points[i], b.points[i]) << "sample " << i;
+        compared += a.raysHit > 0;
+    }
+    EXPECT_GT(compared, 10) << "too few presets whose rays meet the object";
+}
+
 TEST(SafeStep, TheSampledRaysTailProjectsTheWorstOverMoreRays) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(0.0, 1.0);
