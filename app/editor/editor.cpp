@@ -373,6 +373,12 @@ int runEditor(const EditorOptions& o) {
         viewport->setSlicedAtRest(o.frames == 0);
         PlaneViewport planeViewport(*s.color);
         ThumbnailRenderer thumbnails;
+        // The thumbnails' programs compile on a worker of their own, with a hidden context of its own.
+        GLFWwindow* thumbnailContext = glfwCreateWindow(1, 1, "fraktal thumbnails", nullptr, window);
+        if (thumbnailContext)
+            thumbnails.compiler =
+                std::make_unique<BackgroundCompiler>([thumbnailContext] { glfwMakeContextCurrent(thumbnailContext); },
+                                                     [] { glfwMakeContextCurrent(nullptr); });
         UiRedrawState uiRedraw;
         UiLayerCache uiLayers;
         newDocument(s);
@@ -403,7 +409,7 @@ int runEditor(const EditorOptions& o) {
             const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
             const bool compiling = !s.doc.plane && viewport->stats().compiling;
             const bool busy = o.frames > 0 || !settled || compiling || exportActive(s.exportJob) ||
-                              ImGui::IsAnyMouseDown() || s.input.pending();
+                              s.browser.rendering || ImGui::IsAnyMouseDown() || s.input.pending();
             if (busy)
                 glfwPollEvents();
             else
@@ -450,7 +456,7 @@ int runEditor(const EditorOptions& o) {
             drawShortcutHelp(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);
             s.layout.popupOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
-            if (s.browser.visible) renderNextThumbnail(thumbnails, s.browser, *s.color);
+            s.browser.rendering = s.browser.visible && renderNextThumbnail(thumbnails, s.browser, *s.color);
             reportClamps.reset();
             // A typed value the slider brought into its range: said on the next frame's status line.
             if (const std::optional<ClampNotice> clamped = s.clampReports.take())
@@ -490,7 +496,8 @@ int runEditor(const EditorOptions& o) {
                 const float viewportRect[4] = {s.layout.viewportX, s.layout.viewportY, s.layout.viewportW,
                                                s.layout.viewportH};
                 if (!s.doc.plane)
-                    logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect, uiDraw);
+                    logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect, uiDraw,
+                             s.browser.rendering);
             };
             // A scripted run counts frames the viewport drew, not frames spent waiting for a compile.
             if (o.frames > 0 && !(!s.doc.plane && viewport->stats().compiling) &&
@@ -543,6 +550,9 @@ int runEditor(const EditorOptions& o) {
         closeFrameLog(frameLog);
         finishExport(s.exportJob);
         releaseThumbnails(s.browser);
+        thumbnails.viewport.reset();
+        thumbnails.compiler.reset();  // joins its worker, which releases the hidden context
+        if (thumbnailContext) glfwDestroyWindow(thumbnailContext);
         endSession(s.autosave);
         viewport.reset();
         s.eyeDistance.release();

@@ -107,6 +107,14 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                         {"replaceAsked", !b.replace.empty()},
                         {"recentFolders", folders},
                         {"recentFiles", s.file.recent}};
+    // The Presets tab's thumbnails: how many, rendered, that cannot render, and whether the
+    // frames still render them.
+    int rendered = 0, failed = 0;
+    for (const Thumbnail& t : s.browser.entries) rendered += t.texture != 0, failed += t.failed;
+    j["presetBrowser"] = {{"entries", s.browser.entries.size()},
+                          {"rendered", rendered},
+                          {"failed", failed},
+                          {"rendering", s.browser.rendering}};
     j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
     j["compileError"] = compileError;
     j["viewportSettled"] = viewportSettled;

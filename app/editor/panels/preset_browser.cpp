@@ -1,5 +1,5 @@
 // The presets tab: recent files, then a thumbnail grid of the shipped presets/ folder and the
-// user's own folder. Thumbnails are rendered one per frame by thumbnails.cpp.
+// user's own folder. Thumbnails are rendered by thumbnails.cpp, a few milliseconds a frame.
 #include <imgui.h>
 
 #include <algorithm>

@@ -111,7 +111,8 @@ struct Thumbnail {
 struct PresetBrowser {
     std::vector<Thumbnail> entries;
     bool scanned = false;
-    bool visible = false;                        // the tab was drawn this frame: thumbnails render only then
+    bool visible = false;    // the tab was drawn this frame: thumbnails render only then
+    bool rendering = false;  // shown with thumbnails missing: the next frames render them (the window stays busy)
     std::vector<std::filesystem::path> folders;  // shipped presets/, then the user's folder
 };
 

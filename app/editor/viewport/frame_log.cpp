@@ -14,7 +14,7 @@ void openFrameLog(FrameLog& log, const std::filesystem::path& path) {
 }
 
 void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4],
-              UiDraw ui) {
+              UiDraw ui, bool thumbnails) {
     if (!log.file) return;
     const double frameMs = log.lastFrameAt < 0.0 ? 0.0 : (now - log.lastFrameAt) * 1000.0;
     log.lastFrameAt = now;
@@ -30,6 +30,7 @@ void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camer
                                  {"settled", stats.settled},
                                  {"action", stats.action},
                                  {"ui", uiDrawName(ui)},
+                                 {"thumbnails", thumbnails},
                                  {"viewport", {viewport[0], viewport[1], viewport[2], viewport[3]}},
                                  {"camera",
                                   {{"position", vec(camera.position)},

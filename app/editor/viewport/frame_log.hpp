@@ -22,9 +22,10 @@ struct FrameLog {
 void openFrameLog(FrameLog& log, const std::filesystem::path& path);
 // Appends the frame that just ended at `now` (seconds) and flushes, so a killed editor leaves a
 // complete log up to its last frame.
-// `viewport`: the viewport's rectangle in the window (x, y, width, height).
+// `viewport`: the viewport's rectangle in the window (x, y, width, height); `thumbnails`: the
+// Presets tab's thumbnails are still rendering (the next frame starts without waiting for input).
 void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4],
-              UiDraw ui = UiDraw::Full);
+              UiDraw ui = UiDraw::Full, bool thumbnails = false);
 void closeFrameLog(FrameLog& log);
 
 }  // namespace fraktal::editor
