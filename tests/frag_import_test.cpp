@@ -303,3 +303,43 @@ TEST(FragImport, BuiltInIncludesKeepFragMsConventions) {
         EXPECT_NEAR(samples.at(0).distance, expected[k] * p.formula.deFactor, 1e-5) << "probe " << k;
     }
 }
+
+// The command line: `fraktal import FILE.frag` writes a preset that loads, names the whole DE,
+// takes --preset and --include-dir, refuses with the reason and a non-zero exit (nothing
+// written) unless --lenient; `fraktal render` opens a .frag directly.
+TEST(FragImport, CommandLine) {
+    const test::Sandbox box("fraktal_frag_import_");
+    const std::string menger = fragPath("menger.frag").string();
+    const auto imported = test::runCli("import '" + menger + "' --preset Twisted -o '" + box.path("m.json") + "'");
+    ASSERT_EQ(imported.exitCode, 0) << imported.output;
+    EXPECT_NE(imported.output.find("whole DE 'frag_menger' (5 parameters"), std::string::npos) << imported.output;
+    const Preset p = loadPreset(box.path("m.json"));
+    EXPECT_EQ(p.camera.position, vec3(0.0, 0.0, 5.0)) << "the Twisted preset's eye";
+
+    // An include that is not built in resolves from --include-dir; without it the error names it.
+    const std::string includer = box.write("uses_include.frag",
+                                           "#include \"MyShapes.frag\"\n"
+                                           "#include \"DE-Raytracer.frag\"\n"
+                                           "float DE(vec3 p) { return ball(p); }\n");
+    std::filesystem::create_directories(box.dir / "lib");
+    box.write("lib/MyShapes.frag", "#donotrun\nfloat ball(vec3 p) { return length(p) - 1.0; }\n");
+    const auto missing = test::runCli("import '" + includer + "' -o '" + box.path("i.json") + "'");
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_NE(missing.output.find("MyShapes.frag"), std::string::npos) << missing.output;
+    const auto found = test::runCli("import '" + includer + "' --include-dir '" + box.path("lib") + "' -o '" +
+                                    box.path("i.json") + "'");
+    EXPECT_EQ(found.exitCode, 0) << found.output;
+
+    const std::string time = fragPath("refuse_time.frag").string();
+    const auto refused = test::runCli("import '" + time + "' -o '" + box.path("t.json") + "'");
+    EXPECT_NE(refused.exitCode, 0);
+    EXPECT_NE(refused.output.find("reads `time`"), std::string::npos) << refused.output;
+    EXPECT_FALSE(std::filesystem::exists(box.path("t.json"))) << "nothing written";
+    const auto lenient = test::runCli("import --lenient '" + time + "' -o '" + box.path("t.json") + "'");
+    EXPECT_EQ(lenient.exitCode, 0) << lenient.output;
+    EXPECT_NE(lenient.output.find("dropped: uniform time"), std::string::npos) << lenient.output;
+
+    const auto render = test::runCli("render '" + menger + "' -o '" + box.path("m.exr") + "' --size 32x24 --spp 1 -q");
+    EXPECT_EQ(render.exitCode, 0) << render.output;
+    EXPECT_TRUE(std::filesystem::exists(box.path("m.exr")));
+}
