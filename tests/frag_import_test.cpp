@@ -343,3 +343,16 @@ TEST(FragImport, CommandLine) {
     EXPECT_EQ(render.exitCode, 0) << render.output;
     EXPECT_TRUE(std::filesystem::exists(box.path("m.exr")));
 }
+
+// A uniform of a kind fraktal's parameters lack (a vec4 slider) is named and refuses the file;
+// lenient, it keeps the preset's value as a constant in the DE.
+TEST(FragImport, UnmappableUniformIsNamedAndKeptAsAConstantWhenLenient) {
+    const std::string why = refusal("unmappable.frag");
+    EXPECT_NE(why.find("uniform Offset4: a slider of type vec4 has no fraktal parameter"), std::string::npos) << why;
+    const Preset p = importFrag("unmappable.frag", {.lenient = true}).preset;
+    EXPECT_TRUE(p.formula.estimator.block->params.empty());
+    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("vec4(p, 0.0) - (vec4(0.25, 0.0, 0.0, 0.0))"),
+              std::string::npos)
+        << p.formula.estimator.block->glsl;
+    EXPECT_NE(p.description.find("Offset4"), std::string::npos) << p.description;
+}

@@ -88,9 +88,8 @@ std::string constantOf(const FragUniform& u, std::vector<double> values) {
     const std::string& t = u.type;
     if (t == "bool") return !values.empty() && values[0] != 0.0 ? "true" : "false";
     if (t == "int") return std::to_string(values.empty() ? 0 : int(std::lround(values[0])));
-    int n = 1;
-    if (t.size() == 4 && (t.starts_with("vec") || t.starts_with("dve"))) n = t.back() - '0';
-    if (t.starts_with("dvec")) n = t.back() - '0';
+    // vecN and dvecN: N components; the scalars one.
+    const int n = t.starts_with("vec") || t.starts_with("dvec") ? t.back() - '0' : 1;
     values.resize(size_t(n), 0.0);
     if (n == 1) return number(values[0]);
     std::string s = "vec" + std::to_string(n) + "(";
