@@ -124,6 +124,9 @@ struct BlockDescOf {
     EstimateFn estimate = nullptr;  // estimators
     MembershipT membership{};       // the family's first kind unless the estimator says
     bool custom = false;            // a user's GLSL block (core/custom_block.hpp): no CPU body
+    // A custom estimator whose GLSL is global-scope code defining `float DE(vec3)` (an imported
+    // Fragmentarium DE): it computes the whole distance, so its formula has no other nodes.
+    bool wholeDE = false;
     // A gradient twin names the estimator whose orbit value it differentiates (the same
     // parameters), so that the check measures the two side by side; it reads P4::orbitGradient,
     // for which the formula runs four more orbits per estimate.

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/preset.hpp"
+#include "core/whole_de.hpp"
 
 namespace fraktal {
 
@@ -65,8 +66,10 @@ std::string CustomBlock::validate(const Definition& d) {
     if (!std::regex_match(d.id, kIdentifier) || d.id.size() > 64)
         return "id: '" + d.id + "' is not a name (a letter, then letters, digits or _; at most 64)";
     if (findBlock(d.id)) return "id: '" + d.id + "' is a built-in block";
-    if (d.params.size() > size_t(kMaxCustomParams))
-        return "params: more than " + std::to_string(kMaxCustomParams) + " parameters";
+    if (d.wholeDE && d.category != Category::Estimator)
+        return "wholeDE: a whole DE computes the distance, so its category is estimator";
+    const int maxParams = d.wholeDE ? kMaxWholeDEParams : kMaxCustomParams;
+    if (d.params.size() > size_t(maxParams)) return "params: more than " + std::to_string(maxParams) + " parameters";
     std::set<std::string> names;
     for (size_t i = 0; i < d.params.size(); ++i) {
         const auto& p = d.params[i];
@@ -85,8 +88,16 @@ std::string CustomBlock::validate(const Definition& d) {
             if (p.defaultValue[k] < p.min || p.defaultValue[k] > p.max) return where + ".default: outside [min, max]";
     }
     if (d.glsl.empty()) return "glsl: empty";
-    if (d.glsl.size() > kMaxCustomGlslBytes)
-        return "glsl: longer than " + std::to_string(kMaxCustomGlslBytes) + " bytes";
+    const size_t maxBytes = d.wholeDE ? kMaxWholeDEGlslBytes : kMaxCustomGlslBytes;
+    if (d.glsl.size() > maxBytes) return "glsl: longer than " + std::to_string(maxBytes) + " bytes";
+    if (d.wholeDE) {
+        if (std::count(d.glsl.begin(), d.glsl.end(), '\n') >= kMaxWholeDELines)
+            return "glsl: more than " + std::to_string(kMaxWholeDELines) + " lines";
+        std::vector<std::string> params;
+        for (const auto& p : d.params) params.push_back(p.name);
+        if (std::string why = wholeDEProblem(d.glsl, params); !why.empty()) return "glsl: " + why;
+        return {};
+    }
     if (std::string why = findForbidden(d.glsl); !why.empty()) return "glsl: " + why;
     if (d.category == Category::Estimator && d.glsl.find("return") == std::string::npos)
         return "glsl: an estimator must return the distance";
@@ -103,6 +114,7 @@ CustomBlock::CustomBlock(Definition d) : def_(std::move(d)) {
                       .glsl = def_.glsl};
     desc_.membership = def_.membership;
     desc_.custom = true;
+    desc_.wholeDE = def_.wholeDE;
     // Unknown GLSL bounds nothing (DerivativeBound::None): the check's note says so in these words.
     desc_.jump = "a GLSL block declares no bound, so its map may jump anywhere";
 }
@@ -117,7 +129,8 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
         throw PresetError(file, field.empty() ? path : path + "." + field, reason);
     };
     if (!j.is_object()) fail("", "expected an object describing a custom block");
-    static const std::set<std::string> known{"id", "label", "help", "category", "membership", "params", "glsl"};
+    static const std::set<std::string> known{"id",         "label",  "help", "category",
+                                             "membership", "params", "glsl", "wholeDE"};
     for (const auto& [key, value] : j.items())
         if (!known.count(key)) fail(key, "unknown field");
     auto text = [&](const char* key, bool required, size_t maxLength) {
@@ -142,12 +155,16 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
         d.membership = Membership::EscapeTime;
     else if (!membership.empty() && membership != "distance")
         fail("membership", "expected distance or escape");
-    d.glsl = text("glsl", true, kMaxCustomGlslBytes);
+    if (j.contains("wholeDE")) {
+        if (!j["wholeDE"].is_boolean()) fail("wholeDE", "expected true or false");
+        d.wholeDE = j["wholeDE"].get<bool>();
+    }
+    d.glsl = text("glsl", true, d.wholeDE ? kMaxWholeDEGlslBytes : kMaxCustomGlslBytes);
     if (j.contains("params")) {
         const auto& params = j["params"];
         if (!params.is_array()) fail("params", "expected an array");
-        if (params.size() > size_t(kMaxCustomParams))
-            fail("params", "more than " + std::to_string(kMaxCustomParams) + " parameters");
+        const int maxParams = d.wholeDE ? kMaxWholeDEParams : kMaxCustomParams;
+        if (params.size() > size_t(maxParams)) fail("params", "more than " + std::to_string(maxParams) + " parameters");
         for (size_t i = 0; i < params.size(); ++i) {
             const std::string where = "params[" + std::to_string(i) + "]";
             const auto& pj = params[i];
@@ -162,7 +179,8 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
                 return v;
             };
             for (const auto& [key, value] : pj.items())
-                if (key != "name" && key != "type" && key != "default" && key != "min" && key != "max" && key != "help")
+                if (key != "name" && key != "type" && key != "default" && key != "min" && key != "max" &&
+                    key != "help" && key != "group")
                     fail(where + "." + key, "unknown field");
             if (!pj.contains("name") || !pj["name"].is_string()) fail(where + ".name", "expected a string");
             p.name = pj["name"].get<std::string>();
@@ -197,6 +215,11 @@ std::shared_ptr<const CustomBlock> parseCustomBlock(const nlohmann::json& j, con
                 if (!pj["help"].is_string()) fail(where + ".help", "expected a string");
                 p.help = pj["help"].get<std::string>();
             }
+            if (pj.contains("group")) {
+                if (!pj["group"].is_string() || pj["group"].get<std::string>().size() > 256)
+                    fail(where + ".group", "expected a string of at most 256 bytes");
+                p.group = pj["group"].get<std::string>();
+            }
             d.params.push_back(std::move(p));
         }
     }
@@ -228,9 +251,11 @@ nlohmann::json customBlockToJson(const CustomBlock& block) {
             pj["default"] = p.defaultValue.x;
         }
         if (!p.help.empty()) pj["help"] = p.help;
+        if (!p.group.empty()) pj["group"] = p.group;
         params.push_back(pj);
     }
     if (!params.empty()) j["params"] = params;
+    if (d.wholeDE) j["wholeDE"] = true;
     j["glsl"] = d.glsl;
     return j;
 }

@@ -5,10 +5,9 @@
 #pragma once
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/block.hpp"
 
@@ -20,7 +19,7 @@ inline constexpr int kMaxCustomParams = 16;
 inline constexpr int kMaxCustomBlocks = 32;
 
 class CustomBlock {
-public:
+   public:
     struct Definition {
         std::string id, label, help;
         Category category = Category::Transform;
@@ -30,9 +29,14 @@ public:
             ParamType type = ParamType::Float;
             vec3 defaultValue{0.0};
             double min = 0.0, max = 1.0;
+            std::string group = {};  // the editor's panel for it ("" : the block's own); an imported frag's #group
         };
         std::vector<Param> params;
         std::string glsl;
+        // The GLSL is a whole DE (core/whole_de.hpp): global-scope functions, globals and #define
+        // lines defining `float DE(vec3)`, with loops allowed (bounded by a trip count). Only an
+        // estimator, alone in its formula; its parameters are in scope everywhere in the code.
+        bool wholeDE = false;
     };
 
     // Checks the definition; returns an empty string when it is sound, else the reason, with
@@ -44,7 +48,7 @@ public:
     const Definition& definition() const { return def_; }
     const BlockDesc& desc() const { return desc_; }
 
-private:
+   private:
     explicit CustomBlock(Definition d);
     Definition def_;
     std::vector<ParamDecl> decls_;  // views into def_

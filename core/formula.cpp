@@ -48,7 +48,7 @@ std::string Formula::structureKey() const {
     // is a change of structure. Built-in blocks are fixed by their id.
     auto addCustom = [&key](const BlockDesc* b) {
         if (!b || !b->custom) return;
-        key += "|" + std::string(b->id) + "{";
+        key += "|" + std::string(b->id) + (b->wholeDE ? "(whole DE)" : "") + "{";
         // The type too: a float and a vec3 parameter are different uniform declarations.
         for (const ParamDecl& p : b->params) key += std::string(p.name) + (p.type == ParamType::Vec3 ? ":v," : ":f,");
         key += "}" + std::string(b->glsl);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/shader_library.hpp"
+#include "core/whole_de.hpp"
 
 namespace fraktal {
 
@@ -36,10 +37,42 @@ struct FractalNames {
     }
 };
 
+// A whole-DE estimator (core/whole_de.hpp): its parameters' uniforms and a trip counter, its code
+// at global scope under the node's own source numbers (its names prefixed, its loops bounded),
+// then the estimator function the fractal calls: the counter, the orbit trap and init() reset,
+// the DE at the fractal's point.
+void emitWholeDE(GlslEmitter& e, const FractalNames& names, int k, const BlockDesc& b, const std::string& name) {
+    const WholeDEScan scan = scanWholeDE(b.glsl);
+    const std::string prefix = wholeDEPrefix(names.suffix);
+    const std::string trips = "fraktalDETrips" + names.suffix;
+    e.line("// @node " + std::to_string(k) + " " + std::string(b.id) + ": " + name);
+    std::vector<std::string> params;
+    for (const ParamDecl& p : b.params) {
+        params.emplace_back(p.name);
+        e.line("uniform " + glslType(p.type) + " " + names.uniform(k, p.name, true) + ";");
+    }
+    e.line("int " + trips + ";");
+    e.line("#line " + std::to_string(kNodeLineStride * (k + 1) + 1));
+    const std::string code = wholeDEShaderCode(
+        b.glsl, scan, prefix, [&](std::string_view p) { return names.uniform(k, p, true); }, params, trips);
+    e.out += code;
+    if (!code.empty() && code.back() != '\n') e.out += '\n';
+    e.restoreFormulaLines();
+    e.line("float " + names.function(k) + "(vec4 p, vec3 c, float degree, float surfaceLogR, float orbitGradient) {");
+    e.line("    " + trips + " = 0;");
+    if (scan.hasOrbitTrap) e.line("    " + prefix + "orbitTrap = vec4(10000.0);");
+    if (scan.hasInit) e.line("    " + prefix + "init();");
+    // The Slicer raytracer's DE(vec3 pos, int type) draws the object at type 0.
+    const bool typed = scan.deParameters.find(',') != std::string::npos;
+    e.line("    return " + prefix + "DE(p.xyz" + (typed ? ", 0" : "") + ");");
+    e.line("}");
+}
+
 // One function per node: uniforms, then the block's body under the node's own source number.
 void emitNodeFunction(GlslEmitter& e, const FractalNames& names, int k, const Node& node, const std::string& name,
                       bool estimator) {
     const BlockDesc& b = *node.block;
+    if (estimator && b.wholeDE) return emitWholeDE(e, names, k, b, name);
     std::vector<GlslEmitter::Param> params;
     for (const ParamDecl& p : b.params)
         params.push_back({glslType(p.type), names.uniform(k, p.name, estimator), p.name});
@@ -54,7 +87,9 @@ constexpr const char* kEstimatorArgs = "p, c, degree, surfaceLogR, orbitGradient
 
 std::string nodeCall(const FractalNames& names, int k, const Node& node, bool estimator, const std::string& args = "") {
     std::string call = names.function(k) + "(" + (!args.empty() ? args : estimator ? kEstimatorArgs : "p, c");
-    for (const ParamDecl& p : node.block->params) call += ", " + names.uniform(k, p.name, estimator);
+    // A whole DE reads its parameters' uniforms directly (emitWholeDE).
+    if (!node.block->wholeDE)
+        for (const ParamDecl& p : node.block->params) call += ", " + names.uniform(k, p.name, estimator);
     return call + ")";
 }
 
@@ -148,6 +183,7 @@ void replaceTemplateMarker(std::string& text, std::string_view marker, const std
     text.replace(at, (end == std::string::npos ? text.size() : end) - at, with);
 }
 
+std::string wholeDEPrefix(std::string_view fractal) { return "fraktalDE" + std::string(fractal) + "_"; }
 std::string fractalSuffix(size_t index) { return index == 0 ? "" : "_f" + std::to_string(index); }
 std::string nodeUniformName(int nodeIndex, std::string_view param, std::string_view fractal) {
     return "u_n" + std::to_string(nodeIndex) + "_" + std::string(param) + std::string(fractal);
@@ -186,8 +222,10 @@ std::string fractalInstance(const Formula& f, const FractalNames& names, HitRule
     auto replace = [&text](std::string_view marker, const std::string& with) {
         replaceTemplateMarker(text, marker, with, "formula_fractal.glsl");
     };
-    replace("//@FRAKTAL_FRACTAL_OPTIONS",
-            f.estimator.block->usesOrbitGradient() ? "#define FRAKTAL_ORBIT_GRADIENT@F" : "");
+    const bool wholeDE = f.estimator.block->wholeDE;
+    replace("//@FRAKTAL_FRACTAL_OPTIONS", f.estimator.block->usesOrbitGradient() ? "#define FRAKTAL_ORBIT_GRADIENT@F"
+                                          : wholeDE                              ? "#define FRAKTAL_WHOLE_DE@F"
+                                                                                 : "");
     std::string loop, remaining;
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         const Node& n = f.nodes[k];
@@ -219,6 +257,11 @@ std::string fractalInstance(const Formula& f, const FractalNames& names, HitRule
     replace("//@FRAKTAL_REMAINING_DEGREE", remaining);
     const int est = int(f.nodes.size());
     std::string estimate = "    float d = u_deFactor@F * " + nodeCall(names, est, f.estimator, true) + ";\n";
+    // A whole DE's orbit trap: FragM's x, y, z minima as they are, its w (r squared) as r.
+    if (wholeDE && scanWholeDE(f.estimator.block->glsl).hasOrbitTrap) {
+        const std::string t = wholeDEPrefix(names.suffix) + "orbitTrap";
+        estimate += "    trap = vec4(" + t + ".xyz, sqrt(max(" + t + ".w, 0.0)));\n";
+    }
     if (hitRule == HitRule::InteriorWalls)
         estimate +=
             "    d = interiorWalls(d, fractalInside@F(d, escaped), hitThreshold * "

@@ -65,6 +65,8 @@ struct GlslEmitter {
 void replaceTemplateMarker(std::string& text, std::string_view marker, const std::string& with,
                            std::string_view templateName);
 
+// The prefix of a whole DE's top-level names in the fractal of that suffix (core/whole_de.hpp).
+std::string wholeDEPrefix(std::string_view fractal);
 // Uniform names, shared by the generator and the uploader. `fractal` is fractalSuffix(index):
 // "" for the first fractal, "_f1", "_f2"... for those combined with it (Formula::fractals).
 std::string fractalSuffix(size_t index);

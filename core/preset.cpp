@@ -184,6 +184,11 @@ void parseFractal(FieldReader& r, const CustomBlocks& custom, Formula& f) {
             f.nodes.push_back(std::move(n));
         }
     }
+    if (f.estimator.block && f.estimator.block->wholeDE && !f.nodes.empty())
+        throw PresetError(context.file, path + "[0]",
+                          "estimator '" + std::string(f.estimator.block->id) +
+                              "' is a whole DE: it computes the whole distance, so it must be the only node (found " +
+                              std::to_string(f.nodes.size()) + " before it)");
     if (r.has("placement")) f.placement = parsePlacement(context, r.at("placement"), r.child("placement"));
 }
 

@@ -63,6 +63,9 @@ float fractalEval@F(vec3 world, out vec4 trap, out int iterations, out bool esca
     escaped = false;
     float bailout2 = u_bailout@F * u_bailout@F;
     int n = clamp(u_iterations@F, 0, FRAKTAL_MAX_ITERATIONS);
+#ifdef FRAKTAL_WHOLE_DE@F
+    n = 0;  // a whole DE (core/whole_de.hpp) runs its own iterations in the estimator
+#endif
     for (int i = 0; i < n; ++i) {
         iteration = i;
 //@FRAKTAL_LOOP

@@ -17,6 +17,7 @@
 #include "core/plane/plane_renderer.hpp"
 #include "core/render/path_tracer.hpp"
 #include "core/render/still_renderer.hpp"
+#include "core/scene/scene_import.hpp"
 #include "core/shader_library.hpp"
 #include "core/viewport/viewport_programs.hpp"
 #include "test_support.hpp"
@@ -133,6 +134,24 @@ TEST(PortableLimits, EveryProgramFraktalLinksIsWithinOpenGL45) {
     std::printf("%d programs within OpenGL 4.5's limits\n", survey.programs);
     // 27 3D presets x 15 programs, 5 2D presets x 2, at least 3 views.
     EXPECT_GE(survey.programs, int(test::shippedPresets().size()) * 15 + 10 + 3);
+}
+
+// A whole-DE estimator (an imported frag) brings its own code, globals and loops into every
+// program fraktal links for the formula: those stay within the limits too, and glslang accepts
+// them (the code as renamed and bounded by the generator).
+TEST(PortableLimits, ImportedFragProgramsAreWithinOpenGL45) {
+    test::glContext();
+    Survey survey;
+    for (const char* name : {"menger.frag", "init_bulb.frag", "annotations.frag"}) {
+        const Preset preset = importSceneFile(test::sourceDir() / "tests/data/frag_import" / name).preset;
+        ASSERT_TRUE(preset.formula.estimator.block->wholeDE) << name;
+        const viewport::ViewportPrograms viewportPrograms(preset.formula);
+        for (const gl::Program* p : viewportPrograms.all()) survey.check(*p, std::string(name) + " viewport", true);
+        survey.check(gl::StillRenderer(preset.formula, 64).program(), std::string(name) + " still", true);
+        survey.check(gl::PathTracer(preset.formula, 8, 8).program(), std::string(name) + " path tracer", true);
+        survey.check(gl::DEProbe(preset.formula).program(), std::string(name) + " DE probe", true);
+    }
+    EXPECT_GE(survey.programs, 3 * 15);
 }
 
 // Each viewport pass binds its own images at units 0.. (core/viewport/pass_images.hpp): no pass

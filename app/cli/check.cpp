@@ -13,6 +13,7 @@
 #include "core/de_check.hpp"
 #include "core/gl/context.hpp"
 #include "core/gl/de_probe.hpp"
+#include "core/import/frag_file.hpp"
 #include "core/json_reader.hpp"
 #include "core/plane/plane_preset.hpp"
 #include "core/plane/plane_renderer.hpp"
@@ -176,11 +177,13 @@ int runPlaneCheck(const CheckOptions& o) {
 }
 
 int runCheck(const CheckOptions& o) {
-    if (o.apply && std::filesystem::path(o.preset).extension() == ".fract")
-        throw std::runtime_error(o.preset +
-                                 ": --apply writes into a preset (JSON); import the Mandelbulber2 file first: "
+    if (o.apply && isImportedSceneFile(o.preset))
+        throw std::runtime_error(o.preset + ": --apply writes into a preset (JSON); import the " +
+                                 (frag::isFragPath(o.preset) ? "frag" : "Mandelbulber2 file") +
+                                 " first: "
                                  "fraktal import " +
-                                 o.preset + " -o PRESET.json (it measures the factor)");
+                                 o.preset + " -o PRESET.json" +
+                                 (frag::isFragPath(o.preset) ? "" : " (it measures the factor)"));
     if (isPlanePresetFile(o.preset)) {
         if (o.apply) throw std::runtime_error(o.preset + ": --apply: a 2D preset has no step factor");
         return runPlaneCheck(o);
@@ -432,7 +435,9 @@ Preset sceneAtFrame(const std::string& file, std::optional<int> frame) {
 void addCheckCommand(CLI::App& app, Action& action) {
     auto o = std::make_shared<CheckOptions>();
     CLI::App* cmd = app.add_subcommand("check", "Validate a preset and measure its distance estimator");
-    cmd->add_option("preset", o->preset, "Preset file (JSON)")->required();
+    cmd->add_option("preset", o->preset,
+                    "Preset file (JSON), or a Mandelbulber2 (.fract) or Fragmentarium (.frag) file, imported")
+        ->required();
     cmd->add_option("--grid", o->grid, "Grid points per axis for the DE survey")->check(CLI::Range(2, 256));
     cmd->add_option("--rays", o->rays, "Rays for the conservativeness check")->check(CLI::Range(1, 100000));
     cmd->add_option("--steps", o->steps,

@@ -245,8 +245,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
     auto o = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render a print-quality still to EXR (and a PNG preview)");
     cmd->add_option("preset", o->input,
-                    "Preset (JSON), an EXR written by fraktal (its embedded preset), or a Mandelbulber2 settings file "
-                    "(.fract, imported)")
+                    "Preset (JSON), an EXR written by fraktal (its embedded preset), a Mandelbulber2 settings file "
+                    "(.fract) or a Fragmentarium frag (.frag), imported")
         ->required();
     cmd->add_option("-o,--output", o->output, "Output EXR (scene-linear, with AOVs)")->required();
     cmd->add_option("--png", o->png, "Also write a PNG through the OCIO display/view transform");

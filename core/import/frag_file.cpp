@@ -359,8 +359,10 @@ class Preprocessor {
             std::error_code ec;
             if (std::filesystem::is_regular_file(dir / name, ec)) found = dir / name;
         };
-        if (!from.builtin && !from.path.empty()) tryDir(from.path.parent_path());
-        for (size_t i = 0; !found && i < options_.includeDirs.size(); ++i) tryDir(options_.includeDirs[i]);
+        const bool builtinFirst = options_.preferBuiltins && options_.builtinIncludes.count(name) > 0;
+        if (!builtinFirst && !from.builtin && !from.path.empty()) tryDir(from.path.parent_path());
+        for (size_t i = 0; !builtinFirst && !found && i < options_.includeDirs.size(); ++i)
+            tryDir(options_.includeDirs[i]);
         std::string key, text;
         SourceFile source;
         source.includeName = name;

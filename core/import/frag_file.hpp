@@ -176,6 +176,9 @@ struct FragOptions {
     std::vector<std::filesystem::path> includeDirs;
     // Then these: include name as written ("MathUtils.frag") -> its text.
     std::map<std::string, std::string, std::less<>> builtinIncludes;
+    // Take a built-in include before any folder: fraktal's stand-ins for FragM's standard
+    // includes then replace the files of a FragM install in an include folder.
+    bool preferBuiltins = false;
     // The GLSL version `#if __VERSION__ ...` is evaluated at when the function finder picks
     // the active branches; 0: the frag's own #version, else 110 (GLSL's default without one).
     int glslVersion = 0;

@@ -4,13 +4,14 @@
 #include <cmath>
 
 #include "core/import/fract_import.hpp"
+#include "core/import/frag_import.hpp"
 #include "core/safe_step.hpp"
 #include "core/scene/distance.hpp"
 #include "core/scene/formula_fit.hpp"
 
 namespace fraktal {
 
-bool isImportedSceneFile(const std::filesystem::path& path) { return mb2::isFractPath(path); }
+bool isImportedSceneFile(const std::filesystem::path& path) { return mb2::isFractPath(path) || frag::isFragPath(path); }
 
 namespace {
 
@@ -24,9 +25,52 @@ void fitBound(Preset& p) {
     p.formula.boundRadius = fittedBoundRadius(cpuDistance(p.formula), search, reach);
 }
 
+// What fraktal cannot express refuses the file unless lenient, each thing named.
+void refuseUnlessLenient(const std::filesystem::path& path, const ImportedScene& scene,
+                         const SceneImportOptions& options) {
+    if (scene.unsupported.empty() || options.lenient) return;
+    std::string list;
+    for (const std::string& item : scene.unsupported) list += "\n  " + item;
+    throw PresetError(path.string(), "",
+                      "uses what fraktal cannot express, so nothing was written (--lenient writes the preset "
+                      "without it and lists it in the description):" +
+                          list);
+}
+
+// What the import built must be a preset fraktal reads back: a value the mapping let through
+// outside a range is an error here, naming the file, not a preset that fails to load later.
+Preset readBack(const std::filesystem::path& path, const Preset& preset) {
+    try {
+        return parsePreset(serializePreset(preset), path.string());
+    } catch (const PresetError& e) {
+        throw PresetError(path.string(), e.field(), "the imported scene is not a valid preset: " + e.reason());
+    }
+}
+
+// A Fragmentarium frag: its DE as a whole-DE estimator. The safe step is not measured here (no
+// CPU twin): the frag's FudgeFactor stays the step factor.
+ImportedScene importFragScene(const std::filesystem::path& path, const SceneImportOptions& options) {
+    const frag::FragFile file = frag::loadFragFile(path, frag::importParseOptions(options.includeDirs));
+    if (file.doNotRun)
+        throw PresetError(path.string(), "", "is an include-only frag (#donotrun): open the frag that includes it");
+    frag::FragImport result = frag::importFrag(file, {.presetName = options.fragPreset});
+    ImportedScene scene;
+    for (const frag::ImportItem& item : result.unsupported) scene.unsupported.push_back(item.text());
+    for (const frag::ImportItem& item : result.approximated) scene.approximated.push_back(item.text());
+    refuseUnlessLenient(path, scene, options);
+    result.preset.name = path.stem().string();
+    result.preset.description = frag::importDescription(file, result);
+    // As for a .fract: a ray keeps the reach of 256 full steps at the factor.
+    result.preset.render.maxSteps =
+        std::max(result.preset.render.maxSteps, std::min(int(std::ceil(256.0 / result.preset.formula.deFactor)), 4096));
+    scene.preset = readBack(path, result.preset);
+    return scene;
+}
+
 }  // namespace
 
 ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImportOptions& options) {
+    if (frag::isFragPath(path)) return importFragScene(path, options);
     const mb2::FractFile file = mb2::loadFractFile(path);
     mb2::FractImport result = mb2::importFract(file);
     ImportedScene scene;

@@ -1,6 +1,7 @@
-// Opening another program's scene file as a fraktal preset: a Mandelbulber2 .fract file through
-// core/import (the mapping), then what follows any structure change here: the bound fitted to the
-// object and the safe step measured. The command line (`fraktal import`, `fraktal render
+// Opening another program's scene file as a fraktal preset: a Mandelbulber2 .fract file or a
+// Fragmentarium .frag through core/import (the mapping), then what follows any structure change
+// here: the bound fitted to the object and the safe step measured (for a .fract; a frag's DE is
+// GLSL alone, with no CPU twin to measure on). The command line (`fraktal import`, `fraktal render
 // FILE.fract`) and the editor (File > Open, a dropped file) share it.
 #pragma once
 
@@ -20,6 +21,11 @@ struct SceneImportOptions {
     // iterations), as `fraktal check` does; the bound is fitted either way. The editor measures it
     // itself, as after any structure change.
     bool measure = true;
+    // A .frag: the #preset to apply ("" : FragM's own choice, its first "default" preset, else the
+    // first), and the folders searched for includes that are neither next to the frag nor among
+    // fraktal's built-in ones (a FragM install's Examples/Include).
+    std::string fragPreset = {};
+    std::vector<std::filesystem::path> includeDirs = {};
 };
 
 struct ImportedScene {
@@ -28,7 +34,7 @@ struct ImportedScene {
     std::vector<std::string> approximated;  // what only looks different
 };
 
-// Whether the file is opened by import rather than as a preset (by its extension: .fract).
+// Whether the file is opened by import rather than as a preset (by its extension: .fract, .frag).
 bool isImportedSceneFile(const std::filesystem::path& path);
 
 // Throws PresetError: for a file it cannot read, and (unless lenient) for a file that uses what

@@ -55,8 +55,10 @@ std::vector<BrowserEntry> listFolder(const fs::path& folder, BrowserFilter filte
         if (!e.folder) {
             const std::string ext = lower(it->path().extension().string());
             const bool exr = ext == ".exr";
-            // A Mandelbulber2 settings file opens by import (app/editor/document/scene_import.hpp).
-            const bool preset = ext == ".json" || (filter == BrowserFilter::PresetsAndExrs && ext == ".fract");
+            // A Mandelbulber2 settings file or a Fragmentarium frag opens by import
+            // (core/scene/scene_import.hpp).
+            const bool preset =
+                ext == ".json" || (filter == BrowserFilter::PresetsAndExrs && (ext == ".fract" || ext == ".frag"));
             if (filter == BrowserFilter::Presets && !preset) continue;
             if (filter == BrowserFilter::PresetsAndExrs && !preset && !exr) continue;
             if (filter == BrowserFilter::EnvironmentMaps) {

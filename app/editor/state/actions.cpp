@@ -186,9 +186,10 @@ void openDropped(EditorState& s, const fs::path& file) {
         if (fs::is_directory(file, ec)) throw std::runtime_error("it is a folder");
         std::string ext = file.extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        if (ext != ".json" && ext != ".exr" && ext != ".fract")
+        if (ext != ".json" && ext != ".exr" && ext != ".fract" && ext != ".frag")
             throw std::runtime_error(
-                "it is neither a preset (.json), an EXR that fraktal wrote, nor a Mandelbulber2 file (.fract)");
+                "it is neither a preset (.json), an EXR that fraktal wrote, a Mandelbulber2 file (.fract) nor a "
+                "Fragmentarium frag (.frag)");
         loadDocument(file);  // the reason it cannot be opened, before asking about unsaved changes
     } catch (const std::exception& e) {
         setStatus(s, "Not opened: the dropped file " + file.filename().string() + ": " + e.what(), true);

@@ -1,0 +1,6 @@
+#include "DE-Raytracer.frag"
+uniform float time;
+uniform float Radius; slider[0,1,2]
+float DE(vec3 p) {
+	return length(p) - Radius * (1.0 + 0.1 * sin(time));
+}
