@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "app/editor/document/formula_edits.hpp"
 #include "core/gl/de_probe.hpp"
 #include "core/glsl_gen.hpp"
 #include "core/render/still_job.hpp"
@@ -191,6 +192,34 @@ TEST(FragImport, PresetRoundTripsExactly) {
         EXPECT_EQ(again.camera, p.camera) << name;
         EXPECT_EQ(again.formula.structureKey(), p.formula.structureKey()) << name;
     }
+}
+
+// The editor's node-list edits leave an imported frag's formula as a preset can hold it: no block
+// is added before its whole DE (the loader refuses one), and a whole DE replaces the estimator of
+// an empty node list only. Every edit tried leaves a document that saves and loads back equal.
+TEST(FragImport, NodeListEditsKeepAWholeDEFormulaLoadable) {
+    Preset p = importFrag("menger.frag").preset;
+    ASSERT_TRUE(editor::wholeDEFormula(p.formula));
+    const BlockDesc& wholeDE = *p.formula.estimator.block;
+    int refused = 0;
+    for (const BlockDesc& block : allBlocks()) {
+        if (block.isEstimator()) continue;
+        EXPECT_FALSE(editor::addNode(p, block)) << block.id << " was added before a whole DE";
+        ++refused;
+    }
+    EXPECT_GT(refused, 50);
+    EXPECT_TRUE(p.formula.nodes.empty());
+    const Preset back = parsePreset(serializePreset(p), "edited.json");
+    EXPECT_EQ(serializePreset(back), serializePreset(p));
+
+    Preset bulb = test::shippedPreset("mandelbulb.json");
+    ASSERT_FALSE(bulb.formula.nodes.empty());
+    EXPECT_FALSE(editor::setEstimator(bulb.formula, wholeDE)) << "a whole DE closed a node list";
+    EXPECT_FALSE(editor::wholeDEFormula(bulb.formula));
+    Formula empty = bulb.formula;
+    empty.nodes.clear();
+    EXPECT_TRUE(editor::setEstimator(empty, wholeDE));
+    EXPECT_TRUE(editor::wholeDEFormula(empty));
 }
 
 TEST(FragImport, RefusesWhatFraktalCannotDrawNamingTheReason) {

@@ -236,7 +236,9 @@ Node* nodeAt(Formula& f, int index) {
 
 bool addNode(Formula& f, const BlockDesc& block, int insertAt) {
     if (block.isEstimator()) return setEstimator(f, block);
-    if (int(f.nodes.size()) >= kMaxNodes) return false;
+    // A whole DE (an imported frag) is the whole formula: a step before it would never run, and
+    // a preset holding one is refused.
+    if (wholeDEFormula(f) || int(f.nodes.size()) >= kMaxNodes) return false;
     if (insertAt < 0 || insertAt > int(f.nodes.size())) insertAt = int(f.nodes.size());
     f.nodes.insert(f.nodes.begin() + insertAt, Node::make(block));
     return true;
@@ -269,8 +271,10 @@ bool setNodeEnabled(Formula& f, int index, bool enabled) {
     return true;
 }
 
+bool wholeDEFormula(const Formula& f) { return f.estimator.block && f.estimator.block->wholeDE; }
+
 bool setEstimator(Formula& f, const BlockDesc& estimator) {
-    if (!estimator.isEstimator()) return false;
+    if (!estimator.isEstimator() || (estimator.wholeDE && !f.nodes.empty())) return false;
     f.estimator = Node::make(estimator);
     return true;
 }

@@ -30,7 +30,10 @@ bool removeNode(Formula& f, int index);
 bool duplicateNode(Formula& f, int index);    // the copy goes right after the original
 bool moveNode(Formula& f, int from, int to);  // `to` is the index the node ends at
 bool setNodeEnabled(Formula& f, int index, bool enabled);
-bool setEstimator(Formula& f, const BlockDesc& estimator);  // keeps nothing of the old one
+// keeps nothing of the old one; a whole DE (BlockDesc::wholeDE) only closes an empty node list
+bool setEstimator(Formula& f, const BlockDesc& estimator);
+// Whether the formula's estimator is a whole DE (an imported frag): it takes no steps before it.
+bool wholeDEFormula(const Formula& f);
 // The same edits on a document's formula, keeping its animation's parameter tracks on the nodes
 // they key (a removed or replaced node's tracks go with it).
 bool addNode(Preset& p, const BlockDesc& block, int insertAt = -1);

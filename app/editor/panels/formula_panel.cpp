@@ -320,8 +320,15 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     ImGui::PopID();
     if (!error.empty() && errorNode == -1) errorUnder(error);
 
+    // A whole DE (an imported frag) is the whole formula: no step goes before it.
+    const bool wholeDE = wholeDEFormula(f);
+    ImGui::BeginDisabled(wholeDE);
     if (ImGui::Button("Add block...")) ImGui::OpenPopup("add_block");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Insert a block after the selected node");
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip(wholeDE ? "This formula's distance is one piece of code (an imported frag): blocks cannot "
+                                    "be added before it"
+                                  : "Insert a block after the selected node");
     if (ImGui::BeginPopup("add_block")) {
         addBlockMenu(s);
         ImGui::EndPopup();
