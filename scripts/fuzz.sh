@@ -16,7 +16,7 @@ trap 'rm -rf "$seeds"' EXIT
 find presets tests/bad_presets tests/legacy_presets -maxdepth 3 -type f -name '*.json' -size -64k -exec cp {} "$seeds"/ \;
 # Fragmentarium frags, each after a comment line: text that starts with '/' goes to the .frag parser.
 n=0
-for frag in $(find tests/data/frag -type f -name '*.frag' -size -64k); do
+for frag in $(find tests/data/frag tests/data/frag_import -type f -name '*.frag' -size -64k); do
   { echo "// $frag"; cat "$frag"; } >"$seeds/frag$((n += 1)).frag"
 done
 if [ -d /usr/share/mandelbulber2/toolbar ]; then
