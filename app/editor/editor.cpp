@@ -373,12 +373,10 @@ int runEditor(const EditorOptions& o) {
         viewport->setSlicedAtRest(o.frames == 0);
         PlaneViewport planeViewport(*s.color);
         ThumbnailRenderer thumbnails;
-        // The thumbnails' programs compile on a worker of their own, with a hidden context of its own.
-        GLFWwindow* thumbnailContext = glfwCreateWindow(1, 1, "fraktal thumbnails", nullptr, window);
-        if (thumbnailContext)
-            thumbnails.compiler =
-                std::make_unique<BackgroundCompiler>([thumbnailContext] { glfwMakeContextCurrent(thumbnailContext); },
-                                                     [] { glfwMakeContextCurrent(nullptr); });
+        // The thumbnails' programs compile on a worker of their own, with a hidden context of its
+        // own, made when the browser first shows (most sessions never open it).
+        GLFWwindow* thumbnailContext = nullptr;
+        bool thumbnailContextMade = false;
         UiRedrawState uiRedraw;
         UiLayerCache uiLayers;
         newDocument(s);
@@ -456,6 +454,15 @@ int runEditor(const EditorOptions& o) {
             drawShortcutHelp(s);
             if (s.panels.demo) ImGui::ShowMetricsWindow(&s.panels.demo);
             s.layout.popupOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+            if (s.browser.visible && !thumbnailContextMade) {
+                thumbnailContextMade = true;
+                glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+                thumbnailContext = glfwCreateWindow(1, 1, "fraktal thumbnails", nullptr, window);
+                if (thumbnailContext)
+                    thumbnails.compiler = std::make_unique<BackgroundCompiler>(
+                        [thumbnailContext] { glfwMakeContextCurrent(thumbnailContext); },
+                        [] { glfwMakeContextCurrent(nullptr); });
+            }
             s.browser.rendering = s.browser.visible && renderNextThumbnail(thumbnails, s.browser, *s.color);
             reportClamps.reset();
             // A typed value the slider brought into its range: said on the next frame's status line.
