@@ -37,6 +37,16 @@ void refuseUnlessLenient(const std::filesystem::path& path, const ImportedScene&
                           list);
 }
 
+// A ray keeps the reach of 256 full steps at the least step factor: a file's low factor that no
+// measurement replaced (an object drawn by its estimate alone, nothing inside it to measure
+// against: a Menger sponge at 250 iterations; a frag's FudgeFactor) would otherwise end rays
+// before the surface.
+void keepReachOf256Steps(Preset& p) {
+    double leastFactor = p.formula.deFactor;
+    for (const CombinedFractal& c : p.formula.fractals) leastFactor = std::min(leastFactor, c.formula.deFactor);
+    p.render.maxSteps = std::max(p.render.maxSteps, std::min(int(std::ceil(256.0 / leastFactor)), 4096));
+}
+
 // What the import built must be a preset fraktal reads back: a value the mapping let through
 // outside a range is an error here, naming the file, not a preset that fails to load later.
 Preset readBack(const std::filesystem::path& path, const Preset& preset) {
@@ -60,9 +70,7 @@ ImportedScene importFragScene(const std::filesystem::path& path, const SceneImpo
     refuseUnlessLenient(path, scene, options);
     result.preset.name = path.stem().string();
     result.preset.description = frag::importDescription(file, result);
-    // As for a .fract: a ray keeps the reach of 256 full steps at the factor.
-    result.preset.render.maxSteps =
-        std::max(result.preset.render.maxSteps, std::min(int(std::ceil(256.0 / result.preset.formula.deFactor)), 4096));
+    keepReachOf256Steps(result.preset);
     scene.preset = readBack(path, result.preset);
     return scene;
 }
@@ -76,14 +84,7 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
     ImportedScene scene;
     for (const mb2::ImportItem& item : result.unsupported) scene.unsupported.push_back(item.text());
     for (const mb2::ImportItem& item : result.approximated) scene.approximated.push_back(item.text());
-    if (!result.faithful() && !options.lenient) {
-        std::string list;
-        for (const std::string& item : scene.unsupported) list += "\n  " + item;
-        throw PresetError(path.string(), "",
-                          "uses what fraktal cannot express, so nothing was written (--lenient writes the preset "
-                          "without it and lists it in the description):" +
-                              list);
-    }
+    refuseUnlessLenient(path, scene, options);
     result.preset.name = path.stem().string();
     result.preset.description = mb2::importDescription(file, result);
     if (result.preset.formula.cpuEvaluable() && !result.preset.formula.nodes.empty()) fitBound(result.preset);
@@ -110,21 +111,8 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
         result.preset.formula.deFactor = m.factor;
         if (m.report.samples > 0) result.preset.formula.deFactorMeasuredFor = stepFactorTag(result.preset.formula);
     }
-    // A ray keeps the reach of 256 full steps at the factor: a file's low DE_factor that no
-    // measurement replaced (an object drawn by its estimate alone, nothing inside it to measure
-    // against: a Menger sponge at 250 iterations) would otherwise end rays before the surface.
-    const Formula& f = result.preset.formula;
-    double leastFactor = f.deFactor;
-    for (const CombinedFractal& c : f.fractals) leastFactor = std::min(leastFactor, c.formula.deFactor);
-    result.preset.render.maxSteps =
-        std::max(result.preset.render.maxSteps, std::min(int(std::ceil(256.0 / leastFactor)), 4096));
-    // What the import built must be a preset fraktal reads back: a value the mapping let through
-    // outside a range is an error here, naming the file, not a preset that fails to load later.
-    try {
-        scene.preset = parsePreset(serializePreset(result.preset), path.string());
-    } catch (const PresetError& e) {
-        throw PresetError(path.string(), e.field(), "the imported scene is not a valid preset: " + e.reason());
-    }
+    keepReachOf256Steps(result.preset);
+    scene.preset = readBack(path, result.preset);
     return scene;
 }
 

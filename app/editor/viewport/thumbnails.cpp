@@ -104,7 +104,7 @@ bool renderNextThumbnail(ThumbnailRenderer& r, PresetBrowser& b, const ColorPipe
             const GLuint texture = r.document.plane ? stepPlaneThumbnail(r, color) : stepThumbnail(r, color);
             if (!texture) {
                 // Compiling in the background: nothing more to do this frame.
-                if (r.viewport && r.viewport->stats().compiling) return true;
+                if (!r.document.plane && r.viewport->stats().compiling) return true;
                 continue;
             }
             t->texture = texture;
