@@ -14,6 +14,7 @@
 #include "core/viewport/flight.hpp"
 #include "core/viewport/image_error.hpp"
 #include "core/viewport/viewport.hpp"
+#include "core/viewport/warm_up.hpp"
 #include "test_support.hpp"
 #include "uniform_lookups.hpp"
 
@@ -424,6 +425,34 @@ TEST(ViewportGL, SlicedRefinementSettlesToTheSameImage) {
             ASSERT_TRUE(orbit.settled.settled);
             EXPECT_TRUE(orbit.settled.image == wholeOrbit.settled.image) << "after an orbit the settled images differ";
         }
+    }
+}
+
+// The warm-up (core/viewport/warm_up.hpp) renders tiny frames with a structure's programs before
+// the viewport gets them, and program uniforms are shared state: the viewport must set every one
+// it reads each frame, never rely on what the warm-up left. So a viewport that adopts warmed-up
+// programs settles, after an orbit too, to the same image to the bit as one that built its own.
+TEST(ViewportGL, WarmedUpProgramsRenderTheSameImage) {
+    test::glContext();
+    for (const char* name : {"mandelbulb.json", "kleinian.json", "menger_objects.json"}) {
+        SCOPED_TRACE(name);
+        const Scene s = loadScene(test::sourceDir() / "presets" / name);
+        ViewportOptions options;
+        options.maxSamples = 4;
+        options.coneTile = 8;
+        Viewport own(options), warmed(options);
+        warmed.adoptPrograms(warmUp(std::make_unique<ViewportPrograms>(s.preset.formula), s.preset.formula));
+        for (Viewport* v : {&own, &warmed})
+            for (int f = 0; f <= 6; ++f)
+                v->render(s.preset.formula, cameraOnPath(s.preset.camera, CameraPath::Orbit, f, 1.0), s.render,
+                          s.preset.shading, kW, kH);
+        const Camera stopped = cameraOnPath(s.preset.camera, CameraPath::Orbit, 6, 1.0);
+        const Converged a =
+            renderUntilSettled(own, s.preset.formula, stopped, s.render, s.preset.shading, kW, kH, kMaxFrames);
+        const Converged b =
+            renderUntilSettled(warmed, s.preset.formula, stopped, s.render, s.preset.shading, kW, kH, kMaxFrames);
+        ASSERT_TRUE(a.settled && b.settled);
+        EXPECT_TRUE(a.image == b.image) << "the warmed-up programs settle to another image";
     }
 }
 

@@ -7,7 +7,7 @@
 # the most slices a frame at rest refined one of, and the seconds from the first picture until
 # the view settled. A PRESET is a name in presets/ or a path; `kleinian_x3` is kleinian.json with
 # its group block three times. With two builds each scene runs old then new, so that the machine's
-# load falls on both alike.
+# load falls on both alike. Each run starts with an empty shader cache.
 # Usage: bench/viewport/rest_and_motion.sh BUILD_DIR [OTHER_BUILD_DIR] [SETTLE_MAX] [PRESET...]
 #        (default 90 s; kleinian pseudo_kleinian menger_field_depth_of_field hybrid_amazing_surf_box
 #        inverted_menger kleinian_x3)
@@ -40,7 +40,11 @@ for name in "${presets[@]}"; do
     log="$work/frames.jsonl"
     rm -f "$log" "$work/state.json"
     mkdir -p "$work/home"
-    HOME="$work/home" XDG_CONFIG_HOME="$work/home/config" "$build/app/fraktal" edit "$file" --frame-log "$log" \
+    # A shader cache of its own, empty (as in rest_frames.sh): Mesa keeps llvmpipe's machine code
+    # there, and a run after another of the same scene would skip the translations its first
+    # frames pay (core/viewport/warm_up.hpp).
+    rm -rf "$work/cache"
+    HOME="$work/home" XDG_CONFIG_HOME="$work/home/config" MESA_SHADER_CACHE_DIR="$work/cache" "$build/app/fraktal" edit "$file" --frame-log "$log" \
       --state-file "$work/state.json" > /dev/null 2>&1 &
     pid=$!
     # Until the view settles (a frame logged settled) or settle_max seconds after the first line.

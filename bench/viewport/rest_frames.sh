@@ -5,7 +5,9 @@
 # frames after the first picture (the compile before it is not a frame at rest), the march steps
 # a frame took (the last frame's), and the seconds from the first picture until the view settled.
 # With two builds the presets run side by side, old then new, so that the machine's load falls on
-# both alike.
+# both alike. Each run has a shader cache of its own, empty: Mesa keeps llvmpipe's machine code
+# there, so a run after another of the same preset would skip the translations its first frames
+# pay (core/viewport/warm_up.hpp).
 # Usage: bench/viewport/rest_frames.sh BUILD_DIR [OTHER_BUILD_DIR] [SECONDS] [PRESET...]
 #        (default 20 s; kleinian, pseudo_kleinian, menger_carved_by_mandelbulbs, hybrid_kifs_menger, juliabulb)
 set -euo pipefail
@@ -25,7 +27,8 @@ for name in "${presets[@]}"; do
   for build in "${builds[@]}"; do
     log="$work/$name.jsonl"
     rm -f "$log"
-    HOME="$work" timeout "$((seconds + 30))" xvfb-run -a -s "-screen 0 1280x800x24" \
+    rm -rf "$work/cache"
+    HOME="$work" MESA_SHADER_CACHE_DIR="$work/cache" timeout "$((seconds + 30))" xvfb-run -a -s "-screen 0 1280x800x24" \
       "$build/app/fraktal" edit "$root/presets/$name.json" --frame-log "$log" --state-file "$work/state.json" \
       > /dev/null 2>&1 &
     pid=$!

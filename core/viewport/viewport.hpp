@@ -65,6 +65,8 @@ class Viewport {
     // Programs compiled elsewhere, e.g. on a shared context in a background thread (the editor's
     // BackgroundCompiler), so that render() of their structure does not compile.
     void adoptPrograms(std::unique_ptr<ViewportPrograms> programs) { programs_ = std::move(programs); }
+    // Gives the programs up (warm_up.hpp renders with them, then hands them on).
+    std::unique_ptr<ViewportPrograms> releasePrograms() { return std::move(programs_); }
 
     // Changing options takes effect on the next frame (a cone tile change resets).
     void setOptions(const ViewportOptions& options);

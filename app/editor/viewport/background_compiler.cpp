@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "core/viewport/warm_up.hpp"
+
 namespace fraktal::editor {
 
 BackgroundCompiler::BackgroundCompiler(std::function<void()> bind, std::function<void()> unbind)
@@ -55,6 +57,8 @@ void BackgroundCompiler::work() {
         try {
             if (!unavailable.empty()) throw std::runtime_error(unavailable);
             result.programs = std::make_unique<viewport::ViewportPrograms>(formula);
+            // Their machine code too, here rather than in the main thread's first frame.
+            result.programs = viewport::warmUp(std::move(result.programs), formula);
             glFinish();  // complete before another context uses the programs
         } catch (const std::exception& e) {
             result.error = e.what();

@@ -1,0 +1,41 @@
+#include "core/viewport/warm_up.hpp"
+
+#include <stdexcept>
+
+#include "core/viewport/viewport.hpp"
+
+namespace fraktal::viewport {
+
+std::unique_ptr<ViewportPrograms> warmUp(std::unique_ptr<ViewportPrograms> programs, const Formula& formula) {
+    // llvmpipe's machine code is also keyed by whether each bound image's sides are powers of two.
+    // The real grids (a window's viewport and its scaled copies under motion, the 272x170
+    // thumbnails) almost never are, so neither are these: 24 and 20 pixels, their cone images
+    // (tile 8: 3x3) and their reprojection targets (3 rows per row: 72 and 60).
+    constexpr int kRest = 24, kMoving = 20;
+    ViewportOptions options;
+    options.coneTile = 8;
+    Viewport v(options);
+    v.adoptPrograms(std::move(programs));
+    try {
+        RenderSettings render;
+        render.maxSteps = 16;
+        const ShadingSettings shading;
+        Camera camera;
+        v.render(formula, camera, render, shading, kRest, kRest);  // reset: cone, march from start, shade
+        v.render(formula, camera, render, shading, kRest, kRest);  // at rest: march on, accumulate
+        camera.position.x += 0.1;
+        v.render(formula, camera, render, shading, kMoving, kMoving);  // reprojected onto a smaller grid
+        camera.position.x += 0.1;
+        v.render(formula, camera, render, shading, kMoving, kMoving);  // reprojected, the list march
+        options.slices = 2;
+        v.setOptions(options);
+        v.render(formula, camera, render, shading, kRest, kRest);  // back to the larger grid, sliced
+        v.render(formula, camera, render, shading, kRest, kRest);
+        v.readDisplay(1.0f);
+    } catch (const std::exception&) {
+        // The programs linked; only the early translation is lost.
+    }
+    return v.releasePrograms();
+}
+
+}  // namespace fraktal::viewport
