@@ -59,7 +59,9 @@ xdotool mouseup 1
 wait_for '.document.formula.nodes[-1].block' box
 [ "$(estimator)" = box ] || fail "the click did not apply the box estimator (estimator $(estimator))"
 [ "$(q .document.formula.bailout)" = "$offered_bailout" ] || fail "bailout $(q .document.formula.bailout), offered $offered_bailout"
-# Measured again for the new estimator: the offer's factor, or less once the check's further rounds end.
+# Measured again for the new estimator, on a worker: the offer's factor, or less once the check's
+# further rounds end.
+wait_for .stepFactor.measuring false 300
 factor=$(q .document.formula.deFactor)
 check "$factor <= $offered_factor && $factor > 0.05" || fail "factor $factor, offered $offered_factor"
 check "$(q .stepFactor.speed) > 0.05" || fail "the applied estimator's speed is $(q .stepFactor.speed)"

@@ -7,6 +7,7 @@
 
 #include "app/editor/document/document.hpp"
 #include "app/editor/document/export_job.hpp"
+#include "app/editor/document/formula_edits.hpp"
 #include "test_support.hpp"
 
 namespace fraktal::test {
@@ -30,6 +31,15 @@ bool framesWhile(Busy busy, Frame frame, double seconds = 600.0) {
     }
     frame();
     return !busy();
+}
+
+// AutoStepFactor::update as the editor's frames call it, until it applies a measurement (a new
+// structure's settled rounds run on a worker) or has nothing to measure: what that frame's update
+// returned.
+inline bool updateUntilMeasured(editor::AutoStepFactor& a, Formula& f, const Camera& camera) {
+    bool applied = a.update(f, camera);
+    framesWhile([&] { return !applied && a.measuring(); }, [&] { applied = applied || a.update(f, camera); });
+    return applied;
 }
 
 // Polls like the editor's frame loop does until the job ends; false on timeout.

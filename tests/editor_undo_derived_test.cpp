@@ -198,7 +198,9 @@ TEST(UndoDerived, UndoingAValueEditLetsTheMeasurementRunOn) {
     ASSERT_TRUE(addNode(s.doc.preset, *findBlock("rotate"), 1));
     fitFormulaAfterEdit(s.doc.preset);
     frame();
-    // The rotated Mandelbulb's tail calls for further rounds (the case this test needs).
+    // The settled rounds run on a worker; the rotated Mandelbulb's tail then calls for further
+    // rounds (the case this test needs).
+    test::framesWhile([&] { return s.stepFactor.measuring(); }, frame);
     ASSERT_TRUE(s.stepFactor.refining()) << "the settled rounds covered the tail: nothing runs on to undo beside";
     const auto since = s.stepFactor.measuringSince;
     s.doc.preset.formula.iterations = 10;

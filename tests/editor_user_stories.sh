@@ -237,6 +237,7 @@ set -- $(viewport_centre)
 to "$1" "$2"
 xdotool key Delete
 wait_frames 3
+wait_for .stepFactor.measuring false 300
 first=$(q .stepFactor.measured)
 first_rays=$(q .stepFactor.rays)
 wait_for '.stepFactor.refining' false 600

@@ -9,14 +9,13 @@
 #include "app/editor/document/formula_edits.hpp"
 #include "core/de_check.hpp"
 #include "core/safe_step.hpp"
-#include "test_support.hpp"
+#include "editor_test_support.hpp"
 
 using namespace fraktal;
 
 namespace {
 
 constexpr const char* kPresets[] = {"kleinian.json", "pseudo_kleinian.json"};
-
 
 // Runs `fraktal check` on `p`, written to a temporary file.
 test::CliRun checkPreset(const Preset& p, const std::string& name) {
@@ -114,7 +113,7 @@ TEST(KleinianPresets, WrapOutsideItsGroupHasNoSafeStepFactor) {
     EXPECT_NE(r.output.find("PROBLEM: no step factor down to 0.001"), std::string::npos) << r.output;
 
     editor::AutoStepFactor a;
-    ASSERT_TRUE(a.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(a, f, p.camera));
     EXPECT_TRUE(a.noSafeFactor) << "worst " << a.worst;
     EXPECT_EQ(f.deFactor, kMinStepFactor);
 }

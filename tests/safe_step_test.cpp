@@ -22,7 +22,7 @@
 #include "core/preset.hpp"
 #include "core/random_vec.hpp"
 #include "core/scene/formula_fit.hpp"
-#include "test_support.hpp"
+#include "editor_test_support.hpp"
 
 using namespace fraktal;
 
@@ -630,7 +630,7 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
     Formula unit = f;
     unit.deFactor = 1.0;
-    ASSERT_TRUE(a.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(a, f, p.camera));
     std::printf("measured step factor %.3f in %.3f s\n", a.measured, a.seconds);
     EXPECT_EQ(f.deFactor, a.measured);
     EXPECT_EQ(a.measured, measureSafeStep(unit, p.camera, editor::AutoStepFactor::options()).factor);
@@ -646,7 +646,7 @@ TEST(SafeStep, EditorSetsTheCheckedFactorAfterAStructureChange) {
     a.overridden = true;
     f.deFactor = 0.3;
     ASSERT_TRUE(editor::removeNode(f, 0));
-    EXPECT_TRUE(a.update(f, p.camera));
+    EXPECT_TRUE(test::updateUntilMeasured(a, f, p.camera));
     EXPECT_EQ(f.deFactor, 0.3);
 }
 
@@ -662,7 +662,7 @@ TEST(SafeStep, EditorMeasuresAnOpenedFileWhoseFactorWasNeverMeasured) {
     ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
     EXPECT_FALSE(stepFactorMeasured(f));
     editor::AutoStepFactor a = editor::AutoStepFactor::adopting(f);
-    ASSERT_TRUE(a.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(a, f, p.camera));
     if (a.refining()) finishRefining(a, f, p.camera);
     std::printf("opened untagged: factor %.3f measured (the file held %.3f)\n", f.deFactor, own);
     EXPECT_EQ(f.deFactor, a.measured);
@@ -717,7 +717,7 @@ TEST(SafeStep, EditorAppliesTheChecksFurtherRoundsWhenTheyEnd) {
     const EstimatorMeasurement check = measureSafeStep(unit, p.camera, editor::AutoStepFactor::checkOptions());
 
     editor::AutoStepFactor a;  // a structure not measured yet
-    ASSERT_TRUE(a.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(a, f, p.camera));
     const double settled = a.measured;
     const int settledRays = a.rays;
     EXPECT_EQ(f.deFactor, settled);
@@ -734,7 +734,7 @@ TEST(SafeStep, EditorAppliesTheChecksFurtherRoundsWhenTheyEnd) {
     editor::AutoStepFactor byHand;
     byHand.overridden = true;
     f.deFactor = 0.3;
-    ASSERT_TRUE(byHand.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(byHand, f, p.camera));
     finishRefining(byHand, f, p.camera);
     EXPECT_NEAR(byHand.measured, check.factor, 0.0015);
     EXPECT_EQ(f.deFactor, 0.3);
@@ -742,10 +742,10 @@ TEST(SafeStep, EditorAppliesTheChecksFurtherRoundsWhenTheyEnd) {
     // A new structure while they run (a twist in front): whatever ends up applied is the new
     // stack's measurement, the check's where it too gets further rounds.
     editor::AutoStepFactor changed;
-    ASSERT_TRUE(changed.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(changed, f, p.camera));
     ASSERT_TRUE(changed.refining());
     ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
-    ASSERT_TRUE(changed.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(changed, f, p.camera));
     const bool refines = changed.refining();
     finishRefining(changed, f, p.camera);
     Formula twisted = f;
@@ -770,14 +770,14 @@ TEST(SafeStep, EditorKeepsTheFactorWhenNoRayHits) {
     const ParamValue shipped = f.estimator.values[offset];
     f.estimator.values[offset].x = 0.0;
     editor::AutoStepFactor a;  // a structure not measured yet
-    ASSERT_TRUE(a.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(a, f, p.camera));
     EXPECT_TRUE(a.noHits);
     EXPECT_EQ(a.measured, 0.0);
     EXPECT_EQ(f.deFactor, own);
 
     f.estimator.values[offset] = shipped;
     editor::AutoStepFactor b;
-    ASSERT_TRUE(b.update(f, p.camera));
+    ASSERT_TRUE(test::updateUntilMeasured(b, f, p.camera));
     EXPECT_FALSE(b.noHits);
     EXPECT_GT(b.measured, 0.0);
     EXPECT_LT(b.measured, 1.0);  // the estimate overshoots (Knighty's 0.5): the check finds it

@@ -251,8 +251,12 @@ const std::string& drawDocumentViewport(EditorState& s, ViewportView& viewport, 
     const ExportFrame frame = exportFrameOf(s);
     ViewSettings view = s.doc.view;
     if (s.aaCapLimit > 0) view.aaCap = std::min(view.aaCap, s.aaCapLimit);
-    // The frame's one revision of the scene: every part of the viewport decides on it.
-    if (frame.viewFovY == s.doc.preset.camera.fovY) {
+    // The frame's one revision of the scene: every part of the viewport decides on it. A new
+    // structure whose step factor is still measured keeps the last image (the previous factor
+    // could overshoot on it) while its programs compile.
+    if (s.stepFactor.measuring()) {
+        viewport.prepare(s.doc.preset.formula, structure);
+    } else if (frame.viewFovY == s.doc.preset.camera.fovY) {
         viewport.render(s.doc.preset, scene::sceneRevision(s.doc.preset, structure), view, width, height);
     } else {  // a wider export: the viewport widens its view to hold the whole export frame
         Preset shown = s.doc.preset;

@@ -148,6 +148,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     const AutoStepFactor& a = s.stepFactor;
     j["stepFactor"] = {{"measured", a.measured},
                        {"rays", a.rays},
+                       {"measuring", a.measuring()},
                        {"refining", a.refining()},
                        {"overridden", a.overridden},
                        {"noHits", a.noHits},

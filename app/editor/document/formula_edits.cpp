@@ -398,8 +398,7 @@ void AutoStepFactor::remember(bool complete) {
 void AutoStepFactor::restore(const Formula& f) {
     std::string key = f.structureKey();
     if (key == measuredKey) return;  // the same structure: its measurement, ended or running, stands
-    furtherWorker = {};              // stops the rounds measuring the structure left
-    further = {};
+    stopMeasuring();                 // the rounds measuring the structure left
     measuredKey = std::move(key);
     const auto it = known.find(measuredKey);
     if (it == known.end() || !it->second.complete) {
@@ -411,38 +410,20 @@ void AutoStepFactor::restore(const Formula& f) {
     rays = m.rays, noHits = m.noHits, noSafeFactor = m.noSafeFactor;
 }
 
-bool AutoStepFactor::update(Formula& f, const Camera& camera, const std::string& structure) {
-    if (structure == measuredKey) {
-        if (!further.valid() || further.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
-        std::future<EstimatorMeasurement> ended = std::move(further);
-        furtherWorker = {};  // ended: joins at once
-        try {
-            apply(ended.get(), f);
-        } catch (const std::exception&) {
-            remember(true);
-            return false;  // the settled rounds' factor stays
-        }
-        remember(true);
-        return true;
-    }
-    furtherWorker = {};  // stops the rounds measuring the previous structure
+void AutoStepFactor::stopMeasuring() {
+    furtherWorker = {};  // stops (within a round) and joins
+    first = {};
     further = {};
-    measuredKey = structure;
-    if (!f.cpuEvaluable() || !f.estimator.block) return false;
-    measuringSince = std::chrono::steady_clock::now();
-    const EstimatorMeasurement m = measureSafeStep(f, camera, options());
-    apply(m, f);
-    const SafeStepOptions check = checkOptions();
-    const bool settled = noHits || noSafeFactor || check.tailCovered(m.report, *f.estimator.block, f.nodes);
-    remember(settled);
-    if (settled) return true;
-    // The check's rounds from the first: the sampling is seeded, so the factor is the one
-    // `fraktal check` reports for this formula and camera.
+}
+
+void AutoStepFactor::measureOnWorker(const Formula& f, const Camera& camera, SafeStepOptions options, bool yield,
+                                     std::future<EstimatorMeasurement>& into) {
+    furtherWorker = {};
     std::promise<EstimatorMeasurement> result;
-    further = result.get_future();
-    furtherWorker = std::jthread([f, camera, check, result = std::move(result)](std::stop_token stop) mutable {
-        yieldToRendering();
-        SafeStepOptions stoppable = check;
+    into = result.get_future();
+    furtherWorker = std::jthread([f, camera, options, yield, result = std::move(result)](std::stop_token stop) mutable {
+        if (yield) yieldToRendering();
+        SafeStepOptions stoppable = options;
         stoppable.stop = stop;
         try {
             result.set_value(measureSafeStep(f, camera, stoppable));
@@ -450,7 +431,54 @@ bool AutoStepFactor::update(Formula& f, const Camera& camera, const std::string&
             result.set_exception(std::current_exception());
         }
     });
-    return true;
+}
+
+namespace {
+bool ended(const std::future<EstimatorMeasurement>& f) {
+    return f.valid() && f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+}  // namespace
+
+bool AutoStepFactor::update(Formula& f, const Camera& camera, const std::string& structure) {
+    if (structure == measuredKey) {
+        if (ended(first)) {
+            std::future<EstimatorMeasurement> settledRounds = std::move(first);
+            furtherWorker = {};  // ended: joins at once
+            EstimatorMeasurement m;
+            try {
+                m = settledRounds.get();
+            } catch (const std::exception&) {
+                remember(true);
+                return false;  // the factor stays as it was
+            }
+            apply(m, f);
+            const SafeStepOptions check = checkOptions();
+            const bool settled = noHits || noSafeFactor || check.tailCovered(m.report, *f.estimator.block, f.nodes);
+            remember(settled);
+            // The check's rounds from the first: the sampling is seeded, so the factor is the one
+            // `fraktal check` reports for this formula and camera. They give way to the rendering.
+            if (!settled) measureOnWorker(f, camera, check, true, further);
+            return true;
+        }
+        if (!ended(further)) return false;
+        std::future<EstimatorMeasurement> furtherRounds = std::move(further);
+        furtherWorker = {};  // ended: joins at once
+        try {
+            apply(furtherRounds.get(), f);
+        } catch (const std::exception&) {
+            remember(true);
+            return false;  // the settled rounds' factor stays
+        }
+        remember(true);
+        return true;
+    }
+    stopMeasuring();  // the rounds of the previous structure
+    measuredKey = structure;
+    if (!f.cpuEvaluable() || !f.estimator.block) return false;
+    measuringSince = std::chrono::steady_clock::now();
+    // At the editor's own priority: the view waits for this factor.
+    measureOnWorker(f, camera, options(), false, first);
+    return false;
 }
 
 }  // namespace fraktal::editor

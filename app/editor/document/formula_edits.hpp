@@ -105,11 +105,14 @@ std::string upsertCustomBlock(Formula& f, CustomBlock::Definition definition);
 // structure so that a new stack never shows overshoot specks; a factor set by hand is kept
 // (`overridden`) until the user hands it back to the check. An opened document keeps its own.
 //
-// It is measured in two parts. The settled rounds (options()) run between frames and their factor
-// is applied at once. Where the rays' tail is heavy, the check goes on sampling up to 2048 rays
-// (SafeStepOptions::tailRounds), which takes seconds: those further rounds run on a worker thread
-// (`refining()`), and their factor, the one `fraktal check` reports, replaces the first when they
-// end. A new structure, or the editor closing, stops them within a round.
+// It is measured in two parts, both on a worker thread. The settled rounds (options()) took 30-380
+// ms over the shipped presets (two cores): on the main thread that froze the window at every
+// structure edit, so the editor now holds the last image while they run (`measuring()`; the new
+// structure's programs compile meanwhile) and applies their factor when they end. Where the rays'
+// tail is heavy, the check goes on sampling up to 2048 rays (SafeStepOptions::tailRounds), which
+// takes seconds: those further rounds follow on the worker (`refining()`), at a lower priority,
+// and their factor, the one `fraktal check` reports, replaces the first when they end. A new
+// structure, or the editor closing, stops either within a round.
 // A worker thread's measurement gives way to the viewport's rendering, whose threads (llvmpipe's)
 // share the cores: the calling thread's nice value is raised (Linux: it is per thread).
 void yieldToRendering();
@@ -144,12 +147,13 @@ struct AutoStepFactor {
     static constexpr size_t kKnownStructures = 64;
     std::map<std::string, Measured> known;
     unsigned long knownOrder = 0;
-    // The further rounds for measuredKey, while they run.
+    // The settled rounds for measuredKey, then its further rounds, while they run.
+    std::future<EstimatorMeasurement> first{};
     std::future<EstimatorMeasurement> further{};
     std::chrono::steady_clock::time_point measuringSince{};
     std::jthread furtherWorker{};  // last: destroyed (stopped and joined) before what it writes to
 
-    // The settled rounds alone: the part measured between frames.
+    // The settled rounds alone: the factor applied first.
     static SafeStepOptions options() {
         SafeStepOptions quick;
         quick.tailRounds = 0;
@@ -170,19 +174,27 @@ struct AutoStepFactor {
     // the restored state (UndoHistory::amendPresent), recording no step. Stops the further
     // rounds of the structure left; those of the same structure (an undone value edit) go on.
     void restore(const Formula& f);
-    // When f's structure differs from measuredKey: measures its estimator from `camera` (CPU;
-    // formulas with custom GLSL blocks keep their factor) and, unless overridden, sets
-    // f.deFactor (not when noHits); starts the further rounds where the tail calls for them.
-    // Otherwise, when the further rounds have ended: applies their factor the same way.
-    // True when it measured or applied. `structure` is f.structureKey(), computed once a frame by
-    // the editor (the two-argument form computes it).
+    // When f's structure differs from measuredKey: starts measuring its estimator from `camera`
+    // on the worker (CPU; formulas with custom GLSL blocks keep their factor). When the settled
+    // rounds have ended: unless overridden, sets f.deFactor to their factor (not when noHits) and
+    // starts the further rounds where the tail calls for them. When the further rounds have
+    // ended: applies their factor the same way. True when it applied a measurement. `structure`
+    // is f.structureKey(), computed once a frame by the editor (the two-argument form computes it).
     bool update(Formula& f, const Camera& camera, const std::string& structure);
     bool update(Formula& f, const Camera& camera) { return update(f, camera, f.structureKey()); }
-    bool refining() const { return further.valid(); }
+    // The settled rounds run: f.deFactor is still the previous structure's.
+    bool measuring() const { return first.valid(); }
+    // Any rounds run: the factor shown may still change.
+    bool refining() const { return first.valid() || further.valid(); }
 
    private:
     void apply(const EstimatorMeasurement& m, Formula& f);
     void remember(bool complete);
+    // Measures f from `camera` with `options` on furtherWorker, into `into`; lowered in priority
+    // first when `yield`.
+    void measureOnWorker(const Formula& f, const Camera& camera, SafeStepOptions options, bool yield,
+                         std::future<EstimatorMeasurement>& into);
+    void stopMeasuring();
 };
 
 // The node index a compile-error log talks about (`node 3 "Box fold" (box_fold)...`, numbered

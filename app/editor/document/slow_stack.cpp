@@ -19,6 +19,8 @@ bool SlowStackAdvice::update(const Formula& f, const Camera& camera, const AutoS
         }
         changed = true;
     }
+    // A new structure's settled rounds still run: its figures are the previous structure's.
+    if (a.measuring()) return changed;
     char factor[32];
     std::snprintf(factor, sizeof factor, "@%.6g", a.measured);
     const std::string measurement = a.measuredKey + factor;
@@ -52,8 +54,8 @@ bool applyFasterEstimator(Preset& p, AutoStepFactor& stepFactor, const SlowStack
     p.formula.estimator.values = faster.estimator.values;
     p.formula.bailout = faster.bailout;
     p.formula.deFactor = faster.deFactor;
-    // Measured again in this frame (the same settled rounds that gave the advice its factor),
-    // then by the check's further rounds on the worker, as after any structure change.
+    // Measured again on the worker from the next frame (the same settled rounds that gave the
+    // advice its factor, then the check's further rounds), as after any structure change.
     stepFactor.overridden = false;
     stepFactor.measuredKey.clear();
     return true;

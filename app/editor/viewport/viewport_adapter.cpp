@@ -69,6 +69,14 @@ bool CoreViewportView::programsReady(const Formula& formula, const std::string& 
     return true;
 }
 
+void CoreViewportView::prepare(const Formula& formula, const std::string& structure) {
+    stats_.settled = false;
+    if (compiler_ && viewport_.needsPrograms(structure) && structure != failedStructure_) {
+        compiler_->request(formula);
+        stats_.compiling = true;
+    }
+}
+
 CoreViewportView::~CoreViewportView() { glDeleteFramebuffers(1, &pathReadFramebuffer_); }
 
 const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {

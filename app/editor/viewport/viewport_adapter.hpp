@@ -50,6 +50,7 @@ class CoreViewportView final : public ViewportView {
     using ViewportView::render;
     void render(const Preset& preset, const scene::SceneRevision& revision, const ViewSettings& settings, int width,
                 int height) override;
+    void prepare(const Formula& formula, const std::string& structure) override;
     GLuint displayTexture() const override { return displayTarget_.texture(); }
     int width() const override { return displayTarget_.width(); }
     int height() const override { return displayTarget_.height(); }

@@ -54,6 +54,10 @@ class ViewportView {
     void render(const Preset& preset, const ViewSettings& settings, int width, int height) {
         render(preset, scene::sceneRevision(preset), settings, width, height);
     }
+    // What a frame of this structure needs and can get ready before it renders (its programs, on
+    // the background compiler), without rendering: the editor holds the last image while a new
+    // structure's step factor is measured. The image shown is then not this document's: never settled.
+    virtual void prepare(const Formula& /*formula*/, const std::string& /*structure*/) {}
     // The display-referred RGBA8 image, top row first (draw with ImGui uv (0,0)-(1,1)). 0 before
     // the first frame.
     virtual GLuint displayTexture() const = 0;
