@@ -17,8 +17,10 @@
 #include <fstream>
 #include <functional>
 #include <random>
+#include <set>
 #include <thread>
 
+#include "core/image/png_writer.hpp"
 #include "core/import/fract_import.hpp"
 #include "core/import/mb2_sequence.hpp"
 #include "core/random_vec.hpp"
@@ -2570,14 +2572,13 @@ struct Expected {
     int width = 128;      // the renders' size, width x 3/4 width
 };
 
-TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
-    const fs::path share = "/usr/share/mandelbulber2";
-    ASSERT_TRUE(fs::exists("/usr/bin/mandelbulber2"))
-        << "mandelbulber2 is missing: scripts/install-deps.sh installs it";
+// The fixed set: files that import and match, each with its reason where it is there for one, and
+// files refused by name.
+std::vector<Expected> fixedSet() {
     const std::string km = "examples/Krzysztof Marczak collection - license Creative Commons (CC-BY 4.0)/";
     const std::string gm = "examples/Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/";
     const std::string rp = "examples/Robert Pancoast collection - license Creative Commons (CC-BY 4.0)/";
-    const std::vector<Expected> cases = {
+    return {
         {"toolbar/mandelbox scale 2.fract", ""},
         {"toolbar/mandelbox scale -2.fract", ""},
         {"toolbar/menger sponge.fract", ""},
@@ -2652,16 +2653,73 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         // Mandelbulber2's dIFS diagonal box: the box measured after the step, over its DE |s| + 1.
         {"formula/img/difs_box_diagonal_v1.fract", ""},
     };
+}
+
+const fs::path kMb2Share = "/usr/share/mandelbulber2";
+
+std::string renderSize(const Expected& c) { return std::to_string(c.width) + "x" + std::to_string(c.width * 3 / 4); }
+
+// mandelbulber2's silhouette of a file of the set, rendered now by the installed mandelbulber2.
+Mask mandelbulber2Silhouette(const Expected& c, const Sandbox& box, const std::string& tag) {
+    const std::string home = box.path(tag + "_home");
+    fs::create_directories(home);
+    const std::string peer = "HOME='" + home + "' QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r " +
+                             renderSize(c) + " -o '" + box.path(tag + "_mb") + "' '" +
+                             peerSettings(kMb2Share / c.file, box.path(tag + "_peer.fract")) +
+                             "' > /dev/null 2>&1 < /dev/null";
+    EXPECT_EQ(std::system(peer.c_str()), 0) << c.file;
+    return pngAlphaMask(box.path(tag + "_mb.png"));
+}
+
+// mandelbulber2's silhouettes of the set are kept in tests/data/mb2_silhouettes/, one PNG per
+// file (white where its alpha is over one half), named after the file's path: rendering them took
+// about 4 s of CPU each at 128x96, most of this comparison's time. They are mandelbulber2's own
+// (Debian 12's 2.20): `FRAKTAL_STORE_MB2_SILHOUETTES=1 fraktal_tests --gtest_filter=
+// ImportVsMandelbulber2.FixedSet*` renders them again and stores them, and
+// ImportVsMandelbulber2.StoredSilhouettesAreTheInstalledMandelbulber2s compares a spread of them
+// with the installed program's on every run.
+fs::path storedSilhouettes() { return test::sourceDir() / "tests" / "data" / "mb2_silhouettes"; }
+
+fs::path storedSilhouettePath(const Expected& c) {
+    std::string name;
+    for (char ch : c.file.substr(0, c.file.rfind('.'))) name += std::isalnum((unsigned char)ch) ? ch : '_';
+    return storedSilhouettes() / (name + ".png");
+}
+
+Mask readStoredSilhouette(const fs::path& path) {
+    int w = 0, h = 0, n = 0;
+    stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &n, 1);
+    if (!pixels) return {};
+    Mask m{w, h, {}};
+    for (size_t i = 0; i < size_t(w) * size_t(h); ++i) m.hit.push_back(pixels[i] >= 128);
+    stbi_image_free(pixels);
+    return m;
+}
+
+void storeSilhouette(const fs::path& path, const Mask& m) {
+    std::vector<uint8_t> rgb;
+    for (bool h : m.hit) rgb.insert(rgb.end(), 3, h ? 255 : 0);
+    writePngAtomic(path, m.width, m.height, rgb);
+}
+
+bool storingSilhouettes() {
+    const char* store = std::getenv("FRAKTAL_STORE_MB2_SILHOUETTES");
+    return store && *store && std::string(store) != "0";
+}
+
+TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
+    ASSERT_TRUE(fs::exists("/usr/bin/mandelbulber2"))
+        << "mandelbulber2 is missing: scripts/install-deps.sh installs it";
+    const std::vector<Expected> cases = fixedSet();
     // Two files at a time (each import's safe-step measurement and each render keep about one of
     // the two cores busy), each in files of its own.
     const Sandbox box;
     auto check = [&](const Expected& c, const std::string& tag) {
-        const std::string size = std::to_string(c.width) + "x" + std::to_string(c.width * 3 / 4);
         SCOPED_TRACE(c.file);
         const auto started = std::chrono::steady_clock::now();
-        const fs::path file = share / c.file;
+        const fs::path file = kMb2Share / c.file;
         ASSERT_TRUE(fs::exists(file));
-        const std::string preset = box.path(tag + ".json"), exr = box.path(tag + ".exr"), home = box.path(tag);
+        const std::string preset = box.path(tag + ".json"), exr = box.path(tag + ".exr");
         const auto imported = test::runCli("import '" + file.string() + "' -q -o '" + preset + "'");
         if (!c.refuse.empty()) {
             EXPECT_NE(imported.exitCode, 0);
@@ -2669,15 +2727,14 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
             return;
         }
         ASSERT_EQ(imported.exitCode, 0) << imported.output;
-        const auto rendered = test::runCli("render '" + preset + "' --size " + size + " --spp 1 -q -o '" + exr + "'");
+        const auto rendered =
+            test::runCli("render '" + preset + "' --size " + renderSize(c) + " --spp 1 -q -o '" + exr + "'");
         ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
-        fs::create_directories(home);
-        const std::string peer = "HOME='" + home + "' QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r " +
-                                 size + " -o '" + box.path(tag + "_mb") + "' '" +
-                                 peerSettings(file, box.path(tag + "_peer.fract")) + "' > /dev/null 2>&1 < /dev/null";
-        ASSERT_EQ(std::system(peer.c_str()), 0);
-        const Mask ours = exrMask(exr), theirs = pngAlphaMask(box.path(tag + "_mb.png"));
-        ASSERT_EQ(theirs.width, c.width);
+        const fs::path stored = storedSilhouettePath(c);
+        if (storingSilhouettes()) storeSilhouette(stored, mandelbulber2Silhouette(c, box, tag));
+        const Mask ours = exrMask(exr), theirs = readStoredSilhouette(stored);
+        ASSERT_EQ(theirs.width, c.width) << stored << " is missing or of another size: FRAKTAL_STORE_MB2_SILHOUETTES=1 "
+                                         << "stores mandelbulber2's silhouettes of the set again";
         ASSERT_EQ(ours.hit.size(), theirs.hit.size());
         long covered = 0;
         for (bool h : theirs.hit) covered += h;
@@ -2695,6 +2752,43 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
     std::thread other(worker);
     worker();
     other.join();
+}
+
+// The stored silhouettes are the installed mandelbulber2's: every file of the set that imports has
+// one and every one belongs to such a file, and a spread of them (every fifth) is rendered again
+// by mandelbulber2 and must be the same but for a few pixels (a new mandelbulber2 that renders
+// differently shows here first).
+TEST(ImportVsMandelbulber2, StoredSilhouettesAreTheInstalledMandelbulber2s) {
+    ASSERT_TRUE(fs::exists("/usr/bin/mandelbulber2"))
+        << "mandelbulber2 is missing: scripts/install-deps.sh installs it";
+    std::vector<Expected> matched;
+    for (const Expected& c : fixedSet())
+        if (c.refuse.empty()) matched.push_back(c);
+    std::set<fs::path> expected;
+    for (const Expected& c : matched) {
+        expected.insert(storedSilhouettePath(c));
+        EXPECT_TRUE(fs::exists(storedSilhouettePath(c))) << c.file << " has no stored silhouette";
+    }
+    for (const fs::directory_entry& e : fs::directory_iterator(storedSilhouettes())) {
+        if (e.path().extension() != ".png") continue;
+        EXPECT_TRUE(expected.count(e.path())) << e.path() << " belongs to no file of the set that imports";
+    }
+    const Sandbox box;
+    for (size_t k = 0; k < matched.size(); k += 5) {
+        const Expected& c = matched[k];
+        SCOPED_TRACE(c.file);
+        const Mask now = mandelbulber2Silhouette(c, box, "live" + std::to_string(k));
+        const Mask stored = readStoredSilhouette(storedSilhouettePath(c));
+        ASSERT_EQ(now.width, stored.width);
+        ASSERT_EQ(now.height, stored.height);
+        size_t differ = 0;
+        for (size_t i = 0; i < now.hit.size(); ++i) differ += now.hit[i] != stored.hit[i];
+        // mandelbulber2 is not deterministic to the pixel: two runs of the same file differed in 1
+        // and 5 silhouette pixels of 12288 (hybrid20, boolean001). A mandelbulber2 that renders
+        // the file otherwise differs in far more.
+        EXPECT_LE(differ, now.hit.size() / 200)
+            << "pixels where the installed mandelbulber2's silhouette differs from the stored one";
+    }
 }
 
 }  // namespace
