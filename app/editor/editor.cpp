@@ -465,7 +465,7 @@ int runEditor(const EditorOptions& o) {
                 if (thumbnailContext)
                     thumbnails.compiler = std::make_unique<BackgroundCompiler>(
                         [thumbnailContext] { glfwMakeContextCurrent(thumbnailContext); },
-                        [] { glfwMakeContextCurrent(nullptr); });
+                        [] { glfwMakeContextCurrent(nullptr); }, viewport::WarmUpFrames::Still);
             }
             s.browser.rendering = s.browser.visible && renderNextThumbnail(thumbnails, s.browser, *s.color);
             reportClamps.reset();

@@ -6,14 +6,16 @@
 
 namespace fraktal::viewport {
 
-std::unique_ptr<ViewportPrograms> warmUp(std::unique_ptr<ViewportPrograms> programs, const Formula& formula) {
+std::unique_ptr<ViewportPrograms> warmUp(std::unique_ptr<ViewportPrograms> programs, const Formula& formula,
+                                         WarmUpFrames frames) {
     // llvmpipe's machine code is also keyed by whether each bound image's sides are powers of two.
     // The real grids (a window's viewport and its scaled copies under motion, the 272x170
     // thumbnails) almost never are, so neither are these: 24 and 20 pixels, their cone images
     // (tile 8: 3x3) and their reprojection targets (3 rows per row: 72 and 60).
     constexpr int kRest = 24, kMoving = 20;
+    const bool motion = frames == WarmUpFrames::StillAndMotion;
     ViewportOptions options;
-    options.coneTile = 8;
+    options.coneTile = motion ? 8 : 0;  // the editor's cone pre-pass is an option of its own (off by default)
     Viewport v(options);
     v.adoptPrograms(std::move(programs));
     try {
@@ -21,17 +23,18 @@ std::unique_ptr<ViewportPrograms> warmUp(std::unique_ptr<ViewportPrograms> progr
         render.maxSteps = 16;
         const ShadingSettings shading;
         Camera camera;
-        v.render(formula, camera, render, shading, kRest, kRest);  // reset: cone, march from start, shade
+        v.render(formula, camera, render, shading, kRest, kRest);  // reset: march from the start, shade
         v.render(formula, camera, render, shading, kRest, kRest);  // at rest: march on, accumulate
-        camera.position.x += 0.1;
-        v.render(formula, camera, render, shading, kMoving, kMoving);  // reprojected onto a smaller grid
-        camera.position.x += 0.1;
-        v.render(formula, camera, render, shading, kMoving, kMoving);  // reprojected, the list march
+        if (motion) {
+            camera.position.x += 0.1;
+            v.render(formula, camera, render, shading, kMoving, kMoving);  // reprojected onto a smaller grid
+            camera.position.x += 0.1;
+            v.render(formula, camera, render, shading, kMoving, kMoving);  // reprojected, the list march
+        }
         options.slices = 2;
         v.setOptions(options);
-        v.render(formula, camera, render, shading, kRest, kRest);  // back to the larger grid, sliced
+        v.render(formula, camera, render, shading, kRest, kRest);  // sliced (back to the larger grid)
         v.render(formula, camera, render, shading, kRest, kRest);
-        v.readDisplay(1.0f);
     } catch (const std::exception&) {
         // The programs linked; only the early translation is lost.
     }

@@ -17,10 +17,15 @@
 
 namespace fraktal::viewport {
 
+// Which frames a viewport of these programs will render: a view that only refines at rest (a
+// thumbnail) never runs the reprojection, the march list, the motion filter or the cone pre-pass.
+enum class WarmUpFrames { StillAndMotion, Still };
+
 // Renders tiny frames with `programs` (built for `formula`'s structure) on the calling thread's
-// context: a reset with the cone pre-pass, a frame at rest, two reprojected frames on a smaller
-// grid (the resampling blit too), sliced frames at rest, and the display. Returns the programs,
+// context: a reset, a frame at rest and sliced frames at rest; with motion also the cone pre-pass
+// and two reprojected frames on a smaller grid (the resampling blit too). Returns the programs,
 // unchanged. Best effort: a failure leaves the translation to the first real frame.
-std::unique_ptr<ViewportPrograms> warmUp(std::unique_ptr<ViewportPrograms> programs, const Formula& formula);
+std::unique_ptr<ViewportPrograms> warmUp(std::unique_ptr<ViewportPrograms> programs, const Formula& formula,
+                                         WarmUpFrames frames = WarmUpFrames::StillAndMotion);
 
 }  // namespace fraktal::viewport

@@ -2,12 +2,11 @@
 
 #include <stdexcept>
 
-#include "core/viewport/warm_up.hpp"
-
 namespace fraktal::editor {
 
-BackgroundCompiler::BackgroundCompiler(std::function<void()> bind, std::function<void()> unbind)
-    : bind_(std::move(bind)), unbind_(std::move(unbind)), worker_([this] { work(); }) {}
+BackgroundCompiler::BackgroundCompiler(std::function<void()> bind, std::function<void()> unbind,
+                                       viewport::WarmUpFrames frames)
+    : bind_(std::move(bind)), unbind_(std::move(unbind)), frames_(frames), worker_([this] { work(); }) {}
 
 BackgroundCompiler::~BackgroundCompiler() {
     {
@@ -58,7 +57,7 @@ void BackgroundCompiler::work() {
             if (!unavailable.empty()) throw std::runtime_error(unavailable);
             result.programs = std::make_unique<viewport::ViewportPrograms>(formula);
             // Their machine code too, here rather than in the main thread's first frame.
-            result.programs = viewport::warmUp(std::move(result.programs), formula);
+            result.programs = viewport::warmUp(std::move(result.programs), formula, frames_);
             glFinish();  // complete before another context uses the programs
         } catch (const std::exception& e) {
             result.error = e.what();

@@ -18,6 +18,7 @@
 
 #include "core/formula.hpp"
 #include "core/viewport/viewport_programs.hpp"
+#include "core/viewport/warm_up.hpp"
 
 namespace fraktal::editor {
 
@@ -29,7 +30,10 @@ class BackgroundCompiler {
         std::string error;  // the compile log naming the node (explainLog) when it failed
     };
 
-    BackgroundCompiler(std::function<void()> bind, std::function<void()> unbind);
+    // `frames`: which passes the programs' viewport runs, whose machine code the worker gets
+    // before handing them over (core/viewport/warm_up.hpp).
+    BackgroundCompiler(std::function<void()> bind, std::function<void()> unbind,
+                       viewport::WarmUpFrames frames = viewport::WarmUpFrames::StillAndMotion);
     ~BackgroundCompiler();
     BackgroundCompiler(const BackgroundCompiler&) = delete;
     BackgroundCompiler& operator=(const BackgroundCompiler&) = delete;
@@ -43,6 +47,7 @@ class BackgroundCompiler {
     void work();
 
     std::function<void()> bind_, unbind_;
+    viewport::WarmUpFrames frames_;
     std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<Formula> queued_;
