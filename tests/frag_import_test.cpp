@@ -373,6 +373,27 @@ TEST(FragImport, CommandLine) {
     EXPECT_TRUE(std::filesystem::exists(box.path("m.exr")));
 }
 
+// `fraktal import` measures a frag's safe step on the GPU (its DE has no CPU twin), as the check
+// does: the preset holds the measured factor, tagged for its structure, in place of FudgeFactor,
+// and `fraktal check` on the written preset finds it safe on the check's own rays.
+TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
+    const test::Sandbox box("fraktal_frag_measure_");
+    for (const char* name : {"menger.frag", "init_bulb.frag"}) {
+        SCOPED_TRACE(name);
+        const std::string out = box.path(std::string(name) + ".json");
+        const auto imported = test::runCli("import '" + fragPath(name).string() + "' -o '" + out + "'");
+        ASSERT_EQ(imported.exitCode, 0) << imported.output;
+        const Preset p = loadPreset(out);
+        EXPECT_TRUE(stepFactorMeasured(p.formula)) << "the factor is not tagged as measured for the structure";
+        const Preset unmeasured = importFrag(name).preset;  // no GL sampler: the frag's FudgeFactor
+        EXPECT_FALSE(stepFactorMeasured(unmeasured.formula));
+        const auto checked = test::runCli("check '" + out + "'");
+        EXPECT_EQ(checked.exitCode, 0) << checked.output;
+        std::printf("%s: measured step factor %.3f (FudgeFactor %.3f)\n", name, p.formula.deFactor,
+                    unmeasured.formula.deFactor);
+    }
+}
+
 // A uniform of a kind fraktal's parameters lack (a vec4 slider) is named and refuses the file;
 // lenient, it keeps the preset's value as a constant in the DE.
 TEST(FragImport, UnmappableUniformIsNamedAndKeptAsAConstantWhenLenient) {

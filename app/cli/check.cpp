@@ -421,7 +421,7 @@ int runCheck(const CheckOptions& o) {
 }  // namespace
 
 Preset sceneAtFrame(const std::string& file, std::optional<int> frame) {
-    Preset preset = loadSceneFile(file);
+    Preset preset = loadSceneFile(file, headlessGlslSampler());
     if (!frame) return preset;
     const Animation& a = preset.animation;
     if (a.empty())

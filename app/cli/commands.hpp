@@ -3,9 +3,11 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
+#include "core/de_check.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::cli {
@@ -25,7 +27,12 @@ void addFarmCommand(CLI::App& app, Action& action);
 void addImportCommand(CLI::App& app, Action& action);
 void addMeshCommand(CLI::App& app, Action& action);
 
-// A scene file (preset or .fract) as loaded, or its animation's `frame` (`--frame N` of check and
+// Samples a formula that only GLSL evaluates (a frag's DE) on a headless GL context made at the
+// first call and kept while the returned function lives, so that an import measures its safe step
+// (SceneImportOptions::glslSampler); gives null where no GL context can be made.
+std::function<std::unique_ptr<FormulaSampler>(const Formula&)> headlessGlslSampler();
+
+// A scene file (preset, .fract or .frag) as loaded, or its animation's `frame` (`--frame N` of check and
 // mesh); a frame on a still or outside the animation is an error naming the file.
 Preset sceneAtFrame(const std::string& file, std::optional<int> frame);
 

@@ -8,6 +8,8 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "core/gl/context.hpp"
+#include "core/gl/de_probe.hpp"
 #include "core/import/frag_file.hpp"
 #include "core/scene/scene_import.hpp"
 
@@ -23,6 +25,19 @@ struct ImportArgs {
     std::vector<std::string> includeDirs;
 };
 }  // namespace
+
+std::function<std::unique_ptr<FormulaSampler>(const Formula&)> headlessGlslSampler() {
+    auto context = std::make_shared<std::unique_ptr<gl::HeadlessContext>>();
+    return [context](const Formula& f) -> std::unique_ptr<FormulaSampler> {
+        try {
+            if (!*context) *context = gl::HeadlessContext::create();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "the step factor is not measured: %s\n", e.what());
+            return nullptr;
+        }
+        return std::make_unique<gl::GpuSampler>(f);
+    };
+}
 
 void addImportCommand(CLI::App& app, Action& action) {
     auto a = std::make_shared<ImportArgs>();
@@ -51,6 +66,7 @@ void addImportCommand(CLI::App& app, Action& action) {
             SceneImportOptions options{.lenient = a->lenient};
             options.fragPreset = a->preset;
             for (const std::string& dir : a->includeDirs) options.includeDirs.emplace_back(dir);
+            options.glslSampler = headlessGlslSampler();
             const ImportedScene scene = importSceneFile(a->input, options);
             const std::filesystem::path output = a->output.empty()
                                                      ? std::filesystem::path(a->input).stem().concat(".json")

@@ -61,7 +61,7 @@ Preset loadInput(const std::string& input) {
         if (!std::filesystem::is_regular_file(input, ec)) throw PresetError(input, "", "no such file");
         return parsePreset(readExrPreset(input), input + " (embedded preset)");
     }
-    return loadSceneFile(input);
+    return loadSceneFile(input, headlessGlslSampler());
 }
 
 // A 2D preset (presets/2d) or a 2D still's EXR (its embedded 2D preset); nullopt for 3D input.

@@ -57,8 +57,31 @@ Preset readBack(const std::filesystem::path& path, const Preset& preset) {
     }
 }
 
-// A Fragmentarium frag: its DE as a whole-DE estimator. The safe step is not measured here (no
-// CPU twin): the frag's FudgeFactor stays the step factor.
+// A Fragmentarium frag's safe step, measured where the caller gives a GL sampler (its DE has no CPU
+// twin). FragM multiplies the estimate by FudgeFactor; the measured factor takes its place. A frag
+// whose estimate nothing vouches for (no ray meets the object, or no factor is safe) keeps its
+// FudgeFactor, and the description says so.
+void measureFragStep(frag::FragImport& result, ImportedScene& scene, const SceneImportOptions& options) {
+    if (!options.measure || !options.glslSampler) return;
+    Formula& f = result.preset.formula;
+    const std::unique_ptr<FormulaSampler> sampler = options.glslSampler(f);
+    if (!sampler) return;
+    const EstimatorMeasurement m = measureSafeStep(*sampler, result.preset.camera);
+    if (m.report.samples == 0 || !hasSafeStepFactor(m)) {
+        const frag::ImportItem kept{"FudgeFactor", m.report.samples == 0
+                                                       ? "kept as the step factor: no ray of the check met the object"
+                                                       : "kept as the step factor: the estimate overshoots by more "
+                                                         "than any factor makes up for"};
+        result.approximated.push_back(kept);
+        scene.approximated.push_back(kept.text());
+        return;
+    }
+    f.deFactor = m.factor;
+    f.deFactorMeasuredFor = stepFactorTag(f);
+}
+
+// A Fragmentarium frag: its DE as a whole-DE estimator, its step factor measured on the GPU when
+// the caller can (measureFragStep).
 ImportedScene importFragScene(const std::filesystem::path& path, const SceneImportOptions& options) {
     const frag::FragFile file = frag::loadFragFile(path, frag::importParseOptions(options.includeDirs));
     if (file.doNotRun)
@@ -69,6 +92,7 @@ ImportedScene importFragScene(const std::filesystem::path& path, const SceneImpo
     for (const frag::ImportItem& item : result.approximated) scene.approximated.push_back(item.text());
     refuseUnlessLenient(path, scene, options);
     result.preset.name = path.stem().string();
+    measureFragStep(result, scene, options);
     result.preset.description = frag::importDescription(file, result);
     keepReachOf256Steps(result.preset);
     scene.preset = readBack(path, result.preset);
@@ -116,8 +140,9 @@ ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImpo
     return scene;
 }
 
-Preset loadSceneFile(const std::filesystem::path& path) {
-    if (isImportedSceneFile(path)) return importSceneFile(path).preset;
+Preset loadSceneFile(const std::filesystem::path& path,
+                     const std::function<std::unique_ptr<FormulaSampler>(const Formula&)>& glslSampler) {
+    if (isImportedSceneFile(path)) return importSceneFile(path, {.glslSampler = glslSampler}).preset;
     return loadPreset(path);
 }
 

@@ -1,14 +1,18 @@
 // Opening another program's scene file as a fraktal preset: a Mandelbulber2 .fract file or a
 // Fragmentarium .frag through core/import (the mapping), then what follows any structure change
-// here: the bound fitted to the object and the safe step measured (for a .fract; a frag's DE is
-// GLSL alone, with no CPU twin to measure on). The command line (`fraktal import`, `fraktal render
-// FILE.fract`) and the editor (File > Open, a dropped file) share it.
+// here: the bound fitted to the object (a .fract) and the safe step measured (a frag's DE is GLSL
+// alone, with no CPU twin: it is measured on a GL context the caller provides). The command line
+// (`fraktal import`, `fraktal render FILE.fract`) and the editor (File > Open, a dropped file)
+// share it.
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/de_check.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal {
@@ -26,6 +30,10 @@ struct SceneImportOptions {
     // fraktal's built-in ones (a FragM install's Examples/Include).
     std::string fragPreset = {};
     std::vector<std::filesystem::path> includeDirs = {};
+    // How a formula that only GLSL evaluates (a frag's DE) is sampled to measure its safe step: a
+    // GL sampler (gl::GpuSampler) on a context the caller makes current, or null when it has none.
+    // Without one a frag's FudgeFactor stays its step factor, unmeasured.
+    std::function<std::unique_ptr<FormulaSampler>(const Formula&)> glslSampler = {};
 };
 
 struct ImportedScene {
@@ -42,7 +50,8 @@ bool isImportedSceneFile(const std::filesystem::path& path);
 ImportedScene importSceneFile(const std::filesystem::path& path, const SceneImportOptions& options = {});
 
 // A preset or an imported scene: what `fraktal render` and `fraktal check` open. Imports are
-// strict here (no --lenient).
-Preset loadSceneFile(const std::filesystem::path& path);
+// strict here (no --lenient); `glslSampler` as in SceneImportOptions.
+Preset loadSceneFile(const std::filesystem::path& path,
+                     const std::function<std::unique_ptr<FormulaSampler>(const Formula&)>& glslSampler = {});
 
 }  // namespace fraktal
