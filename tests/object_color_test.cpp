@@ -225,6 +225,12 @@ TEST(ObjectColor, FloorIsOneColourThatChangesWithoutRecompiling) {
     r.height = kHeight;
     r.spp = 1;
     gl::StillRenderer renderer(grey.formula, 128);
+    // shade.glsl declares one colour for each object a formula may hold, and no more.
+    auto location = [&](int k) {
+        return glGetUniformLocation(renderer.program().id(), ("u_objectColors[" + std::to_string(k) + "]").c_str());
+    };
+    EXPECT_GE(location(kMaxObjects - 1), 0);
+    EXPECT_EQ(location(kMaxObjects), -1);
     std::vector<vec3> colourShown[2];
     const Preset* scenes[] = {&grey, &rust};
     for (int s = 0; s < 2; ++s) {
