@@ -244,7 +244,8 @@ Evaluation evaluate(const Formula& f, const vec3& pos, double hitThreshold) {
         }
     }
     if (!f.fractals.empty()) e.escaped = !e.inside;
-    if (!f.objects.empty()) e.distance = combineObjects(f.objects, pos, e.distance, e.inside, f.membershipIsFlag());
+    if (!f.objects.empty())
+        e.distance = combineObjects(f.objects, pos, e.distance, e.inside, f.membershipIsFlag(), e.surface);
     return e;
 }
 

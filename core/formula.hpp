@@ -143,6 +143,9 @@ struct Evaluation {
     bool escaped = false;        // the orbit passed the bailout
     bool inside = false;         // membership, per the estimator's Membership rule and the objects
     double orbitGradient = 0.0;  // P4::orbitGradient, for estimators that read it (else 0)
+    // The surface the distance is of: kFractalSurface (the fractals, coloured by the trap) or the
+    // index of an object beside them (coloured by its own colour).
+    int surface = kFractalSurface;
 };
 
 // Membership by the estimator's rule: escape-time formulas are inside where the orbit stayed

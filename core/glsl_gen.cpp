@@ -94,10 +94,11 @@ std::string nodeCall(const FractalNames& names, int k, const Node& node, bool es
 }
 
 // The objects beside the fractal: a function per object (its kind's body under its own #line
-// numbers, after the estimator's), then fraktalObjects(pos, d, escaped), which combines them with
-// the estimate in order; it mirrors combineObjects() in core/scene_object.cpp. `escaped` is the
-// escape-time membership's flag of an orbit outside, which an object sets or clears. Returns
-// whether it emitted fraktalObjects (none without objects: the estimate is returned as it is).
+// numbers, after the estimator's), then fraktalObjects(pos, d, escaped, surface), which combines
+// them with the estimate in order; it mirrors combineObjects() in core/scene_object.cpp. `escaped`
+// is the escape-time membership's flag of an orbit outside, which an object sets or clears;
+// `surface` becomes the index of the object whose distance the result is. Returns whether it
+// emitted fraktalObjects (none without objects: the estimate is returned as it is).
 bool emitObjects(GlslEmitter& e, const Formula& f, int first, std::vector<std::string>& names) {
     std::string combine;
     for (size_t j = 0; j < f.objects.size(); ++j) {
@@ -122,20 +123,26 @@ bool emitObjects(GlslEmitter& e, const Formula& f, int first, std::vector<std::s
         e.nodeFunction(first + k, o.block->id, names.back(), "float fraktal_object" + std::to_string(j) + "(vec3 pos",
                        params, o.block->glsl);
         const std::string od = o.hollow ? "abs(" + call + ")" : call;
+        // `taken`: the object's distance as the operation takes it; where it wins, the result is
+        // the object's surface.
+        const std::string wins = "if (wins) { d = taken; surface = " + std::to_string(k) + "; } }\n";
         switch (o.operation) {
             case ObjectOperation::Join:
-                combine += "    { float o = " + od + "; d = min(d, o); if (o <= 0.0) escaped = false; }\n";
+                combine += "    { float o = " + od +
+                           "; float taken = o; bool wins = o < d; if (o <= 0.0) escaped = false; " + wins;
                 break;
             case ObjectOperation::Intersect:
-                combine += "    { float o = " + od + "; d = max(d, o); if (o > 0.0) escaped = true; }\n";
+                combine += "    { float o = " + od +
+                           "; float taken = o; bool wins = o > d; if (o > 0.0) escaped = true; " + wins;
                 break;
             case ObjectOperation::Carve:
-                combine += "    { float o = " + od + "; d = max(d, -o); if (o <= 0.0) escaped = true; }\n";
+                combine += "    { float o = " + od +
+                           "; float taken = -o; bool wins = taken > d; if (o <= 0.0) escaped = true; " + wins;
                 break;
         }
     }
     if (f.objects.empty()) return false;
-    e.line("float fraktalObjects(vec3 pos, float d, inout bool escaped) {");
+    e.line("float fraktalObjects(vec3 pos, float d, inout bool escaped, inout int surface) {");
     e.out += combine;
     e.line("    return d;");
     e.line("}");
@@ -287,7 +294,8 @@ std::string fractalInstance(const Formula& f, const FractalNames& names, HitRule
 // one that sets the distance kept, memberships combined as a flag), then the objects. Mirrors
 // evaluate() in core/formula.cpp.
 std::string combineFractals(const Formula& f, bool objects) {
-    std::string s = "    float d = fractalEval(pos, trap, iterations, escaped);\n";
+    std::string s =
+        "    surface = FRAKTAL_FRACTAL_SURFACE;\n    float d = fractalEval(pos, trap, iterations, escaped);\n";
     if (!f.fractals.empty()) s += "    bool inside = fractalInside(d, escaped);\n";
     for (size_t j = 0; j < f.fractals.size(); ++j) {
         const CombinedFractal& c = f.fractals[j];
@@ -313,7 +321,7 @@ std::string combineFractals(const Formula& f, bool objects) {
         s += "        if (taken) { trap = t; iterations = n; }\n    }\n";
     }
     if (!f.fractals.empty()) s += "    escaped = !inside;\n";
-    s += objects ? "    return fraktalObjects(pos, d, escaped);" : "    return d;";
+    s += objects ? "    return fraktalObjects(pos, d, escaped, surface);" : "    return d;";
     return s;
 }
 

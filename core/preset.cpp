@@ -102,7 +102,7 @@ std::shared_ptr<const CustomBlock> parseCustomBlockKeepingUnknown(const ReadCont
 }
 
 // An object beside the fractal: {"object": kind, "operation": "join" | "intersect" | "carve",
-// "hollow", "enabled", "center", "axis", "angle", "repeat", "params"}. Errors name it as "object N 'kind'".
+// "hollow", "enabled", "center", "axis", "angle", "repeat", "color", "params"}. Errors name it as "object N 'kind'".
 SceneObject parseObject(const ReadContext& context, const json& j, const std::string& path, size_t listNumber) {
     FieldReader r(context, j, path);
     const json& id = r.at("object");
@@ -130,6 +130,8 @@ SceneObject parseObject(const ReadContext& context, const json& j, const std::st
     if (length(o.axis) < 1e-9) r.fail("object " + std::to_string(listNumber) + ": the axis must not be zero", "axis");
     o.angle = r.number("angle", 0.0, -360.0, 360.0);
     o.repeat = r.vector<3>("repeat", o.repeat, 0.0, 1e4);
+    // A reflectance: above 1 a surface would give back more light than it receives.
+    o.color = r.vector<3>("color", o.color, 0.0, 1.0);
     readNodeParams(r, o, listNumber, "object", "object");
     r.finish();
     return o;
@@ -465,6 +467,7 @@ json objectToJson(const SceneObject& o) {
     if (!o.enabled) j["enabled"] = false;
     writePlacement(o, j);
     if (o.repeat != vec3(0.0)) j["repeat"] = vecJson(o.repeat);
+    if (o.color != vec3(kDefaultObjectColor)) j["color"] = vecJson(o.color);
     return j;
 }
 

@@ -39,23 +39,32 @@ double SceneObject::distanceAt(const vec3& pos) const {
 
 // Mirrors fraktalObjects() in the generated GLSL (core/glsl_gen.cpp): keep the two in step.
 double combineObjects(const std::vector<SceneObject>& objects, const vec3& pos, double distance, bool& inside,
-                      bool escapeTime) {
-    for (const SceneObject& o : objects) {
+                      bool escapeTime, int& surface) {
+    for (size_t k = 0; k < objects.size(); ++k) {
+        const SceneObject& o = objects[k];
         if (!o.enabled) continue;
         const double od = o.distanceAt(pos);
+        // The object's distance as the operation takes it; it becomes the result's where it wins.
+        double taken = od;
+        bool wins = false;
         switch (o.operation) {
             case ObjectOperation::Join:
-                distance = std::min(distance, od);
+                wins = od < distance;
                 if (od <= 0.0) inside = true;
                 break;
             case ObjectOperation::Intersect:
-                distance = std::max(distance, od);
+                wins = od > distance;
                 if (od > 0.0) inside = false;
                 break;
             case ObjectOperation::Carve:
-                distance = std::max(distance, -od);
+                taken = -od;
+                wins = taken > distance;
                 if (od <= 0.0) inside = false;
                 break;
+        }
+        if (wins) {
+            distance = taken;
+            surface = int(k);
         }
     }
     if (!escapeTime) inside = distance <= 0.0;

@@ -52,6 +52,13 @@ const ObjectDesc* findObject(std::string_view id);
 // At most this many objects per formula (each is a function and a few uniforms).
 inline constexpr int kMaxObjects = 8;
 
+// A neutral light grey: a surface that takes the light's colour, as a studio's grey card does.
+inline constexpr double kDefaultObjectColor = 0.7;
+
+// Which surface a point is nearest to, as the objects' combine reports it: the fractal (and any
+// combined with it, coloured by the palette) or object k of Formula::objects.
+inline constexpr int kFractalSurface = -1;
+
 // The cell a repeated point falls in, centred on the origin: per axis with period > 0, x - period
 // * floor(x / period + 1/2) (Mandelbulber2's CVector3::mod); an axis of period 0 is kept.
 vec3 repeatCell(const vec3& x, const vec3& period);
@@ -77,6 +84,14 @@ struct SceneObject : Placement {
     // Repeated in cells this wide about the origin of its own frame, per axis (0: once), as
     // Mandelbulber2 repeats its primitives (primitives.cpp: after the turn).
     vec3 repeat{0.0};
+    // The object's own reflectance, in [0, 1]: the fractal's orbit-trap palette says nothing
+    // about a floor or a ball. Linear Rec.709 like the scene's other colours (lights, fog,
+    // background), taken into the working space with them where the scene is resolved
+    // (resolveShading; the editor's viewport: CoreViewportView::workingFormula), not
+    // display-referred like the palette's a and b (raised to 2.2 in shade.glsl): a reflectance
+    // multiplies the light, and the colour widget then takes the same numbers as the light's and
+    // the fog's beside it, so a scene keeps its look in either working space.
+    vec3 color{kDefaultObjectColor};
 
     static SceneObject make(const ObjectDesc& kind);  // with default parameter values
     Args args() const { return Args{values.data()}; }
@@ -86,7 +101,9 @@ struct SceneObject : Placement {
 // The fractal's distance and membership combined with each enabled object in order. Membership:
 // escape-time estimators keep `inside` as the flag of the orbit's boundedness, which each object
 // then sets or clears; distance estimators are inside where the combined distance is <= 0.
+// `surface` becomes the index of the object whose distance the result is (the nearest one joined,
+// the one an intersection or a carve takes), and is left as it was where the fractal's is.
 double combineObjects(const std::vector<SceneObject>& objects, const vec3& pos, double distance, bool& inside,
-                      bool escapeTime);
+                      bool escapeTime, int& surface);
 
 }  // namespace fraktal

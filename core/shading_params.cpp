@@ -13,6 +13,8 @@ ShadingParams resolveShading(const ShadingSettings& shading, const RenderSetting
         for (vec3* c : {&p.s.lightColor, &p.s.fillColor, &p.s.fogColor, &p.s.backgroundTop, &p.s.backgroundBottom})
             *c = toWorking(*c);
     }
+    for (size_t k = 0; k < formula.objects.size() && k < p.objectColors.size(); ++k)
+        p.objectColors[k] = toWorking ? toWorking(formula.objects[k].color) : formula.objects[k].color;
     p.detail = render.detail;
     p.overRelaxation = render.overRelaxation;
     return p;

@@ -3,6 +3,7 @@
 // reference renderer both take this, so they shade from identical numbers.
 #pragma once
 
+#include <array>
 #include <functional>
 
 #include "core/formula.hpp"
@@ -12,6 +13,9 @@ namespace fraktal {
 
 struct ShadingParams {
     ShadingSettings s;  // with aoDistance and fogDensity in world units, colours converted
+    // Each object's colour (SceneObject::color) in the working space, by index in the formula's
+    // objects (shade.glsl's u_objectColors; the rest unused).
+    std::array<vec3, kMaxObjects> objectColors{};
     double detail = 0.5;
     double overRelaxation = 1.3;
 };

@@ -3,7 +3,7 @@
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 0) readonly buffer Points { vec4 points[]; };
-// Two vec4 per point: (distance, iterations, escaped, 0) and the orbit trap.
+// Two vec4 per point: (distance, iterations, escaped, surface) and the orbit trap.
 layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
 
 uniform uint u_count;
@@ -14,7 +14,8 @@ void main() {
     vec4 trap;
     int iterations;
     bool escaped;
-    float d = formulaEval(points[i].xyz, trap, iterations, escaped);
-    results[2u * i] = vec4(d, float(iterations), escaped ? 1.0 : 0.0, 0.0);
+    int surface;
+    float d = formulaEval(points[i].xyz, trap, iterations, escaped, surface);
+    results[2u * i] = vec4(d, float(iterations), escaped ? 1.0 : 0.0, float(surface));
     results[2u * i + 1u] = trap;
 }

@@ -8,6 +8,10 @@
 
 uniform float u_boundRadius;
 
+// formulaEval's surface where the fractals' distance is the result's (kFractalSurface in
+// core/scene_object.hpp); an object's is its index in the formula's objects.
+const int FRAKTAL_FRACTAL_SURFACE = -1;
+
 // (1 - e^-G) / G: the potential estimate's share of the log one (potentialShare in
 // formulas/estimators.hpp, which says why the series).
 float potentialShare(float G) {
@@ -67,8 +71,9 @@ int iterationsRunBefore(int count, int period, int phase, int start, int stop) {
 // min |p| over the iterations, seed 3.3); iterations the count before escape; escaped whether
 // the orbit passed the bailout (membership for escape-time formulas). Of combined fractals, the
 // trap and count of the fractal that set the distance, and escaped the combined membership's
-// flag (not inside).
-float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped) {
+// flag (not inside). surface: FRAKTAL_FRACTAL_SURFACE, or the index of the object beside the
+// fractal whose distance the result is (combineObjects in core/scene_object.cpp).
+float formulaEval(vec3 pos, out vec4 trap, out int iterations, out bool escaped, out int surface) {
 //@FRAKTAL_COMBINE
 }
 
@@ -83,14 +88,23 @@ float DEInside(vec3 pos, out bool inside) {
     vec4 trap;
     int iterations;
     bool escaped;
-    float d = formulaEval(pos, trap, iterations, escaped);
+    int surface;
+    float d = formulaEval(pos, trap, iterations, escaped, surface);
     inside = formulaInside(d, escaped);
     return d;
 }
 
 float formulaDE(vec3 pos, out vec4 trap, out int iterations) {
     bool escaped;
-    return formulaEval(pos, trap, iterations, escaped);
+    int surface;
+    return formulaEval(pos, trap, iterations, escaped, surface);
+}
+
+// The surface at pos (as formulaEval's) and the orbit trap there: what the shading colours by.
+float formulaSurface(vec3 pos, out vec4 trap, out int surface) {
+    int iterations;
+    bool escaped;
+    return formulaEval(pos, trap, iterations, escaped, surface);
 }
 
 float DE(vec3 pos) {

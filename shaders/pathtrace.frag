@@ -270,7 +270,7 @@ void main() {
              bsdfDirect = vec3(0.0), indirect = vec3(0.0), ratioDiffuse = vec3(0.0), ratioSpecular = vec3(0.0);
         for (int depth = 0;; ++depth) {
             vec3 n = surfaceNormal(pos, rd, eps, deEvals);
-            vec3 albedo = trapAlbedo(pos, deEvals);
+            vec3 albedo = surfaceAlbedo(pos, deEvals);
             if (depth == 0) {
                 sumAlbedo += albedo;
                 sumNormal += n;

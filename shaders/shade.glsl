@@ -6,7 +6,8 @@
 // and a sky/fill hemisphere term, soft shadows by marching toward the light (Quilez, "penumbra"
 // estimate k * d / t), ambient occlusion by steps along the normal, orbit-trap colouring through a
 // cosine palette (Quilez, "palettes": a + b * cos(2 pi (c * x + d))), depth fog, an optional mirror
-// bounce with Schlick's Fresnel term. All colours are scene-linear in the working space.
+// bounce with Schlick's Fresnel term. Objects beside the fractal take their own colour instead
+// of the palette. All colours are scene-linear in the working space.
 //
 // Uniforms (set from ShadingSettings by core/render/shading_uniforms.cpp; lengths are world units):
 //   vec3  u_lightDirection    unit vector toward the key light
@@ -27,6 +28,7 @@
 //   float u_reflection        Fresnel reflectance at normal incidence F0 (0: no reflections)
 //   int   u_reflectionSteps   march steps of the reflected ray
 //   vec3  u_backgroundTop, u_backgroundBottom   background gradient by ray elevation (equal: flat)
+//   vec3  u_objectColors[k]   object k's reflectance (SceneObject::color, in the working space)
 uniform vec3 u_lightDirection;
 uniform vec3 u_lightColor;
 uniform vec3 u_fillColor;
@@ -46,11 +48,14 @@ uniform float u_fogDensity;
 uniform float u_reflection;
 uniform int u_reflectionSteps;
 uniform vec3 u_backgroundTop, u_backgroundBottom;
+// One per object a formula may hold (kMaxObjects in core/scene_object.hpp): a uniform whatever
+// the objects, so a change of colour never recompiles.
+uniform vec3 u_objectColors[8];
 
 struct SurfaceSample {
     vec3 color;   // scene-linear, with fog and reflection
     vec3 normal;  // world space, unit
-    vec3 albedo;  // orbit-trap colour, linear
+    vec3 albedo;  // the surface's reflectance, linear (surfaceAlbedo)
     float ao;     // 1 = open, 0 = fully occluded
 };
 
@@ -71,11 +76,14 @@ vec3 surfaceNormal(vec3 pos, vec3 rd, float eps, inout float deEvals) {
     return len > 1e-20 ? n / len : -rd;
 }
 
-vec3 trapAlbedo(vec3 pos, inout float deEvals) {
+// The reflectance of the surface at pos: an object's own colour, or the fractal's orbit trap
+// through the palette.
+vec3 surfaceAlbedo(vec3 pos, inout float deEvals) {
     vec4 trap;
-    int iterations;
-    formulaDE(pos, trap, iterations);
+    int surface;
+    formulaSurface(pos, trap, surface);
     deEvals += 1.0;
+    if (surface != FRAKTAL_FRACTAL_SURFACE) return u_objectColors[surface];
     float x = u_trapOffset + u_trapScale * dot(u_trapWeights, trap);
     vec3 display = clamp(u_paletteA + u_paletteB * cos(6.28318530718 * (u_paletteC * x + u_paletteD)), 0.0, 1.0);
     return pow(display, vec3(2.2));  // display-referred palette to linear reflectance
@@ -145,7 +153,7 @@ vec3 reflectedColor(vec3 pos, vec3 n, vec3 rd, float t, float pixelAngle, float 
     vec3 p2 = ro + rr * s.t;
     float eps2 = surfaceEpsilon(t + s.t, pixelAngle);
     vec3 n2 = surfaceNormal(p2, rr, eps2, deEvals);
-    vec3 albedo2 = trapAlbedo(p2, deEvals);
+    vec3 albedo2 = surfaceAlbedo(p2, deEvals);
     return applyFog(lightSurface(n2, rr, albedo2, 1.0, 1.0), s.t);
 }
 
@@ -153,7 +161,7 @@ SurfaceSample shadeSurface(vec3 pos, vec3 rd, float t, float pixelAngle, inout f
     SurfaceSample result;
     float eps = surfaceEpsilon(t, pixelAngle);
     vec3 n = surfaceNormal(pos, rd, eps, deEvals);
-    vec3 albedo = trapAlbedo(pos, deEvals);
+    vec3 albedo = surfaceAlbedo(pos, deEvals);
     float ao = ambientOcclusion(pos, n, deEvals);
     // Facing away from the key light, the surface gets neither its diffuse nor its specular term,
     // which are all the shadow scales: no shadow ray (about half the shaded samples).

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "app/editor/document/formula_edits.hpp"
 #include "app/editor/viewport/ocio_display_pass.hpp"
 #include "app/editor/viewport/viewport_adapter.hpp"
 #include "test_support.hpp"
@@ -158,6 +159,51 @@ TEST(EditorViewport, SettlesRecompilesOnlyOnStructureEditsAndExposesAtDisplayOnl
     view.render(p, settings, w, h);
     EXPECT_NE(view.displayError().find("NoSuchView"), std::string::npos);
     EXPECT_NE(view.displayTexture(), 0u);
+}
+
+// An object's colour in the viewport: the floor under the Menger sponge shows its colour, a change
+// of it re-renders without compiling, and the colour is taken into the working space with the
+// scene's others (in ACEScg the displayed floor is the one of linear Rec.709, as the still's is;
+// left in Rec.709 numbers it would be shown another colour).
+TEST(EditorViewport, ObjectColourIsAUniformInTheWorkingSpace) {
+    test::glContext();
+    const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
+    Preset p = loadPreset(test::sourceDir() / "presets" / "menger.json");
+    ASSERT_TRUE(addObject(p, *findObject("plane")));
+    p.formula.objects[0].color = vec3(0.8, 0.3, 0.1);
+    ViewSettings settings;
+    settings.aaCap = 1;
+    settings.coneTile = 0;
+    constexpr int w = 64, h = 40;
+    // The floor beside the sponge: the sides of the image's middle rows (either row order).
+    auto floorMean = [&](const std::vector<uint8_t>& rgba) {
+        glm::dvec3 sum(0.0);
+        int n = 0;
+        for (int y = h * 40 / 100; y < h * 60 / 100; ++y)
+            for (int x = 0; x < w; ++x)
+                if (x < w * 10 / 100 || x >= w * 90 / 100) {
+                    const uint8_t* px = &rgba[(size_t(y) * w + size_t(x)) * 4];
+                    sum += glm::dvec3(px[0], px[1], px[2]) / 255.0;
+                    ++n;
+                }
+        return sum / double(n);
+    };
+    CoreViewportView view(color);
+    ASSERT_GT(renderUntilSettled(view, p, settings, w, h), 0);
+    ASSERT_TRUE(view.compileError().empty()) << view.compileError();
+    const glm::dvec3 rust = floorMean(readRgba8(view.displayTexture(), w, h));
+    EXPECT_GT(rust.x, 2.0 * rust.z) << rust.x << " " << rust.y << " " << rust.z;
+
+    p.formula.objects[0].color = vec3(0.1, 0.3, 0.8);
+    ASSERT_GT(renderUntilSettled(view, p, settings, w, h), 0);
+    EXPECT_EQ(view.stats().compiles, 1) << "the colour is a uniform";
+    const glm::dvec3 blue = floorMean(readRgba8(view.displayTexture(), w, h));
+    EXPECT_GT(blue.z, 2.0 * blue.x) << blue.x << " " << blue.y << " " << blue.z;
+
+    p.render.workingSpace = "ACEScg";
+    ASSERT_GT(renderUntilSettled(view, p, settings, w, h), 0);
+    const glm::dvec3 inAces = floorMean(readRgba8(view.displayTexture(), w, h));
+    EXPECT_LT(glm::length(inAces - blue), 0.03) << inAces.x << " " << inAces.y << " " << inAces.z;
 }
 
 }  // namespace

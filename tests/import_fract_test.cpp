@@ -358,6 +358,31 @@ TEST(FractImport, PrimitivesAndTheLimitBoxBecomeObjects) {
     }
 }
 
+// A primitive's colour is its material's surface colour where that material does not colour from
+// the palette (display-referred 16-bit hex, taken to linear as the light's colour is); a
+// palette-coloured material leaves the object grey and says so.
+TEST(FractImport, PrimitiveTakesItsMaterialsSurfaceColour) {
+    const std::string primitives =
+        "[main_parameters]\nformula_1 103;\nprimitive_sphere_1_enabled true;\nprimitive_sphere_1_material_id 2;\n"
+        "mat2_surface_color ffff 8000 0000;\nprimitive_box_1_enabled true;\n";
+    const mb2::FractImport own = importText(primitives + "mat2_use_colors_from_palette false;\n");
+    ASSERT_TRUE(own.faithful()) << own.unsupported.front().text();
+    const std::vector<SceneObject>& objects = own.preset.formula.objects;
+    ASSERT_EQ(objects.size(), 2u);
+    const SceneObject& sphere = objects[0].block->id == "sphere" ? objects[0] : objects[1];
+    const SceneObject& box = objects[0].block->id == "sphere" ? objects[1] : objects[0];
+    EXPECT_NEAR(sphere.color.x, 1.0, 1e-9);
+    EXPECT_NEAR(sphere.color.y, std::pow((32768.0 / 65535.0 + 0.055) / 1.055, 2.4), 2e-3);
+    EXPECT_EQ(sphere.color.z, 0.0);
+    EXPECT_EQ(box.color, vec3(kDefaultObjectColor));
+    EXPECT_TRUE(mentions(own.approximated, "primitive box 1", "palette"));
+    EXPECT_FALSE(mentions(own.approximated, "primitive sphere 1", "palette"));
+
+    const mb2::FractImport palette = importText(primitives);
+    for (const SceneObject& o : palette.preset.formula.objects) EXPECT_EQ(o.color, vec3(kDefaultObjectColor));
+    EXPECT_TRUE(mentions(palette.approximated, "primitive sphere 1", "palette"));
+}
+
 // The hit threshold: one pixel footprint over detail_level, times the step factor (fraktal's
 // threshold applies to the scaled estimate), divided by the largest power only where that power
 // is a spherical one or the Bristorbrot, whose derivatives bound a stretch that Mandelbulber2's

@@ -209,7 +209,7 @@ struct Tracer {
         const PathTraceSettings& pt = lighting.pathTrace;
         for (int depth = 0;; ++depth) {
             const vec3 n = cpu::surfaceNormal(march, pos, rd, eps, deEvals);
-            const Bsdf m{cpu::trapAlbedo(march, pos, deEvals), pt.roughness * pt.roughness, pt.specular,
+            const Bsdf m{cpu::surfaceAlbedo(march, pos, deEvals), pt.roughness * pt.roughness, pt.specular,
                          pt.specular > 0.0 ? 0.5 : 0.0};
             if (depth == 0) {
                 for (int c = 0; c < 3; ++c) {

@@ -86,10 +86,11 @@ vec3 surfaceNormal(const Scene& scene, const vec3& pos, const vec3& rd, double e
     return len > 1e-20 ? n / len : -rd;
 }
 
-vec3 trapAlbedo(const Scene& scene, const vec3& pos, double& deEvals) {
+vec3 surfaceAlbedo(const Scene& scene, const vec3& pos, double& deEvals) {
     const ShadingSettings& s = scene.params.s;
     const Evaluation e = evaluate(scene.formula, pos);
     deEvals += 1.0;
+    if (e.surface != kFractalSurface) return scene.params.objectColors[size_t(e.surface)];
     const double x = s.trapOffset + s.trapScale * dot(s.trapWeights, e.trap.value);
     const vec3 display =
         clamp(s.paletteA + s.paletteB * glm::cos(6.28318530718 * (s.paletteC * x + s.paletteD)), 0.0, 1.0);
@@ -155,7 +156,7 @@ vec3 reflectedColor(const Scene& scene, const vec3& pos, const vec3& n, const ve
     const vec3 p2 = ro + rr * s.t;
     const double eps2 = surfaceEpsilon(scene, t + s.t, pixelAngle);
     const vec3 n2 = surfaceNormal(scene, p2, rr, eps2, deEvals);
-    const vec3 albedo2 = trapAlbedo(scene, p2, deEvals);
+    const vec3 albedo2 = surfaceAlbedo(scene, p2, deEvals);
     return applyFog(scene, lightSurface(scene, n2, rr, albedo2, 1.0, 1.0), s.t);
 }
 
@@ -171,7 +172,7 @@ SurfaceSample shadeSurface(const Scene& scene, const vec3& pos, const vec3& rd, 
     SurfaceSample result;
     const double eps = surfaceEpsilon(scene, t, pixelAngle);
     const vec3 n = surfaceNormal(scene, pos, rd, eps, deEvals);
-    const vec3 albedo = trapAlbedo(scene, pos, deEvals);
+    const vec3 albedo = surfaceAlbedo(scene, pos, deEvals);
     const double ao = ambientOcclusion(scene, pos, n, deEvals);
     // As in shaders/shade.glsl: facing away from the key light, nothing the shadow scales is lit.
     const double shadow =

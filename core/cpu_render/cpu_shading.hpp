@@ -41,6 +41,6 @@ vec3 shadeBackground(const Scene& scene, const vec3& rd);
 // Pieces of shadeSurface that the path tracer (cpu_path_tracer.cpp) shares.
 double surfaceEpsilon(const Scene& scene, double t, double pixelAngle);
 vec3 surfaceNormal(const Scene& scene, const vec3& pos, const vec3& rd, double eps, double& deEvals);
-vec3 trapAlbedo(const Scene& scene, const vec3& pos, double& deEvals);
+vec3 surfaceAlbedo(const Scene& scene, const vec3& pos, double& deEvals);
 
 }  // namespace fraktal::cpu

@@ -1,5 +1,6 @@
 #include "core/gl/de_probe.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "core/shader_library.hpp"
@@ -35,7 +36,8 @@ std::vector<GpuSample> DEProbe::evaluate(const Formula& formula, std::span<const
     glGetNamedBufferSubData(buffers_[1], 0, GLsizeiptr(out.size() * sizeof(glm::vec4)), out.data());
     std::vector<GpuSample> samples(points.size());
     for (size_t i = 0; i < points.size(); ++i)
-        samples[i] = {out[2 * i].x, int(out[2 * i].y), out[2 * i].z > 0.5f, out[2 * i + 1]};
+        samples[i] = {out[2 * i].x, int(out[2 * i].y), out[2 * i].z > 0.5f, out[2 * i + 1],
+                      int(std::lround(out[2 * i].w))};
     return samples;
 }
 
@@ -47,6 +49,7 @@ void GpuSampler::evaluate(std::span<const vec3> points, std::span<Evaluation> ou
         e.iterations = samples[i].iterations;
         e.escaped = samples[i].escaped;
         e.trap.value = vec4(samples[i].trap);
+        e.surface = samples[i].surface;
         e.inside = isInside(*formula_.estimator.block, e.distance, e.escaped);
     }
 }

@@ -16,6 +16,7 @@ struct GpuSample {
     int iterations;
     bool escaped;
     glm::vec4 trap;
+    int surface;  // Evaluation::surface
 };
 
 class DEProbe {

@@ -15,7 +15,7 @@ struct ImageStrip {
     // Four floats per pixel each, row-major from (0, y0):
     std::vector<float> rgba;         // colour, alpha = coverage
     std::vector<float> normalDepth;  // world normal (coverage-weighted), depth of the nearest hit (1e30: none)
-    std::vector<float> albedoAO;     // orbit-trap albedo, ambient occlusion (coverage-weighted)
+    std::vector<float> albedoAO;     // surface albedo (palette or object colour), ambient occlusion (coverage-weighted)
     std::vector<float> stats;        // DE evaluations / spp, march steps per camera ray, samples taken, 0
 
     // The four buffers in a fixed order (rgba, normalDepth, albedoAO, stats), for code that walks them.

@@ -2512,6 +2512,21 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
             set("tube", vec3(numberOf("tube_radius", "0.2")));
         }
         if (booleanOperator == 2) out.approximated.push_back({where, kCarvedExactly});
+        // The primitive's colour is its material's (material_id, 1 unless given): the material's
+        // surface colour where the material does not take its colours from the palette; a
+        // palette-coloured material (Mandelbulber2's default) leaves the object its own grey.
+        const std::string material = "mat" + value("material_id", "1") + "_";
+        const FractEntry* surface = file.find("main_parameters", material + "surface_color");
+        const FractEntry* fromPalette = file.find("main_parameters", material + "use_colors_from_palette");
+        if (surface && fromPalette && parseBoolean(fromPalette->value) == false) {
+            const std::optional<vec3> colour = parseColour(surface->value);
+            if (!colour)
+                throw PresetError(file.source, "[main_parameters] " + material + "surface_color",
+                                  "expected a 16-bit hex colour");
+            o.color = clamp(linearFromDisplay(*colour), 0.0, 1.0);
+        } else {
+            out.approximated.push_back({where, "coloured by its material's palette in Mandelbulber2, grey here"});
+        }
         f.objects.push_back(std::move(o));
     }
     if (limits) {

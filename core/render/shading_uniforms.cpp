@@ -1,5 +1,8 @@
 #include "core/render/shading_uniforms.hpp"
 
+#include <array>
+#include <string>
+
 namespace fraktal::gl {
 
 namespace {
@@ -39,6 +42,12 @@ void eachUniform(const ShadingParams& p, Set&& set) {
     set("u_reflectionSteps", s.reflectionSteps);
     set("u_backgroundTop", s.backgroundTop);
     set("u_backgroundBottom", s.backgroundBottom);
+    static const std::array<std::string, kMaxObjects> objectColorNames = [] {
+        std::array<std::string, kMaxObjects> names;
+        for (int k = 0; k < kMaxObjects; ++k) names[size_t(k)] = "u_objectColors[" + std::to_string(k) + "]";
+        return names;
+    }();
+    for (size_t k = 0; k < p.objectColors.size(); ++k) set(objectColorNames[k].c_str(), p.objectColors[k]);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "app/editor/timeline/timeline_panel.hpp"
 #include "app/editor/widgets/node_list_widgets.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
+#include "app/editor/widgets/setting_widgets.hpp"
 #include "core/safe_step.hpp"
 #include "core/scene/formula_fit.hpp"
 
@@ -145,6 +146,10 @@ void objectsSection(EditorState& s) {
             if (paramWidget(kObjectAngle, angle, &s.paramWidgets)) o.angle = angle.x;
             for (size_t k = 0; k < o.block->params.size(); ++k)
                 paramWidget(o.block->params[k], o.values[k], &s.paramWidgets);
+            // A reflectance (linear Rec.709): the preset refuses one above 1.
+            if (colorEdit("Colour", o.color, nullptr)) o.color = clamp(o.color, 0.0, 1.0);
+            noteWidgetRect(s.layout, "color:Object " + std::to_string(j + 1));
+            helpMarker("The object's own colour (its reflectance), whatever the fractal's palette does.");
             ImGui::TreePop();
         }
         ImGui::PopID();

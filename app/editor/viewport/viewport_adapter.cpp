@@ -87,6 +87,25 @@ const ShadingSettings& CoreViewportView::workingShading(const Preset& preset) {
     return workingShading_;
 }
 
+const Formula& CoreViewportView::workingFormula(const Preset& preset) {
+    const Formula& formula = preset.formula;
+    if (formula.objects.empty()) return formula;
+    std::vector<vec3> colors;
+    for (const SceneObject& o : formula.objects) colors.push_back(o.color);
+    if (!objectColorsKey_ || objectColorsKey_->first != colors ||
+        objectColorsKey_->second != preset.render.workingSpace) {
+        workingObjectColors_.clear();
+        for (const vec3& c : colors)
+            workingObjectColors_.push_back(color_.fromLinearRec709(c, preset.render.workingSpace));
+        objectColorsKey_.emplace(std::move(colors), preset.render.workingSpace);
+    }
+    if (workingObjectColors_ == objectColorsKey_->first) return formula;
+    workingFormula_ = formula;
+    for (size_t k = 0; k < workingFormula_.objects.size(); ++k)
+        workingFormula_.objects[k].color = workingObjectColors_[k];
+    return workingFormula_;
+}
+
 bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevision& revision,
                                    const ViewSettings& settings, int width, int height) {
     const Formula& formula = preset.formula;
@@ -123,7 +142,7 @@ bool CoreViewportView::renderFrame(const Preset& preset, const scene::SceneRevis
     const auto start = std::chrono::steady_clock::now();
     viewport::FrameStats frame;
     try {
-        frame = viewport_.render(formula, preset.camera, preset.render, workingShading_, width, height,
+        frame = viewport_.render(workingFormula(preset), preset.camera, preset.render, workingShading_, width, height,
                                  preset.lighting.lens, &revision);
     } catch (const std::exception& e) {
         // The viewport keeps its previous programs and image (viewport.hpp).

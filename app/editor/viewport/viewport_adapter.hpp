@@ -72,6 +72,10 @@ class CoreViewportView final : public ViewportView {
     // the display transform when it or the transform changed. `gain` in stops adds to the exposure.
     void redisplay(const Preset& preset, GLuint linearImage, double gainStops = 0.0);
     const ShadingSettings& workingShading(const Preset& preset);
+    // The formula as the viewport renders it: its objects' colours taken into the working space,
+    // as workingShading takes the scene's other colours (the still does both in resolveShading).
+    // The preset's own formula where that changes nothing.
+    const Formula& workingFormula(const Preset& preset);
 
     // Path traced at rest: whether the accumulation still shows this view; starting one for the
     // view the fast mode rests at; one frame's samples, shown.
@@ -97,6 +101,10 @@ class CoreViewportView final : public ViewportView {
     // Cache of shadingInWorkingSpace (an OCIO processor per colour is not free every frame).
     std::optional<std::pair<ShadingSettings, std::string>> shadingKey_;
     ShadingSettings workingShading_;
+    // Cache of workingFormula's colours: the preset's and the working space, then the converted.
+    std::optional<std::pair<std::vector<vec3>, std::string>> objectColorsKey_;
+    std::vector<vec3> workingObjectColors_;
+    Formula workingFormula_;
     // What the display texture shows: redrawn only when the image or the transform changed.
     DisplayTarget displayTarget_;
     bool imageChanged_ = false;
