@@ -126,6 +126,9 @@ bool emitObjects(GlslEmitter& e, const Formula& f, int first, std::vector<std::s
         // `taken`: the object's distance as the operation takes it; where it wins, the result is
         // the object's surface.
         const std::string wins = "if (wins) { d = taken; surface = " + std::to_string(k) + "; } }\n";
+        // An intersecting object is a limit box: its faces are the fractal's inside, cut open,
+        // and keep the surface before it (Mandelbulber2 colours a limit box's cut by the fractal).
+        const std::string cuts = "if (wins) d = taken; }\n";
         switch (o.operation) {
             case ObjectOperation::Join:
                 combine += "    { float o = " + od +
@@ -133,7 +136,7 @@ bool emitObjects(GlslEmitter& e, const Formula& f, int first, std::vector<std::s
                 break;
             case ObjectOperation::Intersect:
                 combine += "    { float o = " + od +
-                           "; float taken = o; bool wins = o > d; if (o > 0.0) escaped = true; " + wins;
+                           "; float taken = o; bool wins = o > d; if (o > 0.0) escaped = true; " + cuts;
                 break;
             case ObjectOperation::Carve:
                 combine += "    { float o = " + od +

@@ -64,7 +64,9 @@ double combineObjects(const std::vector<SceneObject>& objects, const vec3& pos, 
         }
         if (wins) {
             distance = taken;
-            surface = int(k);
+            // An intersecting object is a limit box: its faces are the fractal's inside, cut
+            // open, and keep the surface before it (as Mandelbulber2 colours a limit box's cut).
+            if (o.operation != ObjectOperation::Intersect) surface = int(k);
         }
     }
     if (!escapeTime) inside = distance <= 0.0;

@@ -90,7 +90,7 @@ bool onTheFloor(int x, int y) {
 }  // namespace
 
 // On the CPU the surface is the nearest joined object's where it is nearer than the fractal, the
-// carving or intersecting object's where the distance it sets is the larger (oracles from the
+// carving object's where the distance it sets is the larger, never an intersecting one's (oracles from the
 // objects' own distances, every kind); the GPU names the same surface as the CPU wherever the
 // point is clear of a seam between two.
 TEST(ObjectColor, SurfaceIsTheObjectThatSetsTheDistanceOnCpuAndGpu) {
@@ -117,9 +117,10 @@ TEST(ObjectColor, SurfaceIsTheObjectThatSetsTheDistanceOnCpuAndGpu) {
     EXPECT_GT(objectPoints, 100);
     EXPECT_GT(fractalPoints, 100);
 
-    // One object of each kind carving the sponge or intersecting it: the surface is the object's
-    // where the distance it sets (-d carved, d intersected) is above the fractal's; a disabled
-    // object is never the surface.
+    // One object of each kind carving the sponge or intersecting it: the surface is a carving
+    // object's where the distance it sets (-d) is above the fractal's; an intersecting one (a
+    // limit box) cuts the fractal open and its faces stay the fractal's; a disabled object is
+    // never the surface.
     for (const ObjectDesc& kind : allObjects())
         for (ObjectOperation operation : {ObjectOperation::Carve, ObjectOperation::Intersect}) {
             Formula cut = fractalAlone;
@@ -131,11 +132,13 @@ TEST(ObjectColor, SurfaceIsTheObjectThatSetsTheDistanceOnCpuAndGpu) {
             for (const vec3& p : test::randomPoints(1000, 2.0, 54)) {
                 const double d = evaluate(fractalAlone, p).distance;
                 const double taken = operation == ObjectOperation::Carve ? -o.distanceAt(p) : o.distanceAt(p);
-                const int expected = taken > d ? 0 : kFractalSurface;
+                const bool objectSets = taken > d;
+                const int expected = objectSets && operation == ObjectOperation::Carve ? 0 : kFractalSurface;
                 ASSERT_EQ(evaluate(cut, p).surface, expected) << kind.id << " " << p.x << " " << p.y << " " << p.z;
-                (expected == 0 ? objectSide : fractalSide)++;
+                ASSERT_EQ(evaluate(cut, p).distance, std::max(d, taken)) << kind.id;
+                (objectSets ? objectSide : fractalSide)++;
             }
-            EXPECT_GT(objectSide, 0) << kind.id;
+            EXPECT_GT(objectSide, 0) << kind.id << ": the object sets the distance nowhere: nothing tested";
             EXPECT_GT(fractalSide, 0) << kind.id;
             cut.objects[0].enabled = false;
             for (const vec3& p : test::randomPoints(100, 2.0, 55)) EXPECT_EQ(evaluate(cut, p).surface, kFractalSurface);
