@@ -135,6 +135,9 @@ xdotool key F4 # the stats overlay off: its changing figures are no part of the 
 xdotool click --repeat 12 --delay 20 5
 wait_frames 3
 wait_settled
+# The status line over the viewport's foot ("Opened ...") goes after a few seconds: not while the
+# three screenshots below are taken (a loaded machine once took it off between the first and the last).
+wait_for .status.shown false 300
 set -- $(q '.viewport | map(floor) | join(" ")')
 crop="$3x$4+$1+$2"
 shot() { wait_settled; import -window root "$out/$1.png"; convert "$out/$1.png" -crop "$crop" +repage "$out/$1_viewport.png"; }

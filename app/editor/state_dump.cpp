@@ -115,7 +115,10 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                           {"rendered", rendered},
                           {"failed", failed},
                           {"rendering", s.browser.rendering}};
-    j["status"] = {{"text", s.status.text}, {"error", s.status.error}};
+    j["status"] = {{"text", s.status.text},
+                   {"error", s.status.error},
+                   // On screen now (the status line shows a message for a few seconds).
+                   {"shown", !s.status.text.empty() && s.now <= s.status.until}};
     j["compileError"] = compileError;
     j["viewportSettled"] = viewportSettled;
     // A structure edit compiles in the background while the last image stays settled on screen.
