@@ -1776,6 +1776,18 @@ TEST(FractImport, KaliMultiBenesiPwr2ScatorAndAxisSwapExamplesImport) {
             << item.text();
 }
 
+// The pseudo-Kleinian mod 1's general box fold (F: low (1, 0.8, 0.9), high (0.9, 1, 0.7), mirror 1,
+// offset (0.3, 0, 0)), then its clamp-style fold (C: box (0.9, 0.8, 1), inverting inside squared
+// radius 2), as PseudoKleinianMod1Iteration writes them.
+vec3 boxFoldThenClampStyleFold(vec3 z) {
+    const vec3 low(1.0, 0.8, 0.9), high(0.9, 1.0, 0.7);
+    for (int k = 0; k < 3; ++k) z[k] = std::abs(z[k] + low[k]) - std::abs(z[k] - high[k]) - z[k];
+    z += vec3(0.3, 0.0, 0.0);
+    const vec3 size(0.9, 0.8, 1.0);
+    z = glm::clamp(z, -size, size) * 2.0 - z;
+    return z * std::max(2.0 / dot(z, z), 1.0);
+}
+
 // The pseudo-Kleinian mod 1 and Amazing Surf against Mandelbulber2 2.20's PseudoKleinianMod1Iteration
 // and AmazingSurfIteration written out (fractal_formulas.cpp).
 TEST(FractImport, PseudoKleinianMod1AndAmazingSurfFollowMandelbulber2sOrbits) {
@@ -1785,7 +1797,7 @@ TEST(FractImport, PseudoKleinianMod1AndAmazingSurfFollowMandelbulber2sOrbits) {
         {"formula_1 104;\nN 8;\nuse_default_bailout false;\nbailout 4;\n[fractal_1]\ntransf_addition_constant_0777 0,9 "
          "0,8 1;\ntransf_minimum_radius_05 0,8;\n"
          "transf_function_enabledAy_false true;\ntransf_start_iterations_B 1;\ntransf_stop_iterations_B 2;\n"
-         "transf_addition_constant 0,1 0 -0,05;\ntransf_function_enabled true;\ntransf_start_iterations_M 2;\n"
+         "transf_addition_constant 0,1 0 -0,05;\ntransf_function_enabledM_false true;\ntransf_start_iterations_M 2;\n"
          "transf_stop_iterations_M 4;\ntransf_addition_constantA_000 0 0,2 0;\n",
          {"pseudo_kleinian", "pseudo_kleinian", "translate", "menger_rotate", "translate"},
          nullptr,
@@ -1815,6 +1827,31 @@ TEST(FractImport, PseudoKleinianMod1AndAmazingSurfFollowMandelbulber2sOrbits) {
                  z += vec3(0.0, 0.2, 0.0);
              }
              return z;
+         }},
+        // The prism fold (P, iteration 0 by default) at scale 0.9 shifted by gap (0.2, 0, 0), the general box fold (F)
+        // with
+        // its own low and high limits and its offset, then the clamp-style fold (C) inverting inside
+        // squared radius 2; the Menger step stays off (its option is transf_function_enabledM_false,
+        // not the std DE's transf_function_enabled); no c.
+        {"formula_1 104;\nN 8;\nuse_default_bailout false;\nbailout 3;\n[fractal_1]\n"
+         "transf_function_enabledP_false true;\ntransf_scale 0,9;\ntransf_constant_multiplier_000 0,2 0 0;\n"
+         "transf_function_enabledF_false true;\ntransf_offsetF_000 1 0,8 0,9;\ntransf_offset_000 0,9 1 0,7;\n"
+         "transf_offsetA_000 0,3 0 0;\ntransf_addition_constant_0777 0,9 0,8 1;\ntransf_minimum_radius_05 2;\n",
+         {"prism_fold", "box_fold_general", "pseudo_kleinian"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3&, int i) {
+             const double s34 = std::sqrt(0.75), s3 = std::sqrt(3.0);
+             if (i > 0) return boxFoldThenClampStyleFold(v);  // the prism fold's window: iteration 0
+             vec3 z(v.x, std::abs(v.y), std::abs(v.z));
+             const double t = std::max(0.0, (z.x * -s34 + z.y * 0.5) * 0.9);
+             z.x += t * s3;
+             z.y = std::abs(z.y - t);
+             if (z.y > z.z) std::swap(z.y, z.z);
+             z -= vec3(0.2, 0.0, 0.0) * vec3(s34, 1.5, 1.5);
+             if (z.z > z.x) std::swap(z.z, z.x);
+             if (z.x > 0.0) z.y = std::max(0.0, z.y), z.z = std::max(0.0, z.z);
+             return boxFoldThenClampStyleFold(z);
          }},
         // Amazing Surf with the whole sphere fold (share 1): m = 1.7 / (r^2 below sqrt(0.3) ? sqrt(0.3) :
         // min(r^2, 1)), then c with x and y swapped times (0.5, 0.3, 0.2), then c with x and y

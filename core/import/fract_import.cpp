@@ -1011,9 +1011,11 @@ void pseudoKleinianGeneralBoxFold(Reader& r, NodeBuilder& b) {
     });
 }
 
-// The pseudo-Kleinian formulas' Menger step (M) and the constant added after it (addA).
-void pseudoKleinianMengerStep(Reader& r, NodeBuilder& b) {
-    if (!r.boolean("transf_function_enabled")) return;
+// The pseudo-Kleinian formulas' Menger step (M) and the constant added after it (addA), where the
+// option `enabled` is on (transf_function_enabled in the std DE, transf_function_enabledM_false in
+// the mod 1).
+void pseudoKleinianMengerStep(Reader& r, NodeBuilder& b, const std::string& enabled) {
+    if (!r.boolean(enabled)) return;
     inWindow(r, b, "M", "M", [&] {
         double s = 0.0;
         vec3 offset(0.0);
@@ -1042,7 +1044,7 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
     benesiFolds(r, b, "transf_start_iterations");
     pseudoKleinianGeneralBoxFold(r, b);
-    pseudoKleinianMengerStep(r, b);
+    pseudoKleinianMengerStep(r, b, "transf_function_enabled");
     pseudoKleinianFolds(r, b);
     additionConstant(r, b);
 }
@@ -1052,7 +1054,8 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
 // the std DE's parts in another order, each in its window: the prism fold (P), the rotation (R),
 // Benesi's T1 (start .. T1) and box fold (D .. TM), the general box fold (F), the clamp-style fold
 // (C; transf_function_enabledAy, which also keeps F's y limit) and its conditional form (B), the
-// added constant, then the Menger step (M) and its added constant. Its DE is the pseudo-Kleinian
+// added constant, then the Menger step (M, option transf_function_enabledM_false) and its added
+// constant. Its DE is the pseudo-Kleinian
 // one. The scale of z inside the clamp-style fold (transf_scaleB_1) is refused.
 void mapPseudoKleinianMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_scaleB_1", "z scaled inside the pseudo-Kleinian fold");
@@ -1063,7 +1066,7 @@ void mapPseudoKleinianMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
     pseudoKleinianGeneralBoxFold(r, b);
     pseudoKleinianFolds(r, b);
     additionConstant(r, b);
-    pseudoKleinianMengerStep(r, b);
+    pseudoKleinianMengerStep(r, b, "transf_function_enabledM_false");
 }
 
 // box_fold_bulb_pow2_v3: V2's parts (fold B, sphere fold S, scale C), then Benesi's box fold (TM),
