@@ -1055,8 +1055,8 @@ void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
 // Benesi's T1 (start .. T1) and box fold (D .. TM), the general box fold (F), the clamp-style fold
 // (C; transf_function_enabledAy, which also keeps F's y limit) and its conditional form (B), the
 // added constant, then the Menger step (M, option transf_function_enabledM_false) and its added
-// constant. Its DE is the pseudo-Kleinian
-// one. The scale of z inside the clamp-style fold (transf_scaleB_1) is refused.
+// constant. Its DE is the pseudo-Kleinian one. The scale of z inside the clamp-style fold
+// (transf_scaleB_1) is refused.
 void mapPseudoKleinianMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_scaleB_1", "z scaled inside the pseudo-Kleinian fold");
     if (r.boolean("transf_function_enabledF_false")) refuseGeneralBoxFoldAxesOff(r);
