@@ -1776,6 +1776,143 @@ TEST(FractImport, KaliMultiBenesiPwr2ScatorAndAxisSwapExamplesImport) {
             << item.text();
 }
 
+// The pseudo-Kleinian mod 1's general box fold (F: low (1, 0.8, 0.9), high (0.9, 1, 0.7), mirror 1,
+// offset (0.3, 0, 0)), then its clamp-style fold (C: box (0.9, 0.8, 1), inverting inside squared
+// radius 2), as PseudoKleinianMod1Iteration writes them.
+vec3 boxFoldThenClampStyleFold(vec3 z) {
+    const vec3 low(1.0, 0.8, 0.9), high(0.9, 1.0, 0.7);
+    for (int k = 0; k < 3; ++k) z[k] = std::abs(z[k] + low[k]) - std::abs(z[k] - high[k]) - z[k];
+    z += vec3(0.3, 0.0, 0.0);
+    const vec3 size(0.9, 0.8, 1.0);
+    z = glm::clamp(z, -size, size) * 2.0 - z;
+    return z * std::max(2.0 / dot(z, z), 1.0);
+}
+
+// The pseudo-Kleinian mod 1 and Amazing Surf against Mandelbulber2 2.20's PseudoKleinianMod1Iteration
+// and AmazingSurfIteration written out (fractal_formulas.cpp).
+TEST(FractImport, PseudoKleinianMod1AndAmazingSurfFollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        // The clamp-style fold (C) on every iteration, its conditional form (B) on iteration 1, the
+        // added constant, then the Menger step (M) on iterations 2 and 3 with its own constant; no c.
+        {"formula_1 104;\nN 8;\nuse_default_bailout false;\nbailout 4;\n[fractal_1]\ntransf_addition_constant_0777 0,9 "
+         "0,8 1;\ntransf_minimum_radius_05 0,8;\n"
+         "transf_function_enabledAy_false true;\ntransf_start_iterations_B 1;\ntransf_stop_iterations_B 2;\n"
+         "transf_addition_constant 0,1 0 -0,05;\ntransf_function_enabledM_false true;\ntransf_start_iterations_M 2;\n"
+         "transf_stop_iterations_M 4;\ntransf_addition_constantA_000 0 0,2 0;\n",
+         {"pseudo_kleinian", "pseudo_kleinian", "translate", "menger_rotate", "translate"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3&, int i) {
+             const vec3 size(0.9, 0.8, 1.0);
+             vec3 z = v;
+             auto invert = [](vec3& z) { z *= std::max(0.8 / dot(z, z), 1.0); };
+             z = glm::clamp(z, -size, size) * 2.0 - z;
+             invert(z);
+             if (i == 1) {
+                 for (int k = 0; k < 3; ++k) {
+                     if (z[k] > size[k]) z[k] = size[k] * 2.0 - z[k];
+                     if (z[k] < -size[k]) z[k] = -size[k] * 2.0 - z[k];
+                 }
+                 invert(z);
+             }
+             z += vec3(0.1, 0.0, -0.05);
+             if (i >= 2 && i < 4) {
+                 z = glm::abs(z);
+                 if (z.x < z.y) std::swap(z.x, z.y);
+                 if (z.x < z.z) std::swap(z.x, z.z);
+                 if (z.y < z.z) std::swap(z.y, z.z);
+                 z *= 3.0;
+                 z.x -= 2.0, z.y -= 2.0;
+                 if (z.z > 1.0) z.z -= 2.0;
+                 z += vec3(0.0, 0.2, 0.0);
+             }
+             return z;
+         }},
+        // The prism fold (P, iteration 0 by default) at scale 0.9 shifted by gap (0.2, 0, 0), the general box fold (F)
+        // with
+        // its own low and high limits and its offset, then the clamp-style fold (C) inverting inside
+        // squared radius 2; the Menger step stays off (its option is transf_function_enabledM_false,
+        // not the std DE's transf_function_enabled); no c.
+        {"formula_1 104;\nN 8;\nuse_default_bailout false;\nbailout 3;\n[fractal_1]\n"
+         "transf_function_enabledP_false true;\ntransf_scale 0,9;\ntransf_constant_multiplier_000 0,2 0 0;\n"
+         "transf_function_enabledF_false true;\ntransf_offsetF_000 1 0,8 0,9;\ntransf_offset_000 0,9 1 0,7;\n"
+         "transf_offsetA_000 0,3 0 0;\ntransf_addition_constant_0777 0,9 0,8 1;\ntransf_minimum_radius_05 2;\n",
+         {"prism_fold", "box_fold_general", "pseudo_kleinian"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3&, int i) {
+             const double s34 = std::sqrt(0.75), s3 = std::sqrt(3.0);
+             if (i > 0) return boxFoldThenClampStyleFold(v);  // the prism fold's window: iteration 0
+             vec3 z(v.x, std::abs(v.y), std::abs(v.z));
+             const double t = std::max(0.0, (z.x * -s34 + z.y * 0.5) * 0.9);
+             z.x += t * s3;
+             z.y = std::abs(z.y - t);
+             if (z.y > z.z) std::swap(z.y, z.z);
+             z -= vec3(0.2, 0.0, 0.0) * vec3(s34, 1.5, 1.5);
+             if (z.z > z.x) std::swap(z.z, z.x);
+             if (z.x > 0.0) z.y = std::max(0.0, z.y), z.z = std::max(0.0, z.z);
+             return boxFoldThenClampStyleFold(z);
+         }},
+        // Amazing Surf with the whole sphere fold (share 1): m = 1.7 / (r^2 below sqrt(0.3) ? sqrt(0.3) :
+        // min(r^2, 1)), then c with x and y swapped times (0.5, 0.3, 0.2), then c with x and y
+        // swapped again (compute_fractal.cpp).
+        {"formula_1 73;\nN 10;\n[fractal_1]\ntransf_addition_constant_111 1,2 0,9 1;\ntransf_minimum_radius_05 0,3;\n"
+         "mandelbox_scale 1,7;\ntransf_addCpixel_enabled_false true;\ntransf_constant_multiplier_111 0,5 0,3 0,2;\n",
+         {"amazing_surf", "add_c_axes", "add_c_axes"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z = v;
+             z.x = std::abs(z.x + 1.2) - std::abs(z.x - 1.2) - z.x;
+             z.y = std::abs(z.y + 0.9) - std::abs(z.y - 0.9) - z.y;
+             const double rr = dot(z, z), inner = std::sqrt(0.3);
+             z *= 1.7 / (rr < inner ? inner : std::min(rr, 1.0));
+             return z + vec3(c.y, c.x, c.z) * vec3(1.5, 1.3, 1.2);
+         }},
+        // Share 0 with the cylinder fold: the point keeps its length through the sphere fold (the
+        // nodes written; refused for the derivative, which takes the fold's factor whole).
+        {"formula_1 73;\nN 12;\nuse_default_bailout false;\nbailout 3;\n[fractal_1]\ntransf_addition_constant_111 1,4 "
+         "1,1 1;\ntransf_scale_1 0;\n"
+         "transf_function_enabled_false true;\n",
+         {"box_fold_axes", "add_c_axes"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z = v;
+             z.x = std::abs(z.x + 1.4) - std::abs(z.x - 1.4) - z.x;
+             z.y = std::abs(z.y + 1.1) - std::abs(z.y - 1.1) - z.y;
+             return z + vec3(c.y, c.x, c.z);
+         },
+         1.5,
+         nullptr,
+         "the sphere fold's factor"},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+    // Amazing Surf's factor blended otherwise, or its cylinder fold with the whole factor, and the
+    // mod 1's z scaled inside its fold are refused by name.
+    expectRefused("formula_1 73;\n[fractal_1]\ntransf_scale_1 0,5;\n", "slot 1 (amazing_surf)", "blended with 1");
+    expectRefused("formula_1 73;\n[fractal_1]\ntransf_function_enabled_false true;\n", "slot 1 (amazing_surf)",
+                  "the cylinder fold");
+    expectRefused("formula_1 104;\n[fractal_1]\ntransf_scaleB_1 0,5;\n", "slot 1 (pseudo_kleinian_mod1)",
+                  "z scaled inside");
+}
+
+// Mandelbulber2's example files that use the pseudo-Kleinian mod 1 and Amazing Surf import with
+// nothing refused, but for the hybrid whose modulus Mandelbulber bulb has no blocks and the Amazing
+// Surf whose point takes none of its sphere fold's factor.
+TEST(FractImport, PseudoKleinianMod1AndAmazingSurfExamplesImport) {
+    for (const char* file : {"pseudo kleinian mod 001.fract", "monte carlo global illumination.fract"})
+        expectExampleImports(file);
+    const fs::path surf = fs::path("/usr/share/mandelbulber2/examples") / "amazing_surf 001.fract";
+    const mb2::FractImport shareZero = mb2::importFract(mb2::loadFractFile(surf));
+    EXPECT_FALSE(shareZero.faithful());
+    for (const mb2::ImportItem& item : shareZero.unsupported)
+        EXPECT_TRUE(item.where == "slot 1 (amazing_surf)" && item.what.starts_with("transf_scale_1 0")) << item.text();
+    const fs::path examples = "/usr/share/mandelbulber2/examples";
+    const mb2::FractImport hybrid = mb2::importFract(mb2::loadFractFile(
+        examples /
+        "Daniel Luchansky collection - license Creative Commons -CC-BY 4.0/pseuklein x mod mandelbulb 002.fract"));
+    EXPECT_FALSE(hybrid.faithful());
+    for (const mb2::ImportItem& item : hybrid.unsupported)
+        EXPECT_EQ(item.where, "slot 2 (modulus_mandelbulb)") << item.text();
+}
+
 // Graeme McLaren's sine and cosine maximum on all three axes (its own periods, the product halved,
 // each over |v| + 1), alternating with a power-2 bulb, against Mandelbulber2's
 // TransfSinAndCosMaxIteration and MandelbulbIteration written out; combo4 types 1 to 4 keep v

@@ -708,6 +708,41 @@ void mapAmazingSurfMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& appr
     b.rotation(setRotation2(r.vector("transf_rotation")));
 }
 
+// Amazing Surf (Mandelbulber2 2.20's AmazingSurfIteration in fractal_formulas.cpp;
+// formula/definition/fractal_amazing_surf.cpp in later versions): Tglad's fold of x and y, the
+// sphere fold's factor m = scale / clamp(r^2, sqrt(minR), 1) of which the point takes the share
+// transf_scale_1 ((m - 1) share + 1), c with x and y swapped times transf_constant_multiplier_111
+// (transf_addCpixel_enabled_false), then the rotation. Share 1 is the amazing_surf block. Share 0
+// leaves the point to the fold and the rotation (the nodes are written) but is refused, as Mandelbulber2
+// still multiplies its derivative by |m|. Another share, and the cylinder fold's radius
+// (transf_function_enabled_false, r^2 less z^2) beside share 1, are refused.
+void mapAmazingSurf(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
+    const double share = r.number("transf_scale_1");
+    const vec3 limit = r.vector("transf_addition_constant_111");
+    if (share == 1.0) {
+        r.mustBeDefault("transf_function_enabled_false", "the cylinder fold");
+        // Mandelbulber2 compares r^2 with sqrt(minR): fraktal's inner radius is minR^(1/4).
+        const double minRadius = std::pow(std::max(r.number("transf_minimum_radius_05"), 0.0), 0.25);
+        b.add("amazing_surf", {N::v("fold", vec3(limit.x, limit.y, 0.0)), N::f("min_radius", minRadius),
+                               N::f("scale", r.number("mandelbox_scale"))});
+    } else if (share == 0.0) {
+        tgladFold(r, b, limit, false, approximated);
+        // Mandelbulber2's derivative still takes |m| whole, so its linear estimate shrinks by the
+        // scale each iteration while the point does not: its surface is a level set of that
+        // estimate far outside the orbit's set, which fraktal's derivative (the point's) cannot draw.
+        r.unsupported(
+            "transf_scale_1 0: the point takes none of the sphere fold's factor, which "
+            "Mandelbulber2's derivative takes whole");
+    } else {
+        r.unsupported("transf_scale_1 " + r.raw("transf_scale_1") + ": a sphere fold's factor blended with 1");
+    }
+    if (r.boolean("transf_addCpixel_enabled_false"))
+        b.add("add_c_axes",
+              {N::v("weights", r.vector("transf_constant_multiplier_111")), N::f("julia", 0.0), N::f("swap_xy", 1.0)});
+    b.rotation(setRotation2(r.vector("transf_rotation")));
+}
+
 void mapAboxVsIcen1(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
     const double m = uniformMultiplier(r, "transf_constant_multiplier_111");
@@ -965,35 +1000,73 @@ void mapMandelboxMenger(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
         r.unsupported("transf_int_1 " + r.raw("transf_int_1") + ": more than 8 Menger steps an iteration");
 }
 
+// The pseudo-Kleinian formulas' general box fold (F): each coordinate |v + low| - |v - high| less
+// v times `mirror`, then + offsetA.
+void pseudoKleinianGeneralBoxFold(Reader& r, NodeBuilder& b) {
+    if (!r.boolean("transf_function_enabledF_false")) return;
+    inWindow(r, b, "F", "F", [&] {
+        b.add("box_fold_general",
+              {N::v("low", r.vector("transf_offsetF_000")), N::v("high", r.vector("transf_offset_000")),
+               N::v("mirror", r.vector("transf_scale3D_111")), N::v("offset", r.vector("transf_offsetA_000"))});
+    });
+}
+
+// The pseudo-Kleinian formulas' Menger step (M) and the constant added after it (addA), where the
+// option `enabled` is on (transf_function_enabled in the std DE, transf_function_enabledM_false in
+// the mod 1).
+void pseudoKleinianMengerStep(Reader& r, NodeBuilder& b, const std::string& enabled) {
+    if (!r.boolean(enabled)) return;
+    inWindow(r, b, "M", "M", [&] {
+        double s = 0.0;
+        vec3 offset(0.0);
+        if (!mengerStepWithCorner(r, s, offset)) return;
+        b.add("menger_rotate", {N::f("scale", s), N::v("offset", offset)});
+        const vec3 add = r.vector("transf_addition_constantA_000");
+        if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
+    });
+}
+
+// The general box fold's axes that transf_function_enabledAx .. z switch off: refused.
+void refuseGeneralBoxFoldAxesOff(Reader& r) {
+    for (const char* axis : {"transf_function_enabledAx", "transf_function_enabledAy", "transf_function_enabledAz",
+                             "transf_function_enabledx", "transf_function_enabledy", "transf_function_enabledz"})
+        r.mustBeDefault(axis, "a box fold with one of its limits left out");
+}
+
 // The pseudo-Kleinian std DE (Knighty's, Theli-at's in Mandelbulber2), each part in its window: the
 // rotation (R), Benesi's T1 (start .. T1) and box fold (D .. TM), the general box fold (F), the
 // Menger step (M) and its added constant, the clamp-style pseudo-Kleinian fold (C) and its
 // conditional form (B), the added constant. Its DE is the linear one on r_xy (escape_linear_xy).
 void mapPseudoKleinianStdDE(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_scaleB_1", "a scale inside the pseudo-Kleinian fold");
-    for (const char* axis : {"transf_function_enabledAx", "transf_function_enabledAy", "transf_function_enabledAz",
-                             "transf_function_enabledx", "transf_function_enabledy", "transf_function_enabledz"})
-        r.mustBeDefault(axis, "a box fold with one of its limits left out");
+    refuseGeneralBoxFoldAxesOff(r);
     prismFold(r, b);
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
     benesiFolds(r, b, "transf_start_iterations");
-    if (r.boolean("transf_function_enabledF_false"))
-        inWindow(r, b, "F", "F", [&] {
-            b.add("box_fold_general",
-                  {N::v("low", r.vector("transf_offsetF_000")), N::v("high", r.vector("transf_offset_000")),
-                   N::v("mirror", r.vector("transf_scale3D_111")), N::v("offset", r.vector("transf_offsetA_000"))});
-        });
-    if (r.boolean("transf_function_enabled"))
-        inWindow(r, b, "M", "M", [&] {
-            double s = 0.0;
-            vec3 offset(0.0);
-            if (!mengerStepWithCorner(r, s, offset)) return;
-            b.add("menger_rotate", {N::f("scale", s), N::v("offset", offset)});
-            const vec3 add = r.vector("transf_addition_constantA_000");
-            if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
-        });
+    pseudoKleinianGeneralBoxFold(r, b);
+    pseudoKleinianMengerStep(r, b, "transf_function_enabled");
     pseudoKleinianFolds(r, b);
     additionConstant(r, b);
+}
+
+// The pseudo-Kleinian mod 1 (Mandelbulber2 2.20's PseudoKleinianMod1Iteration in
+// fractal_formulas.cpp; formula/definition/fractal_pseudo_kleinian_mod1.cpp in later versions):
+// the std DE's parts in another order, each in its window: the prism fold (P), the rotation (R),
+// Benesi's T1 (start .. T1) and box fold (D .. TM), the general box fold (F), the clamp-style fold
+// (C; transf_function_enabledAy, which also keeps F's y limit) and its conditional form (B), the
+// added constant, then the Menger step (M, option transf_function_enabledM_false) and its added
+// constant. Its DE is the pseudo-Kleinian one. The scale of z inside the clamp-style fold
+// (transf_scaleB_1) is refused.
+void mapPseudoKleinianMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_scaleB_1", "z scaled inside the pseudo-Kleinian fold");
+    if (r.boolean("transf_function_enabledF_false")) refuseGeneralBoxFoldAxesOff(r);
+    prismFold(r, b);
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    benesiFolds(r, b, "transf_start_iterations");
+    pseudoKleinianGeneralBoxFold(r, b);
+    pseudoKleinianFolds(r, b);
+    additionConstant(r, b);
+    pseudoKleinianMengerStep(r, b, "transf_function_enabledM_false");
 }
 
 // box_fold_bulb_pow2_v3: V2's parts (fold B, sphere fold S, scale C), then Benesi's box fold (TM),
@@ -2005,12 +2078,14 @@ constexpr Mapping kMappings[] = {
     {62, mapQuaternion3d},
     {83, mapIqBulb},
     {103, mapPseudoKleinian},
+    {104, mapPseudoKleinianMod1},
     {1001, mapTransfAddConstant},
     {1002, mapTransfRotation},
     {1003, mapTransfScale},
     {60, mapAboxModKali},
     {74, mapKalisets1},
     {76, mapAboxVsIcen1},
+    {73, mapAmazingSurf},
     {77, mapAmazingSurfMod1},
     {119, mapAboxMod11},
     {132, mapAmazingSurfMod2},
