@@ -27,9 +27,12 @@ open_settled() {
     set -- $(q '.viewport | map(floor) | join(" ")')
     crop="$3x$4+$1+$2"
 }
-# shot NAME: the viewport as the screen shows it.
+# shot NAME: the viewport as the screen shows it, once the status line over its foot ("Opened
+# ...", for a few seconds) has gone: a view that settles sooner than that would show it.
 shot() {
     wait_frames 2
+    wait_for .status.shown false 300
+    [ "$(q .status.shown)" = false ] || fail "the status line is still shown: $(q .status.text)"
     import -window root "$out/$1_screen.png"
     convert "$out/$1_screen.png" -crop "$crop" +repage "$out/$1.png"
 }

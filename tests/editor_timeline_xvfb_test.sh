@@ -137,7 +137,8 @@ wait_frames 3
 wait_settled
 # The status line over the viewport's foot ("Opened ...") goes after a few seconds: not while the
 # three screenshots below are taken (a loaded machine once took it off between the first and the last).
-wait_for .status.shown false 300
+wait_for '.status.shown | not'
+[ "$(q .status.shown)" = false ] || fail "the status line is still shown: $(q .status.text)"
 set -- $(q '.viewport | map(floor) | join(" ")')
 crop="$3x$4+$1+$2"
 shot() { wait_settled; import -window root "$out/$1.png"; convert "$out/$1.png" -crop "$crop" +repage "$out/$1_viewport.png"; }
