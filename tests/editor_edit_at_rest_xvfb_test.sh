@@ -45,26 +45,17 @@ shot before
 # scroll on to the sphere's parameters.
 to 150 300
 wait_frames 1
-for i in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; wait_frames 1; done
+wheel_down 10
 wait_frames 2
 click "header:Objects"
-for i in 1 2 3 4 5 6; do xdotool click 5; wait_frames 1; done
+wheel_down 6
 wait_frames 2
 widget='[.paramWidgets[] | select(.name == "radius")][0].rect'
 wait_for "$widget != null" true
 [ "$(q "$widget != null")" = true ] || fail "no radius widget drawn for the sphere"
 set -- $(q "$widget | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\"")
 # Ctrl+click turns the slider into a text field; type the value as a person does.
-to "$1" "$2"
-wait_frames 1
-xdotool keydown ctrl
-wait_frames 1
-xdotool mousedown 1
-wait_frames 1
-xdotool mouseup 1
-wait_frames 1
-xdotool keyup ctrl
-wait_frames 1
+ctrl_click_at "$1" "$2"
 xdotool key ctrl+a
 wait_frames 1
 xdotool type --delay 30 "0.2"

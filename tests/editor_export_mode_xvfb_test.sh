@@ -33,19 +33,7 @@ pick() {
 }
 rect() { q ".widgets[\"$1\"] | tojson"; }
 # ctrl_click WIDGET: a drag field turns into a text field.
-ctrl_click() {
-    set -- $(centre "$1")
-    to "$1" "$2"
-    wait_frames 1
-    xdotool keydown ctrl
-    wait_frames 1
-    xdotool mousedown 1
-    wait_frames 1
-    xdotool mouseup 1
-    wait_frames 1
-    xdotool keyup ctrl
-    wait_frames 1
-}
+ctrl_click() { ctrl_click_at $(centre "$1"); }
 ex() { q ".exportDialog.$1"; }
 
 start "$preset" --tab Render --export-size 96x54

@@ -31,10 +31,10 @@ import -window "$window" "$out/before.png"
 # The Objects header sits below the panel's fold: scroll to it with the wheel, as a person does.
 to 150 300
 wait_frames 1
-for i in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; wait_frames 1; done
+wheel_down 10
 wait_frames 2
 click "header:Objects"
-for i in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; wait_frames 1; done
+wheel_down 10
 wait_frames 2
 click "button:Add object"
 click "menu:Object Plane"

@@ -13,7 +13,7 @@ presets=$2
 scroll_down() {
     to 150 300
     wait_frames 1
-    for i in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; wait_frames 1; done
+    wheel_down 10
     wait_frames 2
 }
 

@@ -48,10 +48,10 @@ vx=$1 vy=$2 vw=$3 vh=$4
 # The Objects header sits below the panel's fold: scroll to it with the wheel, as a person does.
 to 150 300
 wait_frames 1
-for i in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; wait_frames 1; done
+wheel_down 10
 wait_frames 2
 click "header:Objects"
-for i in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; wait_frames 1; done
+wheel_down 10
 wait_frames 2
 click "button:Add object"
 click "menu:Object Plane"
@@ -64,7 +64,7 @@ settle_after_edit
 import -window "$window" "$out/grey.png"
 
 # The floor's Colour widget, scrolled into the panel; its red field is the leftmost of the three.
-for i in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; wait_frames 1; done
+wheel_down 10
 wait_frames 2
 wait_for '.widgets["color:Object 1"] != null' true
 if [ "$(q '.widgets["color:Object 1"] != null')" != true ]; then
@@ -73,16 +73,8 @@ else
     set -- $(q '.widgets["color:Object 1"] | "\(.[0] + 12 | floor) \(.[1] + .[3] / 2 | floor)"')
     # Ctrl+click turns ImGui's drag field into a text field with its text selected; 0 and Enter
     # set the channel, as a person types a value.
-    to "$1" "$2"
+    ctrl_click_at "$1" "$2"
     wait_frames 1
-    xdotool keydown ctrl
-    wait_frames 1
-    xdotool mousedown 1
-    wait_frames 1
-    xdotool mouseup 1
-    wait_frames 1
-    xdotool keyup ctrl
-    wait_frames 2
     press_keys ctrl a
     press_keys 0
     press_keys Return

@@ -147,6 +147,30 @@ wheel_over() {
     wait_frames 5
 }
 
+# wheel_down N: N clicks of the wheel down (button 5) where the pointer is, a frame after each.
+wheel_down() {
+    wheel_i=0
+    while [ $wheel_i -lt "$1" ]; do
+        xdotool click 5
+        wait_frames 1
+        wheel_i=$((wheel_i + 1))
+    done
+}
+# ctrl_click_at X Y: Ctrl+click at window point (X, Y), each press and release a frame of its own
+# (ImGui turns a drag field into a text field with its text selected).
+ctrl_click_at() {
+    to "$1" "$2"
+    wait_frames 1
+    xdotool keydown ctrl
+    wait_frames 1
+    xdotool mousedown 1
+    wait_frames 1
+    xdotool mouseup 1
+    wait_frames 1
+    xdotool keyup ctrl
+    wait_frames 1
+}
+
 # Viewport centre and panel points at the default 1280x800 layout (from the state file).
 viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1] + .viewport[3] / 2 | floor)"'; }
 # widget_centre NAME: the centre of the block parameter NAME's widget, as the state file records it
