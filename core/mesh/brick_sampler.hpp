@@ -62,8 +62,9 @@ struct BrickPlan {
 };
 
 // Memory the mesh pipeline is expected to use per sampled brick: the grid's leaf, the
-// re-normalised copy and the mesh's share (measured: bench/mesh/README.md).
-inline constexpr double kBytesPerBrick = 24.0 * 1024.0;
+// re-normalised copy, the mesh and its colours (measured with a coloured PLY: 14 KB a brick at
+// 1024^3 on the Mandelbulb, bench/mesh/README.md).
+inline constexpr double kBytesPerBrick = 16.0 * 1024.0;
 
 // Raised when a lattice would need more memory than `memoryLimitBytes`, with the estimate.
 struct TooBigError : std::runtime_error {
