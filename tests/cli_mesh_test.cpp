@@ -175,6 +175,8 @@ TEST(CliMesh, BadInputIsRefusedAndLeavesNothing) {
         {test::shippedPresetFile("menger.json") + " --print-size 10parsecs -o OUT.ply", "--print-size"},
         {test::shippedPresetFile("menger.json") + " --print-size 10cm -o OUT.vdb", "--print-size scales a mesh"},
         {test::shippedPresetFile("missing.json") + " -o OUT.ply", "missing.json"},
+        {test::shippedPresetFile("menger.json") + " --box 0,0,0,1,-1,1 -o OUT.ply", "--box: its high corner"},
+        {test::shippedPresetFile("menger.json") + " --box 0,0,0,1 -o OUT.ply", "--box"},
     };
     for (const BadMesh& c : cases) {
         std::string args = "mesh " + c.args + " --threads 2";

@@ -32,6 +32,7 @@ struct MeshOptions {
     std::string output;
     int resolution = 256;
     std::optional<double> voxel;
+    std::vector<double> box;  // --box X0,Y0,Z0,X1,Y1,Z1
     std::optional<int> frame;
     std::string frames;  // --frames A-B[:STEP]
     double simplify = 0.0;
@@ -122,7 +123,13 @@ void meshOne(const MeshOptions& o, const Preset& preset, const std::filesystem::
     const std::unique_ptr<FormulaSampler> sampler = samplerFor(o, f, context);
 
     mesh::MeshSettings settings;
-    settings.layout = o.voxel ? mesh::layoutByVoxel(f, *o.voxel) : mesh::layoutByResolution(f, o.resolution);
+    if (o.box.empty()) {
+        settings.layout = o.voxel ? mesh::layoutByVoxel(f, *o.voxel) : mesh::layoutByResolution(f, o.resolution);
+    } else {
+        const mesh::Box box{vec3(o.box[0], o.box[1], o.box[2]), vec3(o.box[3], o.box[4], o.box[5])};
+        settings.layout = o.voxel ? mesh::layoutOfBoxByVoxel(box, *o.voxel) : mesh::layoutOfBox(box, o.resolution);
+        settings.clip = box;
+    }
     settings.adaptivity = o.simplify;
     settings.threads = o.threads;
     settings.fillCavities = o.removeCavities;
@@ -183,6 +190,8 @@ int runMesh(const MeshOptions& o) {
                                      ": --print-size scales a mesh; a .vdb keeps the preset's units (its voxel size)");
         parsePrintSize(o.printSize);  // refused before any work
     }
+    if (!o.box.empty() && !(o.box[3] > o.box[0] && o.box[4] > o.box[1] && o.box[5] > o.box[2]))
+        throw std::runtime_error("--box: its high corner X1,Y1,Z1 must exceed its low corner X0,Y0,Z0 on every axis");
     if (isPlanePresetFile(o.preset))
         throw std::runtime_error(o.preset + ": a 2D preset has no surface to mesh (mesh a 3D preset)");
     // Ctrl+C from here on stops at the next batch, and leaves no file.
@@ -223,9 +232,14 @@ void addMeshCommand(CLI::App& app, Action& action) {
     cmd->add_option("preset", o->preset, "Preset file (JSON, or a Mandelbulber2 .fract)")->required();
     cmd->add_option("-o,--output", o->output, "Output: .vdb (OpenVDB level set) or .ply, .obj, .stl, .glb (mesh)")
         ->required();
-    auto* resolution =
-        cmd->add_option("--resolution", o->resolution, "Voxels across the bound's diameter (default 256)")
-            ->check(CLI::Range(8, 1 << 20));
+    auto* resolution = cmd->add_option("--resolution", o->resolution,
+                                       "Voxels across the bound's diameter, or the --box's largest side (default 256)")
+                           ->check(CLI::Range(8, 1 << 20));
+    cmd->add_option("--box", o->box,
+                    "Mesh only this box, X0,Y0,Z0,X1,Y1,Z1 in the preset's units (a detail, a cut-away), closed "
+                    "along its faces")
+        ->delimiter(',')
+        ->expected(6);
     cmd->add_option("--voxel", o->voxel, "Voxel size in the preset's units (instead of --resolution)")
         ->check(CLI::PositiveNumber)
         ->excludes(resolution);
