@@ -53,12 +53,14 @@ power 8;
 SETTINGS
 }
 
-# Runs a command under /usr/bin/time; sets $seconds and $peak_mb.
+# Runs a command under /usr/bin/time; sets $seconds and $peak_mb, and $failed to its error line
+# when it fails (a lattice refused up front is a row of the table, not the end of the run).
 timed() {
     local log=$1
     shift
-    /usr/bin/time -f "%e %M" -o "$log.time" "$@" > "$log" 2>&1 || { echo "failed: $* (see $log)" >&2; cat "$log" >&2; return 1; }
-    read -r seconds peak_kb < "$log.time"
+    failed=
+    /usr/bin/time -f "%e %M" -o "$log.time" "$@" > "$log" 2>&1 || failed=$(grep -m1 'error' "$log" || tail -1 "$log")
+    read -r seconds peak_kb < <(tail -1 "$log.time")
     peak_mb=$((peak_kb / 1024))
 }
 
@@ -69,6 +71,10 @@ for scene in $scenes; do
     for n in $sizes; do
         log="$out/fraktal-$scene-$n.log"
         timed "$log" "$fraktal" mesh "$root/presets/$scene.json" --resolution "$n" -o "$out/$scene-$n.ply"
+        if [ -n "$failed" ]; then
+            echo "| fraktal | $scene | ${n}^3 | ${failed#fraktal: error: } | | $peak_mb | | $seconds |"
+            continue
+        fi
         bricks=$(sed -n 's/.* \([0-9]*\) of \([0-9]*\) bricks near the surface.*/\1 of \2/p' "$log")
         triangles=$(sed -n 's/^wrote .*: \([0-9]*\) triangles.*/\1/p' "$log")
         ratio=${previous:+$(awk -v a="$peak_mb" -v b="$previous" 'BEGIN { printf "%.1f", a / b }')}
@@ -83,6 +89,10 @@ for scene in $scenes; do
         mb2_settings "$scene" "$n" > "$settings"
         mkdir -p "$out/mb2-$scene-$n" "$out/mb2-home"
         timed "$out/mb2-$scene-$n.log" env HOME="$out/mb2-home" QT_QPA_PLATFORM=offscreen mandelbulber2 -n -V ply "$settings"
+        if [ -n "$failed" ]; then
+            echo "| mandelbulber2 | $scene | ${n}^3 | failed: $failed | | $peak_mb | | $seconds |"
+            continue
+        fi
         ply=$(find "$out/mb2-$scene-$n" "$out/mb2-home/.mandelbulber/slices" -name '*.ply' -newer "$settings" 2> /dev/null | head -1)
         triangles=$([ -n "$ply" ] && sed -n 's/^element face \([0-9]*\)/\1/p' "$ply" | head -1 || echo "?")
         ratio=${previous:+$(awk -v a="$peak_mb" -v b="$previous" 'BEGIN { printf "%.1f", a / b }')}
