@@ -79,6 +79,8 @@ benchmarks=(
   "anim|bench/anim/run.sh $build 240 640x360"
   # bench/plane
   "plane|bench/plane/run.sh $build 2"
+  # bench/mesh
+  "mesh|bench/mesh/run.sh $build $out/mesh"
 )
 
 # What this script does not run, and why (printed at the start of every run).

@@ -163,15 +163,17 @@ BrickPlan planBricks(FormulaSampler& sampler, const GridLayout& layout, double m
     std::vector<Evaluation> estimates;
     for (int size = top, level = 0;; size /= 2, ++level) {
         control.report("planning", MeshStages::kPlan * level / std::max(1, levels + 1));
-        // A surface's bricks grow 4x per halving (fractal surfaces, whose dimension is over 2,
-        // grow faster: the count is checked again at each level). Cells many bricks wide are
-        // all near a surface that does not fill them (the Mandelbulb's 8^3 cells of 256 bricks
-        // each at 2048^3 projected 23.7 GiB where it needs 15), so above the last three levels
-        // only a projection of 8x the memory refuses (a lattice absurdly fine, before the
-        // planning itself grows too big); the last levels and the plan itself are held to it.
+        // A surface's bricks grow 4x per halving, a fractal surface's faster, but cells many
+        // bricks wide are all near a surface that does not fill them: the Mandelbulb at 2048^3
+        // projects 23.7 GiB from its 97,000 cells of 4 bricks, where its 1.10 million bricks
+        // need 16.8. Planning is cheap (3 million cells estimated for 2048^3, 6 s on the CPU), so
+        // the plan's own brick count decides (below); a projection refuses here only at 16x the
+        // memory (a lattice absurdly fine: 8192^3 of the Mandelbulb projects 400 GiB), or when
+        // the planning's own cells would take a quarter of it.
         const double projected = double(cells.size()) * std::pow(4.0, levels - level) * kBytesPerBrick;
-        const double slack = levels - level > 3 ? 8.0 : 1.0;
-        if (projected > slack * memoryLimitBytes)
+        constexpr double kPlanningBytesPerCell = 64.0;  // its coordinates, kind, centre and estimate
+        if (projected > 16.0 * memoryLimitBytes ||
+            double(cells.size()) * kPlanningBytesPerCell > 0.25 * memoryLimitBytes)
             throw TooBigError("a " + std::to_string(layout.voxelsAcross) + "^3 lattice (voxel " +
                               std::to_string(layout.voxel) + ") needs about " + gib(projected) + ", over the " +
                               gib(memoryLimitBytes) + " available: lower --resolution or raise --voxel");
