@@ -165,7 +165,7 @@ TEST(CliMesh, BadInputIsRefusedAndLeavesNothing) {
     test::Sandbox box("fraktal_cli_mesh_bad_");
     const std::string blocker = box.write("file", "not a folder");
     const std::vector<BadMesh> cases = {
-        {test::shippedPresetFile("menger.json") + " --resolution 1000000 -o OUT.ply", "needs about"},
+        {test::shippedPresetFile("menger.json") + " --resolution 65536 -o OUT.ply", "needs about"},
         {test::shippedPresetFile("menger.json") + " -o " + blocker + "/x.ply", blocker},
         {test::shippedPresetFile("2d/mandelbrot.json") + " -o OUT.ply", "2D preset has no surface"},
         {test::shippedPresetFile("menger.json") + " -o OUT.xyz", "unknown output format \".xyz\""},
@@ -177,6 +177,8 @@ TEST(CliMesh, BadInputIsRefusedAndLeavesNothing) {
         {test::shippedPresetFile("missing.json") + " -o OUT.ply", "missing.json"},
         {test::shippedPresetFile("menger.json") + " --box 0,0,0,1,-1,1 -o OUT.ply", "--box: its high corner"},
         {test::shippedPresetFile("menger.json") + " --box 0,0,0,1 -o OUT.ply", "--box"},
+        {test::shippedPresetFile("menger.json") + " --box 0.5,0.5,0.5,0.5001,0.5001,0.5001 -o OUT.ply",
+         "under the smallest OpenVDB takes"},
     };
     for (const BadMesh& c : cases) {
         std::string args = "mesh " + c.args + " --threads 2";

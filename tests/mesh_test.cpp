@@ -197,7 +197,7 @@ TEST(Mesh, PlanThatDoesNotFitIsRefusedWithTheEstimate) {
     const Formula f = test::shippedPreset("menger.json").formula;
     try {
         CpuSampler sampler(f);
-        mesh::planBricks(sampler, mesh::layoutByResolution(f, 1 << 20), 8.0 * 1024 * 1024 * 1024, 2);
+        mesh::planBricks(sampler, mesh::layoutByResolution(f, 1 << 16), 8.0 * 1024 * 1024 * 1024, 2);
         FAIL() << "no error";
     } catch (const mesh::TooBigError& e) {
         EXPECT_NE(std::string(e.what()).find("needs about"), std::string::npos) << e.what();

@@ -91,10 +91,15 @@ struct MeshProgressPrinter {
 // The sampler the mesher estimates with: the GL probe on a headless context (the renderer's own
 // GLSL, in single precision; on llvmpipe with two cores it meshes the Mandelbulb at 256^3 2.3x
 // faster than the CPU path), or the CPU's (double precision, every core). auto takes the GL one
-// when a context can be made, and the CPU otherwise, unless custom GLSL blocks need GL.
-std::unique_ptr<FormulaSampler> samplerFor(const MeshOptions& o, const Formula& f,
+// when a context can be made, and the CPU otherwise, unless custom GLSL blocks need GL; and the
+// CPU for a lattice finer than single precision resolves (a voxel under 1e-5 of the coordinates'
+// size, about 80 steps of a float: a deep detail through --box).
+std::unique_ptr<FormulaSampler> samplerFor(const MeshOptions& o, const Formula& f, const mesh::GridLayout& layout,
                                            std::unique_ptr<gl::HeadlessContext>& context) {
-    if (o.device == "cpu") {
+    const vec3 farCorner =
+        glm::max(glm::abs(layout.minCorner), glm::abs(layout.minCorner + layout.voxel * double(layout.voxelsAcross)));
+    const bool tooFineForFloats = layout.voxel < 1e-5 * std::max(farCorner.x, std::max(farCorner.y, farCorner.z));
+    if (o.device == "cpu" || (o.device == "auto" && tooFineForFloats && f.cpuEvaluable())) {
         if (!f.cpuEvaluable())
             throw std::runtime_error(o.preset + ": custom GLSL blocks have no CPU version: mesh with --device gpu");
         return std::make_unique<CpuSampler>(f);
@@ -120,8 +125,6 @@ void meshOne(const MeshOptions& o, const Preset& preset, const std::filesystem::
     const std::string extension = output.extension().string();
     const bool vdb = extension == ".vdb";
     const Formula& f = preset.formula;
-    const std::unique_ptr<FormulaSampler> sampler = samplerFor(o, f, context);
-
     mesh::MeshSettings settings;
     if (o.box.empty()) {
         settings.layout = o.voxel ? mesh::layoutByVoxel(f, *o.voxel) : mesh::layoutByResolution(f, o.resolution);
@@ -130,6 +133,7 @@ void meshOne(const MeshOptions& o, const Preset& preset, const std::filesystem::
         settings.layout = o.voxel ? mesh::layoutOfBoxByVoxel(box, *o.voxel) : mesh::layoutOfBox(box, o.resolution);
         settings.clip = box;
     }
+    const std::unique_ptr<FormulaSampler> sampler = samplerFor(o, f, settings.layout, context);
     settings.adaptivity = o.simplify;
     settings.threads = o.threads;
     settings.fillCavities = o.removeCavities;
@@ -264,7 +268,8 @@ void addMeshCommand(CLI::App& app, Action& action) {
                   "Leave out the vertex colours (by default .ply, .obj and .glb carry the preset's palette)");
     cmd->add_option("--device", o->device,
                     "Where the estimate is evaluated: gpu (the renderer's GLSL on OpenGL, single precision), "
-                    "cpu (double precision, every core), or auto: the GPU when there is an OpenGL context")
+                    "cpu (double precision, every core), or auto: the GPU when there is an OpenGL context and "
+                    "the voxel is over 1e-5 of the coordinates (else the CPU)")
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
     cmd->add_option("--threads", o->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
     cmd->callback([&action, o] { action = [o] { return runMesh(*o); }; });

@@ -11,13 +11,29 @@
 
 namespace fraktal::mesh {
 
+namespace {
+
+GridLayout checkedLayout(GridLayout l) {
+    if (l.voxel < kSmallestVoxel) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "a voxel of %.3g is under the smallest OpenVDB takes (%g in the preset's units): mesh a "
+                      "larger box or at a lower resolution",
+                      l.voxel, kSmallestVoxel);
+        throw std::invalid_argument(text);
+    }
+    return l;
+}
+
+}  // namespace
+
 GridLayout layoutByResolution(const Formula& f, int resolution) {
     if (resolution < 2) throw std::invalid_argument("resolution " + std::to_string(resolution) + " is under 2 voxels");
     GridLayout l;
     l.minCorner = vec3(-f.boundRadius);
     l.voxel = 2.0 * f.boundRadius / resolution;
     l.voxelsAcross = resolution;
-    return l;
+    return checkedLayout(l);
 }
 
 GridLayout layoutByVoxel(const Formula& f, double voxel) {
@@ -29,7 +45,7 @@ GridLayout layoutByVoxel(const Formula& f, double voxel) {
     l.minCorner = vec3(-f.boundRadius);
     l.voxel = voxel;
     l.voxelsAcross = std::max(2, int(across));
-    return l;
+    return checkedLayout(l);
 }
 
 double Box::signedDistance(const vec3& p) const {
@@ -55,7 +71,7 @@ GridLayout layoutOfBox(const Box& box, int resolution) {
     l.minCorner = box.lo;
     l.voxel = largestSide(box) / resolution;
     l.voxelsAcross = resolution;
-    return l;
+    return checkedLayout(l);
 }
 
 GridLayout layoutOfBoxByVoxel(const Box& box, double voxel) {
@@ -67,7 +83,7 @@ GridLayout layoutOfBoxByVoxel(const Box& box, double voxel) {
     l.minCorner = box.lo;
     l.voxel = voxel;
     l.voxelsAcross = std::max(2, int(across));
-    return l;
+    return checkedLayout(l);
 }
 
 void BoxClippedSampler::evaluate(std::span<const vec3> points, std::span<Evaluation> out) {

@@ -37,6 +37,11 @@ struct GridLayout {
     double background() const { return kBandHalfWidth * voxel; }
 };
 
+// The smallest voxel OpenVDB's transforms take ("Non-zero scale values required" under about
+// 1e-5: its scale map's determinant, voxel^3, is held against a tolerance of 1e-15). The layouts
+// below refuse smaller ones with std::invalid_argument.
+inline constexpr double kSmallestVoxel = 2e-5;
+
 // The cube [-boundRadius, boundRadius]^3 cut into `resolution` voxels a side.
 GridLayout layoutByResolution(const Formula& f, int resolution);
 // The same cube in voxels of `voxel` (the last voxel may reach past the bound).
