@@ -20,4 +20,13 @@ ShadingParams resolveShading(const ShadingSettings& shading, const RenderSetting
     return p;
 }
 
+vec3 albedoOf(const ShadingParams& params, const Evaluation& e) {
+    if (e.surface != kFractalSurface) return params.objectColors[size_t(e.surface)];
+    const ShadingSettings& s = params.s;
+    const double x = s.trapOffset + s.trapScale * dot(s.trapWeights, e.trap.value);
+    const vec3 display =
+        clamp(s.paletteA + s.paletteB * glm::cos(6.28318530718 * (s.paletteC * x + s.paletteD)), 0.0, 1.0);
+    return glm::pow(display, vec3(2.2));
+}
+
 }  // namespace fraktal

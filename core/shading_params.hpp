@@ -24,4 +24,9 @@ struct ShadingParams {
 ShadingParams resolveShading(const ShadingSettings& shading, const RenderSettings& render, const Formula& formula,
                              const std::function<vec3(const vec3&)>& toWorking = {});
 
+// The surface's albedo at an evaluated point, in the working space: the object's own colour, or
+// the fractal's palette (cosine palette, Quilez) at its orbit trap, decoded from display to linear
+// as shade.glsl's surfaceAlbedo does.
+vec3 albedoOf(const ShadingParams& params, const Evaluation& e);
+
 }  // namespace fraktal

@@ -2,6 +2,7 @@
 // clear error and nothing written.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -47,6 +48,76 @@ TEST(CliMesh, VdbReopensAsALevelSet) {
     EXPECT_GT(vdb.activeVoxels, 1000);
     EXPECT_LT(vdb.sample(vec3(0.0)), 0.0) << "the bulb's centre is inside";
     EXPECT_GT(vdb.sample(vec3(1.45, 1.45, 1.45)), 0.0) << "the bound's corner is outside";
+    // OpenVDB's own tool (libopenvdb-tools) reads it: one float level set named as written.
+    const test::CliRun print = test::runShell("vdb_print -l " + box.path("bulb.vdb") + " 2>&1");
+    ASSERT_EQ(print.exitCode, 0) << print.output;
+    EXPECT_NE(print.output.find(mesh::kVdbGridName), std::string::npos) << print.output;
+    EXPECT_NE(print.output.find("float"), std::string::npos) << print.output;
+    EXPECT_NE(print.output.find("level set"), std::string::npos) << print.output;
+}
+
+// --frames A-B:STEP writes one file per frame, each the mesh of that frame (as --frame N).
+TEST(CliMesh, FramesWriteOneMeshPerFrame) {
+    test::Sandbox box("fraktal_cli_mesh_frames_");
+    const std::string animated = test::shippedPresetFile("mandelbulb_power_morph.json");
+    const std::string options = " --resolution 32 --threads 2";
+    const test::CliRun run =
+        test::runCli("mesh " + animated + " --frames 100-140:20" + options + " -o " + box.path("bulb_####.ply"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(box.fileCount(), 3);
+    const test::CliRun one = test::runCli("mesh " + animated + " --frame 120" + options + " -o " + box.path("one.ply"));
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    EXPECT_EQ(bytes(box.path("bulb_0120.ply")), bytes(box.path("one.ply")));
+    EXPECT_NE(bytes(box.path("bulb_0100.ply")), bytes(box.path("bulb_0140.ply")));
+    EXPECT_NE(run.output.find("frame 3/3 (140)"), std::string::npos) << run.output;
+    // A pattern without a run of # is refused before any work.
+    const test::CliRun bad =
+        test::runCli("mesh " + animated + " --frames 0-2" + options + " -o " + box.path("plain.ply"));
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_EQ(box.fileCount(), 4) << bad.output;
+}
+
+// The printing options report what they changed, and colour goes where the format carries it.
+TEST(CliMesh, PrintingOptionsReportWhatTheyChanged) {
+    test::Sandbox box("fraktal_cli_mesh_print_");
+    const std::string bulb = test::shippedPresetFile("mandelbulb.json");
+    const test::CliRun run =
+        test::runCli("mesh " + bulb + " --resolution 48 --threads 2 --remove-cavities --min-thickness 0.05 -o " +
+                     box.path("bulb.glb"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("cavities: "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("voxels made solid"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("coloured"), std::string::npos) << run.output;
+    const mesh::TriangleMesh coloured = mesh::readMesh(box.path("bulb.glb"));
+    EXPECT_EQ(coloured.colors.size(), coloured.points.size());
+    EXPECT_TRUE(mesh::checkManifold(coloured).manifold());
+    const test::CliRun plain =
+        test::runCli("mesh " + bulb + " --resolution 32 --threads 2 --no-color -o " + box.path("plain.glb"));
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    EXPECT_TRUE(mesh::readMesh(box.path("plain.glb")).colors.empty());
+}
+
+// On a pipe, progress comes as "progress: STAGE (NN%)" lines (the editor's export reads them);
+// SIGTERM stops the job at its next batch with 130 and leaves no file.
+TEST(CliMesh, ProgressLinesAndATermLeavesNoFile) {
+    test::Sandbox box("fraktal_cli_mesh_cancel_");
+    const std::string bulb = test::shippedPresetFile("mandelbulb.json");
+    const test::CliRun done = test::runCli("mesh " + bulb + " --resolution 48 --threads 2 -o " + box.path("small.ply"));
+    ASSERT_EQ(done.exitCode, 0) << done.output;
+    EXPECT_NE(done.output.find("progress: planning (0%)"), std::string::npos) << done.output;
+    EXPECT_NE(done.output.find("progress: sampling ("), std::string::npos) << done.output;
+    EXPECT_NE(done.output.find("progress: meshing (95%)"), std::string::npos) << done.output;
+    // A mesh that takes minutes, stopped once it samples.
+    const std::string big = box.path("big.ply");
+    const test::CliRun stopped =
+        test::runShell("(" + std::string(FRAKTAL_CLI) + " mesh " + bulb + " --resolution 1024 --threads 2 -o " + big +
+                       " 2>&1 & pid=$!; for i in $(seq 600); do sleep 0.1; grep -q 'progress: sampling' " +
+                       box.path("log") + " 2>/dev/null && break; done; kill -TERM $pid; wait $pid; echo exit=$?) > " +
+                       box.path("log") + " 2>&1; cat " + box.path("log"));
+    EXPECT_NE(stopped.output.find("exit=130"), std::string::npos) << stopped.output;
+    EXPECT_NE(stopped.output.find("mesh cancelled"), std::string::npos) << stopped.output;
+    EXPECT_FALSE(std::filesystem::exists(big));
+    EXPECT_EQ(box.fileCount(), 2) << "small.ply and the log alone";
 }
 
 // The mesh of an animation's frame is the mesh of that frame saved as a still.

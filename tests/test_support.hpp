@@ -92,16 +92,20 @@ struct Sandbox {
     }
 };
 
-// Runs the fraktal command line with `args` (shell syntax; environment assignments may come
-// first in `env`), capturing stdout and stderr together.
-inline CliRun runCli(const std::string& args, const std::string& env = "") {
-    const std::string command = env + " " + std::string(FRAKTAL_CLI) + " " + args + " 2>&1";
+// Runs a shell command, capturing its stdout.
+inline CliRun runShell(const std::string& command) {
     FILE* pipe = popen(command.c_str(), "r");
     std::string out;
     char buf[4096];
     while (fgets(buf, sizeof buf, pipe)) out += buf;
     const int status = pclose(pipe);
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// Runs the fraktal command line with `args` (shell syntax; environment assignments may come
+// first in `env`), capturing stdout and stderr together.
+inline CliRun runCli(const std::string& args, const std::string& env = "") {
+    return runShell(env + " " + std::string(FRAKTAL_CLI) + " " + args + " 2>&1");
 }
 
 }  // namespace fraktal::test

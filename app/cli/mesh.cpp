@@ -1,6 +1,8 @@
 // `fraktal mesh PRESET -o OUT.{vdb,ply,obj,stl,glb}`: the preset's fractal as a sparse
 // narrow-band level set (OpenVDB) and a closed, manifold triangle mesh for printing
-// (core/mesh/mesh_formula.hpp).
+// (core/mesh/mesh_formula.hpp); `--frames A-B -o out/mesh_####.ply` meshes an animation's frames.
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,8 +11,12 @@
 #include <optional>
 #include <regex>
 
+#include "cli/cancel.hpp"
 #include "cli/commands.hpp"
+#include "core/anim/sequence.hpp"
 #include "core/atomic_file.hpp"
+#include "core/gl/context.hpp"
+#include "core/gl/de_probe.hpp"
 #include "core/mesh/mesh_file.hpp"
 #include "core/mesh/mesh_formula.hpp"
 #include "core/plane/plane_preset.hpp"
@@ -27,9 +33,14 @@ struct MeshOptions {
     int resolution = 256;
     std::optional<double> voxel;
     std::optional<int> frame;
+    std::string frames;  // --frames A-B[:STEP]
     double simplify = 0.0;
     std::string printSize;
     int threads = 0;
+    bool removeCavities = false;
+    double minThickness = 0.0;
+    bool noColor = false;
+    std::string device = "auto";
 };
 
 // "100mm", "10cm", "0.1m", "4in" or a bare number of millimetres, in millimetres.
@@ -45,14 +56,109 @@ double parsePrintSize(const std::string& text) {
     return mm;
 }
 
-Preset meshedPreset(const MeshOptions& o) {
-    if (isPlanePresetFile(o.preset))
-        throw std::runtime_error(o.preset + ": a 2D preset has no surface to mesh (mesh a 3D preset)");
-    return sceneAtFrame(o.preset, o.frame);
-}
-
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A bar on a terminal; on a pipe (the editor's export, logs) a line per 5 % or new stage:
+// "progress: sampling (42%)", which the editor's export reads.
+struct MeshProgressPrinter {
+    bool tty = ::isatty(STDERR_FILENO) != 0;
+    std::string frameLabel;  // "frame 3/10: " in a sequence
+    std::string lastStage;
+    int lastPercent = -1;
+    void operator()(const char* stage, double done) {
+        const int percent = int(std::clamp(done, 0.0, 1.0) * 100.0);
+        if (tty) {
+            std::fprintf(stderr, "\r%s%-10s %3d%%   ", frameLabel.c_str(), stage, percent);
+        } else if (stage != lastStage || percent >= lastPercent + 5) {
+            std::fprintf(stderr, "progress: %s%s (%d%%)\n", frameLabel.c_str(), stage, percent);
+        } else {
+            return;
+        }
+        lastStage = stage;
+        lastPercent = percent;
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (tty && lastPercent >= 0) std::fputc('\n', stderr);
+        lastPercent = -1;
+        lastStage.clear();
+    }
+};
+
+// The sampler the mesher estimates with: the CPU's (double precision, every core) or the GL
+// probe's on a headless context (the renderer's GLSL; the only one for custom GLSL blocks).
+std::unique_ptr<FormulaSampler> samplerFor(const MeshOptions& o, const Formula& f,
+                                           std::unique_ptr<gl::HeadlessContext>& context) {
+    const bool gpu = o.device == "gpu" || (o.device == "auto" && !f.cpuEvaluable());
+    if (!gpu) return std::make_unique<CpuSampler>(f);
+    if (!context) {
+        try {
+            context = gl::HeadlessContext::create();
+        } catch (const std::exception& e) {
+            throw std::runtime_error(o.preset + ": " + (f.cpuEvaluable() ? "--device gpu" : "its custom GLSL blocks") +
+                                     " need an OpenGL 4.5 context: " + e.what());
+        }
+    }
+    return std::make_unique<gl::GpuSampler>(f);
+}
+
+// Meshes one preset (a still, or one frame of a sequence) into `output`.
+void meshOne(const MeshOptions& o, const Preset& preset, const std::filesystem::path& output,
+             std::unique_ptr<gl::HeadlessContext>& context, MeshProgressPrinter& progress) {
+    const std::string extension = output.extension().string();
+    const bool vdb = extension == ".vdb";
+    const Formula& f = preset.formula;
+    const std::unique_ptr<FormulaSampler> sampler = samplerFor(o, f, context);
+
+    mesh::MeshSettings settings;
+    settings.layout = o.voxel ? mesh::layoutByVoxel(f, *o.voxel) : mesh::layoutByResolution(f, o.resolution);
+    settings.adaptivity = o.simplify;
+    settings.threads = o.threads;
+    settings.fillCavities = o.removeCavities;
+    settings.minThickness = o.minThickness;
+    if (!vdb && !o.noColor && mesh::carriesColors(extension))
+        settings.colors = resolveShading(preset.shading, preset.render, f);
+    settings.control.cancel = &cancelOnSignal();
+    settings.control.progress = [&progress](const char* stage, double done) { progress(stage, done); };
+
+    const auto start = std::chrono::steady_clock::now();
+    mesh::FormulaVolume v = mesh::buildVolume(*sampler, settings);
+    progress.finish();
+    const int across = settings.layout.voxelsAcross;
+    std::printf("%s%s: %d^3 voxels of %g, %zu of %lld bricks near the surface, on the %s\n",
+                progress.frameLabel.c_str(), o.preset.c_str(), across, settings.layout.voxel, v.plan.bricks.size(),
+                (long long)std::pow(double(settings.layout.bricksAcross()), 3.0),
+                sampler->concurrent() ? "CPU" : "GPU");
+    if (o.removeCavities) std::printf("cavities: %lld voxels filled\n", (long long)v.cavityVoxelsFilled);
+    if (o.minThickness > 0.0)
+        std::printf("thin parts (under %g): %lld voxels made solid\n", o.minThickness, (long long)v.thickenedVoxels);
+    std::printf("level set: %lld active voxels, %.1f MiB (%.1fs)\n", (long long)v.volume.activeVoxels(),
+                double(v.volume.memoryBytes()) / (1024.0 * 1024.0), secondsSince(start));
+    if (vdb) {
+        v.volume.writeVdb(output);
+        std::printf("wrote %s (%.1fs)\n", output.c_str(), secondsSince(start));
+        return;
+    }
+    mesh::TriangleMesh m = mesh::meshVolume(*sampler, v.volume, settings);
+    progress.finish();
+    if (m.triangles.empty())
+        throw std::runtime_error(o.preset + ": no surface within the bound at this resolution (nothing written)");
+    std::optional<double> printMm;
+    if (!o.printSize.empty()) printMm = parsePrintSize(o.printSize);
+    if (printMm) {
+        const auto box = m.bounds();
+        const vec3 extent = box[1] - box[0];
+        m.transform(*printMm / std::max(extent.x, std::max(extent.y, extent.z)), vec3(0.0));
+    }
+    const auto box = m.bounds();
+    const vec3 extent = box[1] - box[0];
+    mesh::writeMesh(output, m);
+    std::printf("wrote %s: %zu triangles, %zu vertices%s, volume %.6g, %.4g x %.4g x %.4g%s (%.1fs)\n", output.c_str(),
+                m.triangles.size(), m.points.size(), m.colors.empty() ? "" : " coloured", m.enclosedVolume(), extent.x,
+                extent.y, extent.z, printMm ? " mm" : "", secondsSince(start));
+    std::fflush(stdout);
 }
 
 int runMesh(const MeshOptions& o) {
@@ -62,55 +168,41 @@ int runMesh(const MeshOptions& o) {
     if (!vdb && !mesh::isMeshExtension(extension))
         throw std::runtime_error(o.output + ": unknown output format \"" + extension + "\" (one of .vdb, " +
                                  mesh::meshExtensions() + ")");
-    std::optional<double> printMm;
     if (!o.printSize.empty()) {
         if (vdb)
             throw std::runtime_error(o.output +
                                      ": --print-size scales a mesh; a .vdb keeps the preset's units (its voxel size)");
-        printMm = parsePrintSize(o.printSize);
+        parsePrintSize(o.printSize);  // refused before any work
     }
-    // The output's folder is checked before any work (AtomicFile creates nothing yet).
-    { AtomicFile check(output); }
-    const Preset preset = meshedPreset(o);
-    const Formula& f = preset.formula;
-    if (!f.cpuEvaluable())
-        throw std::runtime_error(o.preset +
-                                 ": custom GLSL blocks cannot be meshed yet (the mesher evaluates on the CPU)");
-
-    mesh::MeshSettings settings;
-    settings.layout = o.voxel ? mesh::layoutByVoxel(f, *o.voxel) : mesh::layoutByResolution(f, o.resolution);
-    settings.adaptivity = o.simplify;
-    settings.threads = o.threads;
-    const auto start = std::chrono::steady_clock::now();
-    const mesh::BrickPlan plan = mesh::planBricks(f, settings.layout, settings.memoryLimitBytes, settings.threads);
-    const int across = settings.layout.voxelsAcross;
-    std::printf("%s: %d^3 voxels of %g, %zu of %lld bricks near the surface (%.1fs)\n", o.preset.c_str(), across,
-                settings.layout.voxel, plan.bricks.size(),
-                (long long)std::pow(double(settings.layout.bricksAcross()), 3.0), secondsSince(start));
-    std::fflush(stdout);
-    const mesh::SdfVolume volume = mesh::SdfVolume::build(f, plan, settings.threads);
-    std::printf("level set: %lld active voxels, %.1f MiB (%.1fs)\n", (long long)volume.activeVoxels(),
-                double(volume.memoryBytes()) / (1024.0 * 1024.0), secondsSince(start));
-    if (vdb) {
-        volume.writeVdb(output);
-        std::printf("wrote %s (%.1fs)\n", o.output.c_str(), secondsSince(start));
+    if (isPlanePresetFile(o.preset))
+        throw std::runtime_error(o.preset + ": a 2D preset has no surface to mesh (mesh a 3D preset)");
+    // Ctrl+C from here on stops at the next batch, and leaves no file.
+    cancelOnSignal();
+    std::unique_ptr<gl::HeadlessContext> context;
+    MeshProgressPrinter progress;
+    try {
+        if (o.frames.empty()) {
+            // The output's folder is checked before any work (AtomicFile creates nothing yet).
+            { AtomicFile check(output); }
+            meshOne(o, sceneAtFrame(o.preset, o.frame), output, context, progress);
+            return 0;
+        }
+        const Preset animated = loadSceneFile(o.preset, headlessGlslSampler());
+        const FrameRange range = parseFrameRange(o.frames);
+        checkFrameRangeWithin(range, animated.animation, o.preset);
+        checkFramePattern(o.output);
+        const std::vector<int> frames = range.frames();
+        for (size_t i = 0; i < frames.size(); ++i) {
+            progress.frameLabel = "frame " + std::to_string(i + 1) + "/" + std::to_string(frames.size()) + " (" +
+                                  std::to_string(frames[i]) + "): ";
+            meshOne(o, presetAtFrame(animated, frames[i]), framePath(o.output, frames[i]), context, progress);
+        }
         return 0;
+    } catch (const mesh::MeshCancelled&) {
+        progress.finish();
+        std::fprintf(stderr, "fraktal: mesh cancelled; the file under way is not written\n");
+        return kCancelledExitCode;
     }
-    mesh::TriangleMesh m = volume.toMesh(o.simplify);
-    if (m.triangles.empty())
-        throw std::runtime_error(o.preset + ": no surface within the bound at this resolution (nothing written)");
-    if (printMm) {
-        const auto box = m.bounds();
-        const vec3 extent = box[1] - box[0];
-        m.transform(*printMm / std::max(extent.x, std::max(extent.y, extent.z)), vec3(0.0));
-    }
-    const auto box = m.bounds();
-    const vec3 extent = box[1] - box[0];
-    mesh::writeMesh(output, m);
-    std::printf("wrote %s: %zu triangles, %zu vertices, volume %.6g, %.4g x %.4g x %.4g%s (%.1fs)\n", o.output.c_str(),
-                m.triangles.size(), m.points.size(), m.enclosedVolume(), extent.x, extent.y, extent.z,
-                printMm ? " mm" : "", secondsSince(start));
-    return 0;
 }
 
 }  // namespace
@@ -128,12 +220,29 @@ void addMeshCommand(CLI::App& app, Action& action) {
     cmd->add_option("--voxel", o->voxel, "Voxel size in the preset's units (instead of --resolution)")
         ->check(CLI::PositiveNumber)
         ->excludes(resolution);
-    cmd->add_option("--frame", o->frame, "Mesh the preset as its animation has it at this frame");
+    auto* frame = cmd->add_option("--frame", o->frame, "Mesh the preset as its animation has it at this frame");
+    cmd->add_option("--frames", o->frames,
+                    "Mesh an animation's frames A-B[:STEP], one file each: -o names them with a run of # "
+                    "(out/mesh_####.ply)")
+        ->excludes(frame);
     cmd->add_option("--simplify", o->simplify,
                     "Merge flat regions into larger polygons: OpenVDB's adaptivity, 0 (none) to 1")
         ->check(CLI::Range(0.0, 1.0));
     cmd->add_option("--print-size", o->printSize,
                     "Scale the mesh so that its largest side is this long, in millimetres (100mm, 10cm, 4in)");
+    cmd->add_flag("--remove-cavities", o->removeCavities,
+                  "Keep only the surface seen from outside: fill the closed cavities inside the fractal (and what "
+                  "floats in them), which a print would trap");
+    cmd->add_option("--min-thickness", o->minThickness,
+                    "Thicken the parts thinner than this (preset units; a nozzle's width at the print size): "
+                    "reports the voxels made solid")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--no-color", o->noColor,
+                  "Leave out the vertex colours (by default .ply, .obj and .glb carry the preset's palette)");
+    cmd->add_option("--device", o->device,
+                    "Where the estimate is evaluated: cpu (double precision), gpu (the renderer's GLSL on "
+                    "OpenGL), or auto: the CPU, the GPU for custom GLSL blocks")
+        ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
     cmd->add_option("--threads", o->threads, "Threads (default: all cores)")->check(CLI::Range(1, 1024));
     cmd->callback([&action, o] { action = [o] { return runMesh(*o); }; });
 }

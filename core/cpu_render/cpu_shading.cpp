@@ -87,14 +87,8 @@ vec3 surfaceNormal(const Scene& scene, const vec3& pos, const vec3& rd, double e
 }
 
 vec3 surfaceAlbedo(const Scene& scene, const vec3& pos, double& deEvals) {
-    const ShadingSettings& s = scene.params.s;
-    const Evaluation e = evaluate(scene.formula, pos);
     deEvals += 1.0;
-    if (e.surface != kFractalSurface) return scene.params.objectColors[size_t(e.surface)];
-    const double x = s.trapOffset + s.trapScale * dot(s.trapWeights, e.trap.value);
-    const vec3 display =
-        clamp(s.paletteA + s.paletteB * glm::cos(6.28318530718 * (s.paletteC * x + s.paletteD)), 0.0, 1.0);
-    return glm::pow(display, vec3(2.2));
+    return albedoOf(scene.params, evaluate(scene.formula, pos));
 }
 
 namespace {

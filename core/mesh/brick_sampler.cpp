@@ -76,7 +76,21 @@ enum class CellKind : uint8_t { Empty, Surface, UnknownInside };
 
 }  // namespace
 
-BrickPlan planBricks(const Formula& f, const GridLayout& layout, double memoryLimitBytes, int threads) {
+void evaluatePoints(FormulaSampler& sampler, std::span<const vec3> points, std::span<Evaluation> out, int threads) {
+    if (!sampler.concurrent()) {
+        sampler.evaluate(points, out);
+        return;
+    }
+    constexpr size_t kChunk = 256;
+    parallelFor(int64_t((points.size() + kChunk - 1) / kChunk), threads, [&](int64_t chunk) {
+        const size_t first = size_t(chunk) * kChunk, count = std::min(kChunk, points.size() - first);
+        sampler.evaluate(points.subspan(first, count), out.subspan(first, count));
+    });
+}
+
+BrickPlan planBricks(FormulaSampler& sampler, const GridLayout& layout, double memoryLimitBytes, int threads,
+                     const MeshControl& control) {
+    const Formula& f = sampler.formula();
     BrickPlan plan;
     plan.layout = layout;
     const int bricks = layout.bricksAcross();
@@ -88,7 +102,12 @@ BrickPlan planBricks(const Formula& f, const GridLayout& layout, double memoryLi
     // Cells of `size` bricks a side, by their cell coordinate; each level halves the size.
     std::vector<std::array<int, 3>> cells{{0, 0, 0}};
     std::vector<CellKind> kinds;
+    // Estimated a slice at a time: the last level's cells are millions at 2048^3.
+    constexpr size_t kSlice = 1 << 16;
+    std::vector<vec3> centres;
+    std::vector<Evaluation> estimates;
     for (int size = top, level = 0;; size /= 2, ++level) {
+        control.report("planning", MeshStages::kPlan * level / std::max(1, levels + 1));
         // A surface's bricks grow 4x per halving (fractal surfaces, whose dimension is over 2,
         // grow faster: the count is checked again at each level).
         const double projected = double(cells.size()) * std::pow(4.0, levels - level) * kBytesPerBrick;
@@ -97,20 +116,30 @@ BrickPlan planBricks(const Formula& f, const GridLayout& layout, double memoryLi
                               std::to_string(layout.voxel) + ") needs about " + gib(projected) + ", over the " +
                               gib(memoryLimitBytes) + " available: lower --resolution or raise --voxel");
         kinds.assign(cells.size(), CellKind::Empty);
-        const double halfDiagonal = 0.5 * std::sqrt(3.0) * size * kBrickSize * layout.voxel;
-        parallelFor(int64_t(cells.size()), threads, [&](int64_t i) {
-            const auto& c = cells[size_t(i)];
-            const vec3 centre =
-                layout.minCorner + (vec3(c[0], c[1], c[2]) + 0.5) * double(size * kBrickSize) * layout.voxel;
-            const Evaluation e = evaluate(f, centre);
-            if (!e.inside) {
-                if (!(e.distance > halfDiagonal + margin)) kinds[size_t(i)] = CellKind::Surface;
-            } else if (flagMembership) {
-                kinds[size_t(i)] = CellKind::UnknownInside;
-            } else if (!(-e.distance > halfDiagonal + margin)) {
-                kinds[size_t(i)] = CellKind::Surface;
+        const double cellSize = double(size * kBrickSize) * layout.voxel;
+        const double halfDiagonal = 0.5 * std::sqrt(3.0) * cellSize;
+        for (size_t first = 0; first < cells.size(); first += kSlice) {
+            control.throwIfCancelled();
+            const size_t count = std::min(kSlice, cells.size() - first);
+            centres.resize(count);
+            estimates.resize(count);
+            for (size_t i = 0; i < count; ++i) {
+                const auto& c = cells[first + i];
+                centres[i] = layout.minCorner + (vec3(c[0], c[1], c[2]) + 0.5) * cellSize;
             }
-        });
+            evaluatePoints(sampler, centres, estimates, threads);
+            for (size_t i = 0; i < count; ++i) {
+                const Evaluation& e = estimates[i];
+                CellKind& kind = kinds[first + i];
+                if (!e.inside) {
+                    if (!(e.distance > halfDiagonal + margin)) kind = CellKind::Surface;
+                } else if (flagMembership) {
+                    kind = CellKind::UnknownInside;
+                } else if (!(-e.distance > halfDiagonal + margin)) {
+                    kind = CellKind::Surface;
+                }
+            }
+        }
         plan.cellsEvaluated += int64_t(cells.size());
         if (size == 1) break;
         std::vector<std::array<int, 3>> children;
@@ -164,37 +193,47 @@ BrickPlan planBricks(const Formula& f, const GridLayout& layout, double memoryLi
     return plan;
 }
 
-void sampleBricks(const Formula& f, const BrickPlan& plan, int threads,
-                  const std::function<void(std::vector<SampledBrick>&)>& sink) {
+void sampleBricks(FormulaSampler& sampler, const BrickPlan& plan, int threads,
+                  const std::function<void(std::vector<SampledBrick>&)>& sink, const MeshControl& control) {
     const GridLayout& layout = plan.layout;
     const float background = float(layout.background());
-    const bool flagMembership = f.membershipIsFlag();
-    constexpr size_t kBatch = 2048;
+    const bool flagMembership = sampler.formula().membershipIsFlag();
+    // 512 bricks (256K points) a batch: one GL dispatch stays well under a second on a software
+    // rasteriser, and the batch's points and estimates take about 25 MB.
+    constexpr size_t kBatch = 512;
     std::vector<SampledBrick> batch;
+    std::vector<vec3> points;
+    std::vector<Evaluation> estimates;
     for (size_t first = 0; first < plan.bricks.size(); first += kBatch) {
+        control.throwIfCancelled();
+        control.report("sampling", MeshStages::kPlan + (MeshStages::kSample - MeshStages::kPlan) * double(first) /
+                                                           double(plan.bricks.size()));
         batch.resize(std::min(kBatch, plan.bricks.size() - first));
-        parallelFor(int64_t(batch.size()), threads, [&](int64_t i) {
-            SampledBrick& out = batch[size_t(i)];
-            out.brick = plan.bricks[first + size_t(i)];
+        points.resize(batch.size() * kBrickVoxels);
+        estimates.resize(points.size());
+        for (size_t b = 0; b < batch.size(); ++b) {
+            batch[b].brick = plan.bricks[first + b];
+            const auto& brick = batch[b].brick;
             for (int z = 0; z < kBrickSize; ++z)
                 for (int y = 0; y < kBrickSize; ++y)
-                    for (int x = 0; x < kBrickSize; ++x) {
-                        const vec3 p = layout.voxelCentre(out.brick[0] * kBrickSize + x, out.brick[1] * kBrickSize + y,
-                                                          out.brick[2] * kBrickSize + z);
-                        const Evaluation e = evaluate(f, p);
-                        const int v = SampledBrick::index(x, y, z);
-                        if (!e.inside) {
-                            // A NaN estimate (an orbit's 0 / 0) counts as far outside.
-                            out.values[v] = std::isnan(e.distance)
-                                                ? background
-                                                : float(std::clamp(e.distance, 0.0, double(background)));
-                        } else if (flagMembership) {
-                            out.values[v] = -background;
-                        } else {
-                            out.values[v] = -float(std::clamp(-e.distance, 0.0, double(background)));
-                        }
-                    }
-        });
+                    for (int x = 0; x < kBrickSize; ++x)
+                        points[b * kBrickVoxels + size_t(SampledBrick::index(x, y, z))] = layout.voxelCentre(
+                            brick[0] * kBrickSize + x, brick[1] * kBrickSize + y, brick[2] * kBrickSize + z);
+        }
+        evaluatePoints(sampler, points, estimates, threads);
+        for (size_t b = 0; b < batch.size(); ++b)
+            for (int v = 0; v < kBrickVoxels; ++v) {
+                const Evaluation& e = estimates[b * kBrickVoxels + size_t(v)];
+                float& out = batch[b].values[size_t(v)];
+                if (!e.inside) {
+                    // A NaN estimate (an orbit's 0 / 0) counts as far outside.
+                    out = std::isnan(e.distance) ? background : float(std::clamp(e.distance, 0.0, double(background)));
+                } else if (flagMembership) {
+                    out = -background;
+                } else {
+                    out = -float(std::clamp(-e.distance, 0.0, double(background)));
+                }
+            }
         sink(batch);
     }
 }

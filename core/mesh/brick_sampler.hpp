@@ -5,11 +5,14 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
+#include "core/de_check.hpp"
 #include "core/formula.hpp"
 #include "core/vec.hpp"
 
@@ -67,6 +70,36 @@ struct TooBigError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Raised at the next batch after the job's cancel flag is set.
+struct MeshCancelled : std::runtime_error {
+    MeshCancelled() : std::runtime_error("meshing cancelled") {}
+};
+
+// What a long meshing job reports and how it is stopped: `progress` gets the stage's name and the
+// share of the whole job done (0..1, rising), on the calling thread; `cancel`, when set, is polled
+// between batches.
+struct MeshControl {
+    std::function<void(const char* stage, double done)> progress;
+    const std::atomic<bool>* cancel = nullptr;
+
+    void report(const char* stage, double done) const {
+        if (progress) progress(stage, done);
+    }
+    void throwIfCancelled() const {
+        if (cancel && cancel->load()) throw MeshCancelled();
+    }
+};
+
+// The shares of the whole job each stage takes (measured on the Mandelbulb at 512^3: sampling is
+// most of the time), for one progress figure across them.
+struct MeshStages {
+    static constexpr double kPlan = 0.10, kSample = 0.75, kLevelSet = 0.85, kMesh = 0.95;
+};
+
+// Evaluates `points` with the sampler: spread over `threads` threads (0: all cores) when it may be
+// called concurrently (the CPU's), in one call otherwise (the GL probe's one context).
+void evaluatePoints(FormulaSampler& sampler, std::span<const vec3> points, std::span<Evaluation> out, int threads);
+
 // Finds the bricks that may hold surface: an octree over the bricks, each cell's centre
 // estimated once. A cell is empty outside when the estimate exceeds its half-diagonal plus the
 // band (the estimate, deFactor included, is a lower bound of the distance), and full inside when
@@ -75,13 +108,15 @@ struct TooBigError : std::runtime_error {
 // there); an outside pocket wholly inside 3x3x3 inside bricks is missed.
 // Before each level, the bricks the surface will need are projected (4x per halving: a
 // surface's area) and a plan over `memoryLimitBytes` is refused with TooBigError.
-BrickPlan planBricks(const Formula& f, const GridLayout& layout, double memoryLimitBytes, int threads);
+BrickPlan planBricks(FormulaSampler& sampler, const GridLayout& layout, double memoryLimitBytes, int threads,
+                     const MeshControl& control = {});
 
 // Samples the plan's bricks on `threads` threads (0: all cores), handing them to `sink` in
 // batches on the calling thread (so that the caller stores them as they come, and the samples
 // never all sit in memory twice).
-void sampleBricks(const Formula& f, const BrickPlan& plan, int threads,
-                  const std::function<void(std::vector<SampledBrick>&)>& sink);
+// Progress runs from MeshStages::kPlan to kSample.
+void sampleBricks(FormulaSampler& sampler, const BrickPlan& plan, int threads,
+                  const std::function<void(std::vector<SampledBrick>&)>& sink, const MeshControl& control = {});
 
 // Runs body(i) for i in [0, count) on `threads` threads (0: all cores).
 void parallelFor(int64_t count, int threads, const std::function<void(int64_t)>& body);

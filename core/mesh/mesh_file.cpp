@@ -5,8 +5,10 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/atomic_file.hpp"
@@ -15,13 +17,36 @@ namespace fraktal::mesh {
 
 namespace {
 
+// How a format stores vertex colours: glTF's COLOR_0 is linear (glTF 2.0, 3.7.2.1); PLY's 8-bit
+// red/green/blue and OBJ's "v x y z r g b" are read by MeshLab, Blender and slicers as display
+// (sRGB-encoded) values.
+enum class ColorEncoding { None, Display, Linear };
+
 struct Format {
     const char* extension;
-    const char* assimpId;  // Assimp's exporter id (Assimp::Exporter::GetExportFormatDescription)
+    const char* assimpId;         // Assimp's exporter id (Assimp::Exporter::GetExportFormatDescription)
+    const char* coloredAssimpId;  // the one for a mesh with vertex colours
+    ColorEncoding colors;
 };
 // Binary PLY and STL (a third of the text forms' size); OBJ without the .mtl file beside it (a
 // mesh with no material needs none, and a second file could not be written atomically with it).
-constexpr Format kFormats[] = {{".ply", "plyb"}, {".obj", "objnomtl"}, {".stl", "stlb"}, {".glb", "glb2"}};
+// A coloured PLY is text: Assimp 5.2's binary PLY exporter declares its colours as uchar and
+// writes them as four floats, so every reader misreads them (and Assimp's own importer then
+// crashes in JoinIdenticalVertices); its text exporter writes them as declared.
+constexpr Format kFormats[] = {{".ply", "plyb", "ply", ColorEncoding::Display},
+                               {".obj", "objnomtl", "objnomtl", ColorEncoding::Display},
+                               {".stl", "stlb", "stlb", ColorEncoding::None},
+                               {".glb", "glb2", "glb2", ColorEncoding::Linear}};
+
+// The sRGB transfer function (IEC 61966-2-1) and its inverse.
+float encodeSrgb(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+float decodeSrgb(float display) {
+    const float c = std::clamp(display, 0.0f, 1.0f);
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
 
 const Format* formatFor(const std::string& extension) {
     for (const Format& f : kFormats)
@@ -38,6 +63,11 @@ std::string meshExtensions() {
 }
 
 bool isMeshExtension(const std::string& extension) { return formatFor(extension) != nullptr; }
+
+bool carriesColors(const std::string& extension) {
+    const Format* f = formatFor(extension);
+    return f && f->colors != ColorEncoding::None;
+}
 
 void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
     const Format* format = formatFor(path.extension().string());
@@ -61,6 +91,16 @@ void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
     m.mVertices = new aiVector3D[mesh.points.size()];
     for (size_t i = 0; i < mesh.points.size(); ++i)
         m.mVertices[i] = aiVector3D(mesh.points[i][0], mesh.points[i][1], mesh.points[i][2]);
+    const bool colored = format->colors != ColorEncoding::None && mesh.colors.size() == mesh.points.size();
+    if (colored) {
+        const bool display = format->colors == ColorEncoding::Display;
+        m.mColors[0] = new aiColor4D[mesh.points.size()];
+        for (size_t i = 0; i < mesh.colors.size(); ++i) {
+            const auto& c = mesh.colors[i];
+            m.mColors[0][i] = display ? aiColor4D(encodeSrgb(c[0]), encodeSrgb(c[1]), encodeSrgb(c[2]), 1.0f)
+                                      : aiColor4D(c[0], c[1], c[2], 1.0f);
+        }
+    }
     m.mNumFaces = unsigned(mesh.triangles.size());
     m.mFaces = new aiFace[mesh.triangles.size()];
     for (size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -69,7 +109,8 @@ void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
     }
     AtomicFile out(path);
     Assimp::Exporter exporter;
-    if (exporter.Export(&scene, format->assimpId, out.tempPath().string()) != aiReturn_SUCCESS)
+    if (exporter.Export(&scene, colored ? format->coloredAssimpId : format->assimpId, out.tempPath().string()) !=
+        aiReturn_SUCCESS)
         throw std::runtime_error(path.string() + ": writing the mesh failed: " + exporter.GetErrorString());
     out.commit();
 }
@@ -77,22 +118,33 @@ void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
 TriangleMesh readMesh(const std::filesystem::path& path) {
     Assimp::Importer importer;
     // Vertices are joined by position alone: STL's per-face normals would keep them apart.
-    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
-                                                            aiComponent_COLORS | aiComponent_TEXCOORDS);
-    const aiScene* scene = importer.ReadFile(
-        path.string(), aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices | aiProcess_Triangulate);
+    // Colours stay: a point has one colour, so they keep no vertex apart that its position joins.
+    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
+                                aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_TEXCOORDS);
+    const aiScene* scene =
+        importer.ReadFile(path.string(), aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices);
     if (!scene || !scene->mRootNode)
         throw std::runtime_error(path.string() + ": cannot read the mesh: " + importer.GetErrorString());
+    const Format* format = formatFor(path.extension().string());
+    const bool display = format && format->colors == ColorEncoding::Display;
     TriangleMesh mesh;
+    bool colored = scene->mNumMeshes > 0;
+    for (unsigned k = 0; k < scene->mNumMeshes; ++k) colored = colored && scene->mMeshes[k]->HasVertexColors(0);
     for (unsigned k = 0; k < scene->mNumMeshes; ++k) {
         const aiMesh& m = *scene->mMeshes[k];
         const uint32_t base = uint32_t(mesh.points.size());
-        for (unsigned i = 0; i < m.mNumVertices; ++i)
+        for (unsigned i = 0; i < m.mNumVertices; ++i) {
             mesh.points.push_back({m.mVertices[i].x, m.mVertices[i].y, m.mVertices[i].z});
+            if (!colored) continue;
+            const aiColor4D& c = m.mColors[0][i];
+            mesh.colors.push_back(display ? std::array<float, 3>{decodeSrgb(c.r), decodeSrgb(c.g), decodeSrgb(c.b)}
+                                          : std::array<float, 3>{c.r, c.g, c.b});
+        }
         for (unsigned i = 0; i < m.mNumFaces; ++i) {
+            // Polygons as fans (points and lines have no area and are left out).
             const aiFace& f = m.mFaces[i];
-            if (f.mNumIndices != 3) continue;
-            mesh.triangles.push_back({base + f.mIndices[0], base + f.mIndices[1], base + f.mIndices[2]});
+            for (unsigned k = 2; k < f.mNumIndices; ++k)
+                mesh.triangles.push_back({base + f.mIndices[0], base + f.mIndices[k - 1], base + f.mIndices[k]});
         }
     }
     return mesh;

@@ -4,9 +4,12 @@
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/ChangeBackground.h>
+#include <openvdb/tools/Composite.h>
 #include <openvdb/tools/Count.h>
 #include <openvdb/tools/FastSweeping.h>
 #include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetFilter.h>
+#include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/VolumeToMesh.h>
@@ -37,32 +40,94 @@ using Tree = openvdb::FloatTree;
 using Leaf = Tree::LeafNodeType;
 static_assert(Leaf::DIM == kBrickSize, "a sampled brick fills one leaf node");
 
-// Inside an escape-time set the estimate is no distance: an inside voxel next to an outside one
-// whose estimate is d (a lower bound of its distance to the surface) is given d - voxel, which
-// puts the zero crossing on the edge between them where the estimate says (volumeToMesh
-// interpolates linearly along the edge). Between several outside neighbours the crossing nearest
-// the inside voxel wins, so no estimate is overstepped; voxels with no outside neighbour keep
-// -background until fast sweeping fills them in.
-void correctUnknownInside(openvdb::FloatGrid& grid, float voxel) {
+// Puts the zero crossing where the estimator's membership changes. The sampled values beside the
+// surface are estimates: outside, a lower bound of the distance (so the crossing volumeToMesh
+// interpolates lies too far out, and the solid comes out fat: 5 % too much volume on the
+// Mandelbulb at 128^3), inside an escape-time set no distance at all. Every lattice edge from an
+// outside voxel to an inside one is bisected on membership (kBisections steps, a 64th of a
+// voxel), and both ends take the distance along their edges to the nearest crossing: the outside
+// end +t, the inside end -(1 - t) in voxels, so that the linear interpolation along that edge
+// lands on the crossing.
+constexpr int kBisections = 6;
+
+void placeCrossingsOnMembership(openvdb::FloatGrid& grid, FormulaSampler& sampler, const GridLayout& layout,
+                                int threads, const MeshControl& control) {
     const float background = grid.background();
-    openvdb::tree::LeafManager<Tree> leaves(grid.tree());
-    leaves.foreach ([&](Leaf& leaf, size_t) {
-        openvdb::tree::ValueAccessor<const Tree> neighbours(grid.constTree());
-        for (auto v = leaf.beginValueOn(); v; ++v) {
-            if (*v > -background) continue;
-            const openvdb::Coord c = v.getCoord();
-            float nearest = -background;
-            for (int axis = 0; axis < 3; ++axis)
-                for (int step = -1; step <= 1; step += 2) {
-                    openvdb::Coord n = c;
-                    n[axis] += step;
-                    float outside;
-                    if (!neighbours.probeValue(n, outside) || outside < 0.0f) continue;
-                    nearest = std::max(nearest, std::min(outside - voxel, -1e-3f * voxel));
-                }
-            v.setValue(nearest);
+    const float voxel = float(layout.voxel);
+    Tree& tree = grid.tree();
+    // The inside ends first take -background, so that the nearest crossing's value replaces the
+    // estimate there (a max below); the sign, which every other leaf reads, does not change.
+    {
+        openvdb::tree::LeafManager<Tree> leaves(tree);
+        leaves.foreach ([&](Leaf& leaf, size_t) {
+            openvdb::tree::ValueAccessor<const Tree> neighbours(grid.constTree());
+            for (auto v = leaf.beginValueOn(); v; ++v) {
+                if (*v >= 0.0f) continue;
+                for (int axis = 0; axis < 3; ++axis)
+                    for (int step = -1; step <= 1; step += 2) {
+                        openvdb::Coord n = v.getCoord();
+                        n[axis] += step;
+                        float value;
+                        if (neighbours.probeValue(n, value) && value >= 0.0f) {
+                            v.setValue(-background);
+                            axis = 3;
+                            break;
+                        }
+                    }
+            }
+        });
+    }
+    struct Edge {
+        openvdb::Coord outside, inside;
+        float lo = 0.0f, hi = 1.0f;  // the crossing's share of the way from outside to inside
+    };
+    std::vector<Leaf*> leafList;
+    tree.getNodes(leafList);
+    constexpr size_t kLeavesPerSlice = 1024;
+    std::vector<Edge> edges;
+    std::vector<vec3> points;
+    std::vector<Evaluation> estimates;
+    openvdb::tree::ValueAccessor<Tree> values(tree);
+    const vec3 first = layout.minCorner + 0.5 * layout.voxel;
+    auto world = [&](const openvdb::Coord& c) { return first + vec3(c.x(), c.y(), c.z()) * layout.voxel; };
+    for (size_t slice = 0; slice < leafList.size(); slice += kLeavesPerSlice) {
+        control.throwIfCancelled();
+        edges.clear();
+        const size_t end = std::min(leafList.size(), slice + kLeavesPerSlice);
+        for (size_t l = slice; l < end; ++l)
+            for (auto v = leafList[l]->cbeginValueOn(); v; ++v) {
+                if (*v < 0.0f) continue;
+                for (int axis = 0; axis < 3; ++axis)
+                    for (int step = -1; step <= 1; step += 2) {
+                        openvdb::Coord n = v.getCoord();
+                        n[axis] += step;
+                        float value;
+                        if (values.probeValue(n, value) && value < 0.0f) edges.push_back({v.getCoord(), n});
+                    }
+            }
+        points.resize(edges.size());
+        estimates.resize(edges.size());
+        for (int round = 0; round < kBisections; ++round) {
+            for (size_t e = 0; e < edges.size(); ++e) {
+                const double t = 0.5 * (edges[e].lo + edges[e].hi);
+                points[e] = glm::mix(world(edges[e].outside), world(edges[e].inside), t);
+            }
+            evaluatePoints(sampler, points, estimates, threads);
+            for (size_t e = 0; e < edges.size(); ++e) {
+                const float t = 0.5f * (edges[e].lo + edges[e].hi);
+                (estimates[e].inside ? edges[e].hi : edges[e].lo) = t;
+            }
         }
-    });
+        // The outside ends' estimates are replaced (each is in this slice with all its edges);
+        // the inside ends keep the nearest crossing of any slice.
+        for (const Edge& e : edges) values.setValueOnly(e.outside, background);
+        for (const Edge& e : edges) {
+            const float t = 0.5f * (e.lo + e.hi);
+            values.setValueOnly(e.outside, std::min(values.getValue(e.outside), t * voxel));
+            values.setValueOnly(e.inside,
+                                std::max(values.getValue(e.inside), std::min(-(1.0f - t) * voxel, -1e-3f * voxel)));
+        }
+    }
 }
 
 // Keeps the band: values clamped to +-background, voxels at the band's edge made inactive, and
@@ -87,6 +152,7 @@ void trimToBand(openvdb::FloatGrid& grid, float background) {
 
 struct SdfVolume::Impl {
     openvdb::FloatGrid::Ptr grid;
+    int threads = 0;
 };
 
 SdfVolume::SdfVolume(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -94,7 +160,7 @@ SdfVolume::SdfVolume(SdfVolume&&) noexcept = default;
 SdfVolume& SdfVolume::operator=(SdfVolume&&) noexcept = default;
 SdfVolume::~SdfVolume() = default;
 
-SdfVolume SdfVolume::build(const Formula& f, const BrickPlan& plan, int threads) {
+SdfVolume SdfVolume::build(FormulaSampler& sampler, const BrickPlan& plan, int threads, const MeshControl& control) {
     initializeOpenVdb();
     const auto cap = capThreads(threads);
     const GridLayout& layout = plan.layout;
@@ -109,22 +175,28 @@ SdfVolume SdfVolume::build(const Formula& f, const BrickPlan& plan, int threads)
     grid->setName(kVdbGridName);
 
     Tree& tree = grid->tree();
-    sampleBricks(f, plan, threads, [&](std::vector<SampledBrick>& batch) {
-        for (const SampledBrick& b : batch) {
-            const openvdb::Coord origin(b.brick[0] * kBrickSize, b.brick[1] * kBrickSize, b.brick[2] * kBrickSize);
-            Leaf* leaf = tree.touchLeaf(origin);
-            for (int z = 0; z < kBrickSize; ++z)
-                for (int y = 0; y < kBrickSize; ++y)
-                    for (int x = 0; x < kBrickSize; ++x)
-                        leaf->setValueOn(origin.offsetBy(x, y, z), b.values[size_t(SampledBrick::index(x, y, z))]);
-        }
-    });
-    if (f.membershipIsFlag()) correctUnknownInside(*grid, float(layout.voxel));
+    sampleBricks(
+        sampler, plan, threads,
+        [&](std::vector<SampledBrick>& batch) {
+            for (const SampledBrick& b : batch) {
+                const openvdb::Coord origin(b.brick[0] * kBrickSize, b.brick[1] * kBrickSize, b.brick[2] * kBrickSize);
+                Leaf* leaf = tree.touchLeaf(origin);
+                for (int z = 0; z < kBrickSize; ++z)
+                    for (int y = 0; y < kBrickSize; ++y)
+                        for (int x = 0; x < kBrickSize; ++x)
+                            leaf->setValueOn(origin.offsetBy(x, y, z), b.values[size_t(SampledBrick::index(x, y, z))]);
+            }
+        },
+        control);
+    control.throwIfCancelled();
+    control.report("level set", MeshStages::kSample);
+    placeCrossingsOnMembership(*grid, sampler, layout, threads, control);
     // Inactive space takes the sign of the band beside it (outside +background, inside
     // -background), so that sweeping and meshing see the solid.
     openvdb::tools::signedFloodFill(tree);
 
     auto impl = std::make_unique<Impl>();
+    impl->threads = threads;
     const auto range = openvdb::tools::minMax(tree);
     const bool anySurface = range.min() < 0.0f && range.max() > 0.0f;
     if (anySurface) {
@@ -140,6 +212,62 @@ SdfVolume SdfVolume::build(const Formula& f, const BrickPlan& plan, int threads)
     }
     trimToBand(*impl->grid, float(layout.background()));
     return SdfVolume(std::move(impl));
+}
+
+int64_t SdfVolume::insideVoxels() const {
+    return int64_t(openvdb::tools::sdfInteriorMask(*impl_->grid)->activeVoxelCount());
+}
+
+int64_t SdfVolume::fillCavities() {
+    const auto cap = capThreads(impl_->threads);
+    const openvdb::FloatGrid::Ptr kept = impl_->grid;  // held while the sweep replaces it
+    openvdb::FloatGrid& grid = *kept;
+    const int64_t before = insideVoxels();
+    // Enclosed: the inside and the cavities; the cavities are the enclosed voxels outside.
+    const auto enclosed = openvdb::tools::extractEnclosedRegion(grid);
+    const float background = grid.background();
+    openvdb::tree::LeafManager<Tree> leaves(grid.tree());
+    leaves.foreach ([&](Leaf& leaf, size_t) {
+        openvdb::tree::ValueAccessor<const openvdb::BoolTree> mask(enclosed->tree());
+        for (auto v = leaf.beginValueOn(); v; ++v)
+            if (*v > 0.0f && mask.isValueOn(v.getCoord())) v.setValue(-background);
+    });
+    // The cavities' inactive tiles take the sign of the (now solid) band around them.
+    openvdb::tools::signedFloodFill(grid.tree());
+    impl_->grid = openvdb::tools::sdfToSdf(grid, 0.0f, 1);
+    impl_->grid->setTransform(grid.transform().copy());
+    impl_->grid->setGridClass(openvdb::GRID_LEVEL_SET);
+    impl_->grid->setName(kVdbGridName);
+    trimToBand(*impl_->grid, background);
+    return insideVoxels() - before;
+}
+
+int64_t SdfVolume::thickenThinParts(double minThickness) {
+    const auto cap = capThreads(impl_->threads);
+    openvdb::FloatGrid::Ptr grid = impl_->grid;
+    const float background = grid->background();
+    const float radius = float(0.5 * minThickness);
+    const int64_t before = insideVoxels();
+    // offset(+r) erodes by r (the distance grows by r everywhere), offset(-r) dilates. The
+    // opening is dilated a voxel and a half further before it is taken away: the opening of a
+    // thick part is that part again up to the grid's rounding, and the difference of the two
+    // would be a shell of slivers that the dilation below turns into a thick coat.
+    const float tolerance = 1.5f * float(grid->voxelSize()[0]);
+    openvdb::FloatGrid::Ptr opened = grid->deepCopy();
+    {
+        openvdb::tools::LevelSetFilter<openvdb::FloatGrid> filter(*opened);
+        filter.offset(radius);
+        filter.offset(-radius - tolerance);
+    }
+    openvdb::FloatGrid::Ptr thin = grid->deepCopy();
+    openvdb::tools::csgDifference(*thin, *opened);
+    {
+        openvdb::tools::LevelSetFilter<openvdb::FloatGrid> filter(*thin);
+        filter.offset(-radius);
+    }
+    openvdb::tools::csgUnion(*grid, *thin);
+    trimToBand(*grid, background);
+    return insideVoxels() - before;
 }
 
 TriangleMesh SdfVolume::toMesh(double adaptivity) const {

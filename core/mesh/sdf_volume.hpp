@@ -23,7 +23,9 @@ class SdfVolume {
     // their distance from their outside neighbours' estimates, and fast sweeping
     // (openvdb::tools::sdfToSdf, Zhao 2005) solves |grad d| = 1 from the zero crossing outwards,
     // so that neighbours agree.
-    static SdfVolume build(const Formula& f, const BrickPlan& plan, int threads);
+    // Progress runs from MeshStages::kPlan to kLevelSet.
+    static SdfVolume build(FormulaSampler& sampler, const BrickPlan& plan, int threads,
+                           const MeshControl& control = {});
     SdfVolume(SdfVolume&&) noexcept;
     SdfVolume& operator=(SdfVolume&&) noexcept;
     ~SdfVolume();
@@ -32,6 +34,19 @@ class SdfVolume {
     // facing outwards. adaptivity in [0, 1]: 0 keeps one vertex per surface voxel, higher merges
     // flat regions into fewer, larger polygons.
     TriangleMesh toMesh(double adaptivity) const;
+    // Keeps only the surface seen from outside: the closed cavities a fractal leaves inside
+    // itself (outside space no path from the bound's edge reaches, with whatever floats in them)
+    // become solid (openvdb::tools::extractEnclosedRegion). Returns the voxels filled.
+    int64_t fillCavities();
+    // Thickens what a printer cannot make: the parts an opening (erode, then dilate, by half of
+    // `minThickness`; OpenVDB's LevelSetFilter::offset) removes are thinner than `minThickness`,
+    // and those parts, dilated by half of it, are joined to the solid: a wall w thin comes out
+    // w + minThickness thick, its rim reaching half of it further. Parts within a voxel and a half
+    // of the opening count as thick (the grid's rounding). Returns the voxels made solid.
+    int64_t thickenThinParts(double minThickness);
+    // The voxels inside the surface (band and deep inside), to count what the edits changed.
+    int64_t insideVoxels() const;
+
     // Writes the grid to a .vdb file through OpenVDB's own io, atomically (core/atomic_file.hpp).
     void writeVdb(const std::filesystem::path& path) const;
 

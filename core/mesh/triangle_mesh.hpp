@@ -13,6 +13,8 @@ namespace fraktal::mesh {
 struct TriangleMesh {
     std::vector<std::array<float, 3>> points;
     std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise seen from outside
+    // Each point's colour, linear Rec.709 (albedo), or empty: no colour.
+    std::vector<std::array<float, 3>> colors;
 
     vec3 point(uint32_t i) const { return vec3(points[i][0], points[i][1], points[i][2]); }
     // The signed volume enclosed (divergence theorem over the triangles' tetrahedra with the
@@ -42,6 +44,11 @@ struct ManifoldReport {
     }
 };
 ManifoldReport checkManifold(const TriangleMesh& mesh);
+
+// The pairs of triangles that pass through each other (a printer's slicer fails on them), among
+// those sharing no vertex: an edge of one crossing the other's inside. Pairs that only touch, and
+// coplanar overlaps, are not counted.
+int64_t countCrossingTriangles(const TriangleMesh& mesh);
 
 // The distance from p to the nearest point of the triangle abc (Ericson, Real-Time Collision
 // Detection, 5.1.5).
