@@ -56,6 +56,21 @@ TEST(EditorMeshExport, EachOptionMapsToItsFlag) {
                                        "--resolution", "96",   "--simplify", "0.25"};
     EXPECT_EQ(meshExportCommand("fraktal", "p.json", o), vdb) << "a level set never gets --print-size";
     EXPECT_EQ(meshOptionsError(o), "") << "the print size is left out for a .vdb, not refused";
+
+    o.output = "out/sponge.glb";
+    o.simplify = 0.0;
+    o.printSizeMm = "";
+    o.removeCavities = true;
+    o.minThickness = 0.02;
+    o.vertexColours = false;
+    const std::vector<std::string> printing{"fraktal",         "mesh",         "p.json",    "-o",
+                                            "out/sponge.glb",  "--resolution", "96",        "--remove-cavities",
+                                            "--min-thickness", "0.02",         "--no-color"};
+    EXPECT_EQ(meshExportCommand("fraktal", "p.json", o), printing);
+    o.output = "out/sponge.stl";
+    EXPECT_EQ(meshExportCommand("fraktal", "p.json", o).back(), "0.02") << "STL carries no colours: no --no-color";
+    EXPECT_FALSE(meshFormatCarriesColours(o.output));
+    EXPECT_TRUE(meshFormatCarriesColours("a.ply"));
 }
 
 TEST(EditorMeshExport, TheExtensionIsTheFormat) {
@@ -97,6 +112,9 @@ TEST_F(EditorMeshExportJob, MeshesTheDocumentIntoAFileThatReadsBack) {
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                 meshExportStatusText(job).c_str());
     ASSERT_EQ(job.status, ExportStatus::Done) << job.log;
+    // The mesher's progress lines ("progress: meshing (95%)", over the whole job) reach the dialog.
+    EXPECT_GE(job.progress, 0.9) << job.log;
+    EXPECT_EQ(meshProgressStage(job.log), "meshing") << job.log;
     const mesh::TriangleMesh m = mesh::readMesh(dir / "sponge.ply");
     EXPECT_GT(m.triangles.size(), 100u);
     EXPECT_EQ(meshExportStatusText(job).rfind("Done: " + (dir / "sponge.ply").string(), 0), 0u)

@@ -6,7 +6,7 @@
 # - the File field typed (a .ply), the resolution ctrl+clicked and typed (32), the print size typed
 #   (120): the command carries `--resolution 32 --print-size 120mm` and the dialog gives the voxel
 #   size; the Format list picked to OpenVDB: the file becomes .vdb and the command loses the print
-#   size; picked back to PLY;
+#   size; picked back to PLY; Remove cavities clicked: the command carries `--remove-cavities`;
 # - Export clicked: the job ends Done (the state file), the file exists and is a PLY (its header),
 #   in millimetres, and the status line on screen turns to the Done colour;
 # - the PLY removed: the dialog no longer says Done;
@@ -73,6 +73,10 @@ pick 4 "$(q '.widgets["meshExport:Format"] | tojson')"
 case "$(me command)" in *--print-size*) fail "a level set with a print size: $(me command)" ;; esac
 pick 0 "$(q '.widgets["meshExport:Format"] | tojson')"
 [ "$(me output)" = "$mesh" ] || fail "the PLY format left the file '$(me output)'"
+# Remove cavities: a click.
+click "meshExport:Remove cavities"
+[ "$(me removeCavities)" = true ] || fail "the click left Remove cavities off"
+case "$(me command)" in *"--print-size 120mm --remove-cavities") ;; *) fail "no --remove-cavities: $(me command)" ;; esac
 echo "dialog: voxel $(me voxel); $(me command)"
 
 click meshExport:Export

@@ -76,6 +76,9 @@ json meshExportJson(const EditorState& s) {
               {"voxel", s.doc.plane ? json() : json(meshVoxelSize(s.doc.preset.formula, o.resolution))},
               {"simplify", o.simplify},
               {"printSizeMm", o.printSizeMm},
+              {"removeCavities", o.removeCavities},
+              {"minThickness", o.minThickness},
+              {"vertexColours", o.vertexColours},
               {"available", !s.doc.plane},  // the File menu's item: 3D documents only
               {"optionsError", meshOptionsError(o, s.doc.plane.has_value())},
               {"command", commandLine(meshExportCommand("fraktal", "<preset>", o))},

@@ -1,10 +1,12 @@
 // The mesh export dialog (File > Export mesh...): the format (the file's extension), resolution
-// with the voxel size it gives, simplify and print size; runs `fraktal mesh` on the document as
+// with the voxel size it gives, simplify, print size, cavities, minimum thickness and vertex
+// colours; runs `fraktal mesh` on the document as
 // the viewport shows it in a child process (document/mesh_export_job.cpp) with a progress bar and
 // a cancel button.
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <iterator>
 #include <string>
 
@@ -86,18 +88,46 @@ void drawMeshExportDialog(EditorState& s) {
     helpMarker(
         "Voxels across the formula's bound: the finest detail the mesh keeps. Twice the resolution is about four "
         "times the triangles and the time.");
+    const double voxel = plane ? 0.0 : meshVoxelSize(s.doc.preset.formula, o.resolution);
     if (!plane)
-        ImGui::TextDisabled("Voxel %.4g in the preset's units (the bound is %.4g across).",
-                            meshVoxelSize(s.doc.preset.formula, o.resolution), 2.0 * s.doc.preset.formula.boundRadius);
+        ImGui::TextDisabled("Voxel %.4g in the preset's units (the bound is %.4g across).", voxel,
+                            2.0 * s.doc.preset.formula.boundRadius);
     edited |= dragClamped("Simplify", &o.simplify, 1, 0.005f, 0.0, 1.0, "%.2f");
     noteWidgetRect(s.layout, "meshExport:Simplify");
     helpMarker("Merges flat regions into larger polygons (OpenVDB's adaptivity): 0 keeps every voxel's facet.");
+    sectionHeader("Printing");
     ImGui::BeginDisabled(vdb);
     edited |= ImGui::InputTextWithHint("Print size (mm)", "preset units", &o.printSizeMm);
     ImGui::EndDisabled();
     noteWidgetRect(s.layout, "meshExport:Print size");
     helpMarker(vdb ? "A level set keeps the preset's units (its voxel size): no print size."
                    : "The mesh's largest side, in millimetres. Empty: the preset's units.");
+    edited |= ImGui::Checkbox("Remove cavities", &o.removeCavities);
+    noteWidgetRect(s.layout, "meshExport:Remove cavities");
+    helpMarker(
+        "Keeps only the surface seen from outside: the closed cavities inside the fractal (and what floats in "
+        "them) are filled, as a print would trap them (resin, powder).");
+    edited |= dragClamped("Min thickness", &o.minThickness, 1, float(std::max(voxel, 1e-4) * 0.25), 0.0,
+                          2.0 * (plane ? 1.0 : s.doc.preset.formula.boundRadius), "%.4g");
+    noteWidgetRect(s.layout, "meshExport:Min thickness");
+    helpMarker(
+        "Parts thinner than this, in the preset's units, are thickened to it: a nozzle's width or a resin's "
+        "finest wall at the print size. 0: as they are.");
+    if (o.minThickness > 0.0 && voxel > 0.0)
+        ImGui::TextDisabled(
+            o.minThickness < voxel ? "%.2g voxels: under a voxel, the mesh cannot show it." : "%.3g voxels.",
+            o.minThickness / voxel);
+    const bool colours = meshFormatCarriesColours(o.output);
+    ImGui::BeginDisabled(!colours);
+    bool shownColours = colours && o.vertexColours;
+    if (ImGui::Checkbox("Vertex colours", &shownColours)) {
+        o.vertexColours = shownColours;
+        edited = true;
+    }
+    ImGui::EndDisabled();
+    noteWidgetRect(s.layout, "meshExport:Vertex colours");
+    helpMarker(colours ? "The preset's palette on the vertices, for a colour print or a viewer."
+                       : "STL and the level set carry no colours: PLY, OBJ and glTF do.");
     ImGui::EndDisabled();
     // A finished job's Done, Failed or Cancelled speaks of its own file, not of the options now.
     if (edited) exportOptionsEdited(job);

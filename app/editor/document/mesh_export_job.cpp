@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "core/mesh/brick_sampler.hpp"
+#include "core/mesh/mesh_file.hpp"
 
 namespace fraktal::editor {
 
@@ -68,6 +69,8 @@ double meshVoxelSize(const Formula& f, int resolution) {
     return mesh::layoutByResolution(f, std::max(resolution, 2)).voxel;
 }
 
+bool meshFormatCarriesColours(const std::string& output) { return mesh::carriesColors(meshFormat(output)); }
+
 std::vector<std::string> meshExportCommand(const fs::path& fraktalExe, const fs::path& preset,
                                            const MeshExportOptions& o) {
     // The flags of `fraktal mesh --help` (app/cli/mesh.cpp).
@@ -82,6 +85,12 @@ std::vector<std::string> meshExportCommand(const fs::path& fraktalExe, const fs:
         cmd.push_back("--print-size");
         cmd.push_back(shortNumber(mm) + "mm");
     }
+    if (o.removeCavities) cmd.push_back("--remove-cavities");
+    if (o.minThickness > 0.0) {
+        cmd.push_back("--min-thickness");
+        cmd.push_back(shortNumber(o.minThickness));
+    }
+    if (!o.vertexColours && meshFormatCarriesColours(o.output)) cmd.push_back("--no-color");
     return cmd;
 }
 

@@ -23,6 +23,10 @@ struct MeshExportOptions {
     // The largest side's length in millimetres (`--print-size`), as typed; empty: the preset's
     // units. A mesh only: a .vdb keeps the preset's units, its voxel size.
     std::string printSizeMm;
+    bool removeCavities = false;  // `--remove-cavities`: fill the closed cavities a print would trap
+    double minThickness = 0.0;    // `--min-thickness`, in the preset's units: thicken thinner parts; 0: off
+    // The preset's palette as vertex colours (else `--no-color`), for the formats that carry them.
+    bool vertexColours = true;
 };
 
 struct MeshExportJob : ExportProcess {
@@ -39,6 +43,8 @@ std::string withMeshFormat(const std::string& output, const std::string& format)
 std::string meshOptionsError(const MeshExportOptions& o, bool planeDocument = false);
 // The voxel size the resolution gives the formula, in the preset's units.
 double meshVoxelSize(const Formula& f, int resolution);
+// Whether the output's format carries vertex colours (.ply, .obj, .glb).
+bool meshFormatCarriesColours(const std::string& output);
 
 // The command line for the mesher (`fraktal mesh`), for the dialog to show and the job to run.
 std::vector<std::string> meshExportCommand(const std::filesystem::path& fraktalExe, const std::filesystem::path& preset,
