@@ -138,6 +138,24 @@ TEST(CliMesh, FrameOfAnAnimationEqualsItsStill) {
     EXPECT_NE(bytes(box.path("first.ply")), bytes(box.path("still.ply")));
 }
 
+// A Fragmentarium frag's DE is GLSL alone: it is meshed on the GL probe, closed, and refused on
+// the CPU by name.
+TEST(CliMesh, AFragIsMeshedWithItsOwnGlsl) {
+    test::Sandbox box("fraktal_cli_mesh_frag_");
+    const std::string frag = std::string(FRAKTAL_TEST_DIR) + "/data/frag_import/menger.frag";
+    const test::CliRun run = test::runCli("mesh " + frag + " --resolution 128 -o " + box.path("menger.ply"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("on the GPU"), std::string::npos) << run.output;
+    const mesh::TriangleMesh m = mesh::readMesh(box.path("menger.ply"));
+    EXPECT_GT(m.triangles.size(), 1000u);
+    EXPECT_TRUE(mesh::checkManifold(m).manifold());
+    EXPECT_GT(m.enclosedVolume(), 0.0);
+    const test::CliRun cpu = test::runCli("mesh " + frag + " --resolution 128 --device cpu -o " + box.path("cpu.ply"));
+    EXPECT_NE(cpu.exitCode, 0);
+    EXPECT_NE(cpu.output.find("custom GLSL blocks have no CPU version"), std::string::npos) << cpu.output;
+    EXPECT_EQ(box.fileCount(), 1);
+}
+
 struct BadMesh {
     std::string args;     // after "mesh", with OUT for the sandbox's output path
     std::string message;  // a part of the error
@@ -157,6 +175,8 @@ TEST(CliMesh, BadInputIsRefusedAndLeavesNothing) {
         {test::shippedPresetFile("menger.json") + " --print-size 10parsecs -o OUT.ply", "--print-size"},
         {test::shippedPresetFile("menger.json") + " --print-size 10cm -o OUT.vdb", "--print-size scales a mesh"},
         {test::shippedPresetFile("missing.json") + " -o OUT.ply", "missing.json"},
+        {test::shippedPresetFile("menger.json") + " --box 0,0,0,1,-1,1 -o OUT.ply", "--box: its high corner"},
+        {test::shippedPresetFile("menger.json") + " --box 0,0,0,1 -o OUT.ply", "--box"},
     };
     for (const BadMesh& c : cases) {
         std::string args = "mesh " + c.args + " --threads 2";

@@ -389,8 +389,15 @@ TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
         EXPECT_FALSE(stepFactorMeasured(unmeasured.formula));
         const auto checked = test::runCli("check '" + out + "'");
         EXPECT_EQ(checked.exitCode, 0) << checked.output;
-        std::printf("%s: measured step factor %.3f (FudgeFactor %.3f)\n", name, p.formula.deFactor,
-                    unmeasured.formula.deFactor);
+        // The bound is fitted to the object on the GPU: smaller than the view's framing sphere.
+        EXPECT_LT(p.formula.boundRadius, unmeasured.formula.boundRadius);
+        if (std::string(name) == "menger.frag") {  // the sponge fills the cube [-1, 1]^3
+            EXPECT_TRUE(p.formula.boundRadius >= std::sqrt(3.0) && p.formula.boundRadius < 1.35 * std::sqrt(3.0))
+                << p.formula.boundRadius;
+        }
+        std::printf("%s: measured step factor %.3f (FudgeFactor %.3f), bound %.3f (framing %.3f)\n", name,
+                    p.formula.deFactor, unmeasured.formula.deFactor, p.formula.boundRadius,
+                    unmeasured.formula.boundRadius);
     }
 }
 

@@ -326,6 +326,34 @@ TEST(Mesh, ThinPartsAreThickenedAndThickOnesKept) {
     EXPECT_TRUE(mesh::checkManifold(out.mesh).manifold());
 }
 
+// A box cuts the solid and closes it along its faces: half a sphere, and a corner of the
+// Mandelbulb (whose inside is a flag, so the cut face comes from the box's distance alone).
+TEST(Mesh, ABoxCutIsClosedAlongItsFaces) {
+    ExactSampler ball(1.5, [](const vec3& p) { return glm::length(p) - 1.0; });
+    MeshSettings s;
+    s.threads = 2;
+    s.clip = mesh::Box{vec3(-1.2, -1.2, -1.2), vec3(1.2, 1.2, 0.0)};
+    s.layout = mesh::layoutOfBox(*s.clip, 96);
+    const FormulaMesh half = mesh::meshFormula(ball, s);
+    EXPECT_NEAR(half.mesh.enclosedVolume() / (0.5 * sphereVolume(1.0)), 1.0, 0.01);
+    const auto box = half.mesh.bounds();
+    EXPECT_NEAR(box[1].z, 0.0, s.layout.voxel);
+    EXPECT_TRUE(mesh::checkManifold(half.mesh).manifold());
+    EXPECT_EQ(mesh::countCrossingTriangles(half.mesh), 0);
+
+    const Formula bulb = test::shippedPreset("mandelbulb.json").formula;
+    s.clip = mesh::Box{vec3(0.0, 0.0, 0.0), vec3(1.5, 1.5, 1.5)};
+    s.layout = mesh::layoutOfBox(*s.clip, 64);
+    const FormulaMesh corner = mesh::meshFormula(bulb, s);
+    const FormulaMesh whole = mesh::meshFormula(bulb, byResolution(bulb, 128));
+    // The bulb's eight octants are alike (its symmetry): one holds about an eighth.
+    EXPECT_NEAR(corner.mesh.enclosedVolume() / (whole.mesh.enclosedVolume() / 8.0), 1.0, 0.05);
+    const mesh::ManifoldReport r = mesh::checkManifold(corner.mesh);
+    EXPECT_TRUE(r.manifold()) << r.boundaryEdges << " boundary, " << r.overSharedEdges << " over-shared, "
+                              << r.pinchedVertices << " pinched";
+    EXPECT_GE(corner.mesh.bounds()[0].x, -1e-6);
+}
+
 // Vertex colours are the palette's albedo at each vertex, and survive the files that carry them:
 // linear floats in glTF, 8-bit display values in PLY and OBJ.
 TEST(Mesh, VertexColoursAreThePalettesAndReopen) {

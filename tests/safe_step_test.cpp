@@ -745,9 +745,17 @@ TEST(SafeStep, EditorAppliesTheChecksFurtherRoundsWhenTheyEnd) {
     ASSERT_TRUE(test::updateUntilMeasured(changed, f, p.camera));
     ASSERT_TRUE(changed.refining());
     ASSERT_TRUE(editor::addNode(f, *findBlock("twist_y"), 0));
+    changed.update(f, p.camera);
+    // The edit did not wait for the rounds it made obsolete: their worker is stopping on its own.
+    EXPECT_EQ(changed.stoppingWorkers(), 1u);
     ASSERT_TRUE(test::updateUntilMeasured(changed, f, p.camera));
     const bool refines = changed.refining();
     finishRefining(changed, f, p.camera);
+    for (int wait = 0; wait < 100 && changed.stoppingWorkers() > 0; ++wait) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        changed.update(f, p.camera);
+    }
+    EXPECT_EQ(changed.stoppingWorkers(), 0u) << "a stopped worker was never joined";
     Formula twisted = f;
     twisted.deFactor = 1.0;
     const EstimatorMeasurement newCheck = measureSafeStep(

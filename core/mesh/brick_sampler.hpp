@@ -42,6 +42,32 @@ GridLayout layoutByResolution(const Formula& f, int resolution);
 // The same cube in voxels of `voxel` (the last voxel may reach past the bound).
 GridLayout layoutByVoxel(const Formula& f, double voxel);
 
+// A box of the user's, [lo, hi] (a detail to print, a cut-away), in the formula's units.
+struct Box {
+    vec3 lo{0.0}, hi{0.0};
+    // The exact signed distance to the box (negative inside).
+    double signedDistance(const vec3& p) const;
+};
+// The cube on the box's low corner as wide as its largest side, in `resolution` voxels a side or
+// in voxels of `voxel`.
+GridLayout layoutOfBox(const Box& box, int resolution);
+GridLayout layoutOfBoxByVoxel(const Box& box, double voxel);
+
+// The formula's solid cut by a box: inside where both are, the distance the larger of the two
+// (a lower bound of the distance to their intersection, as each is to its own solid), so that
+// the mesh is closed along the cut.
+class BoxClippedSampler final : public FormulaSampler {
+   public:
+    BoxClippedSampler(FormulaSampler& inner, const Box& box) : inner_(inner), box_(box) {}
+    const Formula& formula() const override { return inner_.formula(); }
+    void evaluate(std::span<const vec3> points, std::span<Evaluation> out) override;
+    bool concurrent() const override { return inner_.concurrent(); }
+
+   private:
+    FormulaSampler& inner_;
+    Box box_;
+};
+
 // A sampled brick: its brick coordinate and the signed distance of its voxels (x fastest),
 // clamped to the band (+-GridLayout::background()). Negative inside, by the estimator's
 // membership (Evaluation::inside). Where membership is a flag (Formula::membershipIsFlag:
@@ -62,8 +88,9 @@ struct BrickPlan {
 };
 
 // Memory the mesh pipeline is expected to use per sampled brick: the grid's leaf, the
-// re-normalised copy and the mesh's share (measured: bench/mesh/README.md).
-inline constexpr double kBytesPerBrick = 24.0 * 1024.0;
+// re-normalised copy, the mesh and its colours (measured with a coloured PLY: 14 KB a brick at
+// 1024^3 on the Mandelbulb, bench/mesh/README.md).
+inline constexpr double kBytesPerBrick = 16.0 * 1024.0;
 
 // Raised when a lattice would need more memory than `memoryLimitBytes`, with the estimate.
 struct TooBigError : std::runtime_error {

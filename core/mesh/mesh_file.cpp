@@ -6,10 +6,15 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <array>
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
+#include <bit>
 #include <cmath>
+#include <fstream>
+#include <limits>
 #include <stdexcept>
+#include <string_view>
 
 #include "core/atomic_file.hpp"
 
@@ -22,21 +27,31 @@ namespace {
 // (sRGB-encoded) values.
 enum class ColorEncoding { None, Display, Linear };
 
+// Binary PLY and STL (a third of the text forms' size) are streamed from the mesh by
+// writeBinaryPly / writeBinaryStl below; OBJ (without the .mtl file beside it: a mesh with no
+// material needs none, and a second file could not be written atomically with it) and glTF go
+// through Assimp's exporters.
+//
+// Why not Assimp for PLY and STL, the formats big prints use: Assimp copies the mesh into an
+// aiScene with a heap block per face, and its exporters build the whole file in a string stream
+// before writing it: about 60 bytes a triangle beside the mesh's own 12 (at 2048^3 the
+// Mandelbulb's 190 million triangles would need 11 GB more than the mesh). And Assimp 5.2's
+// binary PLY exporter declares vertex colours as uchar but writes them as four floats each,
+// which every reader misreads. Both formats are a fixed header and packed records (PLY: Turk
+// 1994, as Paul Bourke's page describes it; STL: 3D Systems' binary layout), and Assimp's
+// importers read them back in the tests.
+enum class Writer { BinaryPly, BinaryStl, Assimp };
+
 struct Format {
     const char* extension;
-    const char* assimpId;         // Assimp's exporter id (Assimp::Exporter::GetExportFormatDescription)
-    const char* coloredAssimpId;  // the one for a mesh with vertex colours
+    Writer writer;
+    const char* assimpId;  // Assimp's exporter id (Assimp::Exporter::GetExportFormatDescription)
     ColorEncoding colors;
 };
-// Binary PLY and STL (a third of the text forms' size); OBJ without the .mtl file beside it (a
-// mesh with no material needs none, and a second file could not be written atomically with it).
-// A coloured PLY is text: Assimp 5.2's binary PLY exporter declares its colours as uchar and
-// writes them as four floats, so every reader misreads them (and Assimp's own importer then
-// crashes in JoinIdenticalVertices); its text exporter writes them as declared.
-constexpr Format kFormats[] = {{".ply", "plyb", "ply", ColorEncoding::Display},
-                               {".obj", "objnomtl", "objnomtl", ColorEncoding::Display},
-                               {".stl", "stlb", "stlb", ColorEncoding::None},
-                               {".glb", "glb2", "glb2", ColorEncoding::Linear}};
+constexpr Format kFormats[] = {{".ply", Writer::BinaryPly, "", ColorEncoding::Display},
+                               {".obj", Writer::Assimp, "objnomtl", ColorEncoding::Display},
+                               {".stl", Writer::BinaryStl, "", ColorEncoding::None},
+                               {".glb", Writer::Assimp, "glb2", ColorEncoding::Linear}};
 
 // The sRGB transfer function (IEC 61966-2-1) and its inverse.
 float encodeSrgb(float linear) {
@@ -69,11 +84,67 @@ bool carriesColors(const std::string& extension) {
     return f && f->colors != ColorEncoding::None;
 }
 
-void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
-    const Format* format = formatFor(path.extension().string());
-    if (!format)
-        throw std::runtime_error(path.string() + ": unknown mesh format \"" + path.extension().string() +
-                                 "\" (one of " + meshExtensions() + ")");
+namespace {
+
+// Little-endian records in a buffered stream (the formats are little-endian, as is every
+// machine fraktal builds for: static_assert below).
+static_assert(std::endian::native == std::endian::little, "the PLY and STL writers assume a little-endian machine");
+
+template <class T>
+void put(std::ofstream& out, const T& value) {
+    out.write(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+uint8_t displayByte(float linear) { return uint8_t(std::lround(encodeSrgb(linear) * 255.0f)); }
+
+void checkWritten(const std::ofstream& out, const std::filesystem::path& path) {
+    if (!out) throw std::runtime_error(path.string() + ": writing the mesh failed (disk full or not writable)");
+}
+
+void writeBinaryPly(const std::filesystem::path& temp, const std::filesystem::path& path, const TriangleMesh& mesh) {
+    const bool colored = mesh.colors.size() == mesh.points.size() && !mesh.points.empty();
+    std::ofstream out(temp, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\ncomment written by fraktal mesh\n"
+        << "element vertex " << mesh.points.size() << "\nproperty float x\nproperty float y\nproperty float z\n";
+    if (colored) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+    out << "element face " << mesh.triangles.size() << "\nproperty list uchar uint vertex_indices\nend_header\n";
+    for (size_t i = 0; i < mesh.points.size(); ++i) {
+        put(out, mesh.points[i]);
+        if (colored)
+            for (float c : mesh.colors[i]) put(out, displayByte(c));
+    }
+    for (const auto& t : mesh.triangles) {
+        put(out, uint8_t(3));
+        put(out, t);
+    }
+    out.close();
+    checkWritten(out, path);
+}
+
+void writeBinaryStl(const std::filesystem::path& temp, const std::filesystem::path& path, const TriangleMesh& mesh) {
+    if (mesh.triangles.size() > std::numeric_limits<uint32_t>::max())
+        throw std::runtime_error(path.string() + ": binary STL holds at most 2^32 - 1 triangles");
+    std::ofstream out(temp, std::ios::binary);
+    std::array<char, 80> header{};
+    const std::string_view note = "binary STL written by fraktal mesh";
+    std::copy(note.begin(), note.end(), header.begin());
+    out.write(header.data(), header.size());
+    put(out, uint32_t(mesh.triangles.size()));
+    for (const auto& t : mesh.triangles) {
+        const vec3 a = mesh.point(t[0]), b = mesh.point(t[1]), c = mesh.point(t[2]);
+        const vec3 n = glm::cross(b - a, c - a);
+        const double length = glm::length(n);
+        const vec3 unit = length > 0.0 ? n / length : vec3(0.0);
+        put(out, std::array<float, 3>{float(unit.x), float(unit.y), float(unit.z)});
+        for (uint32_t v : t) put(out, mesh.points[v]);
+        put(out, uint16_t(0));  // attribute byte count
+    }
+    out.close();
+    checkWritten(out, path);
+}
+
+void writeWithAssimp(const Format* format, const std::filesystem::path& temp, const std::filesystem::path& path,
+                     const TriangleMesh& mesh) {
     // aiScene owns what it points to and frees it with delete / delete[].
     aiScene scene;
     scene.mRootNode = new aiNode();
@@ -91,8 +162,7 @@ void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
     m.mVertices = new aiVector3D[mesh.points.size()];
     for (size_t i = 0; i < mesh.points.size(); ++i)
         m.mVertices[i] = aiVector3D(mesh.points[i][0], mesh.points[i][1], mesh.points[i][2]);
-    const bool colored = format->colors != ColorEncoding::None && mesh.colors.size() == mesh.points.size();
-    if (colored) {
+    if (format->colors != ColorEncoding::None && mesh.colors.size() == mesh.points.size()) {
         const bool display = format->colors == ColorEncoding::Display;
         m.mColors[0] = new aiColor4D[mesh.points.size()];
         for (size_t i = 0; i < mesh.colors.size(); ++i) {
@@ -107,11 +177,24 @@ void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
         m.mFaces[i].mNumIndices = 3;
         m.mFaces[i].mIndices = new unsigned[3]{mesh.triangles[i][0], mesh.triangles[i][1], mesh.triangles[i][2]};
     }
-    AtomicFile out(path);
     Assimp::Exporter exporter;
-    if (exporter.Export(&scene, colored ? format->coloredAssimpId : format->assimpId, out.tempPath().string()) !=
-        aiReturn_SUCCESS)
+    if (exporter.Export(&scene, format->assimpId, temp.string()) != aiReturn_SUCCESS)
         throw std::runtime_error(path.string() + ": writing the mesh failed: " + exporter.GetErrorString());
+}
+
+}  // namespace
+
+void writeMesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
+    const Format* format = formatFor(path.extension().string());
+    if (!format)
+        throw std::runtime_error(path.string() + ": unknown mesh format \"" + path.extension().string() +
+                                 "\" (one of " + meshExtensions() + ")");
+    AtomicFile out(path);
+    switch (format->writer) {
+        case Writer::BinaryPly: writeBinaryPly(out.tempPath(), path, mesh); break;
+        case Writer::BinaryStl: writeBinaryStl(out.tempPath(), path, mesh); break;
+        case Writer::Assimp: writeWithAssimp(format, out.tempPath(), path, mesh); break;
+    }
     out.commit();
 }
 

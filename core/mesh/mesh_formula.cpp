@@ -5,7 +5,10 @@
 
 namespace fraktal::mesh {
 
-FormulaVolume buildVolume(FormulaSampler& sampler, const MeshSettings& settings) {
+FormulaVolume buildVolume(FormulaSampler& formulaSampler, const MeshSettings& settings) {
+    std::optional<BoxClippedSampler> clipped;
+    if (settings.clip) clipped.emplace(formulaSampler, *settings.clip);
+    FormulaSampler& sampler = clipped ? *clipped : formulaSampler;
     BrickPlan plan =
         planBricks(sampler, settings.layout, settings.memoryLimitBytes, settings.threads, settings.control);
     SdfVolume volume = SdfVolume::build(sampler, plan, settings.threads, settings.control);

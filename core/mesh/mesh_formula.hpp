@@ -22,6 +22,9 @@ struct MeshSettings {
     int threads = 0;          // 0: all cores
     // Plans needing more are refused up front (TooBigError, with the estimate).
     double memoryLimitBytes = availableMemoryBytes();
+    // Only what lies in this box, closed along its faces (BoxClippedSampler); the layout should
+    // cover it (layoutOfBox).
+    std::optional<Box> clip;
     bool fillCavities = false;  // SdfVolume::fillCavities
     double minThickness = 0.0;  // SdfVolume::thickenThinParts, when > 0
     // Vertex colours from this shading's palette and object colours, when set.

@@ -44,11 +44,11 @@ static_assert(Leaf::DIM == kBrickSize, "a sampled brick fills one leaf node");
 // surface are estimates: outside, a lower bound of the distance (so the crossing volumeToMesh
 // interpolates lies too far out, and the solid comes out fat: 5 % too much volume on the
 // Mandelbulb at 128^3), inside an escape-time set no distance at all. Every lattice edge from an
-// outside voxel to an inside one is bisected on membership (kBisections steps, a 64th of a
+// outside voxel to an inside one is bisected on membership (kBisections steps from the estimate's bound, a 32nd of a
 // voxel), and both ends take the distance along their edges to the nearest crossing: the outside
 // end +t, the inside end -(1 - t) in voxels, so that the linear interpolation along that edge
 // lands on the crossing.
-constexpr int kBisections = 6;
+constexpr int kBisections = 5;
 
 void placeCrossingsOnMembership(openvdb::FloatGrid& grid, FormulaSampler& sampler, const GridLayout& layout,
                                 int threads, const MeshControl& control) {
@@ -102,7 +102,10 @@ void placeCrossingsOnMembership(openvdb::FloatGrid& grid, FormulaSampler& sample
                         openvdb::Coord n = v.getCoord();
                         n[axis] += step;
                         float value;
-                        if (values.probeValue(n, value) && value < 0.0f) edges.push_back({v.getCoord(), n});
+                        // The outside end's estimate is a lower bound of the distance: no crossing
+                        // is nearer than that.
+                        if (values.probeValue(n, value) && value < 0.0f)
+                            edges.push_back({v.getCoord(), n, std::min(*v / voxel, 1.0f), 1.0f});
                     }
             }
         points.resize(edges.size());

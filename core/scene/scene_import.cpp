@@ -5,6 +5,7 @@
 
 #include "core/import/fract_import.hpp"
 #include "core/import/frag_import.hpp"
+#include "core/mesh/brick_sampler.hpp"
 #include "core/safe_step.hpp"
 #include "core/scene/distance.hpp"
 #include "core/scene/formula_fit.hpp"
@@ -57,6 +58,39 @@ Preset readBack(const std::filesystem::path& path, const Preset& preset) {
     }
 }
 
+// The bound sphere of an object whose estimate only a sampler evaluates (a frag's, on the GL
+// probe): the mesher's brick pruning (mesh::planBricks, batched) over the cube of `searchRadius`
+// at 256^3 finds the bricks where the estimate leaves room for surface; the sphere through their
+// farthest corners holds the object. The cube shrinks to that sphere until it stops shrinking
+// (each round's bricks are finer). `fallback` when no brick may hold surface, or when the first
+// cube's faces do (the object reaches out to the search cube: a tiling).
+double fittedBoundOnSampler(FormulaSampler& sampler, double searchRadius, double fallback) {
+    constexpr int kVoxels = 256;
+    double radius = searchRadius;
+    for (int round = 0; round < 4; ++round) {
+        const mesh::Box cube{vec3(-radius), vec3(radius)};
+        const mesh::GridLayout layout = mesh::layoutOfBox(cube, kVoxels);
+        const mesh::BrickPlan plan = mesh::planBricks(sampler, layout, 1e18, 0);
+        if (plan.bricks.empty()) return round == 0 ? fallback : radius;
+        const int last = layout.bricksAcross() - 1;
+        const double brick = mesh::kBrickSize * layout.voxel;
+        double extent = 0.0;
+        for (const auto& b : plan.bricks) {
+            if (round == 0 && (std::min({b[0], b[1], b[2]}) == 0 || std::max({b[0], b[1], b[2]}) == last))
+                return fallback;
+            vec3 farthest;
+            for (int a = 0; a < 3; ++a) {
+                const double lo = layout.minCorner[a] + b[size_t(a)] * brick;
+                farthest[a] = std::max(std::abs(lo), std::abs(lo + brick));
+            }
+            extent = std::max(extent, length(farthest));
+        }
+        if (extent > 0.9 * radius) return std::max(extent, 0.05);
+        radius = extent;
+    }
+    return std::max(radius, 0.05);
+}
+
 // A Fragmentarium frag's safe step, measured where the caller gives a GL sampler (its DE has no CPU
 // twin). FragM multiplies the estimate by FudgeFactor; the measured factor takes its place. A frag
 // whose estimate nothing vouches for (no ray meets the object, or no factor is safe) keeps its
@@ -66,7 +100,7 @@ void measureFragStep(frag::FragImport& result, ImportedScene& scene, const Scene
     Formula& f = result.preset.formula;
     const std::unique_ptr<FormulaSampler> sampler = options.glslSampler(f);
     if (!sampler) return;
-    const EstimatorMeasurement m = measureSafeStep(*sampler, result.preset.camera);
+    EstimatorMeasurement m = measureSafeStep(*sampler, result.preset.camera);
     if (m.report.samples == 0 || !hasSafeStepFactor(m)) {
         const frag::ImportItem kept{"FudgeFactor", m.report.samples == 0
                                                        ? "kept as the step factor: no ray of the check met the object"
@@ -78,6 +112,26 @@ void measureFragStep(frag::FragImport& result, ImportedScene& scene, const Scene
     }
     f.deFactor = m.factor;
     f.deFactorMeasuredFor = stepFactorTag(f);
+    // With an estimate now safe to step by, the bound is fitted to the object (the import framed
+    // the camera's view instead), and the step measured again in it: its rays sample the object
+    // closer, where an estimate may overshoot more. A bound whose measurement fails is not taken.
+    const double framing = f.boundRadius;
+    const double firstFactor = f.deFactor;
+    f.boundRadius = fittedBoundOnSampler(*sampler, framing, framing);
+    if (f.boundRadius == framing) return;
+    m = measureSafeStep(*sampler, result.preset.camera);
+    if (m.report.samples == 0 || !hasSafeStepFactor(m)) {
+        f.boundRadius = framing;
+        f.deFactor = firstFactor;
+        return;
+    }
+    f.deFactor = m.factor;
+    // And against the baseline marcher's true distances, as `fraktal check` tests a preset (its
+    // 120 rays are the first of these 200): the safe-step rounds follow the camera's rays, and an
+    // estimate bent by the DE's own transforms (a rotation inside the iteration) can overshoot
+    // more on rays from the bound's sphere.
+    const ConservativenessReport c = checkConservativeness(*sampler, result.preset.camera);
+    if (c.samples > 0 && !c.conservative()) f.deFactor *= c.safeStepMultiplier();
 }
 
 // A Fragmentarium frag: its DE as a whole-DE estimator, its step factor measured on the GPU when

@@ -411,26 +411,36 @@ void AutoStepFactor::restore(const Formula& f) {
 }
 
 void AutoStepFactor::stopMeasuring() {
-    furtherWorker = {};  // stops (within a round) and joins
+    if (furtherWorker.joinable()) {
+        furtherWorker.request_stop();
+        stopped.push_back({std::move(furtherWorker), std::move(workerEnded)});
+    }
     first = {};
     further = {};
 }
 
+void AutoStepFactor::reapStopped() {
+    std::erase_if(stopped, [](const StoppedWorker& w) { return w.ended->load(); });  // joins at once
+}
+
 void AutoStepFactor::measureOnWorker(const Formula& f, const Camera& camera, SafeStepOptions options, bool yield,
                                      std::future<EstimatorMeasurement>& into) {
-    furtherWorker = {};
+    stopMeasuring();  // a worker still running (none when the settled rounds have ended)
     std::promise<EstimatorMeasurement> result;
     into = result.get_future();
-    furtherWorker = std::jthread([f, camera, options, yield, result = std::move(result)](std::stop_token stop) mutable {
-        if (yield) yieldToRendering();
-        SafeStepOptions stoppable = options;
-        stoppable.stop = stop;
-        try {
-            result.set_value(measureSafeStep(f, camera, stoppable));
-        } catch (...) {
-            result.set_exception(std::current_exception());
-        }
-    });
+    workerEnded = std::make_shared<std::atomic<bool>>(false);
+    furtherWorker = std::jthread(
+        [f, camera, options, yield, ended = workerEnded, result = std::move(result)](std::stop_token stop) mutable {
+            if (yield) yieldToRendering();
+            SafeStepOptions stoppable = options;
+            stoppable.stop = stop;
+            try {
+                result.set_value(measureSafeStep(f, camera, stoppable));
+            } catch (...) {
+                result.set_exception(std::current_exception());
+            }
+            *ended = true;
+        });
 }
 
 namespace {
@@ -440,6 +450,7 @@ bool ended(const std::future<EstimatorMeasurement>& f) {
 }  // namespace
 
 bool AutoStepFactor::update(Formula& f, const Camera& camera, const std::string& structure) {
+    reapStopped();
     if (structure == measuredKey) {
         if (ended(first)) {
             std::future<EstimatorMeasurement> settledRounds = std::move(first);

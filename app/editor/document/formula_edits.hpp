@@ -3,10 +3,12 @@
 // decided by Formula::structureKey() alone, through the frame's scene::SceneRevision.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <future>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -151,7 +153,16 @@ struct AutoStepFactor {
     std::future<EstimatorMeasurement> first{};
     std::future<EstimatorMeasurement> further{};
     std::chrono::steady_clock::time_point measuringSince{};
-    std::jthread furtherWorker{};  // last: destroyed (stopped and joined) before what it writes to
+    // Workers of structures left behind, asked to stop: each ends within a round (up to about a
+    // third of a second on two cores), and is joined once it has (reapStopped), so that an edit
+    // never waits for the measurement it made obsolete. Each writes only to its own promise.
+    struct StoppedWorker {
+        std::jthread thread;
+        std::shared_ptr<std::atomic<bool>> ended;
+    };
+    std::vector<StoppedWorker> stopped{};
+    std::shared_ptr<std::atomic<bool>> workerEnded{};  // furtherWorker's
+    std::jthread furtherWorker{};                      // last: destroyed (stopped and joined) before what it writes to
 
     // The settled rounds alone: the factor applied first.
     static SafeStepOptions options() {
@@ -186,6 +197,8 @@ struct AutoStepFactor {
     bool measuring() const { return first.valid(); }
     // Any rounds run: the factor shown may still change.
     bool refining() const { return first.valid() || further.valid(); }
+    // Workers of structures left, stopping: each is joined by the first update() after it ends.
+    size_t stoppingWorkers() const { return stopped.size(); }
 
    private:
     void apply(const EstimatorMeasurement& m, Formula& f);
@@ -195,6 +208,7 @@ struct AutoStepFactor {
     void measureOnWorker(const Formula& f, const Camera& camera, SafeStepOptions options, bool yield,
                          std::future<EstimatorMeasurement>& into);
     void stopMeasuring();
+    void reapStopped();
 };
 
 // The node index a compile-error log talks about (`node 3 "Box fold" (box_fold)...`, numbered
