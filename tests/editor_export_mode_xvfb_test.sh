@@ -20,17 +20,6 @@ out=$3
 mkdir -p "$out"
 preset="$presets/kifs_coloured_lights.json"
 
-# A click held over two frames (a combo reacts to the press, its list to the release).
-press() { to "$1" "$2"; wait_frames 2; xdotool mousedown 1; wait_frames 2; xdotool mouseup 1; wait_frames 3; }
-# pick ROW RECT: a combo's list opens below it (after the popup's 8 px padding), a row 2 px shorter
-# than the combo (the editor's style; tests/editor_pathtrace_xvfb_test.sh).
-pick() {
-    row=$1
-    shift
-    set -- $(echo "$1" | tr '[],' '   ' | xargs printf '%.0f ')
-    press $(($1 + $3 / 2)) $(($2 + $4 / 2))
-    press $(($1 + $3 / 2)) $(($2 + $4 + 8 + ($4 - 2) * row + ($4 - 2) / 2))
-}
 rect() { q ".widgets[\"$1\"] | tojson"; }
 # ctrl_click WIDGET: a drag field turns into a text field.
 ctrl_click() { ctrl_click_at $(centre "$1"); }

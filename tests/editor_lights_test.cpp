@@ -1,6 +1,9 @@
 // The Lights tab's logic (app/editor/document/lights_edits.hpp): the light list's edits within kMaxLights,
 // the environment map check, the focus distance of the surface under the cursor, the undo
 // label of a light list edit and the viewport click that picks the focus.
+// GLFW only for its key and button codes: no GL header of its own before epoxy's (the unity
+// build batches this file with tests that include epoxy).
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 

@@ -18,16 +18,8 @@ spp_wanted=${FRAKTAL_PATHTRACE_SPP:-4}
 spp() { q '.viewportRender.pathSpp'; }
 showing() { q '.viewportRender.showing'; }
 mode() { q '.viewportRender.mode'; }
-# A click held over two frames (the combo reacts to the press, its list to the release).
-press() { to "$1" "$2"; wait_frames 2; xdotool mousedown 1; wait_frames 2; xdotool mouseup 1; wait_frames 3; }
-# The combo's list opens below it (after the popup's 8 px padding), one row per mode (Fast, Path
-# traced at rest); a row is 2 px shorter than the combo (measured: 19 px rows under the 21 px
-# combo of the editor's style).
-pick_mode() {
-    set -- $(q '.viewportRender.modeCombo | map(round) | join(" ")') "$1"
-    press $(($1 + $3 / 2)) $(($2 + $4 / 2))
-    press $(($1 + $3 / 2)) $(($2 + $4 + 8 + ($4 - 2) * $5 + ($4 - 2) / 2))
-}
+# The Render tab's combo, one row per mode (Fast, Path traced at rest).
+pick_mode() { pick "$1" "$(q '.viewportRender.modeCombo | tojson')"; }
 now() { date +%s.%N; }
 # Waits until pathSpp >= $1 (at most $2 seconds); prints the seconds it took.
 wait_spp() {

@@ -43,7 +43,7 @@ inline bool updateUntilMeasured(editor::AutoStepFactor& a, Formula& f, const Cam
 }
 
 // Polls like the editor's frame loop does until the job ends; false on timeout.
-inline bool pollUntilEnded(editor::ExportJob& job, double seconds) {
+inline bool pollUntilEnded(editor::ExportProcess& job, double seconds) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     while (editor::exportActive(job)) {
         if (std::chrono::steady_clock::now() > end) return false;

@@ -134,6 +134,19 @@ click() {
     xdotool mouseup 1
     wait_frames 3
 }
+# press X Y: a click held over two frames at window point (X, Y) (a combo reacts to the press, its
+# list to the release).
+press() { to "$1" "$2"; wait_frames 2; xdotool mousedown 1; wait_frames 2; xdotool mouseup 1; wait_frames 3; }
+# pick ROW RECT: opens the combo drawn at RECT (the state file's [x, y, w, h]) and picks its list's
+# row ROW (from 0). The list opens below the combo (after the popup's 8 px padding), a row 2 px
+# shorter than the combo (measured: 19 px rows under the 21 px combo of the editor's style).
+pick() {
+    row=$1
+    shift
+    set -- $(echo "$1" | tr '[],' '   ' | xargs printf '%.0f ')
+    press $(($1 + $3 / 2)) $(($2 + $4 / 2))
+    press $(($1 + $3 / 2)) $(($2 + $4 + 8 + ($4 - 2) * row + ($4 - 2) / 2))
+}
 # Relative difference of two camera positions (0: the same place).
 moved() { awk -v a="$1" -v b="$2" 'BEGIN { split(a, p, " "); split(b, r, " "); d = 0; n = 0;
     for (i = 1; i <= 3; i++) { d += (p[i] - r[i]) ^ 2; n += r[i] ^ 2 } print sqrt(d / n) }'; }

@@ -411,7 +411,8 @@ int runEditor(const EditorOptions& o) {
             const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
             const bool compiling = !s.doc.plane && viewport->stats().compiling;
             const bool busy = o.frames > 0 || !settled || compiling || exportActive(s.exportJob) ||
-                              s.browser.rendering || ImGui::IsAnyMouseDown() || s.input.pending();
+                              exportActive(s.meshExportJob) || s.browser.rendering || ImGui::IsAnyMouseDown() ||
+                              s.input.pending();
             if (busy)
                 glfwPollEvents();
             else
@@ -452,6 +453,7 @@ int runEditor(const EditorOptions& o) {
             drawCameraPathOverlay(s);
             drawStatusLine(s);
             drawExportDialog(s);
+            drawMeshExportDialog(s);
             drawCustomBlockEditor(s, compileError);
             drawFileDialogs(s);
             drawRecoveryDialog(s);
@@ -560,6 +562,7 @@ int runEditor(const EditorOptions& o) {
         }
         closeFrameLog(frameLog);
         finishExport(s.exportJob);
+        finishExport(s.meshExportJob);
         releaseThumbnails(s.browser);
         thumbnails.viewport.reset();
         thumbnails.compiler.reset();  // joins its worker, which releases the hidden context

@@ -36,28 +36,55 @@ json lightsJson(const Lighting& l, const LightsPanel& p) {
             {"widgets", widgets}};
 }
 
-// The export dialog (F12) as drawn: its options, the command it runs, the job's state and the
-// line it shows for it, and the files the last job wrote.
+// What both export dialogs show of their child process: the job's state and progress, the line
+// the dialog shows for it, and the files the last job wrote.
+json exportProcessJson(const ExportProcess& job, const std::string& statusText) {
+    json outputs = json::array();
+    for (const auto& f : job.outputs) outputs.push_back(f.string());
+    return {{"status", exportStatusName(job.status)},
+            {"statusText", statusText},
+            {"progress", job.progress},
+            {"outputs", outputs},
+            {"outputsExist", exportOutputsExist(job)}};
+}
+
+// The export dialog (F12) as drawn: its options, the command it runs, and its job.
 json exportJson(const EditorState& s) {
     const ExportJob& job = s.exportJob;
     const ExportOptions& o = job.options;
-    static constexpr const char* kStatus[] = {"idle", "running", "cancelling", "done", "failed", "cancelled"};
-    json outputs = json::array();
-    for (const auto& f : job.outputs) outputs.push_back(f.string());
-    std::string command;
-    for (const std::string& a : exportCommand("fraktal", "<preset>", o)) command += (command.empty() ? "" : " ") + a;
-    return {{"shown", s.dialogs.exportStill},
-            {"mode", o.pathTraced ? "path" : "fast"},
-            {"spp", exportSpp(o)},
-            {"denoise", o.denoise},
-            {"size", {o.width, o.height}},
-            {"output", o.output},
-            {"command", command},
-            {"lights", s.doc.plane ? "" : exportLightsText(s.doc.preset.lighting, o.pathTraced)},
-            {"status", kStatus[int(job.status)]},
-            {"statusText", exportStatusText(job)},
-            {"outputs", outputs},
-            {"outputsExist", exportOutputsExist(job)}};
+    json j = {{"shown", s.dialogs.exportStill},
+              {"mode", o.pathTraced ? "path" : "fast"},
+              {"spp", exportSpp(o)},
+              {"denoise", o.denoise},
+              {"size", {o.width, o.height}},
+              {"output", o.output},
+              {"command", commandLine(exportCommand("fraktal", "<preset>", o))},
+              {"lights", s.doc.plane ? "" : exportLightsText(s.doc.preset.lighting, o.pathTraced)}};
+    j.update(exportProcessJson(job, exportStatusText(job)));
+    return j;
+}
+
+// The mesh export dialog (File > Export mesh...) as drawn: its options, the command it runs, its
+// job and the stage the mesher last named.
+json meshExportJson(const EditorState& s) {
+    const MeshExportJob& job = s.meshExportJob;
+    const MeshExportOptions& o = job.options;
+    json j = {{"shown", s.dialogs.exportMesh},
+              {"output", o.output},
+              {"format", meshFormat(o.output)},
+              {"resolution", o.resolution},
+              {"voxel", s.doc.plane ? json() : json(meshVoxelSize(s.doc.preset.formula, o.resolution))},
+              {"simplify", o.simplify},
+              {"printSizeMm", o.printSizeMm},
+              {"removeCavities", o.removeCavities},
+              {"minThickness", o.minThickness},
+              {"vertexColours", o.vertexColours},
+              {"available", !s.doc.plane},  // the File menu's item: 3D documents only
+              {"optionsError", meshOptionsError(o, s.doc.plane.has_value())},
+              {"command", commandLine(meshExportCommand("fraktal", "<preset>", o))},
+              {"stage", meshProgressStage(job.log)}};
+    j.update(exportProcessJson(job, meshExportStatusText(job)));
+    return j;
 }
 
 }  // namespace
@@ -180,6 +207,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["tooltip"] = s.paramWidgets.tooltip;
     j["lights"] = lightsJson(s.doc.preset.lighting, s.lights);
     j["exportDialog"] = exportJson(s);
+    j["meshExportDialog"] = meshExportJson(s);
     j["document"] = json::parse(fingerprint(s.doc));
     // Text cut by the edge of its window, cell or box this frame (widgets/text_fit.hpp): the
     // layout tests hold it empty at the default window sizes.

@@ -4,10 +4,9 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include <algorithm>
-#include <cmath>
 #include <string>
 
+#include "app/editor/dialogs/export_widgets.hpp"
 #include "app/editor/document/document.hpp"
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
@@ -15,31 +14,11 @@
 
 namespace fraktal::editor {
 
-namespace {
-
-std::string joined(const std::vector<std::string>& args) {
-    std::string out;
-    for (const std::string& a : args) out += (out.empty() ? "" : " ") + a;
-    return out;
-}
-
-}  // namespace
-
 void drawExportDialog(EditorState& s) {
     ExportJob& job = s.exportJob;
     pollExport(job);
     if (!s.dialogs.exportStill) return;
-    // The dialog sizes itself to what it shows (the log opened, a longer status), its text
-    // wrapped at a fixed width, so that nothing in it is cut or scrolls out of sight.
-    const float width = ImGui::GetFontSize() * 36.0f;
-    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::Begin("Export still", &s.dialogs.exportStill,
-                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::End();
-        return;
-    }
-    ImGui::PushItemWidth(width * 0.55f);
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+    if (!beginExportDialog("Export still", &s.dialogs.exportStill)) return;
     ExportOptions& o = job.options;
     const bool running = exportActive(job);
     const bool plane = s.doc.plane.has_value();
@@ -126,49 +105,9 @@ void drawExportDialog(EditorState& s) {
         ImGui::EndDisabled();
     }
     ImGui::SameLine();
-    const double elapsed = running ? s.now - job.startedAt : 0.0;
-    const std::string status = exportStatusText(job);
-    switch (job.status) {
-        case ExportStatus::Running:
-            if (job.progress >= 0.0) {
-                ImGui::ProgressBar(float(job.progress), ImVec2(-1, 0));
-            } else {
-                // The renderer has not reported a percentage: show time, not a fake fraction.
-                const std::string text = "rendering, " + std::to_string(int(elapsed)) + " s";
-                ImGui::ProgressBar(float(std::fmod(elapsed, 2.0) / 2.0), ImVec2(-1, 0), text.c_str());
-            }
-            break;
-        case ExportStatus::Done:
-            if (exportOutputsExist(job))
-                ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "%s", status.c_str());
-            else
-                ImGui::TextDisabled("%s", status.c_str());
-            break;
-        case ExportStatus::Failed: ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1), "%s", status.c_str()); break;
-        case ExportStatus::Cancelling:
-        case ExportStatus::Cancelled:
-        case ExportStatus::Idle: ImGui::TextDisabled("%s", status.c_str()); break;
-    }
-    // The command line and the renderer's output, for a bug report or a render farm: wrapped,
-    // in a region as tall as the log up to half the window, then scrolled to its newest line.
-    const bool logOpen = ImGui::CollapsingHeader("Command and log");
-    noteWidgetRect(s.layout, "export:Command and log");
-    if (logOpen) {
-        ImGui::TextDisabled("%s", joined(exportCommand("fraktal", "<preset>", o)).c_str());
-        const std::string log = job.log.empty() ? std::string("(nothing yet)") : job.log;
-        const float textHeight = ImGui::CalcTextSize(log.c_str(), nullptr, false, width).y;
-        const float height = std::min(textHeight + ImGui::GetStyle().WindowPadding.y * 2.0f,
-                                      ImGui::GetMainViewport()->WorkSize.y * 0.5f);
-        ImGui::BeginChild("log", ImVec2(width, height), true);
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextUnformatted(log.c_str());
-        ImGui::PopTextWrapPos();
-        if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);
-        ImGui::EndChild();
-    }
-    ImGui::PopTextWrapPos();
-    ImGui::PopItemWidth();
-    ImGui::End();
+    drawExportProgress(job, exportStatusText(job), "", "rendering", s.now);
+    drawExportLog(s, job, commandLine(exportCommand("fraktal", "<preset>", o)), "export:Command and log");
+    endExportDialog();
 }
 
 }  // namespace fraktal::editor

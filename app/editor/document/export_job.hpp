@@ -1,16 +1,15 @@
-// The export dialog's job: a still rendered by `fraktal render` (core/render) in a child
-// process, so the editor stays responsive, a cancel is a signal, and a crash in a huge render
-// cannot take the unsaved document with it. Progress is read from the child's output ("NN%":
-// `fraktal render` prints "progress: 3/10 tiles (30%)" lines when its stderr is not a terminal).
+// The export dialog's job: a still rendered by `fraktal render` (core/render) in a child process
+// (export_process.hpp: the child, its progress, cancel and the Done rule, shared with the mesh
+// export). `fraktal render` prints "progress: 3/10 tiles (30%)" lines when its stderr is not a
+// terminal.
 #pragma once
-
-#include <sys/types.h>
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "app/editor/document/document.hpp"
+#include "app/editor/document/export_process.hpp"
 #include "core/preset.hpp"
 
 namespace fraktal::editor {
@@ -52,22 +51,9 @@ struct ExportOptions {
     std::string output = "fraktal_still";  // path without extension
 };
 
-// Cancelling: the renderer got SIGTERM and stops after its current tile (it writes nothing).
-enum class ExportStatus { Idle, Running, Cancelling, Done, Failed, Cancelled };
-
-struct ExportJob {
+// Its outputs: the EXR, then the PNG if chosen.
+struct ExportJob : ExportProcess {
     ExportOptions options;
-    ExportStatus status = ExportStatus::Idle;
-    pid_t pid = -1;
-    int outputFd = -1;
-    std::string log;         // the child's output so far
-    double progress = -1.0;  // 0..1, or < 0 when the child has not said
-    double startedAt = 0.0;
-    std::filesystem::path presetFile;  // the temp preset handed to the child
-    std::filesystem::path executable;  // the fraktal binary to run; empty: this program
-    // The files this job was asked to write (the EXR, then the PNG if chosen), kept from its start:
-    // the options may change after it; Done means the renderer exited with 0 and all of them exist.
-    std::vector<std::filesystem::path> outputs;
     bool pathTraced = false;  // the mode this job renders in
     int spp = 0;              // and its samples per pixel
 };
@@ -86,9 +72,6 @@ std::string exportLightsText(const Lighting& lighting, bool pathTraced);
 // The command line for the still renderer (`fraktal render`), for the dialog to show.
 std::vector<std::string> exportCommand(const std::filesystem::path& fraktalExe, const std::filesystem::path& preset,
                                        const ExportOptions& o);
-// The last "NN%" or "NN.N%" in `log` as 0..1, or -1.
-double parseProgress(const std::string& log);
-
 // The document's file text for the renderer: a relative environment map is made absolute
 // (resolved against `documentFile`'s folder, as the viewport does), since the renderer reads the
 // preset from a temporary file next to the output.
@@ -98,17 +81,6 @@ std::string exportPresetText(const Document& d, const std::filesystem::path& doc
 bool startExport(ExportJob& job, const Preset& preset, double now);
 // The same for a preset's file text (a 2D preset too: `fraktal render` tells them apart).
 bool startExport(ExportJob& job, const std::string& presetText, double now);
-// Reads the child's output without blocking and notices when it ended.
-void pollExport(ExportJob& job);
-// Asks the renderer to stop (SIGTERM) and returns at once; pollExport sees it end.
-void cancelExport(ExportJob& job);
-// Cancels and waits for the renderer to exit (when the editor quits).
-void finishExport(ExportJob& job);
-bool exportActive(const ExportJob& job);  // Running or Cancelling
-// The options changed after a job ended: its Done, Failed or Cancelled no longer describes them.
-void exportOptionsEdited(ExportJob& job);
-// Whether every file the job wrote is there now.
-bool exportOutputsExist(const ExportJob& job);
 // The dialog's line for the job's state, e.g. "Done: out/still.exr and out/still.png (path traced,
 // 64 spp)." (the files the job wrote, while they exist) or "Failed: ..." (the log's last line);
 // "" while it runs (a progress bar).

@@ -10,7 +10,9 @@ namespace fraktal::editor {
 
 void drawMenuBar(EditorState& s) {
     if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
+    const bool fileOpen = ImGui::BeginMenu("File");
+    if (!fileOpen) noteWidgetRect(s.layout, "menu:File");  // the menu's title, where a click opens it
+    if (fileOpen) {
         if (ImGui::MenuItem("New 3D", "Ctrl+N")) requestAction(s, {PendingKind::New, {}});
         if (ImGui::MenuItem("New 2D", "Ctrl+Shift+N")) requestAction(s, {PendingKind::NewPlane, {}});
         if (ImGui::MenuItem("Open...", "Ctrl+O")) s.dialogs.openPath = true;
@@ -27,6 +29,12 @@ void drawMenuBar(EditorState& s) {
         }
         ImGui::Separator();
         if (ImGui::MenuItem("Export still...", "F12")) s.dialogs.exportStill = true;
+        // A 2D document is a plane: there is no surface to print.
+        const bool plane = s.doc.plane.has_value();
+        if (ImGui::MenuItem("Export mesh...", nullptr, false, !plane)) s.dialogs.exportMesh = true;
+        if (plane && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("A 2D document has no surface to mesh: meshes are made of 3D documents.");
+        noteWidgetRect(s.layout, "menu:File/Export mesh...");
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestAction(s, {PendingKind::Quit, {}});
         ImGui::EndMenu();

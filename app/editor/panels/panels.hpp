@@ -39,6 +39,7 @@ void chooseEnvironmentMap(EditorState& s, const std::filesystem::path& file);  /
 void drawPresetsTab(EditorState& s);                                           // preset_browser.cpp
 void drawStatsOverlay(EditorState& s, const ViewportView& v);                  // stats_overlay.cpp
 void drawExportDialog(EditorState& s);                                         // export_dialog.cpp
+void drawMeshExportDialog(EditorState& s);                                     // mesh_export_dialog.cpp
 void drawFileDialogs(EditorState& s);                                          // file_dialogs.cpp
 void drawStatusLine(EditorState& s);                                           // stats_overlay.cpp
 void drawRecoveryDialog(EditorState& s);                                       // recovery_dialog.cpp

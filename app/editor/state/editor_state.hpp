@@ -15,6 +15,7 @@
 #include "app/editor/document/file_browser.hpp"
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/lights_edits.hpp"
+#include "app/editor/document/mesh_export_job.hpp"
 #include "app/editor/document/slow_stack.hpp"
 #include "app/editor/document/timeline_edits.hpp"
 #include "app/editor/document/undo_history.hpp"
@@ -95,6 +96,7 @@ struct Dialogs {
     bool saveAs = false;          // opens it to save as
     bool unsaved = false;         // "Save changes?" prompt
     bool exportStill = false;     // F12
+    bool exportMesh = false;      // File > Export mesh...
     bool environmentMap = false;  // opens the file browser to choose the Lights tab's environment map
     std::string pathInput;        // Save As: the path to start from
     FileBrowser browser;
@@ -153,6 +155,7 @@ struct EditorState {
     // few dozen small files), not every frame.
     std::vector<FractalChoice> fractalChoices;
     ExportJob exportJob;
+    MeshExportJob meshExportJob;
     StatusLine status;
     int selectedNode = 0;           // formula.nodes.size() selects the estimator
     PlaneSelection planeSelection;  // the same for a 2D document
