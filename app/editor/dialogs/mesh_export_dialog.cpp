@@ -86,8 +86,8 @@ void drawMeshExportDialog(EditorState& s) {
     edited |= dragClamped("Resolution", &o.resolution, 1, 2.0f, 16, 4096, "%d voxels across");
     noteWidgetRect(s.layout, "meshExport:Resolution");
     helpMarker(
-        "Voxels across the formula's bound: the finest detail the mesh keeps. Twice the resolution is about four "
-        "times the triangles and the time.");
+        "Voxels across the formula's bound: the finest detail the mesh keeps. Twice the resolution is four to six "
+        "times the triangles, the memory and the time (a fractal's surface grows faster than a smooth one's).");
     const double voxel = plane ? 0.0 : meshVoxelSize(s.doc.preset.formula, o.resolution);
     if (!plane)
         ImGui::TextDisabled("Voxel %.4g in the preset's units (the bound is %.4g across).", voxel,

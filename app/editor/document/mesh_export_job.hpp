@@ -12,8 +12,8 @@
 
 namespace fraktal::editor {
 
-// The formats `fraktal mesh` writes, chosen by the output's extension: the meshes (Assimp), then
-// the OpenVDB level set.
+// The formats `fraktal mesh` writes, chosen by the output's extension: the meshes, then the
+// OpenVDB level set.
 inline constexpr const char* kMeshFormats[] = {".ply", ".glb", ".obj", ".stl", ".vdb"};
 
 struct MeshExportOptions {
