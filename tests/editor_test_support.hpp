@@ -2,6 +2,8 @@
 // the export job polled as the frame loop polls it.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <chrono>
 #include <thread>
 
@@ -51,6 +53,18 @@ inline bool pollUntilEnded(editor::ExportProcess& job, double seconds) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     return true;
+}
+
+// Cancels a running job as the dialog's button does: the call returns at once (the UI thread
+// does not wait for the child) and the job is Cancelling, then Cancelled within `seconds`.
+inline void expectCancelReturnsAtOnce(editor::ExportProcess& job, double seconds) {
+    const auto before = std::chrono::steady_clock::now();
+    editor::cancelExport(job);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count(), 0.1)
+        << "the UI thread does not wait for the child";
+    EXPECT_EQ(job.status, editor::ExportStatus::Cancelling);
+    ASSERT_TRUE(pollUntilEnded(job, seconds)) << job.log;
+    EXPECT_EQ(job.status, editor::ExportStatus::Cancelled) << job.log;
 }
 
 }  // namespace fraktal::test

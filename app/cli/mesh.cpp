@@ -120,8 +120,9 @@ std::unique_ptr<FormulaSampler> samplerFor(const MeshOptions& o, const Formula& 
 }
 
 // Meshes one preset (a still, or one frame of a sequence) into `output`.
-void meshOne(const MeshOptions& o, const Preset& preset, const std::filesystem::path& output,
-             std::unique_ptr<gl::HeadlessContext>& context, MeshProgressPrinter& progress) {
+void meshOne(const MeshOptions& o, std::optional<double> printMm, const Preset& preset,
+             const std::filesystem::path& output, std::unique_ptr<gl::HeadlessContext>& context,
+             MeshProgressPrinter& progress) {
     const std::string extension = output.extension().string();
     const bool vdb = extension == ".vdb";
     const Formula& f = preset.formula;
@@ -165,8 +166,6 @@ void meshOne(const MeshOptions& o, const Preset& preset, const std::filesystem::
     progress.finish();
     if (m.triangles.empty())
         throw std::runtime_error(o.preset + ": no surface within the bound at this resolution (nothing written)");
-    std::optional<double> printMm;
-    if (!o.printSize.empty()) printMm = parsePrintSize(o.printSize);
     if (printMm) {
         const auto box = m.bounds();
         const vec3 extent = box[1] - box[0];
@@ -188,11 +187,12 @@ int runMesh(const MeshOptions& o) {
     if (!vdb && !mesh::isMeshExtension(extension))
         throw std::runtime_error(o.output + ": unknown output format \"" + extension + "\" (one of .vdb, " +
                                  mesh::meshExtensions() + ")");
+    std::optional<double> printMm;  // refused before any work
     if (!o.printSize.empty()) {
         if (vdb)
             throw std::runtime_error(o.output +
                                      ": --print-size scales a mesh; a .vdb keeps the preset's units (its voxel size)");
-        parsePrintSize(o.printSize);  // refused before any work
+        printMm = parsePrintSize(o.printSize);
     }
     if (!o.box.empty() && !(o.box[3] > o.box[0] && o.box[4] > o.box[1] && o.box[5] > o.box[2]))
         throw std::runtime_error("--box: its high corner X1,Y1,Z1 must exceed its low corner X0,Y0,Z0 on every axis");
@@ -206,7 +206,7 @@ int runMesh(const MeshOptions& o) {
         if (o.frames.empty()) {
             // The output's folder is checked before any work (AtomicFile creates nothing yet).
             { AtomicFile check(output); }
-            meshOne(o, sceneAtFrame(o.preset, o.frame), output, context, progress);
+            meshOne(o, printMm, sceneAtFrame(o.preset, o.frame), output, context, progress);
             return 0;
         }
         const Preset animated = loadSceneFile(o.preset, headlessGlslSampler());
@@ -217,7 +217,7 @@ int runMesh(const MeshOptions& o) {
         for (size_t i = 0; i < frames.size(); ++i) {
             progress.frameLabel = "frame " + std::to_string(i + 1) + "/" + std::to_string(frames.size()) + " (" +
                                   std::to_string(frames[i]) + "): ";
-            meshOne(o, presetAtFrame(animated, frames[i]), framePath(o.output, frames[i]), context, progress);
+            meshOne(o, printMm, presetAtFrame(animated, frames[i]), framePath(o.output, frames[i]), context, progress);
         }
         return 0;
     } catch (const mesh::MeshCancelled&) {

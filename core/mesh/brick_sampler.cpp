@@ -25,37 +25,6 @@ GridLayout checkedLayout(GridLayout l) {
     return l;
 }
 
-}  // namespace
-
-GridLayout layoutByResolution(const Formula& f, int resolution) {
-    if (resolution < 2) throw std::invalid_argument("resolution " + std::to_string(resolution) + " is under 2 voxels");
-    GridLayout l;
-    l.minCorner = vec3(-f.boundRadius);
-    l.voxel = 2.0 * f.boundRadius / resolution;
-    l.voxelsAcross = resolution;
-    return checkedLayout(l);
-}
-
-GridLayout layoutByVoxel(const Formula& f, double voxel) {
-    if (!(voxel > 0.0)) throw std::invalid_argument("voxel size " + std::to_string(voxel) + " is not positive");
-    const double across = std::ceil(2.0 * f.boundRadius / voxel);
-    if (across > 1e7)
-        throw std::invalid_argument("voxel size " + std::to_string(voxel) + " makes over 1e7 voxels across");
-    GridLayout l;
-    l.minCorner = vec3(-f.boundRadius);
-    l.voxel = voxel;
-    l.voxelsAcross = std::max(2, int(across));
-    return checkedLayout(l);
-}
-
-double Box::signedDistance(const vec3& p) const {
-    const vec3 centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
-    const vec3 q = glm::abs(p - centre) - half;
-    return glm::length(glm::max(q, 0.0)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0);
-}
-
-namespace {
-
 double largestSide(const Box& box) {
     const vec3 side = box.hi - box.lo;
     if (!(side.x > 0.0 && side.y > 0.0 && side.z > 0.0))
@@ -64,6 +33,12 @@ double largestSide(const Box& box) {
 }
 
 }  // namespace
+
+double Box::signedDistance(const vec3& p) const {
+    const vec3 centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    const vec3 q = glm::abs(p - centre) - half;
+    return glm::length(glm::max(q, 0.0)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0);
+}
 
 GridLayout layoutOfBox(const Box& box, int resolution) {
     if (resolution < 2) throw std::invalid_argument("resolution " + std::to_string(resolution) + " is under 2 voxels");
@@ -84,6 +59,15 @@ GridLayout layoutOfBoxByVoxel(const Box& box, double voxel) {
     l.voxel = voxel;
     l.voxelsAcross = std::max(2, int(across));
     return checkedLayout(l);
+}
+
+// The bound's cube is a box like any other.
+GridLayout layoutByResolution(const Formula& f, int resolution) {
+    return layoutOfBox({vec3(-f.boundRadius), vec3(f.boundRadius)}, resolution);
+}
+
+GridLayout layoutByVoxel(const Formula& f, double voxel) {
+    return layoutOfBoxByVoxel({vec3(-f.boundRadius), vec3(f.boundRadius)}, voxel);
 }
 
 void BoxClippedSampler::evaluate(std::span<const vec3> points, std::span<Evaluation> out) {

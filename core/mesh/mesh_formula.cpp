@@ -39,7 +39,7 @@ TriangleMesh meshVolume(FormulaSampler& sampler, const SdfVolume& volume, const 
 FormulaMesh meshFormula(FormulaSampler& sampler, const MeshSettings& settings) {
     FormulaVolume v = buildVolume(sampler, settings);
     TriangleMesh mesh = meshVolume(sampler, v.volume, settings);
-    return {std::move(v.plan), std::move(v.volume), std::move(mesh), v.cavityVoxelsFilled, v.thickenedVoxels};
+    return {std::move(v), std::move(mesh)};
 }
 
 FormulaMesh meshFormula(const Formula& f, const MeshSettings& settings) {

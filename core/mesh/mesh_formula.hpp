@@ -39,12 +39,8 @@ struct FormulaVolume {
     int64_t thickenedVoxels = 0;
 };
 
-struct FormulaMesh {
-    BrickPlan plan;
-    SdfVolume volume;
+struct FormulaMesh : FormulaVolume {
     TriangleMesh mesh;
-    int64_t cavityVoxelsFilled = 0;
-    int64_t thickenedVoxels = 0;
 };
 
 // The level set with the settings' edits (progress to MeshStages::kLevelSet). Throws

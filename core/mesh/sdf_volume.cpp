@@ -17,6 +17,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
 #include <mutex>
 
 #include "core/atomic_file.hpp"
@@ -40,14 +41,25 @@ using Tree = openvdb::FloatTree;
 using Leaf = Tree::LeafNodeType;
 static_assert(Leaf::DIM == kBrickSize, "a sampled brick fills one leaf node");
 
+// A voxel's six face neighbours: the lattice edges from it.
+std::array<openvdb::Coord, 6> faceNeighbours(const openvdb::Coord& c) {
+    std::array<openvdb::Coord, 6> n;
+    n.fill(c);
+    for (int axis = 0; axis < 3; ++axis) {
+        n[size_t(2 * axis)][axis] -= 1;
+        n[size_t(2 * axis + 1)][axis] += 1;
+    }
+    return n;
+}
+
 // Puts the zero crossing where the estimator's membership changes. The sampled values beside the
 // surface are estimates: outside, a lower bound of the distance (so the crossing volumeToMesh
 // interpolates lies too far out, and the solid comes out fat: 5 % too much volume on the
 // Mandelbulb at 128^3), inside an escape-time set no distance at all. Every lattice edge from an
-// outside voxel to an inside one is bisected on membership (kBisections steps from the estimate's bound, a 32nd of a
-// voxel), and both ends take the distance along their edges to the nearest crossing: the outside
-// end +t, the inside end -(1 - t) in voxels, so that the linear interpolation along that edge
-// lands on the crossing.
+// outside voxel to an inside one is bisected on membership (kBisections steps from the
+// estimate's bound, a 32nd of a voxel), and both ends take the distance along their edges to the
+// nearest crossing: the outside end +t, the inside end -(1 - t) in voxels, so that the linear
+// interpolation along that edge lands on the crossing.
 constexpr int kBisections = 5;
 
 void placeCrossingsOnMembership(openvdb::FloatGrid& grid, FormulaSampler& sampler, const GridLayout& layout,
@@ -63,17 +75,13 @@ void placeCrossingsOnMembership(openvdb::FloatGrid& grid, FormulaSampler& sample
             openvdb::tree::ValueAccessor<const Tree> neighbours(grid.constTree());
             for (auto v = leaf.beginValueOn(); v; ++v) {
                 if (*v >= 0.0f) continue;
-                for (int axis = 0; axis < 3; ++axis)
-                    for (int step = -1; step <= 1; step += 2) {
-                        openvdb::Coord n = v.getCoord();
-                        n[axis] += step;
-                        float value;
-                        if (neighbours.probeValue(n, value) && value >= 0.0f) {
-                            v.setValue(-background);
-                            axis = 3;
-                            break;
-                        }
+                for (const openvdb::Coord& n : faceNeighbours(v.getCoord())) {
+                    float value;
+                    if (neighbours.probeValue(n, value) && value >= 0.0f) {
+                        v.setValue(-background);
+                        break;
                     }
+                }
             }
         });
     }
@@ -88,8 +96,7 @@ void placeCrossingsOnMembership(openvdb::FloatGrid& grid, FormulaSampler& sample
     std::vector<vec3> points;
     std::vector<Evaluation> estimates;
     openvdb::tree::ValueAccessor<Tree> values(tree);
-    const vec3 first = layout.minCorner + 0.5 * layout.voxel;
-    auto world = [&](const openvdb::Coord& c) { return first + vec3(c.x(), c.y(), c.z()) * layout.voxel; };
+    auto world = [&](const openvdb::Coord& c) { return layout.voxelCentre(c.x(), c.y(), c.z()); };
     for (size_t slice = 0; slice < leafList.size(); slice += kLeavesPerSlice) {
         control.throwIfCancelled();
         edges.clear();
@@ -97,16 +104,13 @@ void placeCrossingsOnMembership(openvdb::FloatGrid& grid, FormulaSampler& sample
         for (size_t l = slice; l < end; ++l)
             for (auto v = leafList[l]->cbeginValueOn(); v; ++v) {
                 if (*v < 0.0f) continue;
-                for (int axis = 0; axis < 3; ++axis)
-                    for (int step = -1; step <= 1; step += 2) {
-                        openvdb::Coord n = v.getCoord();
-                        n[axis] += step;
-                        float value;
-                        // The outside end's estimate is a lower bound of the distance: no crossing
-                        // is nearer than that.
-                        if (values.probeValue(n, value) && value < 0.0f)
-                            edges.push_back({v.getCoord(), n, std::min(*v / voxel, 1.0f), 1.0f});
-                    }
+                for (const openvdb::Coord& n : faceNeighbours(v.getCoord())) {
+                    float value;
+                    // The outside end's estimate is a lower bound of the distance: no crossing is
+                    // nearer than that.
+                    if (values.probeValue(n, value) && value < 0.0f)
+                        edges.push_back({v.getCoord(), n, std::min(*v / voxel, 1.0f), 1.0f});
+                }
             }
         points.resize(edges.size());
         estimates.resize(edges.size());
@@ -151,6 +155,23 @@ void trimToBand(openvdb::FloatGrid& grid, float background) {
     openvdb::tools::pruneLevelSet(grid.tree());
 }
 
+// The level set re-normalised from its zero crossing: fast sweeping keeps the active topology and
+// recomputes every active value (openvdb/tools/FastSweeping.h, sdfToSdf), then the band is
+// trimmed again. A grid with no crossing is kept as it is (there is nothing to sweep from).
+openvdb::FloatGrid::Ptr swept(const openvdb::FloatGrid::Ptr& grid) {
+    const float background = grid->background();
+    const auto range = openvdb::tools::minMax(grid->tree());
+    openvdb::FloatGrid::Ptr out = grid;
+    if (range.min() < 0.0f && range.max() > 0.0f) {
+        out = openvdb::tools::sdfToSdf(*grid, 0.0f, 1);
+        out->setTransform(grid->transform().copy());
+        out->setGridClass(openvdb::GRID_LEVEL_SET);
+        out->setName(kVdbGridName);
+    }
+    trimToBand(*out, background);
+    return out;
+}
+
 }  // namespace
 
 struct SdfVolume::Impl {
@@ -171,7 +192,7 @@ SdfVolume SdfVolume::build(FormulaSampler& sampler, const BrickPlan& plan, int t
     // Index (i, j, k) is the lattice's voxel (i, j, k), whose centre is at
     // minCorner + (i + 0.5, j + 0.5, k + 0.5) * voxel.
     auto transform = openvdb::math::Transform::createLinearTransform(layout.voxel);
-    const vec3 first = layout.minCorner + 0.5 * layout.voxel;
+    const vec3 first = layout.voxelCentre(0, 0, 0);
     transform->postTranslate(openvdb::Vec3d(first.x, first.y, first.z));
     grid->setTransform(transform);
     grid->setGridClass(openvdb::GRID_LEVEL_SET);
@@ -200,20 +221,7 @@ SdfVolume SdfVolume::build(FormulaSampler& sampler, const BrickPlan& plan, int t
 
     auto impl = std::make_unique<Impl>();
     impl->threads = threads;
-    const auto range = openvdb::tools::minMax(tree);
-    const bool anySurface = range.min() < 0.0f && range.max() > 0.0f;
-    if (anySurface) {
-        // Fast sweeping keeps the active topology and recomputes every active value from the zero
-        // crossing (openvdb/tools/FastSweeping.h, sdfToSdf).
-        impl->grid = openvdb::tools::sdfToSdf(*grid, 0.0f, 1);
-        impl->grid->setTransform(transform);
-        impl->grid->setGridClass(openvdb::GRID_LEVEL_SET);
-        impl->grid->setName(kVdbGridName);
-        grid.reset();
-    } else {
-        impl->grid = grid;
-    }
-    trimToBand(*impl->grid, float(layout.background()));
+    impl->grid = swept(grid);
     return SdfVolume(std::move(impl));
 }
 
@@ -223,8 +231,7 @@ int64_t SdfVolume::insideVoxels() const {
 
 int64_t SdfVolume::fillCavities() {
     const auto cap = capThreads(impl_->threads);
-    const openvdb::FloatGrid::Ptr kept = impl_->grid;  // held while the sweep replaces it
-    openvdb::FloatGrid& grid = *kept;
+    openvdb::FloatGrid& grid = *impl_->grid;
     const int64_t before = insideVoxels();
     // Enclosed: the inside and the cavities; the cavities are the enclosed voxels outside.
     const auto enclosed = openvdb::tools::extractEnclosedRegion(grid);
@@ -237,11 +244,7 @@ int64_t SdfVolume::fillCavities() {
     });
     // The cavities' inactive tiles take the sign of the (now solid) band around them.
     openvdb::tools::signedFloodFill(grid.tree());
-    impl_->grid = openvdb::tools::sdfToSdf(grid, 0.0f, 1);
-    impl_->grid->setTransform(grid.transform().copy());
-    impl_->grid->setGridClass(openvdb::GRID_LEVEL_SET);
-    impl_->grid->setName(kVdbGridName);
-    trimToBand(*impl_->grid, background);
+    impl_->grid = swept(impl_->grid);
     return insideVoxels() - before;
 }
 
