@@ -32,6 +32,8 @@ layout(binding = 2) uniform sampler2D u_oldColourPoint;  // xyz: the colour's po
 // new frame's are u_newSize, which differs when dynamic resolution changes the grid between the
 // frames: the points are world points, so they scatter into any grid.
 uniform ivec2 u_newSize;
+// Old pixels per side that one invocation scatters (BLOCK 1: scatterBlock below).
+uniform int u_block;
 // Carried colours, u_newSize.x by 2 u_newSize.y: row y holds the colour whose point lies in pixel row y,
 // row u_newSize.y + y the one that pixel borrows when no point lies in it (see below).
 layout(rgba32f) uniform writeonly image2D u_reprojColor;     // rgb, a: carry age + 1
@@ -68,28 +70,14 @@ bool nearestWins(ivec2 texel, float t) {
 #endif
 }
 
-void main() {
-    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(px, u_size))) return;
+// Scatters the colour of old pixel px (of the old view), keyed by its own point, into the pixel
+// that point lies in and the neighbours it is near.
+void scatterColour(ivec2 px) {
     ivec2 target;
     vec2 imagePos;
     float t;
-#if CLAIM
-    // The vertex at this pixel's lower right corner, at the nearest distance of the four pixels
-    // that share the corner (of those whose ray is of the old view: a sliced reset leaves the
-    // pixels whose slice did not come yet with an older view's, u_generation).
-    float tMin = 1e30;
-    for (int k = 0; k < 4; ++k) {
-        vec4 centre = texelFetch(u_oldCentre, clamp(px + ivec2(k & 1, k >> 1), ivec2(0), u_size - 1), 0);
-        if (centre.w == float(u_generation)) tMin = min(tMin, centre.x);
-    }
-    vec3 rd = cameraRay(vec2(px) + 1.0);
-    if (tMin < 1e30 && projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t))
-        nearestWins(target, t);
-#endif
     vec4 colourPoint = texelFetch(u_oldColourPoint, px, 0);
-    bool ofOldView = texelFetch(u_oldCentre, px, 0).w == float(u_generation);
-    if (ofOldView && colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
+    if (colourPoint.w > 0.0 && projectToNewView(colourPoint.xyz, target, imagePos, t)) {
         vec4 color = vec4(texelFetch(u_oldImage, px, 0).rgb, texelFetch(u_oldCentre, px, 0).z + 1.0);
         vec4 carried = vec4(colourPoint.xyz, t);
         if (nearestWins(ivec2(target.x, u_newSize.y + target.y), t)) {
@@ -115,4 +103,78 @@ void main() {
             }
         }
     }
+}
+
+// One point per old pixel: the vertex at its lower right corner, at the nearest distance of the
+// four pixels that share the corner (of those whose ray is of the old view: a sliced reset leaves
+// the pixels whose slice did not come yet with an older view's, u_generation), and its colour.
+void scatterPixel(ivec2 px) {
+#if CLAIM
+    float tMin = 1e30;
+    for (int k = 0; k < 4; ++k) {
+        vec4 centre = texelFetch(u_oldCentre, clamp(px + ivec2(k & 1, k >> 1), ivec2(0), u_size - 1), 0);
+        if (centre.w == float(u_generation)) tMin = min(tMin, centre.x);
+    }
+    ivec2 target;
+    vec2 imagePos;
+    float t;
+    vec3 rd = cameraRay(vec2(px) + 1.0);
+    if (tMin < 1e30 && projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t)) nearestWins(target, t);
+#endif
+    if (texelFetch(u_oldCentre, px, 0).w == float(u_generation)) scatterColour(px);
+}
+
+// Blocks of old pixels, u_block per side (reproject_pass.cpp: reprojectBlock). Where motion moves
+// onto a grid several times smaller than the one at rest (the editor's dynamic resolution: 690x520
+// to 86x65), a point per old pixel cost 35-55 ms of CPU on llvmpipe for that frame, nearly all of
+// it each point's ray and projection, for a grid of 5600 pixels. A block sends one point for the
+// distances and one colour, its nearest pixel's; a new pixel still takes (ratio / block)^2 of each,
+// 4 at the editor's ratio of 8. The point stays a lower bound of every point the block's pixels
+// would have sent: it lies on the block's middle ray at their nearest distance, and their own
+// vertices lie within the block's spread (half the diagonal beyond one pixel, at that distance)
+// of that ray, which is taken off its key.
+void scatterBlock(ivec2 origin) {
+#if CLAIM
+    float tMin = 1e30;
+    for (int y = 0; y <= u_block; ++y)
+        for (int x = 0; x <= u_block; ++x) {
+            vec4 centre = texelFetch(u_oldCentre, min(origin + ivec2(x, y), u_size - 1), 0);
+            if (centre.w == float(u_generation)) tMin = min(tMin, centre.x);
+        }
+    ivec2 target;
+    vec2 imagePos;
+    float t;
+    vec3 rd = cameraRay(vec2(origin) + 0.5 * float(u_block + 1));
+    float spread = HALF_DIAGONAL * float(u_block - 1) * u_pixelAngle * tMin;
+    if (tMin < 1e30 && projectToNewView(u_cameraPosition + rd * tMin, target, imagePos, t))
+        nearestWins(target, max(t - spread, 0.0));
+#endif
+    ivec2 px = origin;
+    float nearest = 0.0;
+    bool ofOldView = false;
+    for (int y = 0; y < u_block; ++y)
+        for (int x = 0; x < u_block; ++x) {
+            ivec2 q = min(origin + ivec2(x, y), u_size - 1);
+            vec4 centre = texelFetch(u_oldCentre, q, 0);
+            if (centre.w == float(u_generation) && (!ofOldView || centre.x < nearest)) {
+                nearest = centre.x;
+                px = q;
+                ofOldView = true;
+            }
+        }
+    if (ofOldView) scatterColour(px);
+}
+
+// The two are compiled apart (BLOCK 0 and 1): under llvmpipe a branch on u_block made the point
+// per pixel 1.7x slower.
+void main() {
+#if BLOCK
+    ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * u_block;
+    if (any(greaterThanEqual(origin, u_size))) return;
+    scatterBlock(origin);
+#else
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(px, u_size))) return;
+    scatterPixel(px);
+#endif
 }

@@ -173,6 +173,8 @@ TEST(PortableLimits, ViewportPassesBindTheirImagesWithinEightUnits) {
                                                        "u_sampleColor", "u_samplePosition"}));
     EXPECT_EQ(units(p.reprojectClaim.images), (Names{"u_depth"}));
     EXPECT_EQ(units(p.reprojectWrite.images), (Names{"u_depth", "u_reprojCarried", "u_reprojColor"}));
+    EXPECT_EQ(units(p.reprojectBlockClaim.images), units(p.reprojectClaim.images));
+    EXPECT_EQ(units(p.reprojectBlockWrite.images), units(p.reprojectWrite.images));
     EXPECT_EQ(units(p.resolve.images), (Names{"u_image", "u_samplePosition", "u_shown"}));
     for (const gl::Program* program : p.all()) {
         for (const gl::ImageUniform& image : gl::activeImageUniforms(program->id())) {

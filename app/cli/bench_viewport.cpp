@@ -23,6 +23,7 @@ struct BenchViewportArgs {
     std::string preset;
     std::string path = "orbit";
     std::string size = "640x360";
+    std::string motionSize;  // empty: the moving frames keep --size
     int frames = 30;
     int steps = 30;
     int deferAfter = viewport::ViewportOptions{}.deferAfterSteps;
@@ -36,12 +37,12 @@ struct BenchViewportArgs {
          noRest = false, fromRest = false, json = false, timePasses = false;
 };
 
-std::pair<int, int> parseSize(const std::string& text) {
+std::pair<int, int> parseSize(const std::string& option, const std::string& text) {
     int w = 0, h = 0;
     char x = 0, extra = 0;
     if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 2 || h < 2 ||
         w > kMaxImageSide || h > kMaxImageSide)
-        throw std::runtime_error("--size: expected WxH (e.g. 640x360), got '" + text + "'");
+        throw std::runtime_error(option + ": expected WxH (e.g. 640x360), got '" + text + "'");
     return {w, h};
 }
 
@@ -55,7 +56,13 @@ int run(const BenchViewportArgs& a) {
     fs.path = *path;
     fs.frames = a.frames;
     fs.degreesPerFrame = a.degrees;
-    std::tie(fs.width, fs.height) = parseSize(a.size);
+    std::tie(fs.width, fs.height) = parseSize("--size", a.size);
+    if (!a.motionSize.empty()) {
+        if (!a.noError)
+            throw std::runtime_error(
+                "--motion-size: the moving frames' error needs references of their size; add --no-error");
+        std::tie(fs.motionWidth, fs.motionHeight) = parseSize("--motion-size", a.motionSize);
+    }
     fs.options.stepsPerFrame = a.steps;
     fs.options.deferAfterSteps = a.deferAfter;
     fs.options.maxSamples = a.samples;
@@ -86,6 +93,8 @@ int run(const BenchViewportArgs& a) {
         out["path"] = a.path;
         out["width"] = fs.width;
         out["height"] = fs.height;
+        out["motion_width"] = fs.motionWidth > 0 ? fs.motionWidth : fs.width;
+        out["motion_height"] = fs.motionHeight > 0 ? fs.motionHeight : fs.height;
         out["steps_per_frame"] = a.steps;
         out["defer_after_steps"] = a.deferAfter;
         out["reproject"] = fs.options.reproject;
@@ -176,6 +185,9 @@ void addBenchViewportCommand(CLI::App& app, Action& action) {
     cmd->add_option("--path", args->path, "camera path: orbit, dolly or pan")->capture_default_str();
     cmd->add_option("--frames", args->frames, "moving frames")->capture_default_str()->check(CLI::Range(1, 100000));
     cmd->add_option("--size", args->size, "viewport size WxH")->capture_default_str();
+    cmd->add_option("--motion-size", args->motionSize,
+                    "grid of the moving frames WxH, as the editor's dynamic resolution moves on a smaller one "
+                    "(default: --size; needs --no-error)");
     cmd->add_option("--steps", args->steps, "march steps per ray per frame")
         ->capture_default_str()
         ->check(CLI::Range(1, 10000));

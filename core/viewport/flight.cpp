@@ -41,11 +41,13 @@ FlightResult fly(const Preset& preset, const FlightSettings& fs) {
         renderUntilSettled(viewport, preset.formula, camera, preset.render, preset.shading, fs.width, fs.height,
                            fs.maxRestFrames);
     const int firstFrame = fs.fromRest ? 1 : 0;  // from rest, every counted frame moves
+    const int movingWidth = fs.motionWidth > 0 ? fs.motionWidth : fs.width;
+    const int movingHeight = fs.motionHeight > 0 ? fs.motionHeight : fs.height;
     double psnrSum = 0.0, psnrCentreSum = 0.0;
     for (int f = firstFrame; f < firstFrame + fs.frames; ++f) {
         camera = cameraOnPath(preset.camera, fs.path, f, fs.degreesPerFrame);
         FlightFrame frame;
-        frame.stats = timedFrame(viewport, preset, camera, fs.width, fs.height);
+        frame.stats = timedFrame(viewport, preset, camera, movingWidth, movingHeight);
         frame.psnrDb = frame.psnrCentreDb = NAN;
         if (fs.measureError) {
             const std::vector<float> image = viewport.readImage();

@@ -20,6 +20,9 @@ struct FlightSettings {
     bool fromRest = false;
     double degreesPerFrame = 0.5;
     int width = 640, height = 360;
+    // The grid of the moving frames when not 0 (the editor's dynamic resolution moves on a grid a
+    // fraction of the one at rest: the first moving frame scatters the whole rest grid into it).
+    int motionWidth = 0, motionHeight = 0;
     ViewportOptions options;
     // Per-frame PSNR against the fully converged render of the view (a fresh viewport settled at
     // options.maxSamples: the anti-aliased image the camera stopping there would give), and

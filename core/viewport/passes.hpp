@@ -28,6 +28,12 @@ struct FrameContext {
     int sliceIndex = 0;
 };
 
+// The old pixels per side that one invocation of the reprojection scatters: the whole ratio of the
+// grids, at most kMaxReprojectBlock, where motion moves onto a grid several times smaller (1 for
+// grids of about the same size). Pure, for the unit test.
+constexpr int kMaxReprojectBlock = 4;
+int reprojectBlock(int oldWidth, int oldHeight, int newWidth, int newHeight);
+
 // Reprojection (reproject_pass.cpp): scatters the previous frame's points (`from`'s images, seen
 // from the previous camera) into the reprojection target of `to` (MarchState::reprojDepth /
 // reprojColor / reprojCarried) for the current one. `from` and `to` are the same state unless

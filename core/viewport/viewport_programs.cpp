@@ -57,6 +57,7 @@ PassUniforms::PassUniforms(GLuint program)
     size = at("u_size");
     pixelAngle = at("u_pixelAngle");
     newSize = at("u_newSize");
+    block = at("u_block");
     stepsPerFrame = at("u_stepsPerFrame");
     maxSteps = at("u_maxSteps");
     atRest = at("u_atRest");
@@ -107,8 +108,10 @@ ViewportPrograms::ViewportPrograms(const Formula& f) : structure(f.structureKey(
     accumulateMoving = compileViewportPass("viewport_accumulate.comp", "#define AT_REST 0");
     resolve = compileViewportPass("viewport_resolve.comp");
     listGroups = compileViewportProgram("viewport_list_groups.comp");
-    reprojectClaim = compileViewportPass("viewport_reproject.comp", "#define CLAIM 1");
-    reprojectWrite = compileViewportPass("viewport_reproject.comp", "#define CLAIM 0");
+    reprojectClaim = compileViewportPass("viewport_reproject.comp", "#define CLAIM 1\n#define BLOCK 0");
+    reprojectWrite = compileViewportPass("viewport_reproject.comp", "#define CLAIM 0\n#define BLOCK 0");
+    reprojectBlockClaim = compileViewportPass("viewport_reproject.comp", "#define CLAIM 1\n#define BLOCK 1");
+    reprojectBlockWrite = compileViewportPass("viewport_reproject.comp", "#define CLAIM 0\n#define BLOCK 1");
     const GeneratedFormula none;
     display = withUniforms(
         gl::compileGraphics(assembleShader(none, "fullscreen.vert", concat({"fullscreen.vert"})),
@@ -127,7 +130,9 @@ std::vector<const gl::Program*> ViewportPrograms::all() const {
             &display.program,
             &listGroups,
             &reprojectClaim.program,
-            &reprojectWrite.program};
+            &reprojectWrite.program,
+            &reprojectBlockClaim.program,
+            &reprojectBlockWrite.program};
 }
 
 void setViewUniforms(const PassUniforms& at, const Camera& camera, int width, int height, const ThinLens& lens) {

@@ -22,7 +22,7 @@ struct PassUniforms {
     gl::CameraLocations camera;
     gl::CameraLocations newCamera;  // the reprojection's current camera (the points' is `camera`)
     gl::LensLocations lens;         // shaders/lens.glsl
-    GLint size = -1, pixelAngle = -1, newSize = -1;
+    GLint size = -1, pixelAngle = -1, newSize = -1, block = -1;
     GLint stepsPerFrame = -1, maxSteps = -1, atRest = -1, maxCarryFrames = -1, coarseHits = -1, deferAfter = -1,
           resetAll = -1;
     GLint sliceCount = -1, sliceIndex = -1, generation = -1;
@@ -68,6 +68,7 @@ struct ViewportPrograms {
     gl::Program listGroups;
     // The reprojection scatter's two passes (shaders/viewport_reproject.comp): claim, then write.
     Pass reprojectClaim, reprojectWrite;
+    Pass reprojectBlockClaim, reprojectBlockWrite;  // onto a grid several times smaller (reprojectBlock)
     // Every program above, for the checks that cover every program fraktal links.
     std::vector<const gl::Program*> all() const;
 };
