@@ -192,6 +192,11 @@ struct WaterCombine {
         ParamDecl{"iterations", ParamType::Float, {5.0, 0.0, 0.0}, 0.0, 20.0, "How many waves, each finer."},
         ParamDecl{"phase", ParamType::Float, {0.0, 0.0, 0.0}, -100.0, 100.0, "Moves the waves (animation)."},
         toggleParam("log_part", false, "On: the fractal's part is the log estimate (power formulas)."),
+        // Mandelbulber2 joins its water with whatever its DE function gives, the dIFS estimate too
+        // (calculate_distance.cpp, 2.20).
+        toggleParam("difs_part", false,
+                    "On: the fractal's part is the dIFS estimate, the least shape distance along the orbit (dIFS "
+                    "formulas); log_part and offset then play no part."),
     };
 
     static constexpr std::string_view glsl = R"(
@@ -219,6 +224,7 @@ struct WaterCombine {
     float r = length(p.xyz);
     float f = log_part > 0.5 ? (r > 1.0 ? 0.5 * max(log(r) - surfaceLogR, 0.0) * r / abs(p.w) : 0.0)
                              : (r - offset) / abs(p.w);
+    if (difs_part > 0.5) f = orbitDistance;
     float kb = max(blend, 1e-6), sgn = intersect >= 0.5 ? -1.0 : 1.0;
     float h = clamp(0.5 + 0.5 * sgn * (g - f) / kb, 0.0, 1.0);
     return sgn * (mix(sgn * g, sgn * f, h) - kb * h * (1.0 - h));
@@ -233,7 +239,7 @@ struct WaterCombine {
         q = q * co + glm::cross(k, q) * s + k * dot(k, q) * (1.0 - co);
         double g = q.z;
         if (g < 10.0 * waveLength * amplitude) g += waterHeight(q, waveLength, amplitude, iterations, phase);
-        const double f = fractalPart(p, offset, a.f(10));
+        const double f = a.f(11) > 0.5 ? p.orbitDistance : fractalPart(p, offset, a.f(10));
         return joinParts(g, f, intersect, blend);
     }
 };

@@ -1,5 +1,6 @@
 // The block registry: one line per block. A block that lacks part of its declaration fails to
 // compile here (see the concepts in core/block.hpp).
+#include "formulas/abox_fold4d.hpp"
 #include "formulas/abs_add_conditional.hpp"
 #include "formulas/abs_fold.hpp"
 #include "formulas/add_c.hpp"
@@ -7,6 +8,7 @@
 #include "formulas/add_c_symmetric.hpp"
 #include "formulas/aexion.hpp"
 #include "formulas/amazing_surf.hpp"
+#include "formulas/axis_remainder.hpp"
 #include "formulas/axis_scale.hpp"
 #include "formulas/benesi.hpp"
 #include "formulas/benesi_folds.hpp"
@@ -14,6 +16,7 @@
 #include "formulas/box_fold.hpp"
 #include "formulas/box_fold_axes.hpp"
 #include "formulas/box_fold_soft.hpp"
+#include "formulas/box_fold_value.hpp"
 #include "formulas/coastalbrot.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/derivative_tweak.hpp"
@@ -46,6 +49,7 @@
 #include "formulas/quaternion.hpp"
 #include "formulas/riemann_sphere.hpp"
 #include "formulas/rotate.hpp"
+#include "formulas/rotate4d.hpp"
 #include "formulas/scale.hpp"
 #include "formulas/scale_vary.hpp"
 #include "formulas/scator.hpp"
@@ -135,6 +139,10 @@ constexpr std::array kBlocks{
     describe<Sierpinski4d>(),
     describe<MandelbulbKaliMulti>(),
     describe<ScatorSquare>(),
+    describe<AxisRemainder>(),
+    describe<BoxFoldValue>(),
+    describe<AboxFold4d>(),
+    describe<Rotate4d>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -795,18 +795,38 @@ TEST(FractImport, DifsBoxDiagonalsFollowMandelbulber2) {
                   "slot 1 (difs_box_diagonal_v3)", "polygonal fold");
 }
 
-// Mandelbulber2's example files of the dIFS diagonal boxes import with nothing refused, but the one
-// with a water surface beside the dIFS estimate.
+// Mandelbulber2's example files of the dIFS diagonal boxes import with nothing refused, the one with
+// a water surface beside the dIFS estimate too.
 TEST(FractImport, DifsBoxDiagonalExamplesImport) {
     const std::string gm = "Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/";
     for (const std::string& file :
          {gm + "DIFS Box DiagV1 pseudoKl.fract", gm + "DIFS Box DiagV3 asurf.fract",
-          gm + "DIFS Box DiagV3 complex primitive.fract", std::string("../formula/img/difs_box_diagonal_v1.fract")})
+          gm + "DIFS Box DiagV3 complex primitive.fract", gm + "DIFS Box DiagV1 complex primitive.fract",
+          std::string("../formula/img/difs_box_diagonal_v1.fract")})
         expectExampleImports(file);
-    const mb2::FractImport water = mb2::importFract(mb2::loadFractFile(
-        fs::path("/usr/share/mandelbulber2/examples") / (gm + "DIFS Box DiagV1 complex primitive.fract")));
-    ASSERT_FALSE(water.faithful());
-    for (const mb2::ImportItem& item : water.unsupported) EXPECT_EQ(item.where, "main") << item.text();
+}
+
+// Water beside the dIFS estimate (Mandelbulber2 joins its water with whatever its DE function gives:
+// calculate_distance.cpp): the water combine over the least shape distance along the orbit, so the
+// estimate is the lesser of the dIFS estimate and the water's. The dIFS example with water imports.
+TEST(FractImport, WaterBesideTheDifsEstimate) {
+    const std::string body =
+        "[main_parameters]\nformula_1 600;\nprimitive_water_1_enabled true;\n"
+        "primitive_water_1_position 0 0 -6;\n";
+    const mb2::FractImport r = importText(body);
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Node& e = r.preset.formula.estimator;
+    ASSERT_EQ(e.block->id, "water_combine");
+    EXPECT_EQ(param(e, "difs_part"), 1.0);
+    EXPECT_EQ(param(e, "log_part"), 0.0);
+    // Without the water the dIFS estimate alone; far above the water (its waves reach 0.1 x 0.2 x
+    // 4.3 at most) the two agree, and below it the water's is the lesser.
+    const mb2::FractImport dry = importText("[main_parameters]\nformula_1 600;\n");
+    ASSERT_EQ(dry.preset.formula.estimator.block->id, "difs");
+    for (const vec3& p : test::randomPoints(200, 1.5, 7))
+        EXPECT_NEAR(distanceEstimate(r.preset.formula, p), distanceEstimate(dry.preset.formula, p), 1e-9);
+    EXPECT_LT(distanceEstimate(r.preset.formula, vec3(0.3, -0.2, -7.0)), 0.0);
+    expectExampleImports("difs_tree.fract");
 }
 
 // Mandelbulber2's 4D transforms after a 3D formula: with the fourth coordinate 0 throughout they
@@ -970,6 +990,27 @@ TEST(FractImport, BenesiPowersAndThePineTree) {
     EXPECT_GT(inside, 40);  // 73 of 2000
 }
 
+// Whether each of 2000 points of [-extent, extent]^3 escapes by Mandelbulber2's orbit written out
+// (`escapes`) against fraktal's membership of formula f: at most 1 % may differ (a fold's edge), and
+// 1 % to 99 % are inside.
+void expectEscapesFollow(const Formula& f, double extent, const std::string& what,
+                         const std::function<bool(const vec3&)>& escapes) {
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> u(-extent, extent);
+    int inside = 0, differ = 0;
+    const int points = 2000;
+    for (int k = 0; k < points; ++k) {
+        const vec3 point = randomVec3(u, random);
+        const bool escaped = escapes(point);
+        inside += !escaped;
+        differ += evaluate(f, point).escaped != escaped;
+    }
+    std::printf("%s: %d of %d inside, %d differ\n", what.c_str(), inside, points, differ);
+    EXPECT_LE(differ, points / 100);
+    EXPECT_GT(inside, points / 100);
+    EXPECT_LT(inside, points - points / 100);
+}
+
 // A formula imported from a settings file's body, against Mandelbulber2's own iteration written out
 // here in double (`step`, from fractal_formulas.cpp, with c added where Mandelbulber2 adds it):
 // its blocks, and an orbit from each of 2000 points escapes where the written-out one passes the
@@ -1000,25 +1041,14 @@ void expectOrbitsFollowMandelbulber2(const OrbitCase& c) {
     const std::vector<std::string> blocks = blockIds(r.preset.formula);
     EXPECT_EQ(blocks, c.blocks);
     const Formula& f = r.preset.formula;
-    std::mt19937 random(5);
-    std::uniform_real_distribution<double> u(-c.extent, c.extent);
-    int inside = 0, differ = 0;
-    const int points = 2000;
-    for (int k = 0; k < points; ++k) {
-        const vec3 point = randomVec3(u, random);
+    expectEscapesFollow(f, c.extent, blocks.front(), [&](const vec3& point) {
         vec3 z = point;
-        bool escaped = false;
-        for (int i = 0; i < f.iterations && !escaped; ++i) {
+        for (int i = 0; i < f.iterations; ++i) {
             z = c.stepAt ? c.stepAt(z, point, i) : c.step(z, point);
-            escaped = !(length(z) <= f.bailout);
+            if (!(length(z) <= f.bailout)) return true;
         }
-        inside += !escaped;
-        differ += evaluate(f, point).escaped != escaped;
-    }
-    std::printf("%s: %d of %d inside, %d differ\n", blocks.front().c_str(), inside, points, differ);
-    EXPECT_LE(differ, points / 100);
-    EXPECT_GT(inside, points / 100);
-    EXPECT_LT(inside, points - points / 100);
+        return false;
+    });
 }
 
 // msltoe's three Riemann spheres, each with values off its defaults (no c: Mandelbulber2 adds none).
@@ -1894,8 +1924,7 @@ TEST(FractImport, PseudoKleinianMod1AndAmazingSurfFollowMandelbulber2sOrbits) {
 }
 
 // Mandelbulber2's example files that use the pseudo-Kleinian mod 1 and Amazing Surf import with
-// nothing refused, but for the hybrid whose modulus Mandelbulber bulb has no blocks and the Amazing
-// Surf whose point takes none of its sphere fold's factor.
+// nothing refused, but for the Amazing Surf whose point takes none of its sphere fold's factor.
 TEST(FractImport, PseudoKleinianMod1AndAmazingSurfExamplesImport) {
     for (const char* file : {"pseudo kleinian mod 001.fract", "monte carlo global illumination.fract"})
         expectExampleImports(file);
@@ -1904,13 +1933,195 @@ TEST(FractImport, PseudoKleinianMod1AndAmazingSurfExamplesImport) {
     EXPECT_FALSE(shareZero.faithful());
     for (const mb2::ImportItem& item : shareZero.unsupported)
         EXPECT_TRUE(item.where == "slot 1 (amazing_surf)" && item.what.starts_with("transf_scale_1 0")) << item.text();
-    const fs::path examples = "/usr/share/mandelbulber2/examples";
-    const mb2::FractImport hybrid = mb2::importFract(mb2::loadFractFile(
-        examples /
-        "Daniel Luchansky collection - license Creative Commons -CC-BY 4.0/pseuklein x mod mandelbulb 002.fract"));
-    EXPECT_FALSE(hybrid.faithful());
-    for (const mb2::ImportItem& item : hybrid.unsupported)
-        EXPECT_EQ(item.where, "slot 2 (modulus_mandelbulb)") << item.text();
+}
+
+// mancoast's modulus Mandelbulb against 2.20's ModulusMandelbulbIteration (fractal_formulas.cpp)
+// written out: the Mandelbulb of power 5 on the latitude asin(z / r) with its angle offsets (beta
+// 10 degrees on the latitude, alpha -20 on the azimuth), y replaced by fmod(y, 2), then c. Then
+// Daniel Luchansky's two pseudo-Kleinian hybrids with it import.
+TEST(FractImport, ModulusMandelbulbFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"formula_1 131;\nN 6;\n[fractal_1]\npower 5;\nbeta_angle_offset 10;\nalpha_angle_offset -20;\n",
+         {"mandelbulb_sine", "axis_remainder", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             const double r = length(z);
+             const double th = (std::asin(z.z / r) + glm::radians(10.0)) * 5.0;
+             const double ph = (std::atan2(z.y, z.x) + glm::radians(-20.0)) * 5.0;
+             const double rp = std::pow(r, 5.0);
+             return vec3(std::cos(th) * std::cos(ph) * rp, std::fmod(std::cos(th) * std::sin(ph) * rp, 2.0),
+                         std::sin(th) * rp) +
+                    c;
+         }});
+    const std::string dl = "Daniel Luchansky collection - license Creative Commons -CC-BY 4.0/";
+    for (const char* file : {"pseuklein x mod mandelbulb.fract", "pseuklein x mod mandelbulb 002.fract"})
+        expectExampleImports(dl + file);
+}
+
+// abox4d against 2.20's Abox4dIteration (fractal_formulas.cpp) written out in four dimensions: w
+// plus the Cpara parabola -0.3 + 0.2 i + 0.001 (-4) i^2, Tglad's fold per axis at (1.1, 0.9, 1, 1.2),
+// the sphere fold of squared radii 0.2 and 0.9 measured on (|v|^2)^0.8 and scaling about
+// -(0.1, 0, -0.05, 0.2), the scale -2.5, the turns in the six planes (10, -20, 30 and 5, -15, 25
+// degrees) from iteration 2 on (option R), the constant (0.1, 0, 0, -0.2), then c = (point, 0):
+// where the 4D orbit escapes past the bailout (100) against fraktal's membership.
+// The varying scale and an inner radius above the fixed one are refused by name, and so is c added
+// to an orbit that starts off w = 0; both example files import.
+TEST(FractImport, Abox4dFollowsMandelbulber2sOrbits) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 116;\nN 8;\n[fractal_1]\nCpara_enabledParab_false true;\n"
+        "Cpara_parab_offset0 -0,3;\nCpara_parab_slope 0,2;\nCpara_parab_scale -4;\n"
+        "transf_offset_1111 1,1 0,9 1 1,2;\ntransf_offset_0000 0,1 0 -0,05 0,2;\ntransf_minR2_p25 0,2;\n"
+        "transf_maxR2_1 0,9;\nmandelbox_vary_rpower 0,8;\nmandelbox_scale -2,5;\n"
+        "transf_function_enabledR_false true;\ntransf_rotation44a 10 -20 30;\ntransf_rotation44b 5 -15 25;\n"
+        "transf_start_iterations_R 2;\ntransf_addition_constant_0000 0,1 0 0 -0,2;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(blockIds(r.preset.formula),
+              (std::vector<std::string>{"abox_fold4d", "scale", "rotate4d", "translate", "add_c"}));
+    using D4 = glm::dvec4;
+    auto escapes = [](const vec3& point) {
+        D4 z(point, 0.0);
+        for (int i = 0; i < 8; ++i) {
+            z.w += -0.3 + 0.2 * i + 0.001 * -4.0 * i * i;
+            const D4 limit(1.1, 0.9, 1.0, 1.2), offset(0.1, 0.0, -0.05, 0.2);
+            for (int k = 0; k < 4; ++k) z[k] = std::abs(z[k] + limit[k]) - std::abs(z[k] - limit[k]) - z[k];
+            const double rr = std::pow(dot(z, z), 0.8);
+            z += offset;
+            if (rr < 0.2)
+                z *= 0.9 / 0.2;
+            else if (rr < 0.9)
+                z *= 0.9 / rr;
+            z -= offset;
+            z *= -2.5;
+            if (i >= 2) {
+                auto turn = [&z](int u, int w, double degrees) {
+                    const double a = glm::radians(degrees), x = z[u], y = z[w];
+                    z[u] = x * std::cos(a) + y * std::sin(a);
+                    z[w] = -x * std::sin(a) + y * std::cos(a);
+                };
+                turn(0, 1, 10.0);
+                turn(1, 2, -20.0);
+                turn(0, 2, 30.0);
+                turn(0, 3, 5.0);
+                turn(1, 3, -15.0);
+                turn(2, 3, 25.0);
+            }
+            z += D4(0.1, 0.0, 0.0, -0.2) + D4(point, 0.0);
+            if (glm::length(z) > 100.0) return true;
+        }
+        return false;
+    };
+    expectEscapesFollow(r.preset.formula, 4.0, "abox4d", escapes);
+
+    expectRefused("formula_1 116;\n[fractal_1]\nmandelbox_vary_scale_vary 0,1;\n", "slot 1 (abox4d)",
+                  "varies with the iteration");
+    expectRefused("formula_1 116;\n[fractal_1]\ntransf_minR2_p25 1,5;\n", "slot 1 (abox4d)", "jumps");
+    expectRefused("formula_1 116;\ninitial_waxis 0,2;\n", "slot 1 (abox4d)", "c's fourth coordinate");
+    EXPECT_TRUE(
+        importText("[main_parameters]\nformula_1 116;\ninitial_waxis 0,2;\ndont_add_c_constant_1 true;\n").faithful());
+    expectExampleImports("Robert Pancoast collection - license Creative Commons (CC-BY 4.0)/Abox4D8K.fract");
+    expectExampleImports("Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/aBox 4D.fract");
+}
+
+// Kali's Mandelbulb against 2.20's MandelbulbKaliIteration (fractal_formulas.cpp) written out: |y|
+// first (options Ay), the latitude acos(z / r) plus 10 degrees times 4 x 0.9 and the azimuth atan(y
+// / x), the point of those angles at r, then its latitude plus -5 degrees and its azimuth atan(y /
+// x) times 4 x 1.2, r^4 times the point of those, then c. An azimuth offset is refused by name;
+// mandelbulb_kali 001 imports.
+TEST(FractImport, MandelbulbKaliFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"formula_1 92;\nN 6;\n[fractal_1]\ntransf_pwr_8 4;\ntransf_scaleA_1 0,9;\ntransf_scaleB_1 1,2;\n"
+         "beta_angle_offset 10;\ntransf_beta_angle_offset -5;\ntransf_function_enabled_false true;\n"
+         "transf_function_enabledAy_false true;\n",
+         {"plane_fold", "mandelbulb_kali_multi", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z(v.x, std::abs(v.y), v.z);
+             const double r = length(z);
+             double th = (std::acos(z.z / r) + glm::radians(10.0)) * 4.0 * 0.9;
+             double ph = std::atan(z.y / z.x);
+             z = r * vec3(std::sin(th) * std::cos(ph), std::sin(ph) * std::sin(th), std::cos(th));
+             th = std::acos(z.z / r) + glm::radians(-5.0);
+             ph = std::atan(z.y / z.x) * 4.0 * 1.2;
+             return std::pow(r, 4.0) * vec3(std::sin(th) * std::cos(ph), std::sin(ph) * std::sin(th), std::cos(th)) + c;
+         }});
+    expectRefused("formula_1 92;\n[fractal_1]\nalpha_angle_offset 20;\n", "slot 1 (mandelbulb_kali)", "azimuth offset");
+    expectExampleImports("mandelbulb_kali 001.fract");
+}
+
+// The rotation whose angles vary with the iteration, in a hybrid with the power-2 bulb, against
+// 2.20's TransfRotationVaryV1Iteration and MandelbulbIteration (fractal_formulas.cpp) written out:
+// on the even iterations i the point turns about x, then y, then z (right-handed, as
+// RotateAroundVectorByAngle) by (10, 0, -15) degrees before iteration 2, plus (30, -20, 10) (i - 2)
+// / 4 on iterations 2 to 5, plus all of it from 6 on; on the odd ones the bulb and c. Membership on
+// 2000 points; a ramp whose nodes fraktal cannot hold is refused, and Graeme McLaren's
+// abox_mod11_rotVaryV1 (its ramp over 20 iterations, on every other one) imports.
+TEST(FractImport, RotationVaryFollowsMandelbulber2sOrbits) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 1036;\nformula_2 2;\nN 10;\n[fractal_1]\n"
+        "transf_rotation 10 0 -15;\ntransf_offset_000 30 -20 10;\ntransf_start_iterations_250 2;\n"
+        "transf_stop_iterations 6;\n[fractal_2]\npower 2;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Formula& f = r.preset.formula;
+    auto escapes = [&f](const vec3& point) {
+        vec3 z = point;
+        for (int i = 0; i < f.iterations; ++i) {
+            if (i % 2 == 0) {
+                vec3 degrees(10.0, 0.0, -15.0);
+                if (i >= 2) degrees += vec3(30.0, -20.0, 10.0) * (i < 6 ? (i - 2) / 4.0 : 1.0);
+                for (int axis = 0; axis < 3; ++axis) {
+                    vec3 k(0.0);
+                    k[axis] = 1.0;
+                    const double a = glm::radians(degrees[axis]);
+                    z = z * std::cos(a) + glm::cross(k, z) * std::sin(a) + k * dot(k, z) * (1.0 - std::cos(a));
+                }
+            } else {
+                const double rr = length(z), th = std::asin(z.z / rr) * 2.0, ph = std::atan2(z.y, z.x) * 2.0;
+                z = rr * rr * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + point;
+            }
+            if (!(length(z) <= f.bailout)) return true;
+        }
+        return false;
+    };
+    expectEscapesFollow(f, 1.5, "transf_rotation_vary_v1", escapes);
+    // A node an iteration of the ramp: over 200 iterations more than fraktal holds.
+    expectRefused(
+        "hybrid_fractal_enable true;\nformula_1 1036;\nformula_2 2;\nformula_iterations_1 2;\n[fractal_1]\n"
+        "transf_offset_000 1 0 0;\ntransf_start_iterations_250 0;\ntransf_stop_iterations 200;\n",
+        "main", "a sequence of more than 64 nodes");
+    expectExampleImports(
+        "Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/abox_mod11_rotVaryV1.fract");
+}
+
+// Mandelbulber2's box folds with a folding value other than twice the limit against 2.20's
+// BoxFolding (the global fold of the main parameters, limit 1.5 and value 3.3) and
+// MandelboxIteration (limit 1, value 2.3) written out: x above the limit becomes value - x, below
+// minus the limit -value - x; then the Mandelbox's sphere fold (0.5, 1), its scale 2 and c. Robert
+// Pancoast's hybrid77 (a global fold of limit 3 and value 6.3) imports.
+TEST(FractImport, BoxFoldsWithTheirOwnValueFollowMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"formula_1 8;\nN 10;\nbox_folding true;\nbox_folding_limit 1,5;\nbox_folding_value 3,3;\n[fractal_1]\n"
+         "mandelbox_folding_value 2,3;\n",
+         {"box_fold_value", "box_fold_value", "sphere_fold", "scale", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z = v;
+             auto fold = [&z](double limit, double value) {
+                 for (int k = 0; k < 3; ++k) {
+                     if (z[k] > limit)
+                         z[k] = value - z[k];
+                     else if (z[k] < -limit)
+                         z[k] = -value - z[k];
+                 }
+             };
+             fold(1.5, 3.3);
+             fold(1.0, 2.3);
+             const double rr = dot(z, z);
+             z *= rr < 0.25 ? 4.0 : rr < 1.0 ? 1.0 / rr : 1.0;
+             return z * 2.0 + c;
+         },
+         8.0});
+    // At twice the limit it is the plain box fold.
+    const mb2::FractImport plain = importText(
+        "[main_parameters]\nformula_1 8;\nbox_folding true;\nbox_folding_limit 1,5;\nbox_folding_value 3;\n");
+    EXPECT_EQ(blockIds(plain.preset.formula).front(), "box_fold");
+    expectExampleImports("Robert Pancoast collection - license Creative Commons (CC-BY 4.0)/hybrid77.fract");
 }
 
 // Graeme McLaren's sine and cosine maximum on all three axes (its own periods, the product halved,
@@ -2814,6 +3025,16 @@ std::vector<Expected> fixedSet() {
         {"formula/img/abox_mod11.fract", ""},
         // Mandelbulber2's dIFS diagonal box: the box measured after the step, over its DE |s| + 1.
         {"formula/img/difs_box_diagonal_v1.fract", ""},
+        // Water beside Mandelbulber2's dIFS estimate (water_combine's dIFS part).
+        {"examples/difs_tree.fract", ""},
+        // The Mandelbox in four dimensions, its fourth coordinate moved by the Cpara parabola
+        // (abox_fold4d).
+        {"formula/img/abox4d.fract", ""},
+        // mancoast's modulus Mandelbulb (axis_remainder) beside the pseudo-Kleinian: a view from
+        // inside, which checks that the import runs (FractImport.ModulusMandelbulbFollowsMandelbulber2sOrbits
+        // checks the orbit).
+        {"examples/Daniel Luchansky collection - license Creative Commons -CC-BY 4.0/pseuklein x mod mandelbulb.fract",
+         ""},
     };
 }
 

@@ -12,10 +12,12 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <utility>
 
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/slow_stack.hpp"
@@ -255,21 +257,36 @@ TEST(SafeStep, PowerBlocksBoundTheirJacobianAtIntegerPowers) {
 // Where the check's explanation names no block for a slow stack (explainSlowStack: no stack
 // without one of its steps marches kFasterBy faster, and no step declares a jump or a growing
 // stretch): the one step of a stack of one, or the one step that every stack without one of the
-// others keeps where it measures (still slow, then: the slowness stays with that step); -1 when
+// others keeps where it measures (still slow, then: the slowness stays with that step); where
+// those stacks keep more than one step, the kept step that the check names in one of them (a
+// 4D turn beside a Menger step and a dIFS cylinder: without the plane fold between them the
+// check names the turn, and without the turn or the Menger step there is no object); -1 when
 // none stands out. `measured`: whether any stack without one of the steps could be measured.
 int stepTheSlownessStaysWith(const Formula& f, const Camera& camera, const SafeStepOptions& options, bool& measured) {
     measured = false;
     if (f.nodes.size() == 1) return 0;
     std::vector<int> keptByEvery(f.nodes.size(), 1);
+    std::vector<std::pair<size_t, Formula>> measuredWithout;  // the step taken out, the stack fitted
     for (size_t k = 0; k < f.nodes.size(); ++k) {
         Formula without = f;
         without.nodes.erase(without.nodes.begin() + long(k));
-        if (!canBoundEscape(without.nodes) || !fittedAndMeasured(without, camera, options)) continue;
+        if (!canBoundEscape(without.nodes)) continue;
+        std::optional<Formula> fitted = fittedAndMeasured(without, camera, options);
+        if (!fitted) continue;
         measured = true;
         keptByEvery[k] = 0;
+        measuredWithout.emplace_back(k, std::move(*fitted));
     }
-    if (!measured || std::count(keptByEvery.begin(), keptByEvery.end(), 1) != 1) return -1;
-    return int(std::find(keptByEvery.begin(), keptByEvery.end(), 1) - keptByEvery.begin());
+    const long kept = std::count(keptByEvery.begin(), keptByEvery.end(), 1);
+    if (!measured || kept == 0) return -1;
+    if (kept == 1) return int(std::find(keptByEvery.begin(), keptByEvery.end(), 1) - keptByEvery.begin());
+    for (const auto& [k, without] : measuredWithout) {
+        const SlowStack why = explainSlowStack(without, camera, options);
+        if (why.block < 0) continue;
+        const size_t step = size_t(why.block) + (size_t(why.block) >= k ? 1 : 0);
+        if (keptByEvery[step]) return int(step);
+    }
+    return -1;
 }
 
 // Steps the random stacks below leave out, each for its reason. Every other step of the registry

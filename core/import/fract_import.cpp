@@ -44,11 +44,13 @@ constexpr int kAmazingSurfId = 73;
 constexpr int kHypercomplexId = 4;
 constexpr int kAexionId = 19;
 // The formulas that carry the point's fourth coordinate through fraktal's loop (formulas/four_d.hpp).
-constexpr int kSierpinski4dId = 109, kMenger4dId = 111;
+constexpr int kSierpinski4dId = 109, kMenger4dId = 111, kAbox4dId = 116;
 // Formulas whose 4D orbit a fraktal estimator runs whole (alone in a file).
 bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula == kAexionId; }
 // Formulas whose steps carry the fourth coordinate through fraktal's loop.
-bool carriesFourthCoordinate(int formula) { return formula == kMenger4dId || formula == kSierpinski4dId; }
+bool carriesFourthCoordinate(int formula) {
+    return formula == kMenger4dId || formula == kSierpinski4dId || formula == kAbox4dId;
+}
 
 const FormulaInfo* findFormula(int id) {
     for (const FormulaInfo& f : kFormulas)
@@ -398,11 +400,20 @@ void sphereFold(NodeBuilder& b, double minRadius, double fixedRadius, const vec3
           {N::f("min_radius", std::max(minRadius, 0.001)), N::f("fixed_radius", fixedRadius), N::v("offset", offset)});
 }
 
+// Mandelbulber2's box fold at `limit` with its folding `value` (BoxFolding, MandelboxIteration):
+// the box fold where the value is twice the limit, else the fold that jumps there.
+void boxFold(NodeBuilder& b, double limit, double value) {
+    if (std::abs(value - 2.0 * limit) <= 1e-9)
+        b.add("box_fold", {N::f("limit", limit)});
+    else
+        b.add("box_fold_value", {N::f("limit", limit), N::f("value", value)});
+}
+
 void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     const double limit = r.number("mandelbox_folding_limit"), value = r.number("mandelbox_folding_value");
-    if (std::abs(value - 2.0 * limit) > 1e-9)
+    if (std::abs(value - 2.0 * limit) > 1e-9 && r.boolean("mandelbox_rotations_enabled"))
         r.unsupported("mandelbox_folding_value " + fmt(value) + " with mandelbox_folding_limit " + fmt(limit) +
-                      ": fraktal's box fold reflects at the limit (value = 2 x limit)");
+                      " and mandelbox_rotations_enabled: the tilted fold that does not reflect at its limit");
     if (r.boolean("mandelbox_rotations_enabled")) {
         // Each axis folds in tilted frames: at +limit in the frame R0 (mandelbox_rotation_neg_N),
         // else at -limit in R1 (_pos_N). The plane x . R0^T e = limit and then x . R1^T e = -limit;
@@ -420,7 +431,7 @@ void mapMandelbox(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
                                 "the tilted box fold as two plane folds per axis (the same within 3 x "
                                 "the limit)"});
     } else {
-        b.add("box_fold", {N::f("limit", limit)});
+        boxFold(b, limit, value);
     }
     sphereFold(b, r.number("mandelbox_folding_min_radius"), r.number("mandelbox_folding_fixed_radius"),
                r.vector("mandelbox_offset"));
@@ -592,6 +603,14 @@ void mapMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
                               N::f("phi_offset", r.number("alpha_angle_offset"))});
 }
 
+// mancoast's modulus Mandelbulb (2.20's ModulusMandelbulbIteration in fractal_formulas.cpp): the
+// Mandelbulb's sine bulb with its angle offsets, then y replaced by its remainder after division by
+// 2 (C's fmod, keeping y's sign); Mandelbulber2's derivative is the Mandelbulb's.
+void mapModulusMandelbulb(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
+    mapMandelbulb(r, b, approximated);
+    b.add("axis_remainder", {N::v("divisor", vec3(0.0, 2.0, 0.0))});
+}
+
 // The Mandelbulb whose power varies with the iteration (mandelbulb_vary_power_v1): the sine bulb of
 // Mandelbulber2's power n before transf_start_iterations_250, n + transf_offset_0 (i - start) /
 // (stop - start) on iteration i of [start, stop) (stop transf_stop_iterations), n +
@@ -611,6 +630,32 @@ void mapMandelbulbVaryPowerV1(Reader& r, NodeBuilder& b, std::vector<ImportItem>
     bulb(0, std::min(start, stop), power);
     for (int i = std::max(start, 0); i < stop; ++i) bulb(i, i + 1, power + offset * (i - start) / (stop - start));
     bulb(std::max(stop, 0), kMaxIterations, power + offset);
+}
+
+// The rotation whose angles vary with the iteration (2.20's TransfRotationVaryV1Iteration in
+// fractal_formulas.cpp): transf_rotation (degrees about x, then y, then z) before
+// transf_start_iterations_250, plus transf_offset_000 (i - start) / (stop - start) on iteration i of
+// [start, stop) (stop transf_stop_iterations), plus transf_offset_000 from stop on; one rotation a
+// window, as the varying power above.
+void mapTransfRotationVaryV1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const vec3 angles = r.vector("transf_rotation"), offset = r.vector("transf_offset_000");
+    const int start = r.integer("transf_start_iterations_250"), stop = r.integer("transf_stop_iterations");
+    auto turn = [&](int from, int to, const vec3& degrees) {
+        b.within(from, to, [&] { b.rotation(setRotation2(degrees)); });
+    };
+    // Mandelbulber2 varies nothing where the range is empty (stop = start).
+    if (length(offset) == 0.0 || stop == start) return turn(0, kMaxIterations, angles);
+    // A stop before the start: the whole offset from the start on.
+    if (stop < start) {
+        turn(0, start, angles);
+        return turn(start, kMaxIterations, angles + offset);
+    }
+    // One node an iteration of the ramp: only those on iterations this slot runs are kept, and a ramp
+    // that makes more nodes than fraktal holds is refused with the sequence (importFractal).
+    turn(0, start, angles);
+    for (int i = std::max(start, 0); i < stop; ++i)
+        turn(i, i + 1, angles + offset * double(i - start) / double(stop - start));
+    turn(std::max(stop, 0), kMaxIterations, angles + offset);
 }
 
 // White's power-2 triplex, z' = -2 z sqrt(x^2 + y^2): the latitude bulb of power 2, z mirrored.
@@ -1413,6 +1458,36 @@ void mapMenger4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     if (derivative != 1.0) b.add("derivative_tweak", {N::f("scale", derivative), N::f("offset", 0.0)});
 }
 
+// abox4d (2.20's Abox4dIteration in fractal_formulas.cpp), the Mandelbox in 4D: w moved by the
+// Cpara parabola of the iteration (option Cpara_enabledParab_false), Tglad's fold of each
+// coordinate at transf_offset_1111, the sphere fold of squared radii transf_minR2_p25 and
+// transf_maxR2_1 measured on |v|^(2 mandelbox_vary_rpower) and scaling about -transf_offset_0000
+// (abox_fold4d), the scale, the turns in the six planes of transf_rotation44a and _44b (option R,
+// window R: rotate4d), then transf_addition_constant_0000; c follows. Refused: the scale that
+// varies with the iteration, and an inner radius above the fixed one (where Mandelbulber2's fold
+// jumps).
+void mapAbox4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
+    const double minR2 = r.number("transf_minR2_p25"), maxR2 = r.number("transf_maxR2_1");
+    if (minR2 > maxR2)
+        r.unsupported("transf_minR2_p25 " + fmt(minR2) + " above transf_maxR2_1 " + fmt(maxR2) +
+                      ": a sphere fold that jumps at its inner radius");
+    const glm::dvec4 limit = r.vector4("transf_offset_1111"), offset = r.vector4("transf_offset_0000"),
+                     add = r.vector4("transf_addition_constant_0000");
+    const vec3 parabola =
+        r.boolean("Cpara_enabledParab_false")
+            ? vec3(r.number("Cpara_parab_offset0"), r.number("Cpara_parab_slope"), r.number("Cpara_parab_scale"))
+            : vec3(0.0);
+    b.add("abox_fold4d", {N::v("limit", vec3(limit)), N::f("limit_w", limit.w), N::f("min_r2", minR2),
+                          N::f("max_r2", maxR2), N::f("power", r.number("mandelbox_vary_rpower")),
+                          N::v("offset", vec3(offset)), N::f("offset_w", offset.w), N::v("w_parabola", parabola)});
+    b.add("scale", {N::f("scale", r.number("mandelbox_scale"))});
+    const vec3 turns = r.vector("transf_rotation44a"), turnsW = r.vector("transf_rotation44b");
+    if (r.boolean("transf_function_enabledR_false") && length(turns) + length(turnsW) > 0.0)
+        inWindow(r, b, "R", "R", [&] { b.add("rotate4d", {N::v("angles", turns), N::v("angles_w", turnsW)}); });
+    if (glm::length(add) > 0.0) b.add("translate", {N::v("offset", vec3(add)), N::f("offset_w", add.w)});
+}
+
 // sierpinski4d (Sierpinski4dIteration): the six mirrors, the scale transf_scaleA_2, minus
 // transf_offset_1111 in window C; then, with analyticDE_enabled_false, the derivative times
 // analyticDE_scale_1 plus analyticDE_offset_0. Its turn in 4D's six planes (option R) is refused.
@@ -1946,18 +2021,24 @@ bool secondChoice(Reader& r, const std::string& key, const std::string& second) 
     return v == "1" || v == second;
 }
 
+// The Kali bulbs' abs of the axes transf_function_enabledAx/Ay/Az_false choose, with the option
+// transf_function_enabled_false: plane folds through the origin.
+void absOfChosenAxes(Reader& r, NodeBuilder& b) {
+    if (!r.boolean("transf_function_enabled_false")) return;
+    for (int k = 0; k < 3; ++k)
+        if (r.boolean(std::string("transf_function_enabledA") + "xyz"[k] + "_false")) {
+            vec3 normal(0.0);
+            normal[k] = 1.0;
+            b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+        }
+}
+
 // Kali's multi Mandelbulb: the axes made positive first where transf_function_enabled_false and
 // enabledA{x,y,z}_false say (each a plane fold), the bulb of both measurements, then the formula's
 // own multiple of c in mandelbulbMulti_order_of_xyz_C (xyz, or yxz as add_c_axes' swap_xy).
 void mapMandelbulbKaliMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("analyticDE_enabled_false", "a tweak of the bulb's running derivative");
-    if (r.boolean("transf_function_enabled_false"))
-        for (int k = 0; k < 3; ++k)
-            if (r.boolean(std::string("transf_function_enabledA") + "xyz"[k] + "_false")) {
-                vec3 normal(0.0);
-                normal[k] = 1.0;
-                b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
-            }
+    absOfChosenAxes(r, b);
     const int order = axisOrder(r, "mandelbulbMulti_order_of_xyz");
     const bool own = r.boolean("transf_function_enabledx_false");  // the second measurement's own choices
     const int second = own ? axisOrder(r, "mandelbulbMulti_order_of_xyz_2") : order;
@@ -1982,6 +2063,26 @@ void mapMandelbulbKaliMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
                              ": c's axes in an order other than xyz or yxz");
     b.add("add_c_axes", {N::v("weights", r.vector("transf_constant_multiplierC_111")), N::f("julia", 0.0),
                          N::f("swap_xy", orderC == 2 ? 1.0 : 0.0)});
+}
+
+// Kali's Mandelbulb (2.20's MandelbulbKaliIteration in fractal_formulas.cpp) is the multi bulb's
+// first case: the latitude acos(z / r) and the azimuth atan(y / x) (axis order zyx, the quotient's
+// atan both times), theta times n transf_scaleA_1, the unit point of those angles, then its
+// latitude plus transf_beta_angle_offset and its azimuth times n transf_scaleB_1, r^n times the
+// point. Kali measures the second azimuth afresh where the multi bulb adds it to the first and
+// halves the sum; the two agree where the first lies in (-90, 90) degrees, which atan's quotient
+// keeps it in without an azimuth offset: alpha_angle_offset is refused. The abs of chosen axes
+// before it, as the multi bulb's; its DE tweak is refused.
+void mapMandelbulbKali(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("analyticDE_enabled_false", "a tweak of the bulb's running derivative");
+    r.mustBeDefault("alpha_angle_offset", "an azimuth offset, which Kali's second measurement wraps back");
+    absOfChosenAxes(r, b);
+    constexpr double kZyx = 5.0;
+    b.add("mandelbulb_kali_multi",
+          {N::f("power", r.number("transf_pwr_8")), N::f("order", kZyx), N::f("order_second", kZyx),
+           N::f("phi_atan", 1.0), N::f("phi_atan_second", 1.0), N::f("theta_scale", r.number("transf_scaleA_1")),
+           N::f("phi_scale", r.number("transf_scaleB_1")), N::f("theta_offset", r.number("beta_angle_offset")),
+           N::f("theta_offset_second", r.number("transf_beta_angle_offset"))});
 }
 
 // Benesi's power-2 Mandelbulb (benesi_pwr2_mandelbulb): Benesi's T1 on its window, his power 2 with
@@ -2139,6 +2240,10 @@ constexpr Mapping kMappings[] = {
     {604, mapDifsSphere},
     {600, mapDifsBoxDiagonalV1},
     {78, mapMandelbulbVaryPowerV1},
+    {131, mapModulusMandelbulb},
+    {116, mapAbox4d},
+    {1036, mapTransfRotationVaryV1},
+    {92, mapMandelbulbKali},
     {95, mapMengerMiddleMod},
     {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
@@ -2438,6 +2543,7 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
     const std::string_view estimator = f.estimator.block ? f.estimator.block->id : "";
     const bool linear = estimator == "escape_linear";
     const bool logPart = estimator == "escape_log" || estimator == "escape_gradient" || estimator == "escape_potential";
+    const bool difs = estimator == "difs";
     // Interior mode changes the fractal's estimate alone, before the cut and the primitives: the
     // objects come after it (evaluate()), where a combine estimator would mix them into it.
     const bool combines = (linear || logPart) && f.hitRule != HitRule::InteriorWalls;
@@ -2452,6 +2558,7 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
         f.estimator = std::move(nodes.front());
         f.estimator.values[size_t(f.estimator.block->paramIndex("offset"))].x = offset;
         f.estimator.values[size_t(f.estimator.block->paramIndex("log_part"))].x = logPart ? 1.0 : 0.0;
+        if (const int i = f.estimator.block->paramIndex("difs_part"); i >= 0) f.estimator.values[size_t(i)].x = difs;
     };
     const vec3 limitLow = main.vector("limit_min"), limitHigh = main.vector("limit_max");
     if (limits && primitives.empty() && combines) {
@@ -2494,9 +2601,9 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
         if (water) {
             // The water combine: the estimator itself, so one water surface beside a linear or log
             // estimate, whatever else is there.
-            if (waters > 1 || !(linear || logPart)) {
+            if (waters > 1 || !(linear || logPart || difs)) {
                 main.unsupported(where +
-                                 ": water beside a DE function other than linear or log, or a second water "
+                                 ": water beside a DE function other than linear, log or dIFS, or a second water "
                                  "surface");
                 continue;
             }
@@ -2630,8 +2737,8 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
         std::any_of(slots.begin(), slots.end(), [&](int k) { return formulaOf(k) == kHypercomplexId; });
     if (!hypercomplex && !carriesW)
         main.mustBeDefault("initial_waxis" + own,
-                           "a fourth coordinate beside formulas that do not carry it (fraktal's 4D steps are menger4d "
-                           "and sierpinski4d)");
+                           "a fourth coordinate beside formulas that do not carry it (fraktal's 4D formulas are "
+                           "menger4d, sierpinski4d and abox4d)");
 
     // ---- Each slot's nodes ----
     // Files up to 2.04 store the factor as one number (MB2's Compatibility() makes it a vector).
@@ -2676,11 +2783,7 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
             bailout = std::max(bailout, info->bailout);
             continue;
         }
-        if (boxFolding) {
-            if (std::abs(main.number("box_folding_value") - 2.0 * main.number("box_folding_limit")) > 1e-9)
-                main.unsupported("box_folding_value: a global box fold that does not reflect at its limit");
-            b.add("box_fold", {N::f("limit", main.number("box_folding_limit"))});
-        }
+        if (boxFolding) boxFold(b, main.number("box_folding_limit"), main.number("box_folding_value"));
         if (sphericalFolding)
             sphereFold(b, main.number("spherical_folding_inner"), main.number("spherical_folding_outer"));
         const MapFn map = findMapping(formula);
@@ -2693,6 +2796,11 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
         map(r, b, out.approximated);
         const bool dontAddC = main.boolean("dont_add_c_constant_" + n);
         const bool addC = info->c == CAdd::Yes ? !dontAddC : info->c == CAdd::No ? dontAddC : false;
+        // Mandelbulber2's c is (point, initial_waxis) (compute_fractal.cpp); fraktal's add_c adds
+        // its xyz alone, so a 4D orbit that adds c must start from w = 0.
+        if (addC && !julia && carriesFourthCoordinate(formula) && main.number("initial_waxis" + own) != 0.0)
+            r.unsupported("initial_waxis " + fmt(main.number("initial_waxis" + own)) +
+                          " with c added: c's fourth coordinate, which fraktal's add_c leaves out");
         // aboxMod1 and amazing surf add c with x and y exchanged (compute_fractal.cpp).
         const bool swapC = formula == kAboxMod1Id || formula == kAmazingSurfId;
         if (addC && (perAxisFactor || swapC)) {
