@@ -378,7 +378,7 @@ TEST(FragImport, CommandLine) {
 // and `fraktal check` on the written preset finds it safe on the check's own rays.
 TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
     const test::Sandbox box("fraktal_frag_measure_");
-    for (const char* name : {"menger.frag", "init_bulb.frag"}) {
+    for (const char* name : {"menger.frag", "init_bulb.frag", "annotations.frag"}) {
         SCOPED_TRACE(name);
         const std::string out = box.path(std::string(name) + ".json");
         const auto imported = test::runCli("import '" + fragPath(name).string() + "' -o '" + out + "'");
@@ -391,6 +391,11 @@ TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
         EXPECT_EQ(checked.exitCode, 0) << checked.output;
         // The bound is fitted to the object on the GPU: smaller than the view's framing sphere.
         EXPECT_LT(p.formula.boundRadius, unmeasured.formula.boundRadius);
+        // FragM's hit test and fraktal's both compare the scaled estimate: the threshold follows the
+        // factor, so the surface drawn stays where FragM draws it.
+        EXPECT_NEAR(p.render.detail / p.formula.deFactor, unmeasured.render.detail / unmeasured.formula.deFactor,
+                    1e-4 * unmeasured.render.detail / unmeasured.formula.deFactor)
+            << "threshold " << p.render.detail << " at factor " << p.formula.deFactor;
         if (std::string(name) == "menger.frag") {  // the sponge fills the cube [-1, 1]^3
             EXPECT_TRUE(p.formula.boundRadius >= std::sqrt(3.0) && p.formula.boundRadius < 1.35 * std::sqrt(3.0))
                 << p.formula.boundRadius;
