@@ -19,13 +19,13 @@ namespace {
 
 const std::string kSize = "160x120";
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+std::string shellQuoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 // The host's line for `frag`: "KIND ok HITS DE_PER_PIXEL" or "KIND fail REASON".
 test::CliRun runHost(const std::filesystem::path& frag, const std::string& mask) {
-    return test::runShell(std::string(FRAKTAL_FRAG_HOST) + " " + quoted(frag) + " --include-dir " +
-                          quoted(test::sourceDir() / "tests/data/frag_host") + " --size " + kSize + " -o " +
-                          quoted(mask) + " 2>/dev/null");
+    return test::runShell(std::string(FRAKTAL_FRAG_HOST) + " " + shellQuoted(frag) + " --include-dir " +
+                          shellQuoted(test::sourceDir() / "tests/data/frag_host") + " --size " + kSize + " -o " +
+                          shellQuoted(mask) + " 2>/dev/null");
 }
 
 }  // namespace
@@ -41,16 +41,18 @@ TEST(FragHost, EveryImportingTestFragDrawsWhatItsOwnRaytracerDraws) {
         SCOPED_TRACE(frag.filename().string());
         const std::string stem = frag.stem().string(), json = box.path(stem + ".json");
         const std::string mask = box.path(stem + "_host.png"), exr = box.path(stem + ".exr");
-        if (test::runCli("import " + quoted(frag) + " -o " + quoted(json) + " -q").exitCode != 0)
+        if (test::runCli("import " + shellQuoted(frag) + " -o " + shellQuoted(json) + " -q").exitCode != 0)
             continue;  // refused: frag_import_test checks the reasons
         const test::CliRun host = runHost(frag, mask);
         ASSERT_EQ(host.exitCode, 0) << "the host cannot run a frag fraktal imports: " << host.output;
         ASSERT_EQ(host.output.rfind("de ok ", 0), 0u) << host.output;
         // At the bench's size with FragM's hit cone, as bench/frag/run.sh renders it.
-        const test::CliRun sized = test::runShell("python3 " + quoted(test::sourceDir() / "bench/frag/at_size.py") +
-                                                  " " + quoted(json) + " " + kSize + " 2>&1");
+        const test::CliRun sized =
+            test::runShell("python3 " + shellQuoted(test::sourceDir() / "bench/frag/at_size.py") + " " +
+                           shellQuoted(json) + " " + kSize + " 2>&1");
         ASSERT_EQ(sized.exitCode, 0) << sized.output;
-        const test::CliRun render = test::runCli("render " + quoted(json) + " --spp 1 -o " + quoted(exr) + " -q");
+        const test::CliRun render =
+            test::runCli("render " + shellQuoted(json) + " --spp 1 -o " + shellQuoted(exr) + " -q");
         ASSERT_EQ(render.exitCode, 0) << render.output;
         const silhouette::Agreement a =
             silhouette::compare(silhouette::readExrMask(exr), silhouette::readPngMask(mask));

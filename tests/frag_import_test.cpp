@@ -406,15 +406,33 @@ TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
     }
 }
 
-// A uniform of a kind fraktal's parameters lack (a vec4 slider) is named and refuses the file;
-// lenient, it keeps the preset's value as a constant in the DE.
+// A uniform of a kind fraktal's parameters lack (a colour with an intensity, read by the DE as a
+// shape) is named and refuses the file; lenient, it keeps the preset's value as a constant in the DE.
 TEST(FragImport, UnmappableUniformIsNamedAndKeptAsAConstantWhenLenient) {
     const std::string why = refusal("unmappable.frag");
-    EXPECT_NE(why.find("uniform Offset4: a slider of type vec4 has no fraktal parameter"), std::string::npos) << why;
+    EXPECT_NE(why.find("uniform Tint4: a floatcolor of type vec4 has no fraktal parameter"), std::string::npos) << why;
     const Preset p = importFrag("unmappable.frag", {.lenient = true}).preset;
     EXPECT_TRUE(p.formula.estimator.block->params.empty());
-    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("vec4(p, 0.0) - (vec4(0.25, 0.0, 0.0, 0.0))"),
+    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("length(p - (vec4(0.25, 0.0, 0.0, 0.75)).xyz)"),
               std::string::npos)
         << p.formula.estimator.block->glsl;
-    EXPECT_NE(p.description.find("Offset4"), std::string::npos) << p.description;
+    EXPECT_NE(p.description.find("Tint4"), std::string::npos) << p.description;
+}
+
+// A vec4 slider (a quaternion's constant, a 4D offset) becomes two parameters, its xyz and its w,
+// joined again where the DE reads it: the file imports strictly, with the preset's values.
+TEST(FragImport, Vec4SliderBecomesAVec3AndAFloat) {
+    const Preset p = importFrag("vec4_slider.frag").preset;
+    const auto* xyz = param(p.formula, "Offset4");
+    const auto* w = param(p.formula, "Offset4_w");
+    ASSERT_TRUE(xyz && w);
+    EXPECT_EQ(xyz->type, ParamType::Vec3);
+    EXPECT_EQ(w->type, ParamType::Float);
+    EXPECT_EQ(xyz->min, -1.0);
+    EXPECT_EQ(w->max, 1.0);
+    EXPECT_EQ(value(p.formula, "Offset4"), vec3(0.25, 0.0, 0.0));
+    EXPECT_EQ(value(p.formula, "Offset4_w").x, 0.6);
+    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("vec4(p, 0.0) - vec4(Offset4, Offset4_w)"),
+              std::string::npos)
+        << p.formula.estimator.block->glsl;
 }

@@ -69,7 +69,7 @@ one() {  # FILE: one row of results.tsv into $out/rows
       else
         read -r _ fpx _ < <("$tmp/iou" "$out/img/$key.exr" "$out/img/$key.exr")
         status=imported-no-reference
-        reason="host: ${hostLine#* fail }"
+        reason=""  # the host column says why there is no reference
       fi
     else
       status=render-failed
@@ -82,13 +82,16 @@ one() {  # FILE: one row of results.tsv into $out/rows
     status=refused
     if [ -z "$reason" ]; then
       status=error
-      reason=$(tail -1 "$work/import.log" | sed -E 's/^fraktal: error: //; s|^/[^:]*\.frag(:[0-9]+)?: ||' |
+      # A GLSL error names its first line (the log's last lines are often warnings).
+      reason=$( (grep -m1 -E 'GLSL line [0-9]+: error' "$work/import.log" || tail -1 "$work/import.log") |
+        sed -E 's/^fraktal: error: //; s|^/[^:]*\.frag(:[0-9]+)?: ||; s/^estimator .*(GLSL line)/\1/' |
         tr '\t' ' ' | cut -c1-160)
     fi
   fi
-  [ "$hostStatus" != ok ] && [ -z "$reason" ] && reason="host: ${hostLine#* fail }"
+  local hostColumn=ok
+  [ "$hostStatus" = ok ] || hostColumn="fail: ${hostLine#* fail }"
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$rel" "$kind" "$status" "$reason" "$iou" "$fpx" \
-    "$hostPx" "$hostDe" "$fde" "$took" "$hostStatus" > "$out/rows/$key.tsv"
+    "$hostPx" "$hostDe" "$fde" "$took" "$(printf '%s' "$hostColumn" | tr '\t' ' ' | cut -c1-200)" > "$out/rows/$key.tsv"
   rm -rf "$work"
 }
 export -f one

@@ -3,7 +3,16 @@
 import collections
 import csv
 import os
+import re
 import sys
+
+
+def kind_of(reason):
+    """A refusal reason without the names and values of the file it came from, to rank them."""
+    reason = re.sub(r"^uniform (?!(time|Eye|Target|Up|FOV):)\w+: ", "uniform NAME: ", reason)
+    reason = re.sub(r"\(`(\w+) \w+`\)", r"(`\1 NAME`)", reason)
+    reason = re.sub(r"(it keeps the value|the value) .*$", r"\1 it has", reason)
+    return re.sub(r"^GLSL line \d+: ", "GLSL: ", reason)
 
 
 def load(path):
@@ -49,7 +58,7 @@ print("3D DE frags refused or failing, by the first reason the import names:")
 print()
 print("| reason | frags |")
 print("|---|---|")
-for reason, k in collections.Counter(r["reason"] for r in everything
+for reason, k in collections.Counter(kind_of(r["reason"]) for r in everything
                                      if r["kind"] == "de" and r["status"] in ("refused", "error",
                                                                               "render-failed")).most_common(30):
     print(f"| {reason} | {k} |")
@@ -58,8 +67,7 @@ print("3D DE frags whose own raytracer the host could not run:")
 print()
 print("| why | frags |")
 print("|---|---|")
-for reason, k in collections.Counter(r["reason"] if r["reason"].startswith("host:") else "host: " + r["reason"]
-                                     for r in everything if r["kind"] == "de" and r["host"] != "ok").most_common(15):
+for reason, k in collections.Counter(r["host"] for r in everything if r["kind"] == "de" and r["host"] != "ok").most_common(15):
     print(f"| {reason[:150]} | {k} |")
 print()
 print("Imported, IoU below 0.9 (worst first):")

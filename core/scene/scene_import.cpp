@@ -159,6 +159,14 @@ ImportedScene importFragScene(const std::filesystem::path& path, const SceneImpo
     refuseUnlessLenient(path, scene, options);
     result.preset.name = path.stem().string();
     measureFragStep(result, scene, options);
+    // The raytracer's floor joins the measured DE; the bound reaches as far from the eye as FragM
+    // marches to it (within what a preset holds), since fraktal draws nothing outside the bound.
+    if (!result.objects.empty()) {
+        Formula& f = result.preset.formula;
+        f.objects = result.objects;
+        f.boundRadius =
+            std::max(f.boundRadius, std::min(length(result.preset.camera.position) + result.objectReach, 1e3));
+    }
     result.preset.description = frag::importDescription(file, result);
     keepReachOf256Steps(result.preset);
     scene.preset = readBack(path, result.preset);
