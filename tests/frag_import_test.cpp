@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/editor/document/formula_edits.hpp"
@@ -407,13 +408,14 @@ TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
 }
 
 // A uniform of a kind fraktal's parameters lack (a colour with an intensity, read by the DE as a
-// shape) is named and refuses the file; lenient, it keeps the preset's value as a constant in the DE.
+// shape) is named and refuses the file; lenient, it keeps its value as a constant in the DE: the
+// colour and the intensity, as FragM sets the vec4.
 TEST(FragImport, UnmappableUniformIsNamedAndKeptAsAConstantWhenLenient) {
     const std::string why = refusal("unmappable.frag");
     EXPECT_NE(why.find("uniform Tint4: a floatcolor of type vec4 has no fraktal parameter"), std::string::npos) << why;
     const Preset p = importFrag("unmappable.frag", {.lenient = true}).preset;
     EXPECT_TRUE(p.formula.estimator.block->params.empty());
-    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("length(p - (vec4(0.25, 0.0, 0.0, 0.75)).xyz)"),
+    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("length(p - (vec4(1.0, 0.25, 0.0, 0.5)).xyz)"),
               std::string::npos)
         << p.formula.estimator.block->glsl;
     EXPECT_NE(p.description.find("Tint4"), std::string::npos) << p.description;
@@ -435,4 +437,47 @@ TEST(FragImport, Vec4SliderBecomesAVec3AndAFloat) {
     EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("vec4(p, 0.0) - vec4(Offset4, Offset4_w)"),
               std::string::npos)
         << p.formula.estimator.block->glsl;
+}
+
+// 3D.frag's camera read by the DE (a tessellation keyed to the eye) keeps the imported camera's
+// value, so the still is FragM's; the file imports strictly and says what differs.
+TEST(FragImport, CameraReadByTheDEKeepsTheImportedCamera) {
+    const ImportedScene s = importFrag("camera_in_de.frag");
+    const std::string glsl(s.preset.formula.estimator.block->glsl);
+    EXPECT_NE(glsl.find("normalize((vec3(1.5, 0.5, 3.5)))"), std::string::npos) << glsl;
+    EXPECT_EQ(s.preset.camera.position, vec3(1.5, 0.5, 3.5));
+    const bool named = std::any_of(s.approximated.begin(), s.approximated.end(),
+                                   [](const std::string& a) { return a.find("uniform Eye") != std::string::npos; });
+    EXPECT_TRUE(named) << "the approximation is not named";
+}
+
+// A preset without a camera line sees the frag from 3D.frag's default camera: Eye (0, 0, -10).
+TEST(FragImport, NoCameraLineIs3DFragsDefaultCamera) {
+    const Preset p = importFrag("default_camera.frag").preset;
+    EXPECT_EQ(p.camera.position, vec3(0.0, 0.0, -10.0));
+    EXPECT_EQ(p.camera.target, vec3(0.0));
+    EXPECT_NEAR(p.camera.fovY, 2.0 * std::atan(0.4) * 180.0 / M_PI, 1e-9);
+}
+
+// DE-Raytracer's floor (EnableFloor) is a plane object: its frame's z is the floor's normal, turned
+// to hold the camera on its empty side (FragM's floor is met from either side), and the bound
+// reaches as far as FragM marches to it.
+TEST(FragImport, FloorBecomesAPlaneObjectFacingTheCamera) {
+    const vec3 n = normalize(vec3(-0.08, 1.0, 0.03));
+    for (const char* presetName : {"Default", "Below"}) {
+        SCOPED_TRACE(presetName);
+        SceneImportOptions options;
+        options.fragPreset = presetName;
+        const Preset p = importFrag("floor.frag", options).preset;
+        ASSERT_EQ(p.formula.objects.size(), 1u);
+        const SceneObject& floor = p.formula.objects[0];
+        EXPECT_EQ(floor.block, findObject("plane"));
+        // Solid below z = 0 of its frame: the camera's side is the frame's +z.
+        const vec3 up = std::string(presetName) == "Default" ? n : -n;
+        EXPECT_LT(length(vec3(floor.localFromWorld() * up) - vec3(0.0, 0.0, 1.0)), 1e-9);
+        EXPECT_NEAR(dot(floor.center, n), -0.7, 1e-9) << "the plane passes at FloorHeight";
+        EXPECT_GT(dot(p.camera.position - floor.center, up), 0.0);
+        EXPECT_GE(p.formula.boundRadius, 1000.0) << "FragM marches to the floor as far as MaxDistance";
+    }
+    EXPECT_TRUE(importFrag("menger.frag").preset.formula.objects.empty()) << "no floor where the preset has none";
 }

@@ -16,6 +16,7 @@
 // they are written, which read 0 there as on NVIDIA), as an artist's machine would run the frag.
 //
 // Usage: bench_frag_host FRAG [--include-dir DIR]... [--preset NAME] [--size WxH] [-o MASK.png]
+//        [--set NAME=V[,V...]]... (a uniform's value after the preset's)
 //        [--dump-glsl FILE] (the vertex and the instrumented fragment GLSL, for reading)
 // Prints one line: `KIND ok HIT_PIXELS DE_PER_PIXEL` (DE_PER_PIXEL "-" where the DE could not be
 // wrapped), or `KIND fail REASON` (exit 1). KIND: `de` (a 3D camera and a `float DE(vec3)`),
@@ -221,6 +222,7 @@ struct Options {
     fs::path frag, out, dump;
     std::vector<fs::path> includeDirs;
     std::string preset;
+    std::vector<std::pair<std::string, std::vector<double>>> set;  // --set NAME=V[,V...]: after the preset
     int width = 160, height = 120;
 };
 
@@ -240,7 +242,19 @@ Options parseArguments(int argc, char** argv) {
             o.out = next();
         else if (a == "--dump-glsl")
             o.dump = next();
-        else if (a == "--size") {
+        else if (a == "--set") {
+            const std::string kv = next();
+            const size_t eq = kv.find('=');
+            if (eq == std::string::npos) throw std::runtime_error("--set wants NAME=VALUE[,VALUE...]");
+            std::vector<double> v;
+            for (size_t at = eq + 1; at <= kv.size();) {
+                size_t comma = kv.find(',', at);
+                if (comma == std::string::npos) comma = kv.size();
+                v.push_back(std::stod(kv.substr(at, comma - at)));
+                at = comma + 1;
+            }
+            o.set.emplace_back(kv.substr(0, eq), v);
+        } else if (a == "--size") {
             if (std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1)
                 throw std::runtime_error("--size wants WxH");
         } else if (o.frag.empty())
@@ -307,7 +321,9 @@ int main(int argc, char** argv) try {
     const GLuint prog = link(vs, fs);
     glUseProgram(prog);
     for (const frag::FragUniform& u : file.uniforms) {
-        const std::vector<double> v = uniformValue(u, preset);
+        std::vector<double> v = uniformValue(u, preset);
+        for (const auto& [name, value] : o.set)
+            if (name == u.name) v = value;
         if (std::getenv("FRAKTAL_HOST_VERBOSE")) {
             std::fprintf(stderr, "%s %s (%s):", u.type.c_str(), u.name.c_str(), frag::uniformKindName(u.kind));
             for (double x : v) std::fprintf(stderr, " %g", x);

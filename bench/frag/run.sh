@@ -41,8 +41,10 @@ one() {  # FILE: one row of results.tsv into $out/rows
   work="$tmp/$key"
   mkdir -p "$work"
   # shellcheck disable=SC2086  # INCLUDES is a list of words
-  hostLine=$(timeout 180 "$host" "$file" $INCLUDES --size "$size" -o "$out/img/host_$key.png" 2> "$work/host.err" ||
-    true)
+  # AntiAliasScale 0: FragM jitters each frame's sample over about a pixel for its progressive
+  # anti-aliasing; at one sample per pixel both programs sample the pixel's centre.
+  hostLine=$(timeout 180 "$host" "$file" $INCLUDES --size "$size" --set AntiAliasScale=0 \
+    -o "$out/img/host_$key.png" 2> "$work/host.err" || true)
   [ -z "$hostLine" ] && hostLine="? fail $( (tail -1 "$work/host.err" || echo "timed out") | tr '\t' ' ' | cut -c1-160)"
   [ -z "${hostLine#* fail }" ] && hostLine="${hostLine}timed out or crashed"
   kind=${hostLine%% *}
@@ -102,7 +104,7 @@ find "$folder" -name '*.frag' -not -path '*/Include/*' -print0 | sort -z |
   printf 'file\tkind\tstatus\treason\tiou\tfraktal_px\thost_px\thost_de_per_px\tfraktal_de_per_px\timport_s\thost\n'
   cat "$out"/rows/*.tsv | sort
 } > "$out/results.tsv"
-python3 "$root/bench/frag/summarize.py" "$out/results.tsv" > "$out/summary.md"
+python3 "$root/bench/frag/summarize.py" --pixels $(( ${size%x*} * ${size#*x} )) "$out/results.tsv" > "$out/summary.md"
 # The contact sheet: the 12 worst matches.
 mapfile -t worst < <(awk -F'\t' 'NR > 1 && $5 != "" { print $5 "\t" $1 }' "$out/results.tsv" | sort -g | head -12 |
   cut -f2 | sed 's/\.frag$//' | tr -c 'A-Za-z0-9_.\n-' '_')

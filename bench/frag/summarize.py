@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The tables of bench/frag/README.md from bench/frag/run.sh's results.tsv (one or more: one a row)."""
+"""The tables of bench/frag/README.md from bench/frag/run.sh's results.tsv (one or more: one a row).
+Usage: summarize.py [--pixels W*H] RESULTS.tsv... (W*H: the image's pixels, 160x120 by default)."""
 import collections
 import csv
 import os
@@ -23,6 +24,11 @@ def imported(r):
     return r["status"] in ("imported", "matching", "imported-no-reference")
 
 
+def partial(r):
+    """The frag's own raytracer neither misses nor hits everywhere: an IoU of 1 says something."""
+    return r["host_px"] not in ("", "0", str(PIXELS))
+
+
 def row(name, rows):
     de = [r for r in rows if r["kind"] == "de"]
     imp = [r for r in de if imported(r)]
@@ -32,14 +38,18 @@ def row(name, rows):
     pct = lambda a, b: f"{100 * a / b:.0f} %" if b else "-"
     print(f"| {name} | {len(rows)} | {len(de)} | {len(host_ok)} | {len(imp)} ({pct(len(imp), len(de))}) | "
           f"{len(match)} ({pct(len(match), len(de))} of the DE frags; {pct(len(match), len(compared))} of "
-          f"{len(compared)} compared) |")
+          f"{len(compared)} compared) | {sum(partial(r) for r in match)} of {sum(partial(r) for r in compared)} |")
 
 
-paths = sys.argv[1:]
+args = sys.argv[1:]
+PIXELS = 160 * 120
+if args[:1] == ["--pixels"]:
+    PIXELS, args = int(args[1]), args[2:]
+paths = args
 sets = [(os.path.basename(os.path.dirname(os.path.abspath(p))), load(p)) for p in paths]
 print("| folder | frags | 3D DE frags | their own raytracer ran | imported (of the DE frags) | "
-      "matching, IoU >= 0.9 |")
-print("|---|---|---|---|---|---|")
+      "matching, IoU >= 0.9 | matching where the object neither fills the view nor misses it |")
+print("|---|---|---|---|---|---|---|")
 for name, rows in sets:
     row(name, rows)
 if len(sets) > 1:

@@ -2,7 +2,8 @@
 // fraktal's own DE raytracer in FragM's dialect, for the frag bench's host in the tests: the
 // march and hit test DE-Raytracer.frag documents (a hit where DE * FudgeFactor < 10^Detail *
 // distance travelled), trace() giving a non-zero hitNormal on a hit and zero on a miss, as the
-// host observes it. Written for fraktal, not copied from FragM.
+// host observes it; its floor, the plane dot(normalize(FloorNormal), p) = FloorHeight met from
+// either side. Written for fraktal, not copied from FragM.
 #include "3D.frag"
 
 #group Raytracer
@@ -11,6 +12,9 @@ uniform float Detail; slider[-7,-2.3,0];
 uniform float FudgeFactor; slider[0,1,1];
 uniform int MaxRaySteps; slider[0,56,10000]
 uniform float MaxDistance; slider[0,1000,5000];
+uniform bool EnableFloor; checkbox[false] Locked
+uniform vec3 FloorNormal; slider[(-1,-1,-1),(0,0,1),(1,1,1)]
+uniform float FloorHeight; slider[-50,0,50]
 
 #group Coloring
 uniform vec3 BaseColor; color[1.0,1.0,1.0];
@@ -18,9 +22,17 @@ uniform vec3 BaseColor; color[1.0,1.0,1.0];
 vec4 orbitTrap = vec4(10000.0);
 float DE(vec3 pos); // the frag that includes this defines it
 
+// The DE with the floor, when it is on.
+float sceneDE(vec3 p) {
+	float d = DE(p);
+	if (EnableFloor) d = min(d, abs(dot(normalize(FloorNormal), p) - FloorHeight));
+	return d;
+}
+
 vec3 normalAt(vec3 p, float e) {
 	vec2 h = vec2(e, 0.0);
-	return normalize(vec3(DE(p + h.xyy) - DE(p - h.xyy), DE(p + h.yxy) - DE(p - h.yxy), DE(p + h.yyx) - DE(p - h.yyx)));
+	return normalize(vec3(sceneDE(p + h.xyy) - sceneDE(p - h.xyy), sceneDE(p + h.yxy) - sceneDE(p - h.yxy),
+		sceneDE(p + h.yyx) - sceneDE(p - h.yyx)));
 }
 
 vec3 trace(vec3 from, vec3 dir, inout vec3 hit, inout vec3 hitNormal) {
@@ -28,7 +40,7 @@ vec3 trace(vec3 from, vec3 dir, inout vec3 hit, inout vec3 hitNormal) {
 	float t = 0.0;
 	for (int i = 0; i < MaxRaySteps; i++) {
 		orbitTrap = vec4(10000.0);
-		float d = DE(from + t * dir) * FudgeFactor;
+		float d = sceneDE(from + t * dir) * FudgeFactor;
 		t += d;
 		if (d < eps * t) {
 			hit = from + t * dir;

@@ -5,5 +5,5 @@ float DE(vec3 p) {
 	return length(p - Tint4.xyz) - Tint4.w;
 }
 #preset Default
-Tint4 = 0.25,0,0,0.75
+Eye = 0,0,4
 #endpreset
