@@ -226,20 +226,15 @@ TEST(FragImport, NodeListEditsKeepAWholeDEFormulaLoadable) {
 TEST(FragImport, RefusesWhatFraktalCannotDrawNamingTheReason) {
     EXPECT_NE(refusal("refuse_texture.frag").find("a texture is sampled inside the DE"), std::string::npos)
         << refusal("refuse_texture.frag");
-    EXPECT_NE(refusal("refuse_time.frag").find("reads `time`"), std::string::npos) << refusal("refuse_time.frag");
     EXPECT_NE(refusal("refuse_inside.frag").find("Brute-Raytracer frag"), std::string::npos)
         << refusal("refuse_inside.frag");
     EXPECT_NE(refusal("refuse_buffer.frag").find("#buffer RGBA32F"), std::string::npos)
         << refusal("refuse_buffer.frag");
     EXPECT_NE(refusal("refuse_no_de.frag").find("has no function `float DE(vec3)`"), std::string::npos)
         << refusal("refuse_no_de.frag");
-    for (const char* name :
-         {"refuse_texture.frag", "refuse_time.frag", "refuse_inside.frag", "refuse_buffer.frag", "refuse_no_de.frag"})
+    for (const char* name : {"refuse_texture.frag", "refuse_inside.frag", "refuse_buffer.frag", "refuse_no_de.frag"})
         EXPECT_NE(refusal(name).find(name), std::string::npos) << "the message names the file: " << refusal(name);
-    // Lenient: time reads 0 and the #buffer pass is dropped, each listed in the description.
-    const Preset time = importFrag("refuse_time.frag", {.lenient = true}).preset;
-    EXPECT_NE(time.description.find("uniform time"), std::string::npos) << time.description;
-    EXPECT_NE(time.formula.estimator.block->glsl.find("sin(0.0)"), std::string_view::npos);
+    // Lenient: the #buffer pass is dropped and listed in the description.
     const Preset buffer = importFrag("refuse_buffer.frag", {.lenient = true}).preset;
     EXPECT_NE(buffer.description.find("#buffer"), std::string::npos) << buffer.description;
     // No DE, a texture in the DE: nothing to write even when lenient.
@@ -360,14 +355,14 @@ TEST(FragImport, CommandLine) {
                                     box.path("i.json") + "'");
     EXPECT_EQ(found.exitCode, 0) << found.output;
 
-    const std::string time = fragPath("refuse_time.frag").string();
-    const auto refused = test::runCli("import '" + time + "' -o '" + box.path("t.json") + "'");
+    const std::string unmappable = fragPath("unmappable.frag").string();
+    const auto refused = test::runCli("import '" + unmappable + "' -o '" + box.path("t.json") + "'");
     EXPECT_NE(refused.exitCode, 0);
-    EXPECT_NE(refused.output.find("reads `time`"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("uniform Tint4"), std::string::npos) << refused.output;
     EXPECT_FALSE(std::filesystem::exists(box.path("t.json"))) << "nothing written";
-    const auto lenient = test::runCli("import --lenient '" + time + "' -o '" + box.path("t.json") + "'");
+    const auto lenient = test::runCli("import --lenient '" + unmappable + "' -o '" + box.path("t.json") + "'");
     EXPECT_EQ(lenient.exitCode, 0) << lenient.output;
-    EXPECT_NE(lenient.output.find("dropped: uniform time"), std::string::npos) << lenient.output;
+    EXPECT_NE(lenient.output.find("dropped: uniform Tint4"), std::string::npos) << lenient.output;
 
     const auto render = test::runCli("render '" + menger + "' -o '" + box.path("m.exr") + "' --size 32x24 --spp 1 -q");
     EXPECT_EQ(render.exitCode, 0) << render.output;
@@ -480,4 +475,19 @@ TEST(FragImport, FloorBecomesAPlaneObjectFacingTheCamera) {
         EXPECT_GE(p.formula.boundRadius, 1000.0) << "FragM marches to the floor as far as MaxDistance";
     }
     EXPECT_TRUE(importFrag("menger.frag").preset.formula.objects.empty()) << "no floor where the preset has none";
+}
+
+// FragM's clock read by the DE is a parameter of its own, 0 as on FragM's first frame: the file
+// imports strictly, the still is FragM's, and the parameter can be keyed to play the animation.
+TEST(FragImport, TimeIsAParameterAtFragMsFirstFrame) {
+    const ImportedScene s = importFrag("time.frag");
+    const auto* time = param(s.preset.formula, "time");
+    ASSERT_TRUE(time);
+    EXPECT_EQ(time->type, ParamType::Float);
+    EXPECT_EQ(time->defaultValue.x, 0.0);
+    EXPECT_EQ(value(s.preset.formula, "time").x, 0.0);
+    EXPECT_NE(std::string(s.preset.formula.estimator.block->glsl).find("sin(time)"), std::string::npos);
+    const bool named = std::any_of(s.approximated.begin(), s.approximated.end(),
+                                   [](const std::string& a) { return a.find("uniform time") != std::string::npos; });
+    EXPECT_TRUE(named) << "the approximation is not named";
 }

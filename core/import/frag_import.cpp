@@ -271,14 +271,6 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
             result.unsupported.push_back({"uniform " + u.name, why});
             rewrite[u.name] = "(" + constantOf(u, v) + ")";
         };
-        if (u.name == "time") {
-            result.unsupported.push_back(
-                {"uniform time",
-                 "the DE reads `time` (an animation by the clock); fraktal's shape is fixed, so time "
-                 "reads 0 as on FragM's first frame"});
-            rewrite[u.name] = "0.0";
-            continue;
-        }
         if (!u.arraySize.empty()) {
             dropAsConstant("an array uniform has no fraktal parameter; it keeps its first value");
             continue;
@@ -289,7 +281,18 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
         p.group = u.group;
         vec3 value(0.0);
         const bool integer = u.type == "int";
-        if (u.kind == UniformKind::Slider && (u.type == "float" || u.type == "double" || integer)) {
+        if (u.name == "time" && u.kind == UniformKind::Plain && u.type == "float") {
+            // FragM's clock, in seconds (0 on a still, as on FragM's first frame), is a parameter
+            // of its own: the still is FragM's, and keying the parameter plays the frag's animation.
+            p.type = ParamType::Float;
+            p.min = 0.0;
+            p.max = 60.0;
+            p.help = "FragM's clock, in seconds: 0 is the frame FragM draws first; key it to play the frag's animation";
+            result.approximated.push_back(
+                {"uniform time",
+                 "FragM's clock is the parameter time, 0 as on FragM's first frame; it runs only "
+                 "where it is keyed"});
+        } else if (u.kind == UniformKind::Slider && (u.type == "float" || u.type == "double" || integer)) {
             p.type = ParamType::Float;
             p.min = u.minimum[0];
             p.max = u.maximum[0];
