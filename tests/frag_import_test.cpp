@@ -491,3 +491,17 @@ TEST(FragImport, TimeIsAParameterAtFragMsFirstFrame) {
                                    [](const std::string& a) { return a.find("uniform time") != std::string::npos; });
     EXPECT_TRUE(named) << "the approximation is not named";
 }
+
+// A frag saved as Latin-1 (as many artists' editors save them) is read as Latin-1: its tooltip
+// reaches the preset as UTF-8, and the preset is written (JSON holds UTF-8 alone).
+TEST(FragImport, Latin1FragImportsAsUtf8) {
+    const Preset p = importFrag("latin1.frag").preset;
+    const auto* radius = param(p.formula, "Rayon");
+    ASSERT_TRUE(radius);
+    EXPECT_EQ(radius->help, "Rayon de la sph\xC3\xA8re, en unit\xC3\xA9s");
+    const test::Sandbox box("fraktal_frag_latin1_");
+    const auto imported =
+        test::runCli("import '" + fragPath("latin1.frag").string() + "' -o '" + box.path("l.json") + "'");
+    EXPECT_EQ(imported.exitCode, 0) << imported.output;
+    EXPECT_EQ(loadPreset(box.path("l.json")).formula.estimator.block->params.size(), 1u);
+}

@@ -10,6 +10,7 @@ import sys
 path, (w, h) = sys.argv[1], map(int, sys.argv[2].split("x"))
 preset = json.load(open(path))
 r = preset.setdefault("render", {})
-r["detail"] = r.get("detail", 0.5) * h / r.get("height", 720)
+# Within the range a preset holds: a cone finer than 0.001 of a pixel is drawn at 0.001.
+r["detail"] = max(r.get("detail", 0.5) * h / r.get("height", 720), 0.001)
 r["width"], r["height"] = w, h
 json.dump(preset, open(path, "w"), indent=1)
