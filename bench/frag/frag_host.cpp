@@ -18,6 +18,7 @@
 // Usage: bench_frag_host FRAG [--include-dir DIR]... [--preset NAME] [--size WxH] [-o MASK.png]
 //        [--set NAME=V[,V...]]... (a uniform's value after the preset's)
 //        [--dump-glsl FILE] (the vertex and the instrumented fragment GLSL, for reading)
+// FRAKTAL_HOST_VERBOSE=1 prints each uniform's value and location on stderr.
 // Prints one line: `KIND ok HIT_PIXELS DE_PER_PIXEL` (DE_PER_PIXEL "-" where the DE could not be
 // wrapped), or `KIND fail REASON` (exit 1). KIND: `de` (a 3D camera and a `float DE(vec3)`),
 // `inside` (a Brute-Raytracer `bool inside(vec3)` frag), `3d` (a 3D camera, neither), `2d` (no 3D

@@ -8,7 +8,7 @@
 # Usage: bench/frag/run.sh BUILD FOLDER [OUT] [SIZE]   (OUT default bench/frag/out/NAME, SIZE 160x120)
 # The frags' includes resolve next to each frag, then in FOLDER/Include and in FRAG_INCLUDE (a
 # colon-separated list: FragM's examples' Include/ for a community repository written against
-# it). JOBS: frags run at once (default 2). Writes OUT/results.tsv (one row per frag),
+# it; folders whose paths hold no spaces). JOBS: frags run at once (default 2). Writes OUT/results.tsv (one row per frag),
 # OUT/summary.md and OUT/worst.png (the worst matches: fraktal's mask, the frag's own, both
 # overlaid; yellow both, red fraktal only, green the frag only).
 set -euo pipefail
