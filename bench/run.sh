@@ -89,6 +89,7 @@ left_out=(
   "stills 'Adaptive sampling and tetrahedral normals': a comparison with the build before cda8758, which its 'before' rows need; its commands are in bench/stills/README.md"
   "overshoot 'without the recovery' column: a build with the recovery switched off by a local edit of shaders/march.glsl"
   "anim 48-frame runs: \`bench/anim/run.sh BUILD_DIR 48 640x360\`, the shorter form of 'anim'"
+  "frag: the Fragmentarium libraries it runs are the artists' (not shipped, licences vary); fetch them and run \`bench/frag/run.sh BUILD_DIR FOLDER\` (bench/frag/README.md)"
 )
 
 if [ "$list" = 1 ]; then

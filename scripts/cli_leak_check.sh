@@ -64,4 +64,4 @@ run 2 import "$work/old.fract" -o "$work/old.json" -q
 # The Fragmentarium importer: a frag it maps (rendered straight from the frag too), one it refuses.
 run 0 import tests/data/frag_import/menger.frag -o "$work/menger_frag.json" -q
 run 0 render tests/data/frag_import/menger.frag -o "$work/menger_frag.exr" --size 24x16 --spp 1 -q
-run 2 import tests/data/frag_import/refuse_time.frag -o "$work/time_frag.json" -q
+run 2 import tests/data/frag_import/unmappable.frag -o "$work/unmappable_frag.json" -q

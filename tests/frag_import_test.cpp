@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/editor/document/formula_edits.hpp"
@@ -225,20 +226,15 @@ TEST(FragImport, NodeListEditsKeepAWholeDEFormulaLoadable) {
 TEST(FragImport, RefusesWhatFraktalCannotDrawNamingTheReason) {
     EXPECT_NE(refusal("refuse_texture.frag").find("a texture is sampled inside the DE"), std::string::npos)
         << refusal("refuse_texture.frag");
-    EXPECT_NE(refusal("refuse_time.frag").find("reads `time`"), std::string::npos) << refusal("refuse_time.frag");
     EXPECT_NE(refusal("refuse_inside.frag").find("Brute-Raytracer frag"), std::string::npos)
         << refusal("refuse_inside.frag");
     EXPECT_NE(refusal("refuse_buffer.frag").find("#buffer RGBA32F"), std::string::npos)
         << refusal("refuse_buffer.frag");
     EXPECT_NE(refusal("refuse_no_de.frag").find("has no function `float DE(vec3)`"), std::string::npos)
         << refusal("refuse_no_de.frag");
-    for (const char* name :
-         {"refuse_texture.frag", "refuse_time.frag", "refuse_inside.frag", "refuse_buffer.frag", "refuse_no_de.frag"})
+    for (const char* name : {"refuse_texture.frag", "refuse_inside.frag", "refuse_buffer.frag", "refuse_no_de.frag"})
         EXPECT_NE(refusal(name).find(name), std::string::npos) << "the message names the file: " << refusal(name);
-    // Lenient: time reads 0 and the #buffer pass is dropped, each listed in the description.
-    const Preset time = importFrag("refuse_time.frag", {.lenient = true}).preset;
-    EXPECT_NE(time.description.find("uniform time"), std::string::npos) << time.description;
-    EXPECT_NE(time.formula.estimator.block->glsl.find("sin(0.0)"), std::string_view::npos);
+    // Lenient: the #buffer pass is dropped and listed in the description.
     const Preset buffer = importFrag("refuse_buffer.frag", {.lenient = true}).preset;
     EXPECT_NE(buffer.description.find("#buffer"), std::string::npos) << buffer.description;
     // No DE, a texture in the DE: nothing to write even when lenient.
@@ -359,14 +355,14 @@ TEST(FragImport, CommandLine) {
                                     box.path("i.json") + "'");
     EXPECT_EQ(found.exitCode, 0) << found.output;
 
-    const std::string time = fragPath("refuse_time.frag").string();
-    const auto refused = test::runCli("import '" + time + "' -o '" + box.path("t.json") + "'");
+    const std::string unmappable = fragPath("unmappable.frag").string();
+    const auto refused = test::runCli("import '" + unmappable + "' -o '" + box.path("t.json") + "'");
     EXPECT_NE(refused.exitCode, 0);
-    EXPECT_NE(refused.output.find("reads `time`"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("uniform Tint4"), std::string::npos) << refused.output;
     EXPECT_FALSE(std::filesystem::exists(box.path("t.json"))) << "nothing written";
-    const auto lenient = test::runCli("import --lenient '" + time + "' -o '" + box.path("t.json") + "'");
+    const auto lenient = test::runCli("import --lenient '" + unmappable + "' -o '" + box.path("t.json") + "'");
     EXPECT_EQ(lenient.exitCode, 0) << lenient.output;
-    EXPECT_NE(lenient.output.find("dropped: uniform time"), std::string::npos) << lenient.output;
+    EXPECT_NE(lenient.output.find("dropped: uniform Tint4"), std::string::npos) << lenient.output;
 
     const auto render = test::runCli("render '" + menger + "' -o '" + box.path("m.exr") + "' --size 32x24 --spp 1 -q");
     EXPECT_EQ(render.exitCode, 0) << render.output;
@@ -378,7 +374,7 @@ TEST(FragImport, CommandLine) {
 // and `fraktal check` on the written preset finds it safe on the check's own rays.
 TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
     const test::Sandbox box("fraktal_frag_measure_");
-    for (const char* name : {"menger.frag", "init_bulb.frag"}) {
+    for (const char* name : {"menger.frag", "init_bulb.frag", "annotations.frag"}) {
         SCOPED_TRACE(name);
         const std::string out = box.path(std::string(name) + ".json");
         const auto imported = test::runCli("import '" + fragPath(name).string() + "' -o '" + out + "'");
@@ -391,6 +387,11 @@ TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
         EXPECT_EQ(checked.exitCode, 0) << checked.output;
         // The bound is fitted to the object on the GPU: smaller than the view's framing sphere.
         EXPECT_LT(p.formula.boundRadius, unmeasured.formula.boundRadius);
+        // FragM's hit test and fraktal's both compare the scaled estimate: the threshold follows the
+        // factor, so the surface drawn stays where FragM draws it.
+        EXPECT_NEAR(p.render.detail / p.formula.deFactor, unmeasured.render.detail / unmeasured.formula.deFactor,
+                    1e-4 * unmeasured.render.detail / unmeasured.formula.deFactor)
+            << "threshold " << p.render.detail << " at factor " << p.formula.deFactor;
         if (std::string(name) == "menger.frag") {  // the sponge fills the cube [-1, 1]^3
             EXPECT_TRUE(p.formula.boundRadius >= std::sqrt(3.0) && p.formula.boundRadius < 1.35 * std::sqrt(3.0))
                 << p.formula.boundRadius;
@@ -401,15 +402,106 @@ TEST(FragImport, CommandLineMeasuresTheStepFactorOnTheGpu) {
     }
 }
 
-// A uniform of a kind fraktal's parameters lack (a vec4 slider) is named and refuses the file;
-// lenient, it keeps the preset's value as a constant in the DE.
+// A uniform of a kind fraktal's parameters lack (a colour with an intensity, read by the DE as a
+// shape) is named and refuses the file; lenient, it keeps its value as a constant in the DE: the
+// colour and the intensity, as FragM sets the vec4.
 TEST(FragImport, UnmappableUniformIsNamedAndKeptAsAConstantWhenLenient) {
     const std::string why = refusal("unmappable.frag");
-    EXPECT_NE(why.find("uniform Offset4: a slider of type vec4 has no fraktal parameter"), std::string::npos) << why;
+    EXPECT_NE(why.find("uniform Tint4: a floatcolor of type vec4 has no fraktal parameter"), std::string::npos) << why;
     const Preset p = importFrag("unmappable.frag", {.lenient = true}).preset;
     EXPECT_TRUE(p.formula.estimator.block->params.empty());
-    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("vec4(p, 0.0) - (vec4(0.25, 0.0, 0.0, 0.0))"),
+    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("length(p - (vec4(1.0, 0.25, 0.0, 0.5)).xyz)"),
               std::string::npos)
         << p.formula.estimator.block->glsl;
-    EXPECT_NE(p.description.find("Offset4"), std::string::npos) << p.description;
+    EXPECT_NE(p.description.find("Tint4"), std::string::npos) << p.description;
+}
+
+// A vec4 slider (a quaternion's constant, a 4D offset) becomes two parameters, its xyz and its w,
+// joined again where the DE reads it: the file imports strictly, with the preset's values.
+TEST(FragImport, Vec4SliderBecomesAVec3AndAFloat) {
+    const Preset p = importFrag("vec4_slider.frag").preset;
+    const auto* xyz = param(p.formula, "Offset4");
+    const auto* w = param(p.formula, "Offset4_w");
+    ASSERT_TRUE(xyz && w);
+    EXPECT_EQ(xyz->type, ParamType::Vec3);
+    EXPECT_EQ(w->type, ParamType::Float);
+    EXPECT_EQ(xyz->min, -1.0);
+    EXPECT_EQ(w->max, 1.0);
+    EXPECT_EQ(value(p.formula, "Offset4"), vec3(0.25, 0.0, 0.0));
+    EXPECT_EQ(value(p.formula, "Offset4_w").x, 0.6);
+    EXPECT_NE(std::string(p.formula.estimator.block->glsl).find("vec4(p, 0.0) - vec4(Offset4, Offset4_w)"),
+              std::string::npos)
+        << p.formula.estimator.block->glsl;
+}
+
+// 3D.frag's camera read by the DE (a tessellation keyed to the eye) keeps the imported camera's
+// value, so the still is FragM's; the file imports strictly and says what differs.
+TEST(FragImport, CameraReadByTheDEKeepsTheImportedCamera) {
+    const ImportedScene s = importFrag("camera_in_de.frag");
+    const std::string glsl(s.preset.formula.estimator.block->glsl);
+    EXPECT_NE(glsl.find("normalize((vec3(1.5, 0.5, 3.5)))"), std::string::npos) << glsl;
+    EXPECT_EQ(s.preset.camera.position, vec3(1.5, 0.5, 3.5));
+    const bool named = std::any_of(s.approximated.begin(), s.approximated.end(),
+                                   [](const std::string& a) { return a.find("uniform Eye") != std::string::npos; });
+    EXPECT_TRUE(named) << "the approximation is not named";
+}
+
+// A preset without a camera line sees the frag from 3D.frag's default camera: Eye (0, 0, -10).
+TEST(FragImport, NoCameraLineIs3DFragsDefaultCamera) {
+    const Preset p = importFrag("default_camera.frag").preset;
+    EXPECT_EQ(p.camera.position, vec3(0.0, 0.0, -10.0));
+    EXPECT_EQ(p.camera.target, vec3(0.0));
+    EXPECT_NEAR(p.camera.fovY, 2.0 * std::atan(0.4) * 180.0 / M_PI, 1e-9);
+}
+
+// DE-Raytracer's floor (EnableFloor) is a plane object: its frame's z is the floor's normal, turned
+// to hold the camera on its empty side (FragM's floor is met from either side), and the bound
+// reaches as far as FragM marches to it.
+TEST(FragImport, FloorBecomesAPlaneObjectFacingTheCamera) {
+    const vec3 n = normalize(vec3(-0.08, 1.0, 0.03));
+    for (const char* presetName : {"Default", "Below"}) {
+        SCOPED_TRACE(presetName);
+        SceneImportOptions options;
+        options.fragPreset = presetName;
+        const Preset p = importFrag("floor.frag", options).preset;
+        ASSERT_EQ(p.formula.objects.size(), 1u);
+        const SceneObject& floor = p.formula.objects[0];
+        EXPECT_EQ(floor.block, findObject("plane"));
+        // Solid below z = 0 of its frame: the camera's side is the frame's +z.
+        const vec3 up = std::string(presetName) == "Default" ? n : -n;
+        EXPECT_LT(length(vec3(floor.localFromWorld() * up) - vec3(0.0, 0.0, 1.0)), 1e-9);
+        EXPECT_NEAR(dot(floor.center, n), -0.7, 1e-9) << "the plane passes at FloorHeight";
+        EXPECT_GT(dot(p.camera.position - floor.center, up), 0.0);
+        EXPECT_GE(p.formula.boundRadius, 1000.0) << "FragM marches to the floor as far as MaxDistance";
+    }
+    EXPECT_TRUE(importFrag("menger.frag").preset.formula.objects.empty()) << "no floor where the preset has none";
+}
+
+// FragM's clock read by the DE is a parameter of its own, 0 as on FragM's first frame: the file
+// imports strictly, the still is FragM's, and the parameter can be keyed to play the animation.
+TEST(FragImport, TimeIsAParameterAtFragMsFirstFrame) {
+    const ImportedScene s = importFrag("time.frag");
+    const auto* time = param(s.preset.formula, "time");
+    ASSERT_TRUE(time);
+    EXPECT_EQ(time->type, ParamType::Float);
+    EXPECT_EQ(time->defaultValue.x, 0.0);
+    EXPECT_EQ(value(s.preset.formula, "time").x, 0.0);
+    EXPECT_NE(std::string(s.preset.formula.estimator.block->glsl).find("sin(time)"), std::string::npos);
+    const bool named = std::any_of(s.approximated.begin(), s.approximated.end(),
+                                   [](const std::string& a) { return a.find("uniform time") != std::string::npos; });
+    EXPECT_TRUE(named) << "the approximation is not named";
+}
+
+// A frag saved as Latin-1 (as many artists' editors save them) is read as Latin-1: its tooltip
+// reaches the preset as UTF-8, and the preset is written (JSON holds UTF-8 alone).
+TEST(FragImport, Latin1FragImportsAsUtf8) {
+    const Preset p = importFrag("latin1.frag").preset;
+    const auto* radius = param(p.formula, "Rayon");
+    ASSERT_TRUE(radius);
+    EXPECT_EQ(radius->help, "Rayon de la sph\xC3\xA8re, en unit\xC3\xA9s");
+    const test::Sandbox box("fraktal_frag_latin1_");
+    const auto imported =
+        test::runCli("import '" + fragPath("latin1.frag").string() + "' -o '" + box.path("l.json") + "'");
+    EXPECT_EQ(imported.exitCode, 0) << imported.output;
+    EXPECT_EQ(loadPreset(box.path("l.json")).formula.estimator.block->params.size(), 1u);
 }

@@ -2,10 +2,6 @@
 // runs it, and a fixed set of Mandelbulber2's own example files rendered by both programs, whose
 // silhouettes must agree (or whose refusal must name its reason). Mandelbulber2 comes from
 // scripts/install-deps.sh; its masks are computed here, never stored.
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 #include <sys/wait.h>
@@ -20,6 +16,7 @@
 #include <set>
 #include <thread>
 
+#include "bench/import/silhouette.hpp"
 #include "core/image/png_writer.hpp"
 #include "core/import/fract_import.hpp"
 #include "core/import/mb2_sequence.hpp"
@@ -2872,40 +2869,16 @@ TEST(CliImport, RendersAFractFileDirectlyAndChecksIt) {
 
 // ---- Against Mandelbulber2 itself ----
 
-struct Mask {
-    int width = 0, height = 0;
-    std::vector<bool> hit;
-};
+// The hit masks and their agreement as bench/import measures them (bench/import/silhouette.hpp).
+using silhouette::Mask;
 
-Mask exrMask(const std::string& path) {
-    Imf::InputFile file(path.c_str());
-    const Imath::Box2i dw = file.header().dataWindow();
-    Mask m{dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1, {}};
-    std::vector<float> alpha(size_t(m.width) * size_t(m.height));
-    Imf::FrameBuffer fb;
-    char* base = reinterpret_cast<char*>(alpha.data()) -
-                 (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * m.width) * ptrdiff_t(sizeof(float));
-    fb.insert("A", Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * size_t(m.width)));
-    file.setFrameBuffer(fb);
-    file.readPixels(dw.min.y, dw.max.y);
-    for (float a : alpha) m.hit.push_back(a >= 0.5f);
-    return m;
-}
-
+// mandelbulber2's mask, or an empty one where it wrote no image.
 Mask pngAlphaMask(const std::string& path) {
-    int w = 0, h = 0, n = 0;
-    stbi_us* pixels = stbi_load_16(path.c_str(), &w, &h, &n, 4);
-    if (!pixels) return {};
-    Mask m{w, h, {}};
-    for (size_t i = 0; i < size_t(w) * size_t(h); ++i) m.hit.push_back(pixels[4 * i + 3] >= 32768);
-    stbi_image_free(pixels);
-    return m;
-}
-
-double intersectionOverUnion(const Mask& a, const Mask& b) {
-    long both = 0, either = 0;
-    for (size_t i = 0; i < a.hit.size(); ++i) both += a.hit[i] && b.hit[i], either += a.hit[i] || b.hit[i];
-    return either ? double(both) / double(either) : 1.0;
+    try {
+        return silhouette::readPngMask(path);
+    } catch (const std::runtime_error&) {
+        return {};
+    }
 }
 
 // A copy of a settings file for mandelbulber2 without what adds alpha where there is no surface
@@ -3115,7 +3088,7 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
         const fs::path stored = storedSilhouettePath(c);
         if (storingSilhouettes()) storeSilhouette(stored, mandelbulber2Silhouette(c, box, tag));
-        const Mask ours = exrMask(exr), theirs = readStoredSilhouette(stored);
+        const Mask ours = silhouette::readExrMask(exr), theirs = readStoredSilhouette(stored);
         ASSERT_EQ(theirs.width, c.width) << stored << " is missing or of another size: FRAKTAL_STORE_MB2_SILHOUETTES=1 "
                                          << "stores mandelbulber2's silhouettes of the set again";
         ASSERT_EQ(ours.hit.size(), theirs.hit.size());
@@ -3123,7 +3096,7 @@ TEST(ImportVsMandelbulber2, FixedSetMatchesOrIsRefusedForItsReason) {
         for (bool h : theirs.hit) covered += h;
         EXPECT_GT(covered, long(theirs.hit.size() / 20))
             << "Mandelbulber2 shows almost nothing: no silhouette to compare";
-        const double iou = intersectionOverUnion(ours, theirs);
+        const double iou = silhouette::compare(ours, theirs).iou;
         EXPECT_GE(iou, c.minIou);
         std::printf("%s: IoU %.3f (%.1f s)\n", c.file.c_str(), iou,
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());

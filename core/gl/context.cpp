@@ -75,7 +75,7 @@ void keepGlDriverLoaded() {
 
 }  // namespace
 
-std::unique_ptr<HeadlessContext> HeadlessContext::create() {
+std::unique_ptr<HeadlessContext> HeadlessContext::create(Profile profile) {
     std::string why;
     EGLDisplay display = openDisplay(why);
     if (display == EGL_NO_DISPLAY)
@@ -85,14 +85,20 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create() {
         eglTerminate(display);
         throw std::runtime_error("EGL cannot bind the desktop OpenGL API: " + std::string(kInstallHint));
     }
-    const EGLint attributes[] = {
+    const EGLint core[] = {
         EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    // No version asked: the driver gives its highest compatibility version.
+    const EGLint compatibility[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                                    EGL_NONE};
+    EGLContext context =
+        eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, profile == Profile::Core ? core : compatibility);
     if (context == EGL_NO_CONTEXT) {
         const EGLint e = eglGetError();
         eglTerminate(display);
-        throw std::runtime_error("cannot create an OpenGL 4.5 core context (" + eglErrorText(e) + "): " + kInstallHint);
+        throw std::runtime_error(std::string("cannot create an OpenGL ") +
+                                 (profile == Profile::Core ? "4.5 core" : "compatibility") + " context (" +
+                                 eglErrorText(e) + "): " + kInstallHint);
     }
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         const EGLint e = eglGetError();

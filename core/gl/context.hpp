@@ -10,9 +10,13 @@ namespace fraktal::gl {
 
 class HeadlessContext {
    public:
-    // Creates and makes current a GL 4.5 core context. Throws std::runtime_error saying why it
-    // failed and what to install.
-    static std::unique_ptr<HeadlessContext> create();
+    // Core: GL 4.5 core, what fraktal renders with. Compatibility: the driver's highest
+    // compatibility-profile version, for running foreign GLSL written against the fixed-function
+    // built-ins (gl_Vertex, gl_FragColor, texture2D), as Fragmentarium frags are (bench/frag).
+    enum class Profile { Core, Compatibility };
+    // Creates and makes current a GL 4.5 core context (or a compatibility one). Throws
+    // std::runtime_error saying why it failed and what to install.
+    static std::unique_ptr<HeadlessContext> create(Profile profile = Profile::Core);
     ~HeadlessContext();
     HeadlessContext(const HeadlessContext&) = delete;
     HeadlessContext& operator=(const HeadlessContext&) = delete;

@@ -174,6 +174,48 @@ int vectorSize(std::string_view type) {
     return 0;
 }
 
+// Whether `s` is well-formed UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
+bool validUtf8(std::string_view s) {
+    for (size_t i = 0; i < s.size();) {
+        const auto c = static_cast<unsigned char>(s[i]);
+        const int more = c < 0x80                 ? 0
+                         : c >= 0xC2 && c <= 0xDF ? 1
+                         : (c & 0xF0) == 0xE0     ? 2
+                         : c >= 0xF0 && c <= 0xF4 ? 3
+                                                  : -1;
+        if (more < 0 || i + size_t(more) >= s.size() + (more == 0 ? 1 : 0)) return false;
+        for (int k = 1; k <= more; ++k)
+            if ((static_cast<unsigned char>(s[i + size_t(k)]) & 0xC0) != 0x80) return false;
+        if (more >= 2) {
+            const auto next = static_cast<unsigned char>(s[i + 1]);
+            if ((c == 0xE0 && next < 0xA0) || (c == 0xED && next >= 0xA0) || (c == 0xF0 && next < 0x90) ||
+                (c == 0xF4 && next >= 0x90))
+                return false;
+        }
+        i += size_t(more) + 1;
+    }
+    return true;
+}
+
+// Frags are UTF-8 or, as many artists' editors saved them, Latin-1: a text that is not UTF-8 is read
+// as Latin-1, so that the names, tooltips and code a preset carries are UTF-8, as JSON must be (six
+// community frags failed the import's JSON writer on a Latin-1 byte in a comment).
+std::string asUtf8(std::string_view text) {
+    if (validUtf8(text)) return std::string(text);
+    std::string out;
+    out.reserve(text.size() + text.size() / 8);
+    for (const char ch : text) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c < 0x80) {
+            out += ch;
+        } else {
+            out += char(0xC0 | (c >> 6));
+            out += char(0x80 | (c & 0x3F));
+        }
+    }
+    return out;
+}
+
 bool isSamplerType(std::string_view type) {
     return type == "sampler2D" || type == "samplerCube" || type == "isampler2D" || type == "usampler2D";
 }
@@ -392,7 +434,7 @@ class Preprocessor {
             }
             fail(where.file, where.line, "include cycle: " + chain + source.name);
         }
-        if (found) text = readGuardedFile(*found);
+        if (found) text = asUtf8(readGuardedFile(*found));
         int index;
         if (const auto known = identities_.find(key); known != identities_.end()) {
             index = known->second;
@@ -1162,7 +1204,8 @@ FragFile parseFragFile(std::string_view text, const std::filesystem::path& path,
     if (text.size() > kMaxDocumentBytes)
         throw PresetError(path.string(), "",
                           "file is larger than " + std::to_string(kMaxDocumentBytes >> 20) + " MiB; not a frag");
-    Preprocessor(file, options).run(text, path);
+    const std::string utf8 = asUtf8(text);
+    Preprocessor(file, options).run(utf8, path);
     Scanner(file, options.glslVersion).run();
     return file;
 }

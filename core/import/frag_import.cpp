@@ -104,7 +104,10 @@ std::vector<double> valueOf(const FragUniform& u, const FragPreset* preset) {
     switch (u.kind) {
         case UniformKind::Checkbox: v = {u.checked ? 1.0 : 0.0}; break;
         case UniformKind::Menu: v = {double(u.menuDefault)}; break;
-        case UniformKind::FloatColor: v = u.colour; break;
+        case UniformKind::FloatColor:  // (r, g, b, intensity), as FragM sets the vec4
+            v = u.colour;
+            if (!u.value.empty()) v.push_back(u.value[0]);
+            break;
         default: v = u.value;
     }
     const PresetValue* line = preset ? preset->find(u.name) : nullptr;
@@ -246,6 +249,13 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
         if (info.where.file == 0) def.help += (def.help.empty() ? "" : " ") + info.argument;
     if (def.help.empty()) def.help = "Imported from " + std::filesystem::path(fileName).filename().string();
     std::vector<vec3> values;
+    // 3D.frag's camera, with its declaration's defaults where the preset has no line.
+    const std::vector<double> eye = setting(file, preset, "Eye", {0.0, 0.0, -10.0});
+    const std::vector<double> target = setting(file, preset, "Target", {0.0, 0.0, 0.0});
+    const std::vector<double> up = setting(file, preset, "Up", {0.0, 1.0, 0.0});
+    const double fov = setting(file, preset, "FOV", {0.4})[0];
+    const std::map<std::string, std::vector<double>, std::less<>> camera = {
+        {"Eye", eye}, {"Target", target}, {"Up", up}, {"FOV", {fov}}};
     for (const std::string& name : {std::string("texture"), std::string("texture2D"), std::string("textureLod"),
                                     std::string("texelFetch"), std::string("textureCube"), std::string("texture3D")})
         if (reached.count(name))
@@ -261,14 +271,6 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
             result.unsupported.push_back({"uniform " + u.name, why});
             rewrite[u.name] = "(" + constantOf(u, v) + ")";
         };
-        if (u.name == "time") {
-            result.unsupported.push_back(
-                {"uniform time",
-                 "the DE reads `time` (an animation by the clock); fraktal's shape is fixed, so time "
-                 "reads 0 as on FragM's first frame"});
-            rewrite[u.name] = "0.0";
-            continue;
-        }
         if (!u.arraySize.empty()) {
             dropAsConstant("an array uniform has no fraktal parameter; it keeps its first value");
             continue;
@@ -279,7 +281,18 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
         p.group = u.group;
         vec3 value(0.0);
         const bool integer = u.type == "int";
-        if (u.kind == UniformKind::Slider && (u.type == "float" || u.type == "double" || integer)) {
+        if (u.name == "time" && u.kind == UniformKind::Plain && u.type == "float") {
+            // FragM's clock, in seconds (0 on a still, as on FragM's first frame), is a parameter
+            // of its own: the still is FragM's, and keying the parameter plays the frag's animation.
+            p.type = ParamType::Float;
+            p.min = 0.0;
+            p.max = 60.0;
+            p.help = "FragM's clock, in seconds: 0 is the frame FragM draws first; key it to play the frag's animation";
+            result.approximated.push_back(
+                {"uniform time",
+                 "FragM's clock is the parameter time, 0 as on FragM's first frame; it runs only "
+                 "where it is keyed"});
+        } else if (u.kind == UniformKind::Slider && (u.type == "float" || u.type == "double" || integer)) {
             p.type = ParamType::Float;
             p.min = u.minimum[0];
             p.max = u.maximum[0];
@@ -301,6 +314,34 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
                 u.maximum != std::vector<double>(u.maximum.size(), p.max))
                 result.approximated.push_back(
                     {"uniform " + u.name, "its components' ranges differ; the parameter spans them all"});
+        } else if (u.kind == UniformKind::Slider && (u.type == "vec4" || u.type == "dvec4") && u.value.size() == 4) {
+            // A 4-vector (a quaternion's constant, a 4D offset): fraktal's parameters stop at 3
+            // components, so it becomes two, its xyz and its w (NAME_w), joined again where the DE
+            // reads it.
+            CustomBlock::Definition::Param w = p;
+            p.type = ParamType::Vec3;
+            p.min = std::min({u.minimum[0], u.minimum[1], u.minimum[2]});
+            p.max = std::max({u.maximum[0], u.maximum[1], u.maximum[2]});
+            for (int k = 0; k < 3; ++k) {
+                p.defaultValue[k] = u.value[size_t(k)];
+                value[k] = size_t(k) < v.size() ? v[size_t(k)] : u.value[size_t(k)];
+            }
+            if (u.minimum[0] != u.minimum[1] || u.minimum[1] != u.minimum[2] || u.maximum[0] != u.maximum[1] ||
+                u.maximum[1] != u.maximum[2])
+                result.approximated.push_back(
+                    {"uniform " + u.name, "its xyz components' ranges differ; the parameter spans them all"});
+            for (int k = 0; k < 3; ++k) value[k] = std::clamp(value[k], p.min, p.max);
+            def.params.push_back(std::move(p));
+            values.push_back(value);
+            w.name = u.name + "_w";
+            w.help = "The w component of " + u.name + (u.tooltip.empty() ? "" : " (" + u.tooltip + ")");
+            w.type = ParamType::Float;
+            w.min = u.minimum[3];
+            w.max = u.maximum[3];
+            w.defaultValue = vec3(u.value[3], 0.0, 0.0);
+            p = std::move(w);
+            value = vec3(v.size() > 3 ? v[3] : u.value[3], 0.0, 0.0);
+            rewrite[u.name] = "vec4(" + u.name + ", " + u.name + "_w)";
         } else if (u.kind == UniformKind::Checkbox && u.type == "bool") {
             p.type = ParamType::Toggle;
             p.defaultValue = vec3(u.checked ? 1.0 : 0.0, 0.0, 0.0);
@@ -328,6 +369,16 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
             p.help += (p.help.empty() ? "" : " ") + std::string("(") + items + ")";
             rewrite[u.name] = "int(" + u.name + ")";
             result.approximated.push_back({"uniform " + u.name, "a menu becomes a number (" + items + ")"});
+        } else if (const auto it = camera.find(u.name); it != camera.end() && u.kind == UniformKind::Plain) {
+            // The DE reads 3D.frag's camera (a 4D rotation keyed to the view, a tessellation seen
+            // from the eye): it keeps the imported camera's value, so the still is FragM's; a camera
+            // moved in fraktal does not move it.
+            rewrite[u.name] = "(" + constantOf(u, it->second) + ")";
+            result.approximated.push_back({"uniform " + u.name, "the DE reads the camera's " + u.name +
+                                                                    "; it keeps the imported camera's " +
+                                                                    constantOf(u, it->second) +
+                                                                    ", and does not follow a camera moved in fraktal"});
+            continue;
         } else if (u.kind == UniformKind::Plain) {
             dropAsConstant("set by FragM's host or raytracer, not a parameter (`" + u.type + " " + u.name +
                            "`); it keeps the value " + constantOf(u, v));
@@ -385,10 +436,6 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
 
     // 3D.frag's camera: the ray through (x, y) is normalize(Dir + FOV (x Right + y Up)) with y in
     // [-1, 1], so tan(fovY / 2) = FOV.
-    const std::vector<double> eye = setting(file, preset, "Eye", {0.0, 0.0, -6.0});
-    const std::vector<double> target = setting(file, preset, "Target", {0.0, 0.0, 0.0});
-    const std::vector<double> up = setting(file, preset, "Up", {0.0, 1.0, 0.0});
-    const double fov = setting(file, preset, "FOV", {0.4})[0];
     out.camera.position = vec3(eye[0], eye[1], eye[2]);
     out.camera.target = vec3(target[0], target[1], target[2]);
     out.camera.up = vec3(up[0], up[1], up[2]);
@@ -406,6 +453,33 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
     // origin holding the object. The camera's distance to its target frames it.
     f.boundRadius = std::clamp(
         std::max(4.0, 2.0 * length(out.camera.target) + length(out.camera.position - out.camera.target)), 1.0, 1e3);
+    // DE-Raytracer's floor (EnableFloor): the plane dot(normalize(FloorNormal), p) = FloorHeight,
+    // which its march meets from either side. fraktal's plane object is solid below its frame's
+    // z = 0, so it is turned to hold the camera on its empty side.
+    const PresetValue* floorOn = preset ? preset->find("EnableFloor") : nullptr;
+    const std::vector<double> floorNormal = setting(file, preset, "FloorNormal", {0.0, 0.0, 1.0});
+    vec3 normal(floorNormal[0], floorNormal[1], floorNormal[2]);
+    const ObjectDesc* plane = findObject("plane");
+    if (floorOn && floorOn->boolean.value_or(false) && length(normal) > 1e-9 && plane) {
+        normal = normalize(normal);
+        double height = setting(file, preset, "FloorHeight", {0.0})[0];
+        if (dot(normal, out.camera.position) < height) normal = -normal, height = -height;
+        SceneObject floor = SceneObject::make(*plane);
+        floor.center = normal * height;
+        // The turn about z x normal that takes the frame's z to the normal.
+        const vec3 axis = cross(vec3(0.0, 0.0, 1.0), normal);
+        if (length(axis) > 1e-9) {
+            floor.axis = normalize(axis);
+            floor.angle = std::acos(std::clamp(normal.z, -1.0, 1.0)) * 180.0 / M_PI;
+        } else if (normal.z < 0.0) {
+            floor.axis = vec3(1.0, 0.0, 0.0);
+            floor.angle = 180.0;
+        }
+        result.objects.push_back(floor);
+        result.objectReach = setting(file, preset, "MaxDistance", {1000.0})[0];
+        result.approximated.push_back(
+            {"EnableFloor", "DE-Raytracer's floor is a plane object, drawn as far as the bound reaches"});
+    }
     for (const char* key : {"BaseColor", "OrbitStrength", "X", "Y", "Z", "R", "SpotLight", "CamLight", "AO", "Fog",
                             "Glow", "Specular", "HardShadow", "Reflection"})
         if (preset && preset->find(key) && !file.findUniform(key)) {

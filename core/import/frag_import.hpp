@@ -39,6 +39,11 @@ struct FragImport {
     std::string presetUsed;                // the #preset applied ("" when the file has none)
     std::vector<ImportItem> unsupported;   // the preset differs from the frag here
     std::vector<ImportItem> approximated;  // the look is matched approximately here
+    // What the raytracer draws beside the DE (DE-Raytracer's floor, as a plane object), and how far
+    // from the eye FragM marches to it (MaxDistance). They join the formula after its step is
+    // measured (core/scene/scene_import.cpp): the step and the fitted bound are the DE's alone.
+    std::vector<SceneObject> objects;
+    double objectReach = 0.0;
     bool faithful() const { return unsupported.empty(); }
 };
 

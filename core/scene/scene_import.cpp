@@ -95,7 +95,7 @@ double fittedBoundOnSampler(FormulaSampler& sampler, double searchRadius, double
 // twin). FragM multiplies the estimate by FudgeFactor; the measured factor takes its place. A frag
 // whose estimate nothing vouches for (no ray meets the object, or no factor is safe) keeps its
 // FudgeFactor, and the description says so.
-void measureFragStep(frag::FragImport& result, ImportedScene& scene, const SceneImportOptions& options) {
+void measureFragFactor(frag::FragImport& result, ImportedScene& scene, const SceneImportOptions& options) {
     if (!options.measure || !options.glslSampler) return;
     Formula& f = result.preset.formula;
     const std::unique_ptr<FormulaSampler> sampler = options.glslSampler(f);
@@ -134,6 +134,18 @@ void measureFragStep(frag::FragImport& result, ImportedScene& scene, const Scene
     if (c.samples > 0 && !c.conservative()) f.deFactor *= c.safeStepMultiplier();
 }
 
+// The factor measured as above, and the hit threshold after it: FragM's hit test, DE * FudgeFactor
+// < 10^Detail * t, and fraktal's, DE * deFactor < threshold, both apply to the scaled estimate, so
+// the threshold follows the factor and the surface stays where FragM draws it (a sphere whose
+// rippled estimate measured 0.10 under FudgeFactor 1 was drawn ten thresholds too fat:
+// tests/data/frag_import/annotations.frag), as for Mandelbulber2's DE_factor below.
+void measureFragStep(frag::FragImport& result, ImportedScene& scene, const SceneImportOptions& options) {
+    const double fudge = result.preset.formula.deFactor;
+    measureFragFactor(result, scene, options);
+    RenderSettings& r = result.preset.render;
+    r.detail = std::clamp(r.detail * result.preset.formula.deFactor / fudge, 1e-3, 100.0);
+}
+
 // A Fragmentarium frag: its DE as a whole-DE estimator, its step factor measured on the GPU when
 // the caller can (measureFragStep).
 ImportedScene importFragScene(const std::filesystem::path& path, const SceneImportOptions& options) {
@@ -147,6 +159,14 @@ ImportedScene importFragScene(const std::filesystem::path& path, const SceneImpo
     refuseUnlessLenient(path, scene, options);
     result.preset.name = path.stem().string();
     measureFragStep(result, scene, options);
+    // The raytracer's floor joins the measured DE; the bound reaches as far from the eye as FragM
+    // marches to it (within what a preset holds), since fraktal draws nothing outside the bound.
+    if (!result.objects.empty()) {
+        Formula& f = result.preset.formula;
+        f.objects = result.objects;
+        f.boundRadius =
+            std::max(f.boundRadius, std::min(length(result.preset.camera.position) + result.objectReach, 1e3));
+    }
     result.preset.description = frag::importDescription(file, result);
     keepReachOf256Steps(result.preset);
     scene.preset = readBack(path, result.preset);
