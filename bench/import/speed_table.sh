@@ -59,44 +59,48 @@ full=$((160 * 120))
 # Matching files with an edge, from a results.tsv: "collection<TAB>name" lines.
 matchingWithEdge() { awk -F'\t' -v full=$full '$4 == "matching" && $8 != full { print $1 "\t" $2 }' "$@"; }
 
+# Which formula/img files match and which examples are drawn: measured after the toolbar's rows (a
+# cut-short run still has them).
 formulaScenes="" randomScenes=""
-if has formula || has random; then
-  shuffle=yes
-  if [[ -z $results ]]; then
-    shuffle=no  # drawn in the shuffled order already
-    # formula/img in one silhouette run, the shuffled examples in batches of 40 until enough match.
-    results=$tmp/results.tsv
-    if has formula; then
-      find "$share/formula/img" -name '*.fract' | sort > "$tmp/list"
-      FRACT_LIST=$tmp/list bench/import/run.sh "$fraktal" 160x120 "$tmp/formula" > /dev/null
-      cp "$tmp/formula/results.tsv" "$results"
-    else
-      : > "$results"
+selectScenes() {
+  if has formula || has random; then
+    shuffle=yes
+    if [[ -z $results ]]; then
+      shuffle=no  # drawn in the shuffled order already
+      # formula/img in one silhouette run, the shuffled examples in batches of 40 until enough match.
+      results=$tmp/results.tsv
+      if has formula; then
+        find "$share/formula/img" -name '*.fract' | sort > "$tmp/list"
+        FRACT_LIST=$tmp/list bench/import/run.sh "$fraktal" 160x120 "$tmp/formula" > /dev/null
+        cp "$tmp/formula/results.tsv" "$results"
+      else
+        : > "$results"
+      fi
+      if has random; then
+        find "$share/examples" -name '*.fract' | sort |
+          python3 -c "import random, sys; l = sys.stdin.read().splitlines(); random.Random($seed).shuffle(l); print('\n'.join(l))" \
+            > "$tmp/shuffled"
+        batch=0
+        while (( $(awk -F'\t' '$1 != "formula"' "$results" | matchingWithEdge | wc -l) < random )); do
+          sed -n "$((batch * 40 + 1)),$((batch * 40 + 40))p" "$tmp/shuffled" > "$tmp/list"
+          [[ -s $tmp/list ]] || break
+          FRACT_LIST=$tmp/list bench/import/run.sh "$fraktal" 160x120 "$tmp/batch$batch" > /dev/null
+          tail -n +2 "$tmp/batch$batch/results.tsv" >> "$results"
+          batch=$((batch + 1))
+        done
+      fi
     fi
+    has formula && formulaScenes=$(awk -F'\t' '$1 == "formula" && $4 == "matching" { print $1 "\t" $2 }' "$results")
+    # In the order drawn (a given results.tsv: its own order, shuffled by the seed).
     if has random; then
-      find "$share/examples" -name '*.fract' | sort |
-        python3 -c "import random, sys; l = sys.stdin.read().splitlines(); random.Random($seed).shuffle(l); print('\n'.join(l))" \
-          > "$tmp/shuffled"
-      batch=0
-      while (( $(awk -F'\t' '$1 != "formula"' "$results" | matchingWithEdge | wc -l) < random )); do
-        sed -n "$((batch * 40 + 1)),$((batch * 40 + 40))p" "$tmp/shuffled" > "$tmp/list"
-        [[ -s $tmp/list ]] || break
-        FRACT_LIST=$tmp/list bench/import/run.sh "$fraktal" 160x120 "$tmp/batch$batch" > /dev/null
-        tail -n +2 "$tmp/batch$batch/results.tsv" >> "$results"
-        batch=$((batch + 1))
-      done
-    fi
-  fi
-  has formula && formulaScenes=$(awk -F'\t' '$1 == "formula" && $4 == "matching" { print $1 "\t" $2 }' "$results")
-  # In the order drawn (a given results.tsv: its own order, shuffled by the seed).
-  if has random; then
-    randomScenes=$(awk -F'\t' '$1 != "formula" && $1 != "toolbar"' "$results" | matchingWithEdge |
-      python3 -c "import random, sys
+      randomScenes=$(awk -F'\t' '$1 != "formula" && $1 != "toolbar"' "$results" | matchingWithEdge |
+        python3 -c "import random, sys
 l = sys.stdin.read().splitlines()
 if '$shuffle' == 'yes': random.Random($seed).shuffle(l)
 print('\n'.join(l[:$random]))")
+    fi
   fi
-fi
+}
 
 # Each part through speed.sh: truths at 4 samples per pixel, mandelbulber2 at 1, fraktal at 1 or 2
 # (bench/import/README.md, "Speed on imported scenes").
@@ -106,7 +110,7 @@ part() {  # TITLE SIZE SCENES
   echo "### $1 at $2"
   echo
   SCENES=$3 TRUTH_AA=2 PEER_AA=1 FRAKTAL_SPP="1 2" DE_COUNT=$deCount bench/import/speed.sh /dev/null 0 "$2" "$fraktal" |
-    tee -a "$tmp/rows"
+    tee -a "$tmp/rows" /dev/stderr
 }
 toolbarScenes=""
 if has toolbar; then
@@ -122,6 +126,7 @@ fi
   echo "The ratio is of CPU time (user + system), not wall time: both programs use every core, and CPU"
   echo "time stays comparable when other work shares the machine."
   has toolbar && part "The toolbar's nine" "$toolbarSize" "$toolbarScenes"
+  selectScenes
   has formula && part "formula/img files that match" "$size" "$formulaScenes"
   has random && part "$random matching imports with an edge, drawn with seed $seed" "$size" "$randomScenes"
   echo
