@@ -101,7 +101,6 @@ if [[ -n $deCount ]]; then
 fi
 echo "| scene | mandelbulber2 samples/px | mandelbulber2 s (CPU s) | its coverage RMSE | fraktal setting | fraktal s (CPU s) | fraktal coverage RMSE | mandelbulber2 / fraktal, wall (CPU) |$extra"
 echo "|---|---|---|---|---|---|---|---|$extraRule"
-echo "|---|---|---|---|---|---|---|---|"
 ratios=()
 for scene in "${scenes[@]}"; do
   c=${scene%%$'\t'*}; name=${scene#*$'\t'}
