@@ -114,7 +114,7 @@ TEST(FractImport, DefaultsAreMandelbulber2sOwn) {
 }
 
 TEST(FractImport, ReflectionsAreTracedOnlyWhereTheMaterialReflects) {
-    // The toolbar's bulbs and polyhedra turn raytraced_reflections on at reflectance 0: Mandelbulber2
+    // The toolbar's nine files turn raytraced_reflections on at reflectance 0: Mandelbulber2
     // traces no reflected ray there (render_worker.cpp, `if (reflect > 0.0f)`), so fraktal marches
     // none either; a reflecting material keeps its share of the mirror image.
     EXPECT_EQ(importText("[main_parameters]\nraytraced_reflections true;\n").preset.shading.reflection, 0.0);

@@ -8,7 +8,7 @@
 # imports, spread evenly over its list: those whose object does not fill the view first (an edge to
 # measure), then views from inside. Environment: FRAKTAL_SPP (default "1 2 4"), PEER_AA (default "1 2"), TRUTH_AA (default 3:
 # both truths take 9 samples per pixel), DE_COUNT (bench_de_count: with it each row gains the
-# breakdown of issue 56's item 2, below).
+# breakdown of what each program computes, below).
 # Each render is timed by the wall clock and by its CPU time (user + system, threads included): both
 # programs render on every core, and the CPU time stays comparable when something else runs beside
 # the bench. The last lines give the distribution of the CPU-time ratio.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed table on imported scenes in one command and one run (issue 56, item 5): fraktal's still
+# The speed table on imported scenes in one command and one run: fraktal's still
 # against mandelbulber2's own at equal coverage error (bench/import/speed.sh, each row with the
 # breakdown of what both programs compute), over
 #   - the toolbar's nine one-click presets at TOOLBAR_SIZE (default 1280x720);

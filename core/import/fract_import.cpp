@@ -2454,9 +2454,10 @@ void importLook(const FractFile& file, Reader& main, FractImport& out) {
     }
     // Mandelbulber2 traces a reflected ray only where the material reflects: RayRecursion pushes a
     // reflection only `if (reflect > 0.0f)`, reflect being the material's reflectance
-    // (render_worker.cpp). raytraced_reflections at reflectance 0, as five toolbar files set it,
-    // traces none, and a reflected march there cost fraktal a second march a pixel for nothing
-    // (issue 56). The reflectance is the share of the mirror image, fraktal's Fresnel F0.
+    // (render_worker.cpp). raytraced_reflections at reflectance 0, as all nine toolbar files set
+    // it, traces none; a reflected march there cost fraktal a second march a hit for nothing
+    // (bench/import/README.md, "The speed table in one command"). The reflectance is the share of
+    // the mirror image: fraktal's Fresnel F0.
     const double reflectance = main.number("mat1_reflectance");
     s.reflection = main.boolean("raytraced_reflections") && reflectance > 0.0 ? std::min(reflectance, 1.0) : 0.0;
     if (main.boolean("DOF_enabled")) {
