@@ -72,6 +72,7 @@ benchmarks=(
   "pathtrace_1024|bench/stills/pathtrace.sh $build 320x180 1024 64"
   # bench/import: the library (its OUT in bench/results/import), then the speed tables' scenes.
   "import|bench/import/run.sh $fraktal 160x120 $out/import"
+  "import_speed_table|bench/import/speed_table.sh --seed 1 -o $out/import_speed_table.md $build"
   "import_speed_640x360|SCENES=\"\$import_scenes_640x360\" TRUTH_AA=2 PEER_AA=1 FRAKTAL_SPP='1 2' bench/import/speed.sh /dev/null 0 640x360 $fraktal"
   "import_speed_1280x720|SCENES=\"\$import_scenes_1280x720\" TRUTH_AA=2 PEER_AA=1 FRAKTAL_SPP='1 2' bench/import/speed.sh /dev/null 0 1280x720 $fraktal"
   # bench/anim: three frames of the power morph twice (the second run skips them), then the farm.

@@ -110,6 +110,20 @@ TEST(FractImport, DefaultsAreMandelbulber2sOwn) {
     EXPECT_FALSE(r.preset.camera.flipVertical);
 }
 
+TEST(FractImport, ReflectionsAreTracedOnlyWhereTheMaterialReflects) {
+    // The toolbar's nine files turn raytraced_reflections on at reflectance 0: Mandelbulber2
+    // traces no reflected ray there (render_worker.cpp, `if (reflect > 0.0f)`), so fraktal marches
+    // none either; a reflecting material keeps its share of the mirror image.
+    EXPECT_EQ(importText("[main_parameters]\nraytraced_reflections true;\n").preset.shading.reflection, 0.0);
+    EXPECT_EQ(importText("[main_parameters]\nmat1_reflectance 0,4;\n").preset.shading.reflection, 0.0);
+    EXPECT_DOUBLE_EQ(
+        importText("[main_parameters]\nraytraced_reflections true;\nmat1_reflectance 0,4;\n").preset.shading.reflection,
+        0.4);
+    EXPECT_EQ(
+        importText("[main_parameters]\nraytraced_reflections true;\nmat1_reflectance 3;\n").preset.shading.reflection,
+        1.0);
+}
+
 TEST(FractImport, MengerSpongeIsMengerRotateAboutItsCorner) {
     // abs, sort, z *= s, x and y less 2, z less 2 above 1: the corner 2 / (s - 1); DE (r - 2) / dr.
     const mb2::FractImport r = importText("[main_parameters]\nformula_1 7;\n[fractal_1]\ntransf_scale_3 2,5;\n");

@@ -7,7 +7,8 @@
 # build/app/fraktal). RESULTS.tsv is bench/import/run.sh's; the scenes are COUNT of its matching
 # imports, spread evenly over its list: those whose object does not fill the view first (an edge to
 # measure), then views from inside. Environment: FRAKTAL_SPP (default "1 2 4"), PEER_AA (default "1 2"), TRUTH_AA (default 3:
-# both truths take 9 samples per pixel).
+# both truths take 9 samples per pixel), DE_COUNT (bench_de_count: with it each row gains the
+# breakdown of what each program computes, below).
 # Each render is timed by the wall clock and by its CPU time (user + system, threads included): both
 # programs render on every core, and the CPU time stays comparable when something else runs beside
 # the bench. The last lines give the distribution of the CPU-time ratio.
@@ -23,10 +24,11 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 g++ -O2 -std=c++20 -I"$root" -I/usr/include/stb "$root/bench/stills/coverage_error.cpp" \
   $(pkg-config --cflags --libs OpenEXR) -lstb -o "$tmp/coverage_error"
-# Runs a command, its output discarded; sets wall and cpu (seconds: elapsed, and user + system).
+# Runs a command, its output kept in $tmp/timed.log; sets wall and cpu (seconds: elapsed, and
+# user + system).
 timed() {
   local report user system
-  report=$( { TIMEFORMAT='%R %U %S'; time "$@" > /dev/null 2>&1 < /dev/null; } 2>&1 )
+  report=$( { TIMEFORMAT='%R %U %S'; time "$@" > "$tmp/timed.log" 2>&1 < /dev/null; } 2>&1 )
   read -r wall user system <<< "$report"
   cpu=$(awk -v u="$user" -v s="$system" 'BEGIN { printf "%.2f", u + s }')
 }
@@ -59,8 +61,46 @@ withSettings() {  # FILE OUT KEY=VALUE...
   local pattern; pattern=$(printf '^%s \\|' "${keys[@]}"); pattern=${pattern%\\|}
   sed "/$pattern/d" "$file" | sed "/^\[main_parameters\]/a $lines" > "$out"
 }
-echo "| scene | mandelbulber2 samples/px | mandelbulber2 s (CPU s) | its coverage RMSE | fraktal setting | fraktal s (CPU s) | fraktal coverage RMSE | mandelbulber2 / fraktal, wall (CPU) |"
-echo "|---|---|---|---|---|---|---|---|"
+deCount=${DE_COUNT:-}
+# The breakdown (with DE_COUNT): what each program computes for the scene. fraktal's from the
+# imported preset (iterations, estimator, step factor, hit threshold in pixel footprints, AO, shadow
+# and reflection march steps) and bench_de_count at the row's setting (DE evaluations per pixel,
+# march steps per camera ray, the evaluations of shading); mandelbulber2's from the settings file
+# (its defaults where the file is silent: core/import/mb2_defaults.inc) and its own statistics of
+# the timed render (`--stats`: fractal iterations per pixel, over every DE call it made).
+mb2Value() {  # FILE KEY: the file's value of KEY, else Mandelbulber2's default
+  local v
+  v=$(grep -m1 "^$2 " "$1" | sed -E "s/^$2 (.*);\r?$/\1/" || true)
+  [[ -n $v ]] || v=$(grep -m1 "{\"$2\", " "$root/core/import/mb2_defaults.inc" | sed -E 's/.*, "(.*)"\},?$/\1/' || true)
+  echo "${v:-?}"
+}
+fraktalBreakdown() {  # PRESET.json
+  python3 - "$1" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))
+f, r, s = p["formula"], p.get("render", {}), p.get("shading", {})
+est = f["nodes"][-1].get("block", "?") if f.get("nodes") else "?"
+print(f"N {f.get('iterations', '?')}, {est}, factor {f.get('deFactor', 1):.3g}, detail {r.get('detail', 0.5):.3g} px, "
+      f"AO {s.get('aoSteps', 5)}, shadow {s.get('shadowSteps', 96)}, reflection {s.get('reflectionSteps', 96) if s.get('reflection', 0) > 0 else 0}")
+PY
+}
+mb2Breakdown() {  # FILE.fract
+  local f=$1 ao refl
+  ao=$( [[ $(mb2Value "$f" ambient_occlusion_enabled) == true || $(mb2Value "$f" ambient_occlusion_enabled) == 1 ]] &&
+    case $(mb2Value "$f" ambient_occlusion_mode) in 0) echo "fast" ;; 1) echo "multiple rays x$(mb2Value "$f" ambient_occlusion_quality)" ;; *) echo "screen space" ;; esac || echo off)
+  refl=$( [[ $(mb2Value "$f" raytraced_reflections) =~ ^(true|1)$ ]] && awk -v r="$(mb2Value "$f" mat1_reflectance)" 'BEGIN { exit !(r > 0) }' &&
+    echo "traced ($(mb2Value "$f" mat1_reflectance))" || echo none)
+  # DE method and function as Mandelbulber2 numbers them (0: the formula's preferred; method 1 delta,
+  # 2 analytic; function 1 linear, 2 logarithmic: fractparams.cpp's enums).
+  echo "formula $(mb2Value "$f" formula_1), N $(mb2Value "$f" N), DE method $(mb2Value "$f" delta_DE_method) function $(mb2Value "$f" delta_DE_function), factor $(mb2Value "$f" DE_factor), detail $(mb2Value "$f" detail_level), AO $ao, shadow $( [[ $(mb2Value "$f" shadows_enabled) =~ ^(true|1)$ ]] && echo on || echo off), reflection $refl"
+}
+extra=""; extraRule=""
+if [[ -n $deCount ]]; then
+  extra=" fraktal: what it computes | fraktal DE evaluations/px (march steps/ray; shading) | mandelbulber2: what it computes | mandelbulber2 iterations/px (all DE calls) |"
+  extraRule="---|---|---|---|"
+fi
+echo "| scene | mandelbulber2 samples/px | mandelbulber2 s (CPU s) | its coverage RMSE | fraktal setting | fraktal s (CPU s) | fraktal coverage RMSE | mandelbulber2 / fraktal, wall (CPU) |$extra"
+echo "|---|---|---|---|---|---|---|---|$extraRule"
 ratios=()
 for scene in "${scenes[@]}"; do
   c=${scene%%$'\t'*}; name=${scene#*$'\t'}
@@ -78,9 +118,10 @@ for scene in "${scenes[@]}"; do
     > /dev/null 2>&1 < /dev/null
   for aa in "${peerAa[@]}"; do
     withSettings "$fract" "$tmp/peer.fract" antialiasing_enabled=$([[ $aa -gt 1 ]] && echo true || echo false) antialiasing_size=$aa
-    timed env HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r "$size" -o "$tmp/mb" \
+    timed env HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n --stats -f png16alpha -r "$size" -o "$tmp/mb" \
       "$tmp/peer.fract"
     t=$wall peerCpu=$cpu
+    peerIters=$(tr '\r' '\n' < "$tmp/timed.log" | sed -nE 's/.*iters \/ pixel *: *([0-9.e+]+).*/\1/p' | tail -1)
     read -r peerError _ _ < <("$tmp/coverage_error" "$tmp/mb_truth.png" "$tmp/mb.png")
     best=""
     for spp in "${fraktalSpp[@]}"; do
@@ -92,7 +133,12 @@ for scene in "${scenes[@]}"; do
     if [[ -n $best ]]; then
       ratio=$(awk -v a="$peerCpu" -v b="${fCpu[$best]}" 'BEGIN { printf "%.2f", a / b }')
       ratios+=("$ratio $c / $name")
-      echo "| $c / $name | $((aa * aa)) | $t ($peerCpu) | $peerError | $best spp | ${fTime[$best]} (${fCpu[$best]}) | ${fError[$best]} | $(awk -v a="$t" -v b="${fTime[$best]}" 'BEGIN { printf "%.2f", a / b }') ($ratio) |"
+      cols=""
+      if [[ -n $deCount ]]; then
+        counts=$("$deCount" "$tmp/s.json" "$size" "$best" | sed -nE 's/^([0-9.]+) DE evaluations per pixel .*, ([0-9.]+) march steps per camera ray, .*, ([0-9.]+) of the DE .*/\1 (\2; \3)/p')
+        cols=" $(fraktalBreakdown "$tmp/s.json") | $counts | $(mb2Breakdown "$fract") | ${peerIters:-?} |"
+      fi
+      echo "| $c / $name | $((aa * aa)) | $t ($peerCpu) | $peerError | $best spp | ${fTime[$best]} (${fCpu[$best]}) | ${fError[$best]} | $(awk -v a="$t" -v b="${fTime[$best]}" 'BEGIN { printf "%.2f", a / b }') ($ratio) |$cols"
     else
       echo "| $c / $name | $((aa * aa)) | $t | $peerError | none of spp ${fraktalSpp[*]} | | | |"
     fi

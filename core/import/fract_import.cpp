@@ -2452,7 +2452,14 @@ void importLook(const FractFile& file, Reader& main, FractImport& out) {
     } else {
         s.aoSteps = 0;
     }
-    s.reflection = main.boolean("raytraced_reflections") ? 0.1 : 0.0;
+    // Mandelbulber2 traces a reflected ray only where the material reflects: RayRecursion pushes a
+    // reflection only `if (reflect > 0.0f)`, reflect being the material's reflectance
+    // (render_worker.cpp). raytraced_reflections at reflectance 0, as all nine toolbar files set
+    // it, traces none; a reflected march there cost fraktal a second march a hit for nothing
+    // (bench/import/README.md, "The speed table in one command"). The reflectance is the share of
+    // the mirror image: fraktal's Fresnel F0.
+    const double reflectance = main.number("mat1_reflectance");
+    s.reflection = main.boolean("raytraced_reflections") && reflectance > 0.0 ? std::min(reflectance, 1.0) : 0.0;
     if (main.boolean("DOF_enabled")) {
         ThinLens& lens = out.preset.lighting.lens;
         lens.focusDistance = std::max(main.number("DOF_focus"), 1e-3);
