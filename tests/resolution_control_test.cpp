@@ -107,6 +107,25 @@ TEST(ResolutionControl, ReactsToASlowFrameAtOnceAndRecovers) {
     EXPECT_GE(recovered, settled - c.control().step);
 }
 
+// Frames measured far faster than the scene renders (an eighth-size frame is mostly the editor's
+// fixed work, and load makes it vary) must not take motion to full size in one frame: the scale
+// rises a step a frame, so a wrong estimate costs one frame a step larger, and that frame, over
+// the target, brings the scale down at once. Raised in one frame, light scenes orbited on a loaded
+// machine went from 0.19 to full size mid-drag (650-700 ms frames, bench/viewport/README.md).
+TEST(ResolutionControl, UnderMotionTheScaleRisesAStepAFrame) {
+    ResolutionController c;
+    const double step = c.control().step;
+    double scale = c.next(true, 0.0);
+    for (int i = 0; i < 20; ++i) {
+        const double next = c.next(true, 1.0);  // absurdly fast frames: the estimate says full size fits
+        EXPECT_LE(next, scale + step + 1e-12) << "frame " << i;
+        scale = next;
+    }
+    EXPECT_EQ(scale, 1.0);  // it does get there
+    const double afterSlow = c.next(true, 700.0);
+    EXPECT_LT(afterSlow, 0.5);
+}
+
 TEST(ResolutionControl, FullResolutionAtRestAndTheMotionScaleComesBack) {
     ResolutionController c;
     SimulatedRenderer r{8.0, 200.0};

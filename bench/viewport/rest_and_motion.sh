@@ -5,10 +5,11 @@
 # moves over about 6 s). From `fraktal edit --frame-log`: the UI frame time p50/p95/max at rest
 # (the frames after the first picture until the drag) and in motion (the frames during the drag),
 # the most slices a frame at rest refined one of, and the seconds from the first picture until
-# the view settled. A PRESET is a name in presets/ or a path; `kleinian_x3` is kleinian.json with
+# the view settled; the main thread's render time (render_ms) at its most at rest and in motion,
+# and in the first frame of motion after rest (onto the smaller grid). A PRESET is a name in presets/ or a path; `kleinian_x3` is kleinian.json with
 # its group block three times. With two builds each scene runs old then new, so that the machine's
 # load falls on both alike. Each run starts with an empty shader cache.
-# Usage: bench/viewport/rest_and_motion.sh BUILD_DIR [OTHER_BUILD_DIR] [SETTLE_MAX] [PRESET...]
+# Usage: [KEEP_LOGS=DIR] bench/viewport/rest_and_motion.sh BUILD_DIR [OTHER_BUILD_DIR] [SETTLE_MAX] [PRESET...]
 #        (default 90 s; kleinian pseudo_kleinian menger_field_depth_of_field hybrid_amazing_surf_box
 #        inverted_menger kleinian_x3)
 set -euo pipefail
@@ -28,8 +29,8 @@ pid=
 trap '[ -z "$pid" ] || kill "$pid" 2>/dev/null || true; rm -rf "$work"' EXIT
 jq '.name = "Three Kleinian nodes" | .formula.nodes = [.formula.nodes[0], .formula.nodes[0], .formula.nodes[0], .formula.nodes[1]]' \
   "$root/presets/kleinian.json" > "$work/kleinian_x3.json"
-echo "| scene | build | rest frames | rest ms p50 | p95 | max | slices (most) | settled after | motion frames | motion ms p50 | p95 | max |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| scene | build | rest frames | rest ms p50 | p95 | max | render max | slices (most) | settled after | motion frames | motion ms p50 | p95 | max | render max | first move render |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for name in "${presets[@]}"; do
   case $name in
     kleinian_x3) file="$work/kleinian_x3.json" ;;
@@ -65,6 +66,8 @@ for name in "${presets[@]}"; do
     done
     xdotool mouseup 1
     motion_end=$(wc -l < "$log")
+    # KEEP_LOGS=DIR keeps each run's frame log there (scene-build.jsonl), to look at its frames.
+    [ -z "${KEEP_LOGS:-}" ] || { mkdir -p "$KEEP_LOGS"; cp "$log" "$KEEP_LOGS/$name-$(echo "$build" | tr / _).jsonl"; }
     kill "$pid" 2>/dev/null || true
     wait "$pid" 2>/dev/null || true
     pid=
@@ -74,7 +77,12 @@ lines = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
 rest_end, motion_end = int(sys.argv[4]), int(sys.argv[5])
 first = next((i for i, l in enumerate(lines) if l["render_ms"] > 0), len(lines))
 rest = lines[first + 1:rest_end]
-motion = lines[rest_end:motion_end]
+# Motion from the drag's first moved frame: the frames before it are the settled view's idle
+# waits for input (the editor sleeps until an event once settled), not frames that took long.
+drag = lines[rest_end:motion_end]
+moved = next((i for i, l in enumerate(drag) if l["action"] in ("reproject", "hold") or l["width"] != drag[0]["width"]),
+             len(drag))
+motion = drag[moved:]
 def pct(v, p):
     v = sorted(v)
     return f"{v[min(len(v) - 1, int(p * len(v)))]:.0f}" if v else "-"
@@ -82,11 +90,16 @@ def most(v):
     return f"{max(v):.0f}" if v else "-"
 rf = [l["frame_ms"] for l in rest]
 mf = [l["frame_ms"] for l in motion]
+rr = [l["render_ms"] for l in rest]
+mr = [l["render_ms"] for l in motion]
+# The first frame of motion after rest: the first of the drag whose grid is not the rest grid's.
+first_move = next((l["render_ms"] for l in motion if rest and l["width"] != rest[-1]["width"]), None)
 slices = max((l.get("slices", 1) for l in rest), default=1)
 settled_at = next((l["t"] for l in rest if l["settled"]), None)
 settled = f"{settled_at - lines[first]['t']:.1f} s" if settled_at is not None and first < len(lines) else "no"
-print(f"| {sys.argv[2]} | {sys.argv[3]} | {len(rest)} | {pct(rf, .5)} | {pct(rf, .95)} | {most(rf)} | {slices} | "
-      f"{settled} | {len(mf)} | {pct(mf, .5)} | {pct(mf, .95)} | {most(mf)} |")
+first_move = f"{first_move:.0f}" if first_move is not None else "-"
+print(f"| {sys.argv[2]} | {sys.argv[3]} | {len(rest)} | {pct(rf, .5)} | {pct(rf, .95)} | {most(rf)} | {most(rr)} | "
+      f"{slices} | {settled} | {len(mf)} | {pct(mf, .5)} | {pct(mf, .95)} | {most(mf)} | {most(mr)} | {first_move} |")
 PY
   done
 done
