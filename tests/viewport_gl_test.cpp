@@ -245,6 +245,29 @@ TEST(ViewportGL, FirstMoveOntoASmallerGridHasNoHoles) {
         }
 }
 
+// The camera stops after motion on a smaller grid, and the caller slices the first frame at rest
+// at full size: that frame starts the view afresh, sliced (a reset), instead of reprojecting the
+// small grid and marching every ray of the full view in one frame (650-700 ms on light scenes in
+// the editor on llvmpipe). Unsliced, the size change under motion still reprojects.
+TEST(ViewportGL, AFrameAtRestAfterMotionOnASmallerGridIsASlicedReset) {
+    test::glContext();
+    const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbulb.json");
+    for (int slices : {4, 1}) {
+        SCOPED_TRACE("slices " + std::to_string(slices));
+        ViewportOptions options;
+        Viewport v(options);
+        renderUntilSettled(v, s.preset.formula, s.preset.camera, s.render, s.preset.shading, kW, kH, kMaxFrames);
+        const Camera moved = cameraOnPath(s.preset.camera, CameraPath::Orbit, 1, 1.0);
+        ASSERT_EQ(v.render(s.preset.formula, moved, s.render, s.preset.shading, kW / 4, kH / 4).action,
+                  FrameAction::Reproject);
+        options.slices = slices;
+        v.setOptions(options);
+        const FrameStats atRest = v.render(s.preset.formula, moved, s.render, s.preset.shading, kW, kH);
+        EXPECT_EQ(atRest.action, slices > 1 ? FrameAction::Reset : FrameAction::Reproject);
+        EXPECT_EQ(atRest.slices, slices);
+    }
+}
+
 // Every colour the viewport holds, fresh or carried by reprojection, is the shading of a point on
 // the surface: the point its colourPoint names lies within the hit band of the formula's CPU DE.
 // Reprojection scatters colours by these points and the motion filter places samples at them, so

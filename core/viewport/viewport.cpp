@@ -73,10 +73,17 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
         }
     }
 
-    const FrameAction decided =
+    FrameAction decided =
         forceReset_ ? FrameAction::Reset
                     : decideFrame(previous_ ? &*previous_ : nullptr, key, options_.reproject, previousAction_);
     forceReset_ = false;
+    // The caller slices this frame (a frame at rest) and the grid changed with the camera still:
+    // motion on a smaller grid just stopped. Reprojected (decideFrame's choice for a size change
+    // under motion), every ray of the full-size view would march in this one frame, unsliced:
+    // 650-700 ms on light scenes in the editor on llvmpipe (bench/viewport/README.md). A sliced
+    // reset refines it over the next frames, over the previous image resampled.
+    if (decided == FrameAction::Reproject && options_.slices > 1 && previousGrid && previous_->camera == camera)
+        decided = FrameAction::Reset;
     // A held frame marches on like a continued one; only its decision (it never settles, and
     // the next still frame resets) differs.
     const FrameAction action = decided == FrameAction::Hold ? FrameAction::Continue : decided;
