@@ -279,6 +279,7 @@ void parseRender(const ReadContext& context, const json& j, RenderSettings& s) {
     s.maxSteps = r.integer("maxSteps", s.maxSteps, 1, kMaxMarchSteps);
     s.detail = r.number("detail", s.detail, 1e-3, 100.0);
     s.overRelaxation = r.number("overRelaxation", s.overRelaxation, 1.0, 1.95);
+    s.maxStepGrowth = r.number("maxStepGrowth", s.maxStepGrowth, 1.0, kMaxStepGrowth);
     s.filterRadius = r.number("filterRadius", s.filterRadius, 0.5, 4.0);
     s.transparentBackground = r.boolean("transparentBackground", s.transparentBackground);
     r.finish();
@@ -406,6 +407,7 @@ json renderJson(const RenderSettings& s) {
     put("maxSteps", s.maxSteps, d.maxSteps);
     put("detail", s.detail, d.detail);
     put("overRelaxation", s.overRelaxation, d.overRelaxation);
+    put("maxStepGrowth", s.maxStepGrowth, d.maxStepGrowth);
     put("filterRadius", s.filterRadius, d.filterRadius);
     put("transparentBackground", s.transparentBackground, d.transparentBackground);
     return j;

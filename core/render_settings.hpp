@@ -12,6 +12,7 @@ namespace fraktal {
 inline constexpr int kMaxImageSide = 65536;
 inline constexpr int kMaxSpp = 4096;
 inline constexpr int kMaxMarchSteps = 10000;
+inline constexpr double kMaxStepGrowth = 64.0;
 
 struct RenderSettings {
     int width = 1280;
@@ -20,7 +21,12 @@ struct RenderSettings {
     int maxSteps = 256;           // march steps per camera ray
     double detail = 0.5;          // hit threshold, in pixel footprints (smaller = finer)
     double overRelaxation = 1.3;  // initial omega of the over-relaxed marcher (1 = plain)
-    double filterRadius = 2.0;    // Blackman-Harris reconstruction filter radius, pixels
+    // The largest multiple of the estimate a ray's adaptive step may reach (shaders/march.glsl): up
+    // to 2 every step is verified by the spheres of its ends; above 2, steps are trusted where the
+    // estimate falls slowly, faster on cautious estimates and at a risk of stepping across thin
+    // parts. 1: no longer than over-relaxation's first steps.
+    double maxStepGrowth = 1.9;
+    double filterRadius = 2.0;  // Blackman-Harris reconstruction filter radius, pixels
     bool transparentBackground = false;
     // Colour: the working (scene-linear) space is an OCIO colour space name or the role
     // "scene_linear"; the PNG preview goes through display/view with exposure (stops).

@@ -1,5 +1,7 @@
 #include "core/shading_params.hpp"
 
+#include <algorithm>
+
 namespace fraktal {
 
 ShadingParams resolveShading(const ShadingSettings& shading, const RenderSettings& render, const Formula& formula,
@@ -17,6 +19,8 @@ ShadingParams resolveShading(const ShadingSettings& shading, const RenderSetting
         p.objectColors[k] = toWorking ? toWorking(formula.objects[k].color) : formula.objects[k].color;
     p.detail = render.detail;
     p.overRelaxation = render.overRelaxation;
+    // Over-relaxation's first steps are already that long.
+    p.maxStepGrowth = std::max(render.maxStepGrowth, render.overRelaxation);
     return p;
 }
 

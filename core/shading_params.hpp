@@ -18,6 +18,7 @@ struct ShadingParams {
     std::array<vec3, kMaxObjects> objectColors{};
     double detail = 0.5;
     double overRelaxation = 1.3;
+    double maxStepGrowth = 1.9;
 };
 
 // `toWorking` converts a linear Rec.709 colour into the working space (identity by default).

@@ -1,10 +1,9 @@
 // shaders/march.glsl — needs DE() from the formula (shaders/formula.glsl, which also declares
 // u_boundRadius).
 //
-// Sphere tracing with over-relaxation and fallback (Keinert et al. 2014, "Enhanced Sphere Tracing",
-// section 3.1): step omega * d while consecutive unbounding spheres overlap; when they stop
-// overlapping the over-relaxed step may have jumped over surface, so step back to the plain
-// sphere-tracing step from the previous point and continue with omega = 1. Hit when
+// Sphere tracing with an adaptive step (below): over-relaxation (Keinert et al. 2014, "Enhanced
+// Sphere Tracing", section 3.1) whose omega each ray grows and shrinks from its own estimates,
+// with Keinert's fallback to the plain step from the previous point. Hit when
 // d < pixelAngle * t * u_detail (the detail level tied to the pixel footprint: a bigger image has a
 // smaller pixelAngle and so resolves finer detail); escaped when t > tEnd. deEvals counts DE calls.
 //
@@ -16,17 +15,86 @@
 // Uniforms (set from RenderSettings by core/render/shading_uniforms.cpp):
 //   float u_detail          hit threshold in pixel footprints (1 = one pixel; 0.5 = half a pixel)
 //   float u_overRelaxation  initial omega of over-relaxed sphere tracing, in [1, 2) (1 = plain)
+//   float u_maxStepGrowth   the largest omega the adaptive step may reach, at least u_overRelaxation
 uniform float u_detail;
 uniform float u_overRelaxation;
+uniform float u_maxStepGrowth;
+
+// The adaptive step. The step factor (DE()'s deFactor) is measured once for the whole scene, so it
+// is set by the worst rays, where the estimate exceeds the distance most; elsewhere the estimate
+// is often a small share of the distance (the check's DE / true distance: 2-3 % at the median on
+// Kleinian and random stacks), and a ray that steps omega = 1 times it crawls. Each ray therefore
+// sizes its steps from what its own estimates do: `steepest` is the fastest the estimate has
+// fallen per unit of ray along it (a lower bound of the field's local Lipschitz constant, as the
+// local bounds of Galin et al. 2020, "Segment Tracing", measured along the ray instead of
+// declared). omega grows at most STEP_GROWTH_PER_STEP a step, up to a limit (nextOmega):
+//  - Verified (u_maxStepGrowth <= 2, the default): the largest omega for which the unbounding
+//    spheres of consecutive points still overlap on a field that falls at `steepest`, 2 / (1 +
+//    steepest), with a margin. A step passes only when they do overlap (Keinert et al. 2014's test):
+//    the two spheres, which the measured factor makes empty, then cover it, so no step crosses a
+//    surface the plain march would meet. Auto-relaxation (Balint and Valasek 2018) after a
+//    fallback, where Keinert's marcher stays at omega = 1 for the rest of the ray.
+//  - Trusted (u_maxStepGrowth > 2): also omega = STEP_TARGET_FALL / steepest, so that a surface met
+//    head-on where the field is as steep as the steepest so far is neared by that share of the gap
+//    a step. Spheres cannot vouch for such a step; it is taken back when the estimate fell by more
+//    than STEP_BACK_FALL of it, and a step that lands inside is bisected back to the crossing
+//    (recoverOvershoot). It can still step across a thin part whose estimate is steeper than any
+//    the ray met before (bench/stills/README.md measures what that costs, scene by scene).
+// A step taken back returns to the floor: the previous point's estimate, which the measured factor
+// makes safe, and omega grows again from 1. lastD stays the floor's estimate: the viewport's cone
+// coverage and coarse hits read it as an empty sphere.
+const float STEP_TARGET_FALL = 0.5;
+const float STEP_BACK_FALL = 0.75;
+const float STEP_GROWTH_PER_STEP = 2.0;
+const float VERIFIED_MARGIN = 0.95;
+
+// How much the estimate fell per unit of ray over a step of omega * lastD from lastD to d.
+float estimateFall(float omega, float lastD, float d) { return (lastD - d) / (omega * lastD); }
+
+// steepest, rounded up to five significant bits within [2^-13, 2^13]: exact in half precision, as
+// the viewport keeps it between frames (packStepState), so a ray resumed from the image steps as one
+// marched through; frexp and ldexp are exact, so the CPU mirror rounds alike.
+const float STEEPEST_FLOOR = 1.0 / 8192.0;
+float quantizedSteepest(float x) {
+    int e;
+    float m = frexp(clamp(x, STEEPEST_FLOOR, 8192.0), e);
+    return ldexp(ceil(m * 16.0) / 16.0, e);
+}
+
+// omega as a multiple of 1/32, which half precision holds exactly up to 64 (kMaxStepGrowth): the
+// viewport keeps it in half a channel between frames (packStepState), and the step taken must be
+// omega * lastD as stored (quantizedOmega in core/cpu_render/sphere_trace.hpp).
+float quantizedOmega(float omega) { return floor(omega * 32.0) / 32.0; }
+
+// omega for the step from a point whose estimate is d and hit threshold `threshold`, after a step of
+// omega, where the steepest fall the ray has met is `steepest`. The verified limit is the omega
+// whose step would pass stepTakenBack on a field falling at `steepest`.
+float nextOmega(float omega, float steepest, float d, float threshold) {
+    float limit = min(VERIFIED_MARGIN * (2.0 - threshold / d) / (1.0 + steepest), u_maxStepGrowth);
+    if (u_maxStepGrowth > 2.0) limit = max(limit, min(STEP_TARGET_FALL / steepest, u_maxStepGrowth));
+    return quantizedOmega(clamp(min(omega * STEP_GROWTH_PER_STEP, limit), 1.0, max(u_maxStepGrowth, 1.0)));
+}
+
+// Whether a step of omega * lastD along which the estimate went from lastD to d is taken back;
+// `threshold` is the hit threshold where it ended. A verified step must have its ends' spheres
+// overlap by a threshold: along it the estimate, 1-Lipschitz, then stays at or above half the
+// overlap, half a threshold, which is all a plain step guarantees too (from lastD to d > threshold
+// the estimate stays above d / 2). So a longer step skips no grazing ray's close approach to an
+// edge that the plain march could not skip as well.
+bool stepTakenBack(float omega, float lastD, float d, float threshold) {
+    if (omega <= 1.0) return false;
+    return omega < 2.0 ? d + lastD < omega * lastD + threshold : d < lastD * (1.0 - STEP_BACK_FALL);
+}
 
 const int MARCH_MARCHING = 0, MARCH_HIT = 1, MARCH_ESCAPED = 2;
 struct MarchState {
     float t;      // distance along the ray
     float lastD;  // |DE| at the previous accepted point (0 before the first step); after a hit, the DE there
-    float omega;  // current relaxation factor; drops to 1 at the first failure
+    float omega;  // the step's multiple of the estimate (the adaptive step, above); 1 after a step taken back
     int status;
     int steps;    // DE evaluations made by this ray's marcher
     float closest;  // the smallest d / t of the points passed (not the hit): half-angle of an empty cone
+    float steepest;  // the steepest fall of the estimate per unit of ray the ray has met (the adaptive step)
 };
 
 // Hit refinement. The march stops at the first point with d < threshold, anywhere in the hit band
@@ -54,7 +122,7 @@ void refineHit(vec3 ro, vec3 rd, float pixelAngle, float d, inout MarchState s, 
 }
 
 MarchState marchStart(float tStart) {
-    return MarchState(tStart, 0.0, max(u_overRelaxation, 1.0), MARCH_MARCHING, 0, 1e30);
+    return MarchState(tStart, 0.0, quantizedOmega(max(u_overRelaxation, 1.0)), MARCH_MARCHING, 0, 1e30, STEEPEST_FLOOR);
 }
 
 // Overshoot recovery. A step factor measured on sampled rays can still carry a ray across the
@@ -139,11 +207,13 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
         // bisected back by the overshoot recovery below and a ray that starts there hits at once.
         d = inside ? 0.0 : max(d, 1.01 * pixelAngle * s.t * u_detail);
 #endif
-        // While omega > 1 every step so far was omega * lastD, so the previous step length is known.
+        // Every step is omega * lastD (omega as it was when the step was taken), so the previous
+        // step's length is known.
         float previousStep = s.omega * s.lastD;
-        if (s.omega > 1.0 && abs(d) + s.lastD < previousStep) {
-            // The unbounding spheres of the last two points do not overlap: back to the edge of the
-            // previous point's sphere (a safe plain step) and never over-relax again on this ray.
+        if (s.lastD > 0.0) s.steepest = quantizedSteepest(max(s.steepest, estimateFall(s.omega, s.lastD, abs(d))));
+        if (s.lastD > 0.0 && stepTakenBack(s.omega, s.lastD, abs(d), pixelAngle * s.t * u_detail)) {
+            // Back to the edge of the previous point's sphere (the floor's safe step), from which
+            // omega grows again.
             s.t -= previousStep - s.lastD;
             s.omega = 1.0;
             continue;
@@ -163,6 +233,7 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
             s.status = MARCH_ESCAPED;
             break;
         }
+        if (s.lastD > 0.0) s.omega = nextOmega(s.omega, s.steepest, abs(d), pixelAngle * s.t * u_detail);
         s.lastD = abs(d);
         s.closest = min(s.closest, s.lastD / max(s.t, 1e-20));
         s.t += s.omega * d;

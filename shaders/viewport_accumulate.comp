@@ -60,7 +60,7 @@ void main() {
     if (idle && info.z + 1 < u_maxSamples) {  // AASchedule::next
         // The centre ray's empty cone says nothing about a ray from another point of the lens.
         float start = u_apertureRadius > 0.0 ? 0.0 : imageLoad(u_rayState, px).w;
-        imageStore(u_rayState, px, vec4(start, 0.0, u_initialOmega, start));
+        imageStore(u_rayState, px, vec4(start, 0.0, packStepState(u_initialOmega, 1.0 / 8192.0), start));
         info = ivec4(STATUS_MARCHING, 0, info.z + 1, info.w);
         changed = true;
         idle = false;

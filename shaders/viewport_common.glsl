@@ -3,8 +3,9 @@
 // Image rows count from the top (row 0 = first row of a PNG), like shaders/still.frag.
 //
 // Per-pixel state (all images u_size):
-//   rayState    rgba32f  t, lastD, omega of the current sample's ray (march.glsl's MarchState);
-//                        w: cone coverage of the centre ray (start distance of the AA samples)
+//   rayState    rgba32f  t, lastD of the current sample's ray (march.glsl's MarchState); z: its
+//                        omega and steepest, two halves (packStepState); w: cone coverage of
+//                        the centre ray (start distance of the AA samples)
 //   rayInfo     rgba32i  status (MARCH_*), steps, AA sample index, FLAG_* bits
 //   sampleColor rgba32f  rgb: the current sample's colour (or the colour carried by reprojection);
 //                        a: distance of the carried colour's point from the camera (-1: none)
@@ -23,6 +24,14 @@
 // 32x8 made the Mandelbulb orbit at 640x360 ~17 % faster (march 71 -> 61 ms, accumulate 18 -> 11,
 // resolve 11 -> 9; median of 3-5 runs side by side), and 64x8 or 128x8 gained little more. 256
 // invocations is also a size a GPU runs well without limiting the march shader's registers.
+// rayState.z: a ray's omega and steepest fall (MarchState), both exact in half precision
+// (march.glsl's quantizedOmega and quantizedSteepest), as two halves of one float's bits. steepest,
+// the high half, lies in [2^-13, 2^13], so the float is normal: never a NaN pattern, never a
+// denormal a driver might flush to 0. (The accumulate pass, which has no march.glsl, stores
+// STEEPEST_FLOOR's value 2^-13 and an omega the CPU quantized.)
+float packStepState(float omega, float steepest) { return uintBitsToFloat(packHalf2x16(vec2(omega, steepest))); }
+vec2 unpackStepState(float stored) { return unpackHalf2x16(floatBitsToUint(stored)); }
+
 uniform ivec2 u_size;
 uniform vec3 u_cameraPosition, u_cameraRight, u_cameraUp, u_cameraForward;
 uniform float u_tanHalfFovY;

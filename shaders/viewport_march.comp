@@ -60,11 +60,11 @@ void main() {
     if (any(greaterThanEqual(px, u_size))) return;
 #endif
     vec3 ro = u_cameraPosition;
-    float initialOmega = max(u_overRelaxation, 1.0);
+    float initialOmega = quantizedOmega(max(u_overRelaxation, 1.0));
 #if START
     RayStart start = startRay(px, ro, cameraRay(vec2(px) + 0.5));
     ivec4 info = ivec4(STATUS_MARCHING, 0, 0, start.flags | (u_generation << GENERATION_SHIFT));
-    vec4 state = vec4(start.t, 0.0, initialOmega, start.restartAt);
+    vec4 state = vec4(start.t, 0.0, packStepState(initialOmega, STEEPEST_FLOOR), start.restartAt);
     bool verifying = start.verify;
     bool reprojected = start.reprojected;
     float tCarried = start.carried.a;
@@ -89,7 +89,7 @@ void main() {
         info.w &= ~(FLAG_COARSE_HIT | FLAG_REUSED);
     }
 #endif
-    vec4 state = fresh ? vec4(0.0, 0.0, initialOmega, 0.0) : imageLoad(u_rayState, px);
+    vec4 state = fresh ? vec4(0.0, 0.0, packStepState(initialOmega, STEEPEST_FLOOR), 0.0) : imageLoad(u_rayState, px);
     const bool verifying = false;
     // The carried colour's depth and age (keepsCarriedColour asks only for a carried centre sample).
     // sampleColor.a is kept with whatever colour the pixel gets (a fresh ray carries none: -1).
@@ -101,7 +101,8 @@ void main() {
     int sampleIndex = info.z;
     vec3 rd = cameraRay(vec2(px) + 0.5 + aaJitter(sampleIndex));
     lensSampleRay(px, sampleIndex, ro, rd);
-    MarchState s = MarchState(state.x, state.y, state.z, MARCH_MARCHING, info.y, 1e30);
+    vec2 stepState = unpackStepState(state.z);
+    MarchState s = MarchState(state.x, state.y, stepState.x, MARCH_MARCHING, info.y, 1e30, stepState.y);
     float covered = state.w;
     float deEvals = 0.0;
     bool marchedToHit = false;  // a hit of the marcher, not of the out-of-steps rule
@@ -149,7 +150,7 @@ void main() {
                 // threshold of a surface may lie behind a thin shell, so the ray restarts.
                 verifying = false;
                 if (s.status == MARCH_HIT) {
-                    s = MarchState(start.restartAt, 0.0, initialOmega, MARCH_MARCHING, 0, 1e30);
+                    s = MarchState(start.restartAt, 0.0, initialOmega, MARCH_MARCHING, 0, 1e30, STEEPEST_FLOOR);
                     budget = i + 1 + min(u_stepsPerFrame, u_maxSteps);
                 } else {
                     covered = t0;  // reprojection vouches for the cone up to the start
@@ -196,7 +197,7 @@ void main() {
     // Still marching with budget left: the rest of the frame's steps are the march list's.
     if (s.status == MARCH_MARCHING && i < budget) appendToMarchList(px, budget - i);
     info.y = s.steps;
-    imageStore(u_rayState, px, vec4(s.t, s.lastD, s.omega, covered));
+    imageStore(u_rayState, px, vec4(s.t, s.lastD, packStepState(s.omega, s.steepest), covered));
     imageStore(u_rayInfo, px, info);
 #if START
     imageStore(u_sampleColor, px, sampleColor);

@@ -42,7 +42,7 @@ void main() {
             d = DE(ro + rd * t);
             deEvals += 1.0;
         }
-        MarchState s = MarchState(t, d, 1.0, MARCH_HIT, info.y, 1e30);
+        MarchState s = MarchState(t, d, 1.0, MARCH_HIT, info.y, 1e30, STEEPEST_FLOOR);
         refineHit(ro, rd, u_pixelAngle, d, s, deEvals);
         t = s.t;
         imageStore(u_rayState, px, vec4(t, state.yzw));

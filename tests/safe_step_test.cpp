@@ -21,6 +21,7 @@
 
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/document/slow_stack.hpp"
+#include "core/cpu_render/cpu_renderer.hpp"
 #include "core/preset.hpp"
 #include "core/random_vec.hpp"
 #include "core/scene/formula_fit.hpp"
@@ -299,6 +300,53 @@ const std::map<std::string_view, std::string_view>& stepsNotDrawn() {
     return notDrawn;
 }
 
+// The random stacks the next test measures: `wanted` stacks of draws from `seed` (drawnNode), each
+// with the check's estimator and factor applied; the draws that were drawn again are counted.
+struct CheckedStack {
+    uint64_t draw = 0;
+    Formula formula;  // with the check's estimator and step factor
+    double speed = 0.0, checkedWorst = 0.0;
+};
+struct StackDraws {
+    std::vector<CheckedStack> stacks;
+    int refused = 0, redrawn = 0, unsound = 0;
+};
+StackDraws drawCheckedStacks(const std::vector<const BlockDesc*>& blocks, uint64_t seed, int wanted,
+                             const Camera& camera, const SafeStepOptions& check) {
+    StackDraws out;
+    for (uint64_t draw = 0; int(out.stacks.size()) < wanted && draw < 4000u; ++draw) {
+        const uint64_t stackSeed = mixed(seed ^ mixed(draw));
+        Formula f;
+        f.iterations = 6;
+        f.bailout = 4.0;
+        f.boundRadius = 3.0;
+        f.estimator = Node::make(*findBlock("escape_log"));
+        for (int slot = 0, count = 1 + int(stackSeed % 4); slot < count; ++slot)
+            f.nodes.push_back(drawnNode(blocks, stackSeed, slot));
+        if (!canBoundEscape(f.nodes)) {
+            ++out.refused;  // a preset with this stack is refused
+            continue;
+        }
+        if (std::any_of(f.nodes.begin(), f.nodes.end(), [](const Node& n) { return n.block->difsShape; }))
+            f.estimator = Node::make(*findBlock("difs"));
+        fitEstimatorToBlocks(f);
+        const std::vector<EstimatorMeasurement> options = compareEstimators(f, camera, check);
+        if (!hasSafeStepFactor(options.front())) {
+            ++out.unsound;  // the estimate overflows, or overshoots more than any factor makes up for
+            continue;
+        }
+        if (options.front().report.samples == 0) {
+            ++out.redrawn;
+            continue;
+        }
+        Formula g = f;
+        g.estimator = options.front().estimator;
+        g.deFactor = options.front().factor;
+        out.stacks.push_back({draw, g, options.front().speed(), options.front().report.worstRatio});
+    }
+    return out;
+}
+
 // Random stacks of 1-4 steps drawn from every step block in the registry (stepsNotDrawn aside),
 // with random in-range parameters (drawnNode: seeded per stack, slot and parameter), built as the
 // editor and the import build them: a stack with a dIFS shape closed by the dIFS estimate (as the
@@ -357,42 +405,19 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
     std::vector<Stack> measuredStacks;
     std::map<std::string, int> chosen, drawn;
     std::map<DerivativeBound, int> bounds;
-    int stacks = 0, redrawn = 0, unsound = 0, refused = 0, overshooting = 0;
-    for (uint64_t draw = 0; stacks < wanted; ++draw) {
-        ASSERT_LT(draw, 4000u) << "too few stacks with an object to measure";
-        const uint64_t stackSeed = mixed(seed ^ mixed(draw));
-        Formula f;
-        f.iterations = 6;
-        f.bailout = 4.0;
-        f.boundRadius = 3.0;
-        f.estimator = Node::make(*findBlock("escape_log"));
-        for (int slot = 0, count = 1 + int(stackSeed % 4); slot < count; ++slot)
-            f.nodes.push_back(drawnNode(blocks, stackSeed, slot));
-        if (!canBoundEscape(f.nodes)) {
-            ++refused;  // a preset with this stack is refused
-            continue;
-        }
-        if (std::any_of(f.nodes.begin(), f.nodes.end(), [](const Node& n) { return n.block->difsShape; }))
-            f.estimator = Node::make(*findBlock("difs"));
-        fitEstimatorToBlocks(f);
-        const std::vector<EstimatorMeasurement> options = compareEstimators(f, camera, check);
-        if (!hasSafeStepFactor(options.front())) {
-            ++unsound;  // the estimate overflows, or overshoots more than any factor makes up for
-            continue;
-        }
-        if (options.front().report.samples == 0) {
-            ++redrawn;
-            continue;
-        }
+    const StackDraws draws = drawCheckedStacks(blocks, seed, wanted, camera, check);
+    ASSERT_EQ(draws.stacks.size(), size_t(wanted)) << "too few stacks with an object to measure";
+    const int refused = draws.refused, redrawn = draws.redrawn, unsound = draws.unsound;
+    int stacks = 0, overshooting = 0;
+    for (const CheckedStack& checked : draws.stacks) {
         ++stacks;
-        Formula g = f;
-        g.estimator = options.front().estimator;
-        g.deFactor = options.front().factor;
+        const uint64_t draw = checked.draw;
+        const Formula& g = checked.formula;
         ++chosen[std::string(g.estimator.block->id)];
         ++bounds[derivativeBound(g.nodes)];
         for (const Node& n : g.nodes) ++drawn[std::string(n.block->id)];
         factors.push_back(g.deFactor);
-        speeds.push_back(options.front().speed());
+        speeds.push_back(checked.speed);
 
         CpuSampler sampler(g);
         const RaySamples samples = sampleRays(sampler, camera, fresh);
@@ -409,7 +434,7 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
         stackWorst.push_back(worst);
         if (worst > 1.0) ++overshooting;
         EXPECT_LE(worst, 1.0) << "stack " << stacks << " (draw " << draw << "): " << describe(g) << " with factor "
-                              << g.deFactor << " (the check's worst " << options.front().report.worstRatio << ")";
+                              << g.deFactor << " (the check's worst " << checked.checkedWorst << ")";
     }
     std::printf(
         "%d stacks of %zu step blocks (drawn again: %d a preset refuses, %d with no surface the rays reach from "
@@ -467,6 +492,88 @@ TEST(SafeStep, RandomStacksWithTheCheckedFactorNeverOvershoot) {
         "stacks under 0.02 the check names no block or estimator for: %d where every stack without one step that "
         "measures keeps the same step, %d where none of those has an object to measure\n",
         namedByTheTest, nothingToCompare);
+}
+
+// Measurement, not run by CI (DISABLED_): the adaptive step (shaders/march.glsl, its CPU mirror)
+// on the random stacks above at the check's factor, as bench/stills/overshoot_pixels.sh measures
+// the presets. Each stack is rendered by the CPU reference at 64x36 from the test's camera, without
+// shadows or AO, at each maximum step growth, and against a reference at a quarter of the factor
+// and of the hit threshold with plain steps; DE evaluations per pixel, and pixels that miss what
+// the reference meets or land more than 10 % behind it, summed over the stacks.
+//   build/tests/fraktal_tests --gtest_also_run_disabled_tests
+//       --gtest_filter=SafeStep.DISABLED_AdaptiveStepOnRandomStacks
+TEST(SafeStep, DISABLED_AdaptiveStepOnRandomStacks) {
+    std::vector<const BlockDesc*> blocks;
+    for (const BlockDesc* b : stepBlocks())
+        if (!stepsNotDrawn().contains(b->id)) blocks.push_back(b);
+    Camera camera;
+    camera.position = vec3(0.0, 0.0, 6.0);
+    SafeStepOptions check;
+    check.rays = {64, 1200, 1};
+    const StackDraws draws = drawCheckedStacks(blocks, 20, 200, camera, check);
+    const std::vector<double> growths{1.0, 1.9, 4.0, 16.0};
+    RenderSettings render;
+    render.width = 64;
+    render.height = 36;
+    render.maxSteps = 6000;
+    ShadingSettings shading;
+    shading.shadowSteps = 0;
+    shading.aoSteps = 0;
+    struct Totals {
+        double evalsAll = 0.0, evalsSlow = 0.0;
+        long missed = 0, behind = 0;
+        std::vector<double> ratios;
+    };
+    std::vector<Totals> totals(growths.size());
+    long referenceHits = 0;
+    int slowStacks = 0;
+    for (const CheckedStack& stack : draws.stacks) {
+        const auto meanEvals = [](const ImageStrip& image) {
+            double sum = 0.0;
+            for (size_t i = 0; i < image.stats.size(); i += 4) sum += image.stats[i];
+            return sum / double(image.stats.size() / 4);
+        };
+        Formula reference = stack.formula;
+        reference.deFactor /= 4.0;
+        RenderSettings plain = render;
+        plain.detail /= 4.0;
+        plain.overRelaxation = 1.0;
+        plain.maxStepGrowth = 1.0;
+        const ImageStrip truth = renderReference(reference, camera, plain, resolveShading(shading, plain, reference));
+        const bool slow = stack.formula.deFactor < 0.3;
+        slowStacks += slow;
+        double firstEvals = 0.0;
+        for (size_t g = 0; g < growths.size(); ++g) {
+            RenderSettings r = render;
+            r.maxStepGrowth = growths[g];
+            const ImageStrip image =
+                renderReference(stack.formula, camera, r, resolveShading(shading, r, stack.formula));
+            const double evals = meanEvals(image);
+            if (g == 0) firstEvals = evals;
+            totals[g].evalsAll += evals;
+            if (slow) totals[g].evalsSlow += evals;
+            totals[g].ratios.push_back(firstEvals / evals);
+            for (size_t i = 3; i < truth.normalDepth.size(); i += 4) {
+                const float want = truth.normalDepth[i], got = image.normalDepth[i];
+                if (want >= 1e29f) continue;
+                if (g == 0) ++referenceHits;
+                if (got >= 1e29f)
+                    ++totals[g].missed;
+                else if (got > 1.1f * want)
+                    ++totals[g].behind;
+            }
+        }
+    }
+    std::printf("%zu stacks (%d at a factor under 0.3), %ld reference hit pixels\n", draws.stacks.size(), slowStacks,
+                referenceHits);
+    for (size_t g = 0; g < growths.size(); ++g) {
+        std::printf(
+            "max step growth %g: DE/px %.1f (all), %.1f (factor < 0.3); fewer than growth 1: median %.2fx, p10 %.2fx, "
+            "p90 %.2fx; missed %ld, behind %ld\n",
+            growths[g], totals[g].evalsAll / double(draws.stacks.size()), totals[g].evalsSlow / std::max(slowStacks, 1),
+            percentile(totals[g].ratios, 0.5), percentile(totals[g].ratios, 0.1), percentile(totals[g].ratios, 0.9),
+            totals[g].missed, totals[g].behind);
+    }
 }
 
 // The projection from the sampled rays' tail (projectedWorst), on draws whose worst over 10000

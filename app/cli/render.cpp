@@ -34,6 +34,7 @@ struct RenderOptions {
     int spp = 0;
     int maxSteps = 0;
     double detail = 0.0;
+    double maxStepGrowth = 0.0;
     std::optional<double> exposure;
     std::string view, display, workingSpace;
     bool fullFloat = false;
@@ -120,6 +121,7 @@ void applyRenderOptions(const RenderOptions& o, RenderSettings& r) {
     if (o.spp) r.spp = o.spp;
     if (o.maxSteps) r.maxSteps = o.maxSteps;
     if (o.detail > 0) r.detail = o.detail;
+    if (o.maxStepGrowth > 0) r.maxStepGrowth = o.maxStepGrowth;
     if (o.exposure) r.exposure = *o.exposure;
     if (!o.view.empty()) r.view = o.view;
     if (!o.display.empty()) r.display = o.display;
@@ -255,6 +257,9 @@ void addRenderCommand(CLI::App& app, Action& action) {
     cmd->add_option("--max-steps", o->maxSteps, "March steps per camera ray")->check(CLI::Range(1, kMaxMarchSteps));
     cmd->add_option("--detail", o->detail, "Hit threshold in pixel footprints (smaller: finer)")
         ->check(CLI::Range(1e-3, 100.0));
+    cmd->add_option("--max-step-growth", o->maxStepGrowth,
+                    "The longest step a ray's adaptive march may take, in multiples of the safe one (1: never longer)")
+        ->check(CLI::Range(1.0, kMaxStepGrowth));
     cmd->add_option("--exposure", o->exposure, "Exposure of the PNG preview, in stops")->check(CLI::Range(-20.0, 20.0));
     cmd->add_option("--view", o->view, "OCIO view of the PNG preview (shipped config: Standard, ACES, Raw)");
     cmd->add_option("--display", o->display, "OCIO display of the PNG preview (default sRGB)");

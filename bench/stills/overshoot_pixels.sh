@@ -6,7 +6,7 @@
 # the object and the shipped factor does not, where the shipped factor lands more than 10 % behind
 # the reference's hit (a step through a surface), and where it meets something the reference does
 # not. Both march with up to 6000 steps, so a miss is a step past the surface, not a ray giving up;
-# the reference with plain steps (over-relaxation 1: no relaxed or adaptive step).
+# the reference with plain steps (over-relaxation and step growth 1: no relaxed or adaptive step).
 # Frame 0 of animated presets, as the file holds it. FACTOR "shipped" takes each preset's own step
 # factor; a number replaces it (1.0: what the estimates give before any measured factor).
 # PRESETS (environment) names the preset files instead of presets/*.json.
@@ -30,7 +30,8 @@ for preset in "${presets[@]}"; do
   fi
   detail=$(jq '.render.detail // 0.5' "$preset")
   quarter=$(awk -v f="$factor" 'BEGIN { printf "%.6g", f / 4 }')
-  jq --argjson f "$quarter" '.formula.deFactor = $f | .render.overRelaxation = 1' "$preset" > "$tmp/reference.json"
+  jq --argjson f "$quarter" '.formula.deFactor = $f | .render.overRelaxation = 1 | .render.maxStepGrowth = 1' "$preset" \
+    > "$tmp/reference.json"
   "$fraktal" render "$preset" -o "$tmp/shipped.exr" --size "$size" --spp 1 --float --max-steps 6000 -q
   "$fraktal" render "$tmp/reference.json" -o "$tmp/reference.exr" --size "$size" --spp 1 --float --max-steps 6000 \
     --detail "$(awk -v d="$detail" 'BEGIN { printf "%.6g", d / 4 }')" -q

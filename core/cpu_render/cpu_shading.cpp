@@ -34,7 +34,7 @@ void refineHit(const Scene& scene, const vec3& ro, const vec3& rd, double pixelA
 MarchState marchStart(const Scene& scene, double tStart) {
     MarchState s;
     s.t = tStart;
-    s.omega = std::max(scene.params.overRelaxation, 1.0);
+    s.omega = quantizedOmega(std::max(scene.params.overRelaxation, 1.0));
     return s;
 }
 
@@ -43,6 +43,7 @@ MarchRule cameraRule(const Scene& scene, double pixelAngle) {
     rule.coneAngle = pixelAngle * scene.params.detail;
     rule.hitRule = scene.formula.hitRule;
     rule.recoverOvershoot = true;
+    rule.maxStepGrowth = scene.params.maxStepGrowth;
     return rule;
 }
 

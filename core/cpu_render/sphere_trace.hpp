@@ -25,7 +25,8 @@ struct MarchState {
     double t = 0.0, lastD = 0.0, omega = 1.0;
     MarchStatus status = MarchStatus::Marching;
     int steps = 0;
-    double closest = 1e30;  // the smallest d / t of the points passed (not the hit), as in shaders/march.glsl
+    double closest = 1e30;           // the smallest d / t of the points passed (not the hit), as in shaders/march.glsl
+    double steepest = 1.0 / 8192.0;  // the steepest fall of the estimate per unit of ray met (march.glsl's)
     // The length of the last step taken: omega * lastD unless the rule's maxStep capped it (march.glsl
     // has no cap, and reads omega * lastD).
     double lastStep = 0.0;
@@ -44,6 +45,9 @@ struct MarchRule {
     // A step that lands inside (by the source's membership) is bisected back to the crossing
     // (march.glsl's recoverOvershoot). Off for sources without membership.
     bool recoverOvershoot = false;
+    // The largest omega the adaptive step may reach (march.glsl's u_maxStepGrowth); 1: omega never
+    // grows past its start (MarchState::omega, 1 unless the caller over-relaxes).
+    double maxStepGrowth = 1.0;
 
     double threshold(double t) const { return epsilon + coneAngle * t; }
 };
@@ -53,6 +57,35 @@ struct DistanceSample {
     double distance = 0.0;
     bool inside = false;
 };
+
+// Mirrors of march.glsl's adaptive step (why: there): how much the estimate fell per unit of ray
+// over a step of lastStep from lastD to d, omega for the step after one of omega where the steepest
+// fall met is `steepest`, and whether a step is taken back.
+inline constexpr double kStepTargetFall = 0.5;
+inline constexpr double kStepBackFall = 0.75;
+inline constexpr double kStepGrowthPerStep = 2.0;
+inline constexpr double kVerifiedMargin = 0.95;
+
+inline double estimateFall(double lastStep, double lastD, double d) { return (lastD - d) / lastStep; }
+
+inline double quantizedOmega(double omega) { return std::floor(omega * 32.0) / 32.0; }
+
+inline double quantizedSteepest(double x) {
+    int e = 0;
+    const double m = std::frexp(std::clamp(x, 1.0 / 8192.0, 8192.0), &e);
+    return std::ldexp(std::ceil(m * 16.0) / 16.0, e);
+}
+
+inline double nextOmega(double omega, double steepest, double d, double threshold, double maxStepGrowth) {
+    double limit = std::min(kVerifiedMargin * (2.0 - threshold / d) / (1.0 + steepest), maxStepGrowth);
+    if (maxStepGrowth > 2.0) limit = std::max(limit, std::min(kStepTargetFall / steepest, maxStepGrowth));
+    return quantizedOmega(std::clamp(std::min(omega * kStepGrowthPerStep, limit), 1.0, std::max(maxStepGrowth, 1.0)));
+}
+
+inline bool stepTakenBack(double omega, double lastD, double d, double threshold) {
+    if (omega <= 1.0) return false;
+    return omega < 2.0 ? d + lastD < omega * lastD + threshold : d < lastD * (1.0 - kStepBackFall);
+}
 
 // Mirror of march.glsl's recoverOvershoot (why: there). [tOut, tIn]: tOut outside with estimate
 // dOut, tIn inside; bisected on membership to within the hit threshold at tOut.
@@ -115,7 +148,9 @@ void marchSteps(const Source& at, const vec3& ro, const vec3& rd, double tEnd, c
         // Mirror of march.glsl's marchSteps (why: there).
         if (rule.hitRule == HitRule::InsideOnly) d = e.inside ? 0.0 : std::max(d, 1.01 * threshold);
         const double previousStep = s.lastStep;
-        if (s.omega > 1.0 && std::abs(d) + s.lastD < previousStep) {
+        if (s.lastD > 0.0)
+            s.steepest = quantizedSteepest(std::max(s.steepest, estimateFall(previousStep, s.lastD, std::abs(d))));
+        if (s.lastD > 0.0 && stepTakenBack(s.omega, s.lastD, std::abs(d), threshold)) {
             s.t -= previousStep - s.lastD;
             s.lastStep = s.lastD;
             s.omega = 1.0;
@@ -134,6 +169,7 @@ void marchSteps(const Source& at, const vec3& ro, const vec3& rd, double tEnd, c
             s.status = MarchStatus::Escaped;
             break;
         }
+        if (s.lastD > 0.0) s.omega = nextOmega(s.omega, s.steepest, std::abs(d), threshold, rule.maxStepGrowth);
         s.lastD = std::abs(d);
         s.closest = std::min(s.closest, s.lastD / std::max(s.t, 1e-20));
         s.lastStep = std::min(s.omega * d, rule.maxStep);

@@ -18,6 +18,7 @@ template <class Set>
 void eachUniform(const ShadingParams& p, Set&& set) {
     set("u_detail", p.detail);
     set("u_overRelaxation", p.overRelaxation);
+    set("u_maxStepGrowth", p.maxStepGrowth);
     const ShadingSettings& s = p.s;
     set("u_lightDirection", s.lightDirection);
     set("u_lightColor", s.lightColor);

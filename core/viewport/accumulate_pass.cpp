@@ -1,4 +1,5 @@
 // Progressive anti-aliasing: accumulation and the next sample (shaders/viewport_accumulate.comp).
+#include "core/cpu_render/sphere_trace.hpp"
 #include "core/viewport/passes.hpp"
 
 namespace fraktal::viewport {
@@ -13,7 +14,7 @@ void runAccumulatePass(const ViewportPrograms& p, const MarchState& s, const Fra
     pass.use(s);
     setViewUniforms(pass.uniforms, c.camera, s.width(), s.height(), c.lens);
     glUniform1i(pass.uniforms.maxSamples, c.options.maxSamples);
-    glUniform1f(pass.uniforms.initialOmega, float(std::max(c.shading.overRelaxation, 1.0)));
+    glUniform1f(pass.uniforms.initialOmega, float(cpu::quantizedOmega(std::max(c.shading.overRelaxation, 1.0))));
     dispatchOverSlice(program, pass.uniforms, s, c);
     imageBarrier();
 }

@@ -26,7 +26,8 @@ FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool 
     const bool resized = previous->width != current.width || previous->height != current.height;
     if (previous->structure != current.structure || previous->values != current.values) return FrameAction::Reset;
     if (!(previous->shading.s == current.shading.s) || previous->shading.detail != current.shading.detail ||
-        previous->shading.overRelaxation != current.shading.overRelaxation || previous->maxSteps != current.maxSteps ||
+        previous->shading.overRelaxation != current.shading.overRelaxation ||
+        previous->shading.maxStepGrowth != current.shading.maxStepGrowth || previous->maxSteps != current.maxSteps ||
         !(previous->lens == current.lens))
         return FrameAction::Reset;
     if (previous->camera == current.camera) {

@@ -31,7 +31,10 @@ FrameKey Viewport::frameKey(const Formula& formula, const Camera& camera, const 
                             const ShadingSettings& shading, int width, int height, const ThinLens& lens,
                             const scene::SceneRevision* revision) const {
     RenderSettings effective = render;
-    if (!options_.overRelaxation) effective.overRelaxation = 1.0;
+    if (!options_.overRelaxation) {
+        effective.overRelaxation = 1.0;
+        effective.maxStepGrowth = 1.0;
+    }
     const ShadingParams params = resolveShading(shading, effective, formula);
     return FrameKey{width,
                     height,

@@ -165,6 +165,7 @@ const std::map<std::string, std::string, std::less<>>& fieldLabels() {
         // Render tab.
         {"maxSteps", "max steps per ray"},
         {"overRelaxation", "over-relaxation"},
+        {"maxStepGrowth", "step growth"},
         {"spp", "samples per pixel"},
         {"renderScale", "resolution"},
         {"frameTimeTargetMs", "frame-time target"},

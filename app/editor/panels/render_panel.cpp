@@ -118,6 +118,9 @@ void drawAdvancedSection(ViewSettings& v, RenderSettings& r, Layout& layout) {
         "look slightly thicker until the camera rests.");
     dragDouble("Over-relaxation", r.overRelaxation, 1.0, 1.9, 0.005f, "%.2f",
                "How boldly rays stride towards the surface at first (1: cautious steps).");
+    dragDouble("Step growth", r.maxStepGrowth, 1.0, kMaxStepGrowth, 0.05f, "%.1fx",
+               "How far a ray may lengthen its steps where the distance estimate is cautious. Larger is faster on "
+               "slow formulas; 1 keeps every step at the safe length.");
 }
 
 void drawMarchSection(RenderSettings& r) {
