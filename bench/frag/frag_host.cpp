@@ -188,10 +188,18 @@ std::vector<double> uniformValue(const frag::FragUniform& u, const frag::FragPre
         else if (!line->numbers.empty())
             v = line->numbers;
     }
-    // A range that is empty is no range: 3D.frag's Up is declared slider[(0,0,0),(0,1,0),(0,0,0)].
-    if (u.kind == K::Slider)
-        for (size_t i = 0; i < v.size() && i < u.minimum.size() && i < u.maximum.size(); ++i)
-            if (u.minimum[i] < u.maximum[i]) v[i] = std::clamp(v[i], u.minimum[i], u.maximum[i]);
+    // FragM's editor holds a slider's value in a spin box of the slider's range. A vec3 or vec4
+    // slider declared with its minimum equal to its maximum (3D.frag's Up:
+    // slider[(0,0,0),(0,1,0),(0,0,0)]) gets the range [-1, 1] in each component (GUI/FloatWidget.cpp);
+    // a spin box whose minimum is above its maximum raises the maximum to the minimum (Qt).
+    if (u.kind == K::Slider) {
+        const bool direction = (u.type.ends_with("vec3") || u.type.ends_with("vec4")) && u.minimum == u.maximum;
+        for (size_t i = 0; i < v.size() && i < u.minimum.size() && i < u.maximum.size(); ++i) {
+            const double lo = direction ? -1.0 : u.minimum[i];
+            const double hi = direction ? 1.0 : std::max(u.maximum[i], u.minimum[i]);
+            v[i] = std::min(std::max(v[i], lo), hi);
+        }
+    }
     if (u.kind == K::FloatColor && v.size() == 4 && !u.minimum.empty() && !u.maximum.empty())
         v[3] = std::clamp(v[3], u.minimum[0], u.maximum[0]);
     return v;
