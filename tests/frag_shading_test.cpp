@@ -1,6 +1,6 @@
 // DE-Raytracer's look through `fraktal import` (core/import/frag_shading): every preset of every
 // frag under tests/data/frag and tests/data/frag_import carries the lights, AO, shadows, fog,
-// background, orbit-trap weights and exposure it sets into the fraktal preset, and they survive
+// background and orbit-trap weights it sets into the fraktal preset, and they survive
 // the preset's JSON; and each mapping's arithmetic on values worked out by hand. Also the import's
 // slider ranges as FragM's editor holds them (a vec3 slider whose minimum equals its maximum is a
 // direction, not a point).
@@ -30,8 +30,24 @@ ImportedScene importPreset(const std::filesystem::path& path, const std::string&
 
 // sRGB's decoding curve, written out for the tests.
 double srgbDecode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
-// A FragM working-space value shown at 1 / gamma, as the linear value the sRGB display shows alike.
-double shownAlike(double v, double gamma) { return srgbDecode(std::pow(std::max(v, 0.0), 1.0 / gamma)); }
+// FragM's display pass (BufferShader.frag) for the curves the tests' presets use: Exposure, then
+// ToneMapping 1 (linear) or 4 (Reinhard, the default), then 1 / Gamma; and the linear value
+// fraktal's sRGB display shows alike.
+struct Display {
+    double exposure = 1.0, gamma = 2.0;
+    int tone = 4;
+    double operator()(double v) const {
+        const double c = std::max(v, 0.0) * exposure;
+        return srgbDecode(std::pow(tone == 1 ? c : c / (1 + c), 1 / gamma));
+    }
+    vec3 operator()(const vec3& v) const { return {(*this)(v.x), (*this)(v.y), (*this)(v.z)}; }
+};
+// The scale of both lights: a white surface's mean brightness over the normals facing the eye
+// (half of each light) shows as FragM shows it.
+double lightScale(const Display& d, const vec3& key, const vec3& fill) {
+    const double lit = (key.x + key.y + key.z + fill.x + fill.y + fill.z) / 6;
+    return d(lit) / lit;
+}
 
 void expectNear(const vec3& got, const vec3& want, double tolerance, const std::string& what) {
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], want[k], tolerance) << what << " [" << k << "]";
@@ -110,8 +126,11 @@ TEST(FragShading, EveryTestFragsPresetCarriesItsShadingSettings) {
             const Preset& p = scene.preset;
             const ShadingSettings& s = p.shading;
             const double bound = p.formula.boundRadius;
-            const std::vector<double> gammaLine = line(preset, "Gamma");
-            const double gamma = gammaLine.empty() ? 2.0 : std::max(gammaLine[0], 0.1);
+            Display display;
+            if (preset.find("Gamma")) display.gamma = std::max(line(preset, "Gamma")[0], 0.1);
+            if (preset.find("Exposure")) display.exposure = line(preset, "Exposure")[0];
+            if (const frag::PresetValue* t = preset.find("ToneMapping")) display.tone = int(t->numbers.at(0));
+            if (display.tone != 1 && display.tone != 4) continue;  // the curves Display draws
             auto has = [&](std::initializer_list<const char*> keys) {
                 for (const char* k : keys)
                     if (!preset.find(k)) return false;
@@ -124,22 +143,17 @@ TEST(FragShading, EveryTestFragsPresetCarriesItsShadingSettings) {
                 const vec3 want(std::sin(a) * std::cos(b), std::sin(b) * std::sin(a), std::cos(a));
                 expectNear(s.lightDirection, normalize(want), 1e-9, where + " lightDirection");
             }
-            if (has({"SpotLight"})) {
-                const std::vector<double> l = line(preset, "SpotLight");
-                for (int k = 0; k < 3; ++k)
-                    EXPECT_NEAR(s.lightColor[k], shownAlike(l[size_t(k)] * l[3], gamma), 1e-9)
-                        << where << " lightColor";
-            }
-            if (has({"CamLight", "CamLightMin"})) {
-                const std::vector<double> c = line(preset, "CamLight");
+            if (has({"SpotLight", "CamLight", "CamLightMin"})) {
+                const std::vector<double> l = line(preset, "SpotLight"), c = line(preset, "CamLight");
                 const double m = line(preset, "CamLightMin")[0];
-                for (int k = 0; k < 3; ++k)
-                    EXPECT_NEAR(s.fillColor[k], shownAlike(c[size_t(k)] * c[3] * (1 + m * m), gamma), 1e-9)
-                        << where << " fillColor";
+                const vec3 key = rgbOf(l) * l[3], fill = rgbOf(c) * (c[3] * (1 + m * m));
+                const double scale = lightScale(display, key, fill);
+                expectNear(s.lightColor, key * scale, 1e-9, where + " lightColor");
+                expectNear(s.fillColor, fill * scale, 1e-9, where + " fillColor");
             }
             if (has({"BackgroundColor"})) {
                 const std::vector<double> c = line(preset, "BackgroundColor");
-                const vec3 want(shownAlike(c[0], gamma), shownAlike(c[1], gamma), shownAlike(c[2], gamma));
+                const vec3 want = display(rgbOf(c));
                 expectNear(s.backgroundTop, want, 1e-9, where + " backgroundTop");
                 expectNear(s.backgroundBottom, want, 1e-9, where + " backgroundBottom");
             }
@@ -159,8 +173,13 @@ TEST(FragShading, EveryTestFragsPresetCarriesItsShadingSettings) {
             }
             if (has({"Fog"})) {
                 const double fog = line(preset, "Fog")[0];
-                EXPECT_NEAR(s.fogDensity / bound, std::pow(fog, 4) * length(p.camera.target - p.camera.position), 1e-9)
-                    << where;
+                // Half hidden at the same distance: exp(-Fog^4 t^2) = 1 / 2 = exp(-density t).
+                if (fog > 0) {
+                    const double half = std::sqrt(std::log(2.0)) / (fog * fog);
+                    EXPECT_NEAR(std::exp(-s.fogDensity / bound * half), 0.5, 1e-9) << where;
+                } else {
+                    EXPECT_EQ(s.fogDensity, 0.0) << where;
+                }
             }
             if (has({"X", "Y", "Z", "R"})) {
                 for (int i = 0; i < 4; ++i)
@@ -177,10 +196,8 @@ TEST(FragShading, EveryTestFragsPresetCarriesItsShadingSettings) {
                     expectNear(at0, (1 - strength) * base, 1e-9, where + " palette at index 0");
                 }
             }
-            if (has({"Exposure"})) {
-                const double e = line(preset, "Exposure")[0];
-                EXPECT_NEAR(p.render.exposure, e > 0 ? std::log2(e) : -20.0, 1e-12) << where;
-            }
+            // FragM's Exposure is in the display pass the colours went through: fraktal's stays 0.
+            EXPECT_EQ(p.render.exposure, 0.0) << where;
             // The preset written holds the mapped values as they are.
             const Preset back = parsePreset(serializePreset(p), where);
             EXPECT_EQ(back.shading, s) << where;
@@ -190,7 +207,7 @@ TEST(FragShading, EveryTestFragsPresetCarriesItsShadingSettings) {
     EXPECT_GE(presets, 10);
     // Each mapping was met by at least two presets (the folders' frags are written to set them).
     for (const char* key : {"SpotLightDir", "SpotLight", "CamLight", "BackgroundColor", "AO", "HardShadow",
-                            "ShadowSoft", "Fog", "X", "OrbitStrength", "Exposure"})
+                            "ShadowSoft", "Fog", "X", "OrbitStrength", "CamLightMin"})
         EXPECT_GE(checked[key], 2) << key;
 }
 
@@ -208,35 +225,45 @@ TEST(FragShading, SpotLightDirIsSphericalHalfTurns) {
     EXPECT_NEAR(d.z, std::cos(0.1 * M_PI), 1e-12);
 }
 
-TEST(FragShading, FragMsWorkingValuesShowAlikeInFraktal) {
-    // Gamma 2: 0.25 is shown as 0.5, which sRGB decodes to 0.2140.
-    EXPECT_NEAR(frag::linearFromFragM(vec3(0.25), 2.0).x, 0.21404114, 1e-7);
+TEST(FragShading, FragMsDisplayPassShowsAlikeInFraktal) {
+    // Linear at Gamma 2: 0.25 is shown as 0.5, which sRGB decodes to 0.2140.
+    EXPECT_NEAR((frag::FragMDisplay{1.0, 1, 2.0}).linear(vec3(0.25)).x, 0.21404114, 1e-7);
     // Gamma 2.2: 0.5 is shown as 0.7297, decoded to 0.4910 (near 0.5: the curves nearly agree).
-    EXPECT_NEAR(frag::linearFromFragM(vec3(0.5), 2.2).y, srgbDecode(std::pow(0.5, 1 / 2.2)), 1e-12);
-    EXPECT_NEAR(frag::linearFromFragM(vec3(0.5), 2.2).y, 0.4910, 1e-3);
-    // White and black stay; a negative value is black.
-    expectNear(frag::linearFromFragM(vec3(1.0, 0.0, -0.3), 1.7), vec3(1, 0, 0), 1e-12, "white, black");
+    EXPECT_NEAR((frag::FragMDisplay{1.0, 1, 2.2}).linear(vec3(0.5)).y, 0.4910, 1e-3);
+    // Exposure 2 doubles before the curve.
+    EXPECT_NEAR((frag::FragMDisplay{2.0, 1, 2.0}).shown(0.125), 0.5, 1e-12);
+    // Reinhard (FragM's default curve): 1 becomes 1 / 2, shown at Gamma 2 as 0.7071.
+    EXPECT_NEAR((frag::FragMDisplay{1.0, 4, 2.0}).shown(1.0), std::sqrt(0.5), 1e-12);
+    // Exponential: 1 - e^-1 = 0.6321 at Gamma 1.
+    EXPECT_NEAR((frag::FragMDisplay{1.0, 2, 1.0}).shown(1.0), 1 - std::exp(-1.0), 1e-12);
+    // Filmic: about 0.5 shown at 0.18 (its own gamma raised back, at Gamma 2.2).
+    EXPECT_NEAR((frag::FragMDisplay{1.0, 3, 2.2}).shown(0.18), 0.5, 0.03);
+    // A curve FragM has beyond 4 (Syntopia's, Lottes', ...) is drawn as Reinhard's.
+    EXPECT_EQ((frag::FragMDisplay{1.0, 7, 2.0}).shown(3.0), (frag::FragMDisplay{1.0, 4, 2.0}).shown(3.0));
+    // Black stays, a negative value is black; above 1 a linear curve shows white and beyond.
+    expectNear((frag::FragMDisplay{1.0, 1, 1.7}).linear(vec3(1.0, 0.0, -0.3)), vec3(1, 0, 0), 1e-12, "white, black");
 }
 
 TEST(FragShading, EachSettingMapsByItsOwnArithmetic) {
     const ImportedScene scene = importPreset(importData("shading.frag"));
     const ShadingSettings& s = scene.preset.shading;
     const double bound = scene.preset.formula.boundRadius;
-    const double g = 2.2;  // the preset's Gamma
-    // SpotLight 1,0.9,0.8 at 0.6 toward SpotLightDir 0.35,-0.4.
-    expectNear(s.lightColor, vec3(shownAlike(0.6, g), shownAlike(0.54, g), shownAlike(0.48, g)), 1e-12, "lightColor");
+    // Gamma 2.2, Exposure 1.4, ToneMapping 1 (linear).
+    auto shown = [](double v) { return srgbDecode(std::pow(1.4 * v, 1 / 2.2)); };
+    // SpotLight 1,0.9,0.8 at 0.6 toward SpotLightDir 0.35,-0.4; CamLight 0.9,0.95,1 at 0.8 with
+    // CamLightMin 0.3 (a mean of 0.5 + 0.3^2 / 2 over the 0.5 of fraktal's fill). Both scaled so
+    // that a white surface's mean, half their sum (4.1052 / 6 in the mean channel), shows as FragM
+    // shows it.
+    const double scale = shown(4.1052 / 6) / (4.1052 / 6);
+    expectNear(s.lightColor, vec3(0.6, 0.54, 0.48) * scale, 1e-12, "lightColor");
+    expectNear(s.fillColor, vec3(0.9, 0.95, 1) * (0.8 * 1.09) * scale, 1e-12, "fillColor");
     const double a = 0.35 * M_PI, b = -0.2 * M_PI;
     expectNear(s.lightDirection, vec3(std::sin(a) * std::cos(b), std::sin(b) * std::sin(a), std::cos(a)), 1e-12,
                "lightDirection");
     // The highlight's peak: min(SpecularMax 8, (20 + 2) / 8 x 20 x 0.5 = 27.5) = 8 of the light's
-    // colour, over the light's intensity 0.6, each as the display shows it.
-    EXPECT_NEAR(s.specular, shownAlike(8.0, g) / shownAlike(0.6, g), 1e-12);
+    // colour, as the display shows it, over the key light's mean.
+    EXPECT_NEAR(s.specular, shown(8.0) / (0.54 * scale), 1e-12);
     EXPECT_EQ(s.shininess, 20.0);
-    // CamLight 0.9,0.95,1 at 0.8 with CamLightMin 0.3: a mean of 0.5 + 0.3^2 / 2 over the 0.5 of
-    // fraktal's fill.
-    expectNear(s.fillColor,
-               vec3(shownAlike(0.9 * 0.8 * 1.09, g), shownAlike(0.95 * 0.8 * 1.09, g), shownAlike(0.8 * 1.09, g)),
-               1e-12, "fillColor");
     // Shadows on (HardShadow 1), ShadowSoft 4: penumbra 30 x 4.
     EXPECT_GT(s.shadowSteps, 0);
     EXPECT_EQ(s.shadowSoftness, 120.0);
@@ -244,10 +271,11 @@ TEST(FragShading, EachSettingMapsByItsOwnArithmetic) {
     EXPECT_EQ(s.aoStrength, 0.6);
     EXPECT_EQ(s.aoSteps, 5);
     EXPECT_NEAR(s.aoDistance * bound, 0.790569, 1e-6);
-    // Fog 0.4 at the target, 3.8 from the eye: 0.4^4 x 3.8 = 0.09728 per unit, toward the background.
-    EXPECT_NEAR(s.fogDensity / bound, 0.09728 * length(vec3(0.4, 1.2, 3.6)) / 3.8, 1e-9);
+    // Fog 0.4 hides half at sqrt(ln 2) / 0.16 = 5.2035 in FragM: fraktal's density is ln 2 / 5.2035,
+    // 0.13321 per unit, toward the background.
+    EXPECT_NEAR(s.fogDensity / bound, 0.133209, 1e-6);
     expectNear(s.fogColor, s.backgroundTop, 0.0, "fog toward the background");
-    expectNear(s.backgroundTop, vec3(shownAlike(0.2, g), shownAlike(0.3, g), shownAlike(0.5, g)), 1e-12, "background");
+    expectNear(s.backgroundTop, vec3(shown(0.2), shown(0.3), shown(0.5)), 1e-12, "background");
     // Orbit-trap weights: the intensities of X, Y, Z (negative), R.
     EXPECT_EQ(s.trapWeights, glm::dvec4(0.7, 0.4, -0.5, 0.12));
     // The palette: (1 - 0.6) BaseColor at index 0, rising along the weights' mean colour.
@@ -260,8 +288,8 @@ TEST(FragShading, EachSettingMapsByItsOwnArithmetic) {
         1.72;
     const vec3 rise = palette(0.05) - palette(0.0);
     expectNear(rise / length(rise), mean / length(mean), 1e-6, "the palette rises along the mean colour");
-    // Exposure 1.4: log2 1.4 stops.
-    EXPECT_NEAR(scene.preset.render.exposure, std::log2(1.4), 1e-12);
+    // Exposure is in the colours: fraktal's own stays.
+    EXPECT_EQ(scene.preset.render.exposure, 0.0);
     // What fraktal draws otherwise is named, and a strict import takes the frag: shading is cosmetic.
     auto named = [&](const std::string& what) {
         return std::any_of(scene.approximated.begin(), scene.approximated.end(),
@@ -300,10 +328,14 @@ TEST(FragShading, CyclingFlatAndClampedPresets) {
     EXPECT_EQ(f.fogDensity, 0.0);
     expectNear(f.lightDirection, vec3(0, 0, -1), 1e-12, "SpotLightDir 1, 0.7");
     // Specular clamped to 1: min(10, (16 + 2) / 8 x 16 x 1 = 36) = 10 over the default 0.4 (Gamma 2).
-    EXPECT_NEAR(f.specular, shownAlike(10.0, 2.0) / shownAlike(0.4, 2.0), 1e-12);
-    expectNear(f.backgroundTop, vec3(1.0, 0.0, shownAlike(0.5, 2.0)), 1e-12, "background clamped");
-    // The raytracer's defaults where the preset is silent: CamLight 1 at 1, ToneMapping 4 (named).
-    expectNear(f.fillColor, vec3(1.0), 1e-12, "default CamLight");
+    // The raytracer's defaults where the preset is silent: SpotLight 1 at 0.4, CamLight 1 at 1,
+    // Reinhard's curve at Gamma 2 (named).
+    const Display reinhard;
+    const double scale = reinhard(0.7) / 0.7;
+    expectNear(f.lightColor, vec3(0.4 * scale), 1e-12, "default SpotLight");
+    expectNear(f.fillColor, vec3(scale), 1e-12, "default CamLight");
+    EXPECT_NEAR(f.specular, reinhard(10.0) / (0.4 * scale), 1e-12);
+    expectNear(f.backgroundTop, reinhard(vec3(1.0, 0.0, 0.5)), 1e-12, "background clamped");
     EXPECT_EQ(flat.preset.render.exposure, 0.0);
 }
 
@@ -317,8 +349,7 @@ TEST(FragShading, AoAndFogKeepTheirWorldLengthsWhenTheBoundIsFitted) {
     const Preset p = loadPreset(out);
     EXPECT_LT(p.formula.boundRadius, importPreset(importData("shading.frag")).preset.formula.boundRadius);
     EXPECT_NEAR(p.shading.aoDistance * p.formula.boundRadius, 25 * std::pow(10.0, -1.5), 1e-9);
-    EXPECT_NEAR(p.shading.fogDensity / p.formula.boundRadius,
-                std::pow(0.4, 4) * length(p.camera.target - p.camera.position), 1e-9);
+    EXPECT_NEAR(p.shading.fogDensity / p.formula.boundRadius, std::sqrt(std::log(2.0)) * 0.16, 1e-9);
 }
 
 TEST(FragShading, ARaytracerOtherThanDERaytracerKeepsFraktalsShading) {

@@ -39,7 +39,6 @@ with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
 
 imported = [p for p, ok in results if ok]
 counts, total = {}, 0
-defaults = {"lightDirection": [0.55, 0.75, 0.35]}
 for path in imported:
     preset = json.loads((out / "json" / (key(path) + ".json")).read_text())
     description = preset.get("description", "")
@@ -58,7 +57,6 @@ for path in imported:
         "cycling palette (CycleColors)": "CycleColors:" in description,
         "flat BaseColor (OrbitStrength 0)": all(v == 0 for v in s.get("paletteB", [1])),
         "reflection (Reflection > 0)": s.get("reflection", 0) > 0,
-        "exposure from Exposure (not 1)": preset.get("colorManagement", {}).get("exposure", 0) != 0,
         "named: Glow not drawn": "Glow:" in description,
         "named: GradientBackground vignette not drawn": "GradientBackground:" in description,
         "named: tone curve (ToneMapping not 1)": "ToneMapping:" in description,

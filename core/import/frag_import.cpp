@@ -503,12 +503,11 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
         // DE-Raytracer's lights, AO, fog, background and orbit-trap colours (frag_shading). Its
         // lengths are the world's; the preset holds them per bound radius, which the caller
         // rescales when it fits the bound (core/scene/scene_import.cpp).
-        RaytracerLook look = raytracerLook(file, preset, length(out.camera.target - out.camera.position));
+        RaytracerLook look = raytracerLook(file, preset);
         out.shading = look.shading;
         result.aoReach = look.aoReach;
         result.fogPerUnit = look.fogPerUnit;
         holdShadingLengths(result);
-        out.render.exposure = look.exposure;
         result.approximated.insert(result.approximated.end(), look.approximated.begin(), look.approximated.end());
     } else {
         for (const char* key : {"BaseColor", "OrbitStrength", "X", "Y", "Z", "R", "SpotLight", "CamLight", "AO", "Fog",

@@ -102,44 +102,68 @@ vec3 spotLightDirection(double x, double y) {
     return length(d) > 1e-12 ? normalize(d) : vec3(0.0, 0.0, 1.0);
 }
 
-vec3 linearFromFragM(const vec3& v, double gamma) {
-    const double g = std::max(gamma, 0.1);
-    vec3 out;
-    for (int k = 0; k < 3; ++k) out[k] = srgbToLinear(std::pow(std::max(v[k], 0.0), 1.0 / g));
-    return out;
+double FragMDisplay::shown(double v) const {
+    double c = std::max(v, 0.0) * exposure;
+    switch (toneMapping) {
+        case 1: break;
+        case 2: c = 1.0 - std::exp(-c); break;
+        case 3: {
+            // Hejl and Burgess-Dawson's filmic curve, which holds a gamma of 2.2 of its own: FragM
+            // raises it back by 2.2 before its 1 / Gamma.
+            const double x = std::max(c - 0.004, 0.0);
+            c = std::pow(x * (6.2 * x + 0.5) / (x * (6.2 * x + 1.7) + 0.06), 2.2);
+            break;
+        }
+        default: c = c / (1.0 + c);
+    }
+    // Above 1 (the linear curve's) the screen shows white; fraktal's display clips alike.
+    return std::pow(std::max(c, 0.0), 1.0 / std::max(gamma, 0.1));
 }
 
-RaytracerLook raytracerLook(const FragFile& file, const FragPreset* preset, double eyeToTarget) {
+vec3 FragMDisplay::linear(const vec3& v) const {
+    return vec3(srgbToLinear(shown(v.x)), srgbToLinear(shown(v.y)), srgbToLinear(shown(v.z)));
+}
+
+RaytracerLook raytracerLook(const FragFile& file, const FragPreset* preset) {
     RaytracerLook look;
     ShadingSettings& s = look.shading;
     auto approximated = [&](const std::string& where, const std::string& what) {
         look.approximated.push_back({where, what});
     };
-    const double gamma = std::max(scalar(preset, "Gamma"), 0.1);
+    FragMDisplay display;
+    display.exposure = scalar(preset, "Exposure");
+    display.toneMapping = int(std::lround(scalar(preset, "ToneMapping")));
+    display.gamma = std::max(scalar(preset, "Gamma"), 0.1);
 
-    // The key light: SpotLight's colour times its intensity, toward SpotLightDir.
+    // The key light: SpotLight's colour times its intensity, toward SpotLightDir. The light from the
+    // eye, max(CamLightMin, cos) times CamLight, is fraktal's fill light (from the sky, 0.5 + 0.5 n.y,
+    // 0.5 on average over the normals facing the eye) with the same mean: max(m, cos) averages
+    // 0.5 + m^2 / 2 over those normals.
     const std::vector<double> spot = valueOf(preset, "SpotLight");
     const std::vector<double> spotDir = valueOf(preset, "SpotLightDir");
+    const std::vector<double> cam = valueOf(preset, "CamLight");
+    const double camMin = scalar(preset, "CamLightMin");
+    const vec3 key = rgb(spot) * spot[3];
+    const vec3 fill = rgb(cam) * (cam[3] * (1.0 + camMin * camMin));
+    // Both scaled alike, so that a white surface shows its mean brightness over the normals facing
+    // the eye, half of each light (cosines average 0.5), as FragM's display shows it.
+    const double lit = (key.x + key.y + key.z + fill.x + fill.y + fill.z) / 6.0;
+    const double scale = lit > 1e-9 ? display.linear(vec3(lit)).x / lit : 0.0;
     s.lightDirection = spotLightDirection(spotDir[0], spotDir[1]);
-    s.lightColor = linearFromFragM(rgb(spot) * spot[3], gamma);
+    s.lightColor = key * scale;
+    s.fillColor = fill * scale;
     // DE-Raytracer's highlight peaks (where the half vector meets the normal) at
     // min(SpecularMax, (SpecularExp + 2) / 8 * SpecularExp * Specular) times the light's colour,
-    // without its intensity; fraktal's at specular times lightColor. The same exponent keeps its width.
+    // without its intensity; fraktal's at specular times lightColor: the peak shows as FragM's
+    // display shows it. The same exponent keeps the highlight's width.
     const double exponent = scalar(preset, "SpecularExp");
     const double peak =
         std::min(scalar(preset, "SpecularMax"), (exponent + 2.0) / 8.0 * exponent * scalar(preset, "Specular"));
-    const double keyGrey = linearFromFragM(vec3(spot[3]), gamma).x;
-    s.specular = keyGrey > 1e-9 ? std::clamp(linearFromFragM(vec3(peak), gamma).x / keyGrey, 0.0, 100.0) : 0.0;
+    const double keyGrey = (s.lightColor.x + s.lightColor.y + s.lightColor.z) / 3.0;
+    s.specular = keyGrey > 1e-9 ? std::clamp(display.linear(vec3(peak)).x / keyGrey, 0.0, 100.0) : 0.0;
     s.shininess = std::max(exponent, 1.0);
     if (peak > 0.0 && keyGrey <= 1e-9)
         approximated("Specular", "a highlight of a spot light of intensity 0: fraktal's highlight is the key light's");
-
-    // The light from the eye, max(CamLightMin, cos) times CamLight, is fraktal's fill light (from the
-    // sky, 0.5 + 0.5 n.y, 0.5 on average over the normals facing the eye) with the same mean:
-    // max(m, cos) averages 0.5 + m^2 / 2 over those normals.
-    const std::vector<double> cam = valueOf(preset, "CamLight");
-    const double camMin = scalar(preset, "CamLightMin");
-    s.fillColor = linearFromFragM(rgb(cam) * (cam[3] * (1.0 + camMin * camMin)), gamma);
     approximated("CamLight",
                  "FragM's light from the eye is fraktal's fill light of the same mean brightness, lighting from "
                  "above");
@@ -169,7 +193,7 @@ RaytracerLook raytracerLook(const FragFile& file, const FragPreset* preset, doub
                                ") is black in fraktal");
 
     // The background: BackgroundColor, flat (fraktal's gradient with both ends alike).
-    const vec3 background = linearFromFragM(rgb(valueOf(preset, "BackgroundColor")), gamma);
+    const vec3 background = display.linear(rgb(valueOf(preset, "BackgroundColor")));
     s.backgroundTop = s.backgroundBottom = background;
     if (const double vignette = scalar(preset, "GradientBackground"); vignette > 0.0)
         approximated("GradientBackground",
@@ -178,14 +202,15 @@ RaytracerLook raytracerLook(const FragFile& file, const FragPreset* preset, doub
         approximated("backgroundColor", "the frag's own background (providesBackground) is BackgroundColor");
 
     // Fog: FragM's fades to the background by 1 - exp(-Fog^4 t^2), fraktal's by 1 - exp(-density t);
-    // the two agree at the camera's target.
+    // the two hide half at the same distance, sqrt(ln 2) / Fog^2 (the camera's target is no measure
+    // of where the surfaces are: a pseudo-Kleinian's eye looks far past the columns near it).
     const double fog = scalar(preset, "Fog");
     if (fog > 0.0) {
         s.fogColor = background;
-        look.fogPerUnit = std::pow(fog, 4.0) * std::max(eyeToTarget, 1e-6);
+        look.fogPerUnit = std::sqrt(std::log(2.0)) * fog * fog;
         approximated("Fog",
-                     "FragM's fog grows with the square of the distance; fraktal's matches it at the "
-                     "camera's target");
+                     "FragM's fog grows with the square of the distance; fraktal's hides half at the same "
+                     "distance, more nearer and less farther");
     }
     if (const std::vector<double> glow = valueOf(preset, "Glow"); glow[3] > 0.0)
         approximated("Glow", "the glow near the object (" + fmt(glow[3]) + ") is not drawn");
@@ -249,12 +274,11 @@ RaytracerLook raytracerLook(const FragFile& file, const FragPreset* preset, doub
                      "the colours' mean phase");
     }
 
-    // FragM scales by Exposure before its tone curve; fraktal's exposure is in stops.
-    const double exposure = scalar(preset, "Exposure");
-    look.exposure = exposure > 0.0 ? std::clamp(std::log2(exposure), -20.0, 20.0) : -20.0;
-    if (const int tone = int(std::lround(scalar(preset, "ToneMapping"))); tone != 1)
-        approximated("ToneMapping", "FragM's tone curve " + std::to_string(tone) +
-                                        " is not applied: fraktal's display shows the linear image");
+    if (display.toneMapping != 1)
+        approximated("ToneMapping", "FragM's tone curve " + std::to_string(display.toneMapping) +
+                                        (display.toneMapping > 4 ? " (drawn as Reinhard's, 4)" : "") +
+                                        " holds for the background and a white surface facing the lights; "
+                                        "fraktal's display is linear elsewhere");
     return look;
 }
 

@@ -2,14 +2,17 @@
 // SpecularExp, SpecularMax), the light from the eye (CamLight, CamLightMin), shadows (HardShadow,
 // ShadowSoft), ambient occlusion (AO, DetailAO), fog (Fog), the background (BackgroundColor),
 // reflections (Reflection), the orbit-trap colouring (BaseColor, OrbitStrength, X, Y, Z, R,
-// CycleColors, Cycles) and the display (Gamma, Exposure), each from the chosen preset's line, else
-// the raytracer's own default, clamped to its slider as FragM clamps it.
+// CycleColors, Cycles) and the display (Exposure, ToneMapping, Gamma), each from the chosen preset's
+// line, else the raytracer's own default, clamped to its slider as FragM clamps it.
 //
-// Colours: FragM raises a surface colour to Gamma before lighting it and shows the result at
-// 1 / Gamma, so under a white light of 1 the screen shows the colour as written: fraktal's
+// Colours: FragM raises a surface colour to Gamma before lighting it, and its display pass
+// (BufferShader.frag) scales by Exposure, applies the tone curve and shows the result at 1 / Gamma,
+// so under a white light of 1 and a linear curve the screen shows the colour as written: fraktal's
 // palette is display-referred as well and takes them as they are. A light or the background is a
-// value of FragM's working space, shown at 1 / Gamma; fraktal shows its scene-linear values through
-// the sRGB curve, so such a value becomes the linear value that shows alike (linearFromFragM).
+// value of FragM's working space; fraktal shows its scene-linear values through the sRGB curve, so
+// such a value becomes the linear value fraktal shows as FragM's display pass shows it
+// (FragMDisplay::linear): exactly for the flat background, and for the lights at the mean
+// brightness of a white surface (the tone curve bends their sum, not each).
 //
 // Cosmetic settings never refuse a frag (as the Mandelbulber2 import keeps its glow, fog and
 // lights as approximations): what fraktal draws differently or not at all is named in
@@ -34,13 +37,20 @@ bool drawnByDERaytracer(const FragFile& file);
 // (sin(pi x) cos(pi y / 2), sin(pi y / 2) sin(pi x), cos(pi x)), unit length.
 vec3 spotLightDirection(double x, double y);
 
-// A value of FragM's working space (a light, the background) as the scene-linear value fraktal's
-// sRGB display shows as FragM shows it at 1 / gamma (before FragM's tone curve).
-vec3 linearFromFragM(const vec3& v, double gamma);
+// FragM's display pass: Exposure, the tone curve (ToneMapping 1 linear, 2 exponential, 3 filmic,
+// 4 Reinhard; 5 to 9 are drawn as 4), then 1 / Gamma.
+struct FragMDisplay {
+    double exposure = 1.0;
+    int toneMapping = 4;
+    double gamma = 2.0;
+
+    double shown(double v) const;  // what the screen shows for a working-space value (1: white)
+    // The scene-linear value fraktal's sRGB display shows as FragM shows `v`.
+    vec3 linear(const vec3& v) const;
+};
 
 struct RaytracerLook {
     ShadingSettings shading;
-    double exposure = 0.0;  // colorManagement.exposure, in stops
     // The lengths fraktal keeps per bound radius, in world units here: the caller divides by the
     // bound it settles on (0: keep the default's share of the bound).
     double aoReach = 0.0;     // the farthest AO sample from the surface
@@ -49,8 +59,7 @@ struct RaytracerLook {
 };
 
 // DE-Raytracer's settings of `preset` (null: the raytracer's defaults) as fraktal's shading, for a
-// frag drawn by DE-Raytracer. `eyeToTarget` is the camera's distance to its target (the fog is
-// matched there).
-RaytracerLook raytracerLook(const FragFile& file, const FragPreset* preset, double eyeToTarget);
+// frag drawn by DE-Raytracer.
+RaytracerLook raytracerLook(const FragFile& file, const FragPreset* preset);
 
 }  // namespace fraktal::frag
