@@ -322,7 +322,8 @@ std::vector<float> drawFrame(int width, int height) {
 // The frag's own picture, drawn a second time with the frag's gl_FragColor kept, to hold fraktal's
 // look against (bench/frag/README.md, "Shading"). The backbuffer reads 0 (a black texture on
 // unit 0), so a pixel is 3D.frag's (c w, w) and c its colour. BufferShader's pass is done here:
-// Exposure, the tone curve (1 linear, 2 exponential, the others as 4, Reinhard), then 1 / Gamma.
+// Exposure, the tone curve (1 linear, 2 exponential, 3 filmic, the others as 4, Reinhard), then
+// 1 / Gamma.
 // Compiles and links the frag's vertex code and `program`, and sets every uniform as FragM would.
 GLuint useProgram(const frag::FragFile& file, const Program& program, const Options& o,
                   const frag::FragPreset* preset) {
@@ -375,7 +376,12 @@ void writeOwnColours(const Options& o, const frag::FragFile& file, const frag::F
             for (int k = 0; k < 3; ++k) {
                 double c = p[3] > 0.0f ? double(p[k]) / double(p[3]) : 0.0;
                 c = std::max(c, 0.0) * exposure;
-                c = tone == 1 ? c : tone == 2 ? 1.0 - std::exp(-c) : c / (1.0 + c);
+                if (tone == 3) {  // filmic (Hejl, Burgess-Dawson), its own gamma of 2.2 raised back
+                    const double x = std::max(c - 0.004, 0.0);
+                    c = std::pow(x * (6.2 * x + 0.5) / (x * (6.2 * x + 1.7) + 0.06), 2.2);
+                } else if (tone != 1) {
+                    c = tone == 2 ? 1.0 - std::exp(-c) : c / (1.0 + c);
+                }
                 q[k] = (unsigned char)std::lround(255.0 * std::pow(std::clamp(c, 0.0, 1.0), 1.0 / gamma));
             }
             q[3] = 255;
