@@ -166,7 +166,8 @@ TEST(FragShading, EveryTestFragsPresetCarriesItsShadingSettings) {
                 }
             }
             if (has({"HardShadow"})) {
-                EXPECT_EQ(s.shadowSteps > 0, line(preset, "HardShadow")[0] > 0) << where;
+                // Whole from 0.5, none below: the nearer of fraktal's two.
+                EXPECT_EQ(s.shadowSteps > 0, line(preset, "HardShadow")[0] >= 0.5) << where;
             }
             if (has({"ShadowSoft"})) {
                 EXPECT_NEAR(s.shadowSoftness, 30 * line(preset, "ShadowSoft")[0], 1e-9) << where;
@@ -310,8 +311,9 @@ TEST(FragShading, CyclingFlatAndClampedPresets) {
     const ShadingSettings& c = cycling.preset.shading;
     expectNear(c.paletteC, vec3(3.5 / (2 * M_PI)), 1e-12, "cycles");
     expectNear(c.paletteD, (vec3(0.1, 0.5, 0.9) * 1.0 + vec3(0.8, 0.78, 1) * 0.5) / 1.5 / (2 * M_PI), 1e-12, "phase");
-    // DetailAO 0 (AO by step count) and a coloured AO are named; HardShadow 0.5 still casts shadows.
-    EXPECT_GT(c.shadowSteps, 0);
+    // DetailAO 0 (AO by step count) and a coloured AO are named; HardShadow 0.3 is drawn without
+    // shadows (fraktal's are whole or none, and none is nearer).
+    EXPECT_EQ(c.shadowSteps, 0);
     for (const char* what : {"DetailAO:", "AO:", "HardShadow:", "CycleColors:", "ToneMapping:"})
         EXPECT_TRUE(std::any_of(cycling.approximated.begin(), cycling.approximated.end(), [&](const std::string& a) {
             return a.starts_with(what);

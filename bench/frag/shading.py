@@ -49,7 +49,7 @@ for path in imported:
     found = {
         "key light from SpotLight, SpotLightDir": True,
         "fill light from CamLight": "fillColor" in s,
-        "shadows (HardShadow > 0), ShadowSoft's penumbra": s.get("shadowSteps", 96) > 0,
+        "shadows (HardShadow >= 0.5), ShadowSoft's penumbra": s.get("shadowSteps", 96) > 0,
         "AO along the normal (AO > 0)": s.get("aoSteps", 5) > 0,
         "fog (Fog > 0)": s.get("fogDensity", 0) > 0,
         "background BackgroundColor": "backgroundTop" in s,

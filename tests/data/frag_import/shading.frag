@@ -65,7 +65,7 @@ Z = 0.8,0.78,1,0.5
 R = 0.4,0.7,1,0
 AO = 0.3,0.1,0,0.9
 DetailAO = 0
-HardShadow = 0.5
+HardShadow = 0.3
 #endpreset
 
 #preset Flat
