@@ -16,6 +16,7 @@
 // they are written, which read 0 there as on NVIDIA), as an artist's machine would run the frag.
 //
 // Usage: bench_frag_host FRAG [--include-dir DIR]... [--preset NAME] [--size WxH] [-o MASK.png]
+//        [--colour IMAGE.png] (the frag's own colours, through its Exposure, ToneMapping and Gamma)
 //        [--set NAME=V[,V...]]... (a uniform's value after the preset's)
 //        [--dump-glsl FILE] (the vertex and the instrumented fragment GLSL, for reading)
 // FRAKTAL_HOST_VERBOSE=1 prints each uniform's value and location on stderr.
@@ -81,7 +82,10 @@ struct Program {
 };
 
 // The frag's fragment GLSL with trace(), DE() and main() wrapped (the header comment says why).
-Program instrument(const frag::FragFile& file) {
+// With `ownColours`, the pixel stays the frag's own (3D.frag's accumulation (c w, w)): a program of
+// its own, since the mask's leaves the frag's colour dead code for the compiler to drop (a skybox
+// frag's samplerCube then never meets its sampler2D on one texture unit).
+Program instrument(const frag::FragFile& file, bool ownColours = false) {
     std::vector<Edit> edits;
     const frag::FragFunction* trace = nullptr;
     const frag::FragFunction* mainFunction = nullptr;
@@ -125,8 +129,11 @@ Program instrument(const frag::FragFile& file) {
         tail +=
             "int fraktalHostDeCount = 0;\nfloat DE(vec3 p) { fraktalHostDeCount++; return fraktalHostUserDE(p); }\n";
     }
-    tail += "void main() {\n\tfraktalHostMain();\n\tgl_FragColor = vec4(fraktalHostHit ? 1.0 : 0.0, " +
-            std::string(de ? "float(fraktalHostDeCount)" : "-1.0") + ", fraktalHostTraced ? 1.0 : 0.0, 1.0);\n}\n";
+    if (ownColours)
+        tail += "void main() {\n\tfraktalHostMain();\n}\n";
+    else
+        tail += "void main() {\n\tfraktalHostMain();\n\tgl_FragColor = vec4(fraktalHostHit ? 1.0 : 0.0, " +
+                std::string(de ? "float(fraktalHostDeCount)" : "-1.0") + ", fraktalHostTraced ? 1.0 : 0.0, 1.0);\n}\n";
     std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.at > b.at; });
     std::string glsl = file.glsl;
     for (const Edit& e : edits) glsl.replace(e.at, e.erase, e.insert);
@@ -188,10 +195,18 @@ std::vector<double> uniformValue(const frag::FragUniform& u, const frag::FragPre
         else if (!line->numbers.empty())
             v = line->numbers;
     }
-    // A range that is empty is no range: 3D.frag's Up is declared slider[(0,0,0),(0,1,0),(0,0,0)].
-    if (u.kind == K::Slider)
-        for (size_t i = 0; i < v.size() && i < u.minimum.size() && i < u.maximum.size(); ++i)
-            if (u.minimum[i] < u.maximum[i]) v[i] = std::clamp(v[i], u.minimum[i], u.maximum[i]);
+    // FragM's editor holds a slider's value in a spin box of the slider's range. A vec3 or vec4
+    // slider declared with its minimum equal to its maximum (3D.frag's Up:
+    // slider[(0,0,0),(0,1,0),(0,0,0)]) gets the range [-1, 1] in each component (GUI/FloatWidget.cpp);
+    // a spin box whose minimum is above its maximum raises the maximum to the minimum (Qt).
+    if (u.kind == K::Slider) {
+        const bool direction = (u.type.ends_with("vec3") || u.type.ends_with("vec4")) && u.minimum == u.maximum;
+        for (size_t i = 0; i < v.size() && i < u.minimum.size() && i < u.maximum.size(); ++i) {
+            const double lo = direction ? -1.0 : u.minimum[i];
+            const double hi = direction ? 1.0 : std::max(u.maximum[i], u.minimum[i]);
+            v[i] = std::min(std::max(v[i], lo), hi);
+        }
+    }
     if (u.kind == K::FloatColor && v.size() == 4 && !u.minimum.empty() && !u.maximum.empty())
         v[3] = std::clamp(v[3], u.minimum[0], u.maximum[0]);
     return v;
@@ -219,8 +234,12 @@ void setUniform(GLuint program, const frag::FragUniform& u, const std::vector<do
         glUniform3i(at, n(0), n(1), n(2));
 }
 
+struct Options;
+GLuint useProgram(const frag::FragFile& file, const Program& program, const Options& o, const frag::FragPreset* preset);
+void writeOwnColours(const Options& o, const frag::FragFile& file, const frag::FragPreset* preset);
+
 struct Options {
-    fs::path frag, out, dump;
+    fs::path frag, out, dump, colour;
     std::vector<fs::path> includeDirs;
     std::string preset;
     std::vector<std::pair<std::string, std::vector<double>>> set;  // --set NAME=V[,V...]: after the preset
@@ -241,6 +260,8 @@ Options parseArguments(int argc, char** argv) {
             o.preset = next();
         else if (a == "-o")
             o.out = next();
+        else if (a == "--colour")
+            o.colour = next();
         else if (a == "--dump-glsl")
             o.dump = next();
         else if (a == "--set") {
@@ -282,6 +303,93 @@ std::string kindOf(const frag::FragFile& file) {
     return "3d";
 }
 
+// One frame of the program in use: FragM's full-screen quad, the projection matrix left the identity
+// (no 2D zoom in 3D), read back as RGBA floats, rows from the bottom.
+std::vector<float> drawFrame(int width, int height) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBegin(GL_QUADS);
+    glVertex2f(-1, -1);
+    glVertex2f(1, -1);
+    glVertex2f(1, 1);
+    glVertex2f(-1, 1);
+    glEnd();
+    std::vector<float> pixels(size_t(width) * size_t(height) * 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data());
+    if (const GLenum e = glGetError(); e != GL_NO_ERROR) throw std::runtime_error("GL error " + std::to_string(e));
+    return pixels;
+}
+
+// The frag's own picture, drawn a second time with the frag's gl_FragColor kept, to hold fraktal's
+// look against (bench/frag/README.md, "Shading"). The backbuffer reads 0 (a black texture on
+// unit 0), so a pixel is 3D.frag's (c w, w) and c its colour. BufferShader's pass is done here:
+// Exposure, the tone curve (1 linear, 2 exponential, 3 filmic, the others as 4, Reinhard), then
+// 1 / Gamma.
+// Compiles and links the frag's vertex code and `program`, and sets every uniform as FragM would.
+GLuint useProgram(const frag::FragFile& file, const Program& program, const Options& o,
+                  const frag::FragPreset* preset) {
+    const std::string vertex = file.vertex.empty() ? "void main() { gl_Position = gl_Vertex; }\n" : file.vertex;
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertex, "the vertex");
+    const GLuint fs = compile(GL_FRAGMENT_SHADER, program.fragment, "the fragment");
+    const GLuint prog = link(vs, fs);
+    glUseProgram(prog);
+    for (const frag::FragUniform& u : file.uniforms) {
+        std::vector<double> v = uniformValue(u, preset);
+        for (const auto& [name, value] : o.set)
+            if (name == u.name) v = value;
+        if (std::getenv("FRAKTAL_HOST_VERBOSE")) {
+            std::fprintf(stderr, "%s %s (%s):", u.type.c_str(), u.name.c_str(), frag::uniformKindName(u.kind));
+            for (double x : v) std::fprintf(stderr, " %g", x);
+            std::fprintf(stderr, " at %d\n", glGetUniformLocation(prog, u.name.c_str()));
+        }
+        setUniform(prog, u, v);
+    }
+    // What FragM itself sets: the pixel's size (1 / the viewport), a still's time, the first frame.
+    if (GLint at = glGetUniformLocation(prog, "pixelSize"); at >= 0)
+        glUniform2f(at, 1.0f / float(o.width), 1.0f / float(o.height));
+    if (GLint at = glGetUniformLocation(prog, "time"); at >= 0) glUniform1f(at, 0.0f);
+    if (GLint at = glGetUniformLocation(prog, "subframe"); at >= 0) glUniform1i(at, 1);
+    return prog;
+}
+
+void writeOwnColours(const Options& o, const frag::FragFile& file, const frag::FragPreset* preset) {
+    auto setting = [&](const char* name, double fallback) {
+        const frag::FragUniform* u = file.findUniform(name);
+        const std::vector<double> v = u ? uniformValue(*u, preset) : std::vector<double>{};
+        return v.empty() ? fallback : v[0];
+    };
+    const double exposure = setting("Exposure", 1.0), gamma = std::max(setting("Gamma", 2.0), 0.1);
+    const int tone = int(std::lround(setting("ToneMapping", 4.0)));
+    GLuint black = 0;
+    const float zero[4] = {0, 0, 0, 0};
+    glGenTextures(1, &black);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, black);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, zero);
+    useProgram(file, instrument(file, true), o, preset);
+    const std::vector<float> pixels = drawFrame(o.width, o.height);
+    std::vector<unsigned char> image(pixels.size());
+    for (int y = 0; y < o.height; ++y)
+        for (int x = 0; x < o.width; ++x) {
+            const float* p = &pixels[(size_t(y) * size_t(o.width) + size_t(x)) * 4];
+            unsigned char* q = &image[(size_t(o.height - 1 - y) * size_t(o.width) + size_t(x)) * 4];
+            for (int k = 0; k < 3; ++k) {
+                double c = p[3] > 0.0f ? double(p[k]) / double(p[3]) : 0.0;
+                c = std::max(c, 0.0) * exposure;
+                if (tone == 3) {  // filmic (Hejl, Burgess-Dawson), its own gamma of 2.2 raised back
+                    const double x = std::max(c - 0.004, 0.0);
+                    c = std::pow(x * (6.2 * x + 0.5) / (x * (6.2 * x + 1.7) + 0.06), 2.2);
+                } else if (tone != 1) {
+                    c = tone == 2 ? 1.0 - std::exp(-c) : c / (1.0 + c);
+                }
+                q[k] = (unsigned char)std::lround(255.0 * std::pow(std::clamp(c, 0.0, 1.0), 1.0 / gamma));
+            }
+            q[3] = 255;
+        }
+    if (!stbi_write_png(o.colour.c_str(), o.width, o.height, 4, image.data(), o.width * 4))
+        throw std::runtime_error("cannot write " + o.colour.string());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -316,27 +424,7 @@ int main(int argc, char** argv) try {
     setenv("force_glsl_version", "130", 0);
     setenv("allow_glsl_builtin_variable_redeclaration", "true", 0);
     const auto context = gl::HeadlessContext::create(gl::HeadlessContext::Profile::Compatibility);
-    const std::string vertex = file.vertex.empty() ? "void main() { gl_Position = gl_Vertex; }\n" : file.vertex;
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertex, "the vertex");
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, program.fragment, "the fragment");
-    const GLuint prog = link(vs, fs);
-    glUseProgram(prog);
-    for (const frag::FragUniform& u : file.uniforms) {
-        std::vector<double> v = uniformValue(u, preset);
-        for (const auto& [name, value] : o.set)
-            if (name == u.name) v = value;
-        if (std::getenv("FRAKTAL_HOST_VERBOSE")) {
-            std::fprintf(stderr, "%s %s (%s):", u.type.c_str(), u.name.c_str(), frag::uniformKindName(u.kind));
-            for (double x : v) std::fprintf(stderr, " %g", x);
-            std::fprintf(stderr, " at %d\n", glGetUniformLocation(prog, u.name.c_str()));
-        }
-        setUniform(prog, u, v);
-    }
-    // What FragM itself sets: the pixel's size (1 / the viewport), a still's time, the first frame.
-    if (GLint at = glGetUniformLocation(prog, "pixelSize"); at >= 0)
-        glUniform2f(at, 1.0f / float(o.width), 1.0f / float(o.height));
-    if (GLint at = glGetUniformLocation(prog, "time"); at >= 0) glUniform1f(at, 0.0f);
-    if (GLint at = glGetUniformLocation(prog, "subframe"); at >= 0) glUniform1i(at, 1);
+    useProgram(file, program, o, preset);
 
     GLuint texture = 0, fbo = 0;
     glGenTextures(1, &texture);
@@ -349,17 +437,7 @@ int main(int argc, char** argv) try {
     glViewport(0, 0, o.width, o.height);
     glDisable(GL_DEPTH_TEST);
     glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
-    // FragM's full-screen quad, the projection matrix left the identity (no 2D zoom in 3D).
-    glBegin(GL_QUADS);
-    glVertex2f(-1, -1);
-    glVertex2f(1, -1);
-    glVertex2f(1, 1);
-    glVertex2f(-1, 1);
-    glEnd();
-    std::vector<float> pixels(size_t(o.width) * size_t(o.height) * 4);
-    glReadPixels(0, 0, o.width, o.height, GL_RGBA, GL_FLOAT, pixels.data());
-    if (const GLenum e = glGetError(); e != GL_NO_ERROR) throw std::runtime_error("GL error " + std::to_string(e));
+    const std::vector<float> pixels = drawFrame(o.width, o.height);
 
     long hits = 0, traced = 0;
     double deCalls = 0;
@@ -374,6 +452,7 @@ int main(int argc, char** argv) try {
             m[0] = m[1] = m[2] = m[3] = hit ? 255 : 0;
         }
     if (traced == 0) throw std::runtime_error("its main() never called trace()");
+    if (!o.colour.empty()) writeOwnColours(o, file, preset);
     if (!o.out.empty() && !stbi_write_png(o.out.c_str(), o.width, o.height, 4, mask.data(), o.width * 4))
         throw std::runtime_error("cannot write " + o.out.string());
     const double pixelCount = double(o.width) * double(o.height);

@@ -8,6 +8,7 @@
 
 #include "core/custom_block.hpp"
 #include "core/import/frag_builtins.hpp"
+#include "core/import/frag_shading.hpp"
 #include "core/whole_de.hpp"
 
 namespace fraktal::frag {
@@ -95,6 +96,23 @@ std::string constantOf(const FragUniform& u, std::vector<double> values) {
     std::string s = "vec" + std::to_string(n) + "(";
     for (int k = 0; k < n; ++k) s += (k ? ", " : "") + number(values[size_t(k)]);
     return s + ")";
+}
+
+// The slider as FragM's editor holds it. A vec3 or vec4 slider whose minimum equals its maximum
+// (3D.frag's `Up`, slider[(0,0,0),(0,1,0),(0,0,0)]) is a direction there, each component in
+// [-1, 1], not a range of one point; a component whose minimum is above its maximum holds its
+// minimum (the spin box raises its maximum to the minimum). The default is held in the range as
+// the spin box holds it.
+FragUniform withFragMsRange(FragUniform u) {
+    if (u.kind != UniformKind::Slider || u.minimum.size() != u.value.size() || u.maximum.size() != u.value.size())
+        return u;
+    const bool direction = (u.type.ends_with("vec3") || u.type.ends_with("vec4")) && u.minimum == u.maximum;
+    for (size_t k = 0; k < u.value.size(); ++k) {
+        if (direction) u.minimum[k] = -1.0, u.maximum[k] = 1.0;
+        u.maximum[k] = std::max(u.maximum[k], u.minimum[k]);
+        u.value[k] = std::clamp(u.value[k], u.minimum[k], u.maximum[k]);
+    }
+    return u;
 }
 
 // The uniform's value: the preset's line where it has one (clamped to the slider's range, as
@@ -261,8 +279,9 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
         if (reached.count(name))
             refuse("a texture is sampled inside the DE (`" + name +
                    "`): fraktal's distance is a function of the point alone");
-    for (const FragUniform& u : file.uniforms) {
-        if (u.inVertex || !reached.count(u.name)) continue;
+    for (const FragUniform& declared : file.uniforms) {
+        if (declared.inVertex || !reached.count(declared.name)) continue;
+        const FragUniform u = withFragMsRange(declared);
         if (u.kind == UniformKind::File || u.type.starts_with("sampler"))
             refuse("a texture is sampled inside the DE (`uniform " + u.type + " " + u.name +
                    "`): fraktal's distance is a function of the point alone");
@@ -480,16 +499,35 @@ FragImport importFrag(const FragFile& file, const FragImportOptions& options) {
         result.approximated.push_back(
             {"EnableFloor", "DE-Raytracer's floor is a plane object, drawn as far as the bound reaches"});
     }
-    for (const char* key : {"BaseColor", "OrbitStrength", "X", "Y", "Z", "R", "SpotLight", "CamLight", "AO", "Fog",
-                            "Glow", "Specular", "HardShadow", "Reflection"})
-        if (preset && preset->find(key) && !file.findUniform(key)) {
-            result.approximated.push_back(
-                {"shading",
-                 "FragM's lighting and orbit-trap palette (BaseColor, OrbitStrength, X, Y, Z, R, lights, "
-                 "AO, fog) are left at fraktal's own shading"});
-            break;
-        }
+    if (drawnByDERaytracer(file)) {
+        // DE-Raytracer's lights, AO, fog, background and orbit-trap colours (frag_shading). Its
+        // lengths are the world's; the preset holds them per bound radius, which the caller
+        // rescales when it fits the bound (core/scene/scene_import.cpp).
+        RaytracerLook look = raytracerLook(file, preset);
+        out.shading = look.shading;
+        result.aoReach = look.aoReach;
+        result.fogPerUnit = look.fogPerUnit;
+        holdShadingLengths(result);
+        result.approximated.insert(result.approximated.end(), look.approximated.begin(), look.approximated.end());
+    } else {
+        for (const char* key : {"BaseColor", "OrbitStrength", "X", "Y", "Z", "R", "SpotLight", "CamLight", "AO", "Fog",
+                                "Glow", "Specular", "HardShadow", "Reflection"})
+            if (preset && preset->find(key) && !file.findUniform(key)) {
+                result.approximated.push_back(
+                    {"shading",
+                     "the frag's raytracer is not DE-Raytracer: its lighting and orbit-trap palette (BaseColor, "
+                     "OrbitStrength, X, Y, Z, R, lights, AO, fog) are left at fraktal's own shading"});
+                break;
+            }
+    }
     return result;
+}
+
+void holdShadingLengths(FragImport& result) {
+    const double bound = result.preset.formula.boundRadius;
+    ShadingSettings& s = result.preset.shading;
+    if (result.aoReach > 0.0) s.aoDistance = std::clamp(result.aoReach / bound, 1e-6, 10.0);
+    if (result.fogPerUnit > 0.0) s.fogDensity = std::clamp(result.fogPerUnit * bound, 0.0, 1e3);
 }
 
 std::string importDescription(const FragFile& file, const FragImport& result) {

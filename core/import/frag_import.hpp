@@ -3,7 +3,8 @@
 // one whole-DE estimator (core/whole_de.hpp) carried in the preset; the uniforms it reads become
 // the estimator's parameters (ranges, defaults, tooltips, groups); the chosen #preset's values
 // apply; 3D.frag's camera (Eye, Target, Up, FOV) and DE-Raytracer's Detail, FudgeFactor and
-// MaxRaySteps map onto fraktal's camera and render settings.
+// MaxRaySteps map onto fraktal's camera and render settings, and DE-Raytracer's lights, AO, fog,
+// background and orbit-trap colours onto its shading (core/import/frag_shading).
 //
 // Faithful, never silently different, as the Mandelbulber2 import: a frag that fraktal cannot
 // draw at all (no DE, a Brute-Raytracer `inside()` frag, a texture read by the DE) is refused
@@ -44,12 +45,20 @@ struct FragImport {
     // measured (core/scene/scene_import.cpp): the step and the fitted bound are the DE's alone.
     std::vector<SceneObject> objects;
     double objectReach = 0.0;
+    // DE-Raytracer's AO reach and fog extinction in world units (0: fraktal's default share of the
+    // bound, no fog), which the preset holds per bound radius (holdShadingLengths).
+    double aoReach = 0.0;
+    double fogPerUnit = 0.0;
     bool faithful() const { return unsupported.empty(); }
 };
 
 // Throws PresetError naming the file for a frag that has no distance estimate fraktal can use,
 // and for a --preset name the file does not have (listing those it has).
 FragImport importFrag(const FragFile& file, const FragImportOptions& options = {});
+
+// Sets the preset's AO distance and fog density from aoReach and fogPerUnit for its present bound
+// radius: again after the caller fits the bound, so that FragM's lengths stay as they were.
+void holdShadingLengths(FragImport& result);
 
 // The preset's description: where it came from, and what was dropped or approximated.
 std::string importDescription(const FragFile& file, const FragImport& result);

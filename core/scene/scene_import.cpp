@@ -167,6 +167,7 @@ ImportedScene importFragScene(const std::filesystem::path& path, const SceneImpo
         f.boundRadius =
             std::max(f.boundRadius, std::min(length(result.preset.camera.position) + result.objectReach, 1e3));
     }
+    frag::holdShadingLengths(result);
     result.preset.description = frag::importDescription(file, result);
     keepReachOf256Steps(result.preset);
     scene.preset = readBack(path, result.preset);

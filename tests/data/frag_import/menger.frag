@@ -62,7 +62,30 @@ Scale = 3
 Offset = 1,1,1
 Twist = false
 Angle = 0
+Gamma = 2
+Exposure = 0.8
+ToneMapping = 4
+AO = 0,0,0,0.7
+DetailAO = -0.8
+Specular = 0.3
+SpecularExp = 24
+SpotLight = 1,0.95,0.9,0.5
+SpotLightDir = -0.3,0.6
+CamLight = 1,1,1,1.2
+CamLightMin = 0.1
+Glow = 1,1,1,0
+Fog = 0.2
+HardShadow = 0.8 Locked
+ShadowSoft = 8
 BaseColor = 1,1,1
+OrbitStrength = 0.4
+X = 0.5,0.6,0.6,0.3
+Y = 1,0.6,0,0.5
+Z = 0.8,0.78,1,0.2
+R = 0.4,0.7,1,0.1
+BackgroundColor = 0.35,0.35,0.4
+GradientBackground = 0.3
+CycleColors = false
 #endpreset
 
 #preset Twisted
