@@ -27,13 +27,15 @@ struct InvCylindrical {
     static constexpr std::string_view jump =
         "with mb2_derivative its running derivative leaves out the angle's stretch |s x| (as Mandelbulber2's does), "
         "so the estimate is no bound";
+    // Its stretch |s x| grows with the radius (the fit keeps such a stack's bailout low).
+    static constexpr bool stretchGrowsWithRadius = true;
     static DerivativeBound derivativeFor(Args a) {
         return a.f(3) > 0.5 ? DerivativeBound::None : DerivativeBound::Local;
     }
     static constexpr std::array params{
-        ParamDecl{"angle_scale", ParamType::Float, {1.0, 0.0, 0.0}, -10.0, 10.0, "s: multiplies y as an angle."},
-        ParamDecl{"z_scale", ParamType::Float, {1.0, 0.0, 0.0}, -10.0, 10.0, "Multiplies z."},
-        ParamDecl{"scale_all", ParamType::Float, {1.0, 0.0, 0.0}, -10.0, 10.0, "Multiplies the result."},
+        ParamDecl{"angle_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "s: multiplies y as an angle."},
+        ParamDecl{"z_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies z."},
+        ParamDecl{"scale_all", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the result."},
         toggleParam("mb2_derivative", false,
                     "On: the running derivative takes |scale_all| alone, as Mandelbulber2's (no bound; the step "
                     "factor is measured)."),
