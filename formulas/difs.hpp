@@ -74,26 +74,36 @@ struct DifsTorus : DifsShapeStep {
     }
 };
 
-// The box of half-sizes `size` about the origin: the distance outside it (0 within).
+// The box of half-sizes `size` about the origin: the distance outside it (0 within). Its x and y
+// half-sizes may follow the point's z, as Mandelbulber2's dIFS box (DIFSBoxV1Iteration,
+// DIFSBoxDiagonalV1Iteration of 2.20) lets them: plus `curve` z^2 (its curved sides, option T) and
+// less `pyramid` z (its pyramid, option M). The distance is then Mandelbulber2's, the box's at the
+// point's own height, not the true distance to the curved solid.
 struct DifsBox : DifsShapeStep {
     static constexpr std::string_view id = "difs_box";
     static constexpr std::string_view label = "dIFS box";
     static constexpr std::string_view help =
         "Measures the distance to a box about the origin (half-sizes) for the dIFS estimate; the point is left as "
-        "it is.";
+        "it is. Curve and pyramid widen x and y by curve z^2 and narrow them by pyramid z.";
     static constexpr std::array params{
         ParamDecl{"size", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.0, 10.0, "Half-sizes along x, y and z."},
         kDifsWScale,
         kDifsWOffset,
         kDifsWVary,
+        ParamDecl{
+            "curve", ParamType::Float, {0.0, 0.0, 0.0}, -10.0, 10.0, "Added to the x and y half-sizes times z^2."},
+        ParamDecl{
+            "pyramid", ParamType::Float, {0.0, 0.0, 0.0}, -10.0, 10.0, "Taken from the x and y half-sizes times z."},
     };
 
     static constexpr std::string_view glsl = R"(
-    float d = length(max(abs(p.xyz) - size, vec3(0.0)));
+    vec3 half_size = size + vec3(vec2(curve * p.z * p.z - pyramid * p.z), 0.0);
+    float d = length(max(abs(p.xyz) - half_size, vec3(0.0)));
     orbitDistance = min(orbitDistance, d / difsDivisor(p.w, w_scale, w_offset, w_vary));
 )";
     static void apply(P4& p, const vec3&, Args a) {
-        const vec3 size = a.v3(0);
+        const double widen = a.f(4) * p.xyz.z * p.xyz.z - a.f(5) * p.xyz.z;
+        const vec3 size = a.v3(0) + vec3(widen, widen, 0.0);
         const double d = length(max(abs(p.xyz) - size, vec3(0.0)));
         recordShapeDistance(p, d, a.f(1), a.f(2), a.f(3));
     }

@@ -25,12 +25,14 @@
 #include "formulas/four_d.hpp"
 #include "formulas/generalized_box_fold.hpp"
 #include "formulas/hypercomplex.hpp"
+#include "formulas/inv_cylindrical.hpp"
 #include "formulas/kifs_icosahedral.hpp"
 #include "formulas/kifs_octahedral.hpp"
 #include "formulas/kifs_tetrahedral.hpp"
 #include "formulas/kleinian.hpp"
 #include "formulas/mandelbox_smooth.hpp"
 #include "formulas/mandelbulb.hpp"
+#include "formulas/mandelbulb_bermarte.hpp"
 #include "formulas/mandelbulb_eye.hpp"
 #include "formulas/mandelbulb_kali_multi.hpp"
 #include "formulas/mandelbulb_variants.hpp"
@@ -43,10 +45,12 @@
 #include "formulas/octahedral_fold.hpp"
 #include "formulas/plane_fold.hpp"
 #include "formulas/platonic_solid.hpp"
+#include "formulas/poly_fold.hpp"
 #include "formulas/primitives.hpp"
 #include "formulas/pseudo_kleinian.hpp"
 #include "formulas/quadratic_bulbs.hpp"
 #include "formulas/quaternion.hpp"
+#include "formulas/quaternion4d.hpp"
 #include "formulas/riemann_sphere.hpp"
 #include "formulas/rotate.hpp"
 #include "formulas/rotate4d.hpp"
@@ -143,6 +147,10 @@ constexpr std::array kBlocks{
     describe<BoxFoldValue>(),
     describe<AboxFold4d>(),
     describe<Rotate4d>(),
+    describe<PolyFold>(),
+    describe<Quaternion4d>(),
+    describe<MandelbulbBermarte>(),
+    describe<InvCylindrical>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

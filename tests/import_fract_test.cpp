@@ -246,10 +246,10 @@ TEST(FractImport, NodeSchedulesFollowTheSequenceIterationByIteration) {
 
 TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
     const mb2::FractImport r = importText(
-        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 79;\nformula_weight_1 0,5;\n"
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 15;\nformula_weight_1 0,5;\n"
         "primitive_torus_1_enabled true;\nprimitive_torus_1_radius_lpow 2;\n[fractal_2]\n");
     EXPECT_FALSE(r.faithful());
-    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (quaternion4d)", "no fraktal blocks")) << r.unsupported.size();
+    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (mandelbulb4)", "no fraktal blocks")) << r.unsupported.size();
     EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "formula_weight_1 0,5: a blend"));
     EXPECT_TRUE(mentions(r.unsupported, "main", "primitive torus 1: a torus measured in another norm"));
     // Values outside a block's range.
@@ -814,6 +814,87 @@ TEST(FractImport, DifsBoxDiagonalExamplesImport) {
          {gm + "DIFS Box DiagV1 pseudoKl.fract", gm + "DIFS Box DiagV3 asurf.fract",
           gm + "DIFS Box DiagV3 complex primitive.fract", gm + "DIFS Box DiagV1 complex primitive.fract",
           std::string("../formula/img/difs_box_diagonal_v1.fract")})
+        expectExampleImports(file);
+}
+
+// Mandelbulber2's dIFS box (difs_box_v1) against DIFSBoxV1Iteration (fractal_formulas.cpp of 2.20)
+// written out: |x| from iteration 1 (option Ax), Tglad's fold of x and y at 0.8 and 0.6 (option Cx,
+// on by default), transf_addition_constantA_111 taken off on iteration 2 (B), the polygonal fold of
+// 5 sides (P), x and y swapped where x > y (Cx_false), the fold about x = -0.3 (C), the swap again
+// (Cy), scale 2.2 about (0.5, 0.2), offset_001, a turn of 30 degrees about z; then the box measured
+// where the iteration ends, its x and y half-sizes plus 0.05 z^2 (option T) and less 0.1 z from
+// iteration 2 (M), over DE |s| + 1. Membership on random points, and the first iteration's estimate.
+TEST(FractImport, DifsBoxV1FollowsMandelbulber2) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 601;\nN 8;\n[fractal_1]\ntransf_function_enabledAx_false true;\n"
+        "transf_start_iterations_X 1;\ntransf_addition_constantA_111 0,8 0,6 1;\n"
+        "transf_function_enabledB_false true;\ntransf_start_iterations_B 2;\ntransf_stop_iterations_B 3;\n"
+        "transf_function_enabledP_false true;\ntransf_int_6 5;\ntransf_function_enabledCx_false true;\n"
+        "transf_function_enabledC_false true;\ntransf_offsetC_0 -0,3;\ntransf_function_enabledCy_false true;\n"
+        "transf_scale_2 2,2;\ntransf_offsetE_0 0,5;\ntransf_offsetF_0 0,2;\ntransf_offset_001 0 0,1 0,9;\n"
+        "transf_addition_constant_111 0,7 0,5 0,9;\ntransf_function_enabledT_false true;\ntransf_scale_0 0,05;\n"
+        "transf_function_enabledM_false true;\ntransf_scaleA_0 0,1;\ntransf_start_iterations_M 2;\n"
+        "transf_function_enabledR_false true;\ntransf_rotation 0 0 30;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Formula& f = r.preset.formula;
+    EXPECT_EQ(f.estimator.block->id, "difs");
+    const double cs = std::cos(glm::radians(30.0)), sn = std::sin(glm::radians(30.0));
+    const double pi = 3.14159265358979323846;
+    auto iterate = [&](vec3 z, int i) {
+        if (i >= 1) z.x = std::abs(z.x);
+        z.x = std::abs(z.x + 0.8) - std::abs(z.x - 0.8) - z.x;
+        z.y = std::abs(z.y + 0.6) - std::abs(z.y - 0.6) - z.y;
+        if (i == 2) z -= vec3(0.8, 0.6, 1.0);
+        z.x = std::abs(z.x);
+        const double psi = std::abs(std::fmod(std::atan(z.y / z.x) + pi / 5, pi / (0.5 * 5)) - pi / 5);
+        const double len = std::sqrt(z.x * z.x + z.y * z.y);
+        z.x = std::cos(psi) * len;
+        z.y = std::sin(psi) * len;
+        if (z.x > z.y) std::swap(z.x, z.y);
+        if (z.x < -0.3) z.x = std::abs(z.x + 0.3) - 0.3;
+        if (z.x > z.y) std::swap(z.x, z.y);
+        const vec3 centre(0.5, 0.2, 0.0);
+        z = (z - centre) * 2.2 + centre + vec3(0.0, 0.1, 0.9);
+        return vec3(cs * z.x - sn * z.y, sn * z.x + cs * z.y, z.z);
+    };
+    auto box = [](const vec3& z, int i) {
+        const double widen = 0.05 * z.z * z.z - (i >= 2 ? 0.1 * z.z : 0.0);
+        return length(glm::max(glm::abs(z) - (vec3(0.7, 0.5, 0.9) + vec3(widen, widen, 0.0)), vec3(0.0)));
+    };
+    expectDifsMembershipFollows(f, 2.0, 12, [&](const vec3& point) {
+        vec3 z = point;
+        double de = 1.0, dist = 1000.0;
+        for (int i = 0; i < f.iterations; ++i) {
+            z = iterate(z, i);
+            de = de * 2.2 + 1.0;
+            dist = std::min(dist, box(z, i) / de);
+            if (length(z) > f.bailout) break;
+        }
+        return dist;
+    });
+    Formula one = f;
+    one.iterations = 1;
+    const vec3 x(1.3, -0.4, 1.9);
+    EXPECT_NEAR(distanceEstimate(one, x), box(iterate(x, 0), 0) / 3.2 * one.deFactor, 1e-9);
+    // Option Y measures the box where the iteration starts, its sides curved there too.
+    const mb2::FractImport start = importText(
+        "[main_parameters]\nformula_1 601;\n[fractal_1]\ntransf_function_enabledY_false true;\n"
+        "transf_function_enabledT_false true;\ntransf_scale_0 0,2;\n");
+    ASSERT_TRUE(start.faithful()) << start.unsupported.front().text();
+    const Node& first = start.preset.formula.nodes.front();
+    EXPECT_EQ(first.block->id, "difs_box");
+    EXPECT_EQ(param(first, "w_scale"), 2.0);
+    EXPECT_EQ(param(first, "curve"), 0.2);
+    // The least distance less an offset (option E) and a polygon of 40 sides are refused by name.
+    expectRefused("formula_1 601;\n[fractal_1]\ntransf_function_enabledE_false true;\ntransf_offsetB_0 0,1;\n",
+                  "slot 1 (difs_box_v1)", "less an offset");
+    expectRefused("formula_1 601;\n[fractal_1]\ntransf_function_enabledP_false true;\ntransf_int_6 40;\n",
+                  "slot 1 (difs_box_v1)", "polygonal fold of other than 1 to 32 sides");
+    // The flower (polygonal fold, curved sides, a varying scale), formula/img's file and the dIFS
+    // cylinder with its polygonal fold import.
+    const std::string gm = "Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/";
+    for (const std::string& file : {gm + "DIFS BoxV1 flower.fract", gm + "DIFS Cylinder complex primitive.fract",
+                                    std::string("../formula/img/difs_box_v1.fract")})
         expectExampleImports(file);
 }
 
@@ -1740,12 +1821,56 @@ TEST(FractImport, MandelbulbVaryPowerFollowsMandelbulber2sOrbits) {
             return std::pow(r, n) * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + c;
         }};
     expectOrbitsFollowMandelbulber2(c);
+    // A stop below the start: MandelbulbVaryPowerV1Iteration's ramp needs start <= i < stop, which no
+    // iteration meets, and from the stop on it adds the whole offset, whatever the start. So the
+    // power is 6 before iteration 2 and 4 from it on; the same where the stop equals the start (3).
+    for (const auto& [start, stop] : {std::pair{5, 2}, std::pair{3, 3}}) {
+        static int switchAt;
+        switchAt = stop;
+        expectOrbitsFollowMandelbulber2(
+            {("formula_1 78;\nN 8;\n[fractal_1]\npower 6;\ntransf_offset_0 -2;\ntransf_start_iterations_250 " +
+              std::to_string(start) + ";\ntransf_stop_iterations " + std::to_string(stop) + ";\n")
+                 .c_str(),
+             {"mandelbulb_sine", "mandelbulb_sine", "add_c"},
+             nullptr,
+             1.5,
+             [](const vec3& z, const vec3& c, int i) {
+                 const double n = i >= switchAt ? 4.0 : 6.0;
+                 const double r = length(z);
+                 const double th = std::asin(z.z / r) * n, ph = std::atan2(z.y, z.x) * n;
+                 return std::pow(r, n) * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) +
+                        c;
+             }});
+    }
     // A ramp over more nodes than the import writes is refused by name.
     expectRefused(
         "formula_1 78;\n[fractal_1]\ntransf_offset_0 1;\ntransf_start_iterations_250 0;\n"
         "transf_stop_iterations 40;\n",
         "slot 1 (mandelbulb_vary_power_v1)", "varied over 40 iterations");
     expectExampleImports("mandelbulb_vary_power_001.fract");
+}
+
+// A hybrid's slot of weight 0 is an identity (compute_fractal.cpp of 2.20 calls no formula for it
+// and blends the point back to where the iteration started, c and all): the power-9 bulb (Mandelbulber2's default) and
+// c on even iterations, the point left as it is on odd ones, where the Mandelbox of weight 0 runs. Its formula needs no
+// blocks (a mandelbulb4 of weight 0 is not refused), and the Mandelbox-Menger morph, whose Mandelbox and IFS slots are
+// at weight 0 between its keyframes, imports.
+TEST(FractImport, ASlotOfWeightZeroIsAnIdentity) {
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 2;\nformula_2 8;\nformula_weight_2 0;\nN 8;\n",
+         {"mandelbulb_sine", "add_c"},
+         nullptr,
+         1.5,
+         [](const vec3& z, const vec3& c, int i) {
+             if (i % 2 == 1) return z;
+             const double r = length(z);
+             const double th = std::asin(z.z / r) * 9.0, ph = std::atan2(z.y, z.x) * 9.0;
+             return std::pow(r, 9.0) * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + c;
+         }});
+    EXPECT_TRUE(importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 15;\n"
+                           "formula_weight_2 0;\n")
+                    .faithful());
+    expectExampleImports("mandelbox_menger_morph.fract");
 }
 
 // menger_middle_mod against MengerMiddleModIteration (formula/opencl/menger_middle_mod.cl of 2.20)
@@ -1968,6 +2093,19 @@ TEST(FractImport, ModulusMandelbulbFollowsMandelbulber2sOrbits) {
         expectExampleImports(dl + file);
 }
 
+// The turn in 4D's six planes as Mandelbulber2's 4D formulas write it (Abox4dIteration and
+// Quaternion4dIteration, option R, in fractal_formulas.cpp of 2.20): the planes xy, yz, xz by
+// `angles`, then xw, yw, zw by `anglesW` (degrees), each (u, v) -> (u cos a + v sin a, -u sin a + v cos a).
+void mb2Turn4d(glm::dvec4& z, const vec3& angles, const vec3& anglesW) {
+    const int planes[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
+    for (int k = 0; k < 6; ++k) {
+        const double a = glm::radians(k < 3 ? angles[k] : anglesW[k - 3]);
+        const double x = z[planes[k][0]], y = z[planes[k][1]];
+        z[planes[k][0]] = x * std::cos(a) + y * std::sin(a);
+        z[planes[k][1]] = -x * std::sin(a) + y * std::cos(a);
+    }
+}
+
 // abox4d against 2.20's Abox4dIteration (fractal_formulas.cpp) written out in four dimensions: w
 // plus the Cpara parabola -0.3 + 0.2 i + 0.001 (-4) i^2, Tglad's fold per axis at (1.1, 0.9, 1, 1.2),
 // the sphere fold of squared radii 0.2 and 0.9 measured on (|v|^2)^0.8 and scaling about
@@ -2002,19 +2140,7 @@ TEST(FractImport, Abox4dFollowsMandelbulber2sOrbits) {
                 z *= 0.9 / rr;
             z -= offset;
             z *= -2.5;
-            if (i >= 2) {
-                auto turn = [&z](int u, int w, double degrees) {
-                    const double a = glm::radians(degrees), x = z[u], y = z[w];
-                    z[u] = x * std::cos(a) + y * std::sin(a);
-                    z[w] = -x * std::sin(a) + y * std::cos(a);
-                };
-                turn(0, 1, 10.0);
-                turn(1, 2, -20.0);
-                turn(0, 2, 30.0);
-                turn(0, 3, 5.0);
-                turn(1, 3, -15.0);
-                turn(2, 3, 25.0);
-            }
+            if (i >= 2) mb2Turn4d(z, vec3(10.0, -20.0, 30.0), vec3(5.0, -15.0, 25.0));
             z += D4(0.1, 0.0, 0.0, -0.2) + D4(point, 0.0);
             if (glm::length(z) > 100.0) return true;
         }
@@ -2030,6 +2156,144 @@ TEST(FractImport, Abox4dFollowsMandelbulber2sOrbits) {
         importText("[main_parameters]\nformula_1 116;\ninitial_waxis 0,2;\ndont_add_c_constant_1 true;\n").faithful());
     expectExampleImports("Robert Pancoast collection - license Creative Commons (CC-BY 4.0)/Abox4D8K.fract");
     expectExampleImports("Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/aBox 4D.fract");
+}
+
+// quaternion4d against 2.20's Quaternion4dIteration (fractal_formulas.cpp) written out in 4D:
+// (x^2 - y^2 - z^2 - w^2, x y, x z, w) times (1.1, 1.8, 2.1, 0.5), plus (0.1, -0.2, 0.05, 0.3), the
+// turn in the six planes from iteration 2 (option R), then c = (point, 0); the bailout on the 4D
+// length. Its example imports, and initial_waxis starts w where c is not added.
+TEST(FractImport, Quaternion4dFollowsMandelbulber2sOrbits) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 79;\nN 8;\n[fractal_1]\ntransf_constant_multiplier_1220 1,1 1,8 2,1 0,5;\n"
+        "transf_addition_constant_0000 0,1 -0,2 0,05 0,3;\ntransf_function_enabledR_false true;\n"
+        "transf_rotation44a 10 -20 30;\ntransf_rotation44b 5 -15 25;\ntransf_start_iterations_R 2;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(blockIds(r.preset.formula),
+              (std::vector<std::string>{"quaternion4d", "rotate4d", "add_c", "derivative_tweak"}));
+    const double bailout = r.preset.formula.bailout;
+    using D4 = glm::dvec4;
+    auto escapes = [bailout](const vec3& point) {
+        D4 z(point, 0.0);
+        for (int i = 0; i < 8; ++i) {
+            z = D4(z.x * z.x - z.y * z.y - z.z * z.z - z.w * z.w, z.x * z.y, z.x * z.z, z.w) * D4(1.1, 1.8, 2.1, 0.5) +
+                D4(0.1, -0.2, 0.05, 0.3);
+            if (i >= 2) mb2Turn4d(z, vec3(10.0, -20.0, 30.0), vec3(5.0, -15.0, 25.0));
+            z += D4(point, 0.0);
+            if (glm::length(z) > bailout) return true;
+        }
+        return false;
+    };
+    expectEscapesFollow(r.preset.formula, 1.5, "quaternion4d", escapes);
+    // With Mandelbulber2's multipliers the running derivative grows as Mandelbulber2's aux.DE, by 2 |q|
+    // (q the 4D point), and w becomes the offset's w.
+    const mb2::FractImport plain = importText(
+        "[main_parameters]\nformula_1 79;\ninitial_waxis 0,2;\ndont_add_c_constant_1 true;\n[fractal_1]\n"
+        "transf_addition_constant_0000 0 0 0 -0,65;\n");
+    ASSERT_TRUE(plain.faithful()) << plain.unsupported.front().text();
+    EXPECT_EQ(blockIds(plain.preset.formula), (std::vector<std::string>{"start_w", "quaternion4d"}));
+    P4 p{vec3(0.3, -0.4, 0.5), 1.5};
+    p.pointW = 0.2;
+    plain.preset.formula.nodes[1].block->apply(p, vec3(0.0), plain.preset.formula.nodes[1].args());
+    EXPECT_NEAR(p.w, 1.5 * 2.0 * std::sqrt(0.09 + 0.16 + 0.25 + 0.04), 1e-12);
+    EXPECT_NEAR(p.pointW, -0.65, 1e-12);
+    EXPECT_NEAR(p.xyz.x, 0.09 - 0.16 - 0.25 - 0.04, 1e-12);
+    EXPECT_NEAR(p.xyz.y, 2.0 * 0.3 * -0.4, 1e-12);
+    // c is added without the derivative's +1, as Mandelbulber2's 2 r DE takes none: after add_c
+    // and the tweak, the running derivative is 2 |q| times what it was.
+    const mb2::FractImport withC = importText("[main_parameters]\nformula_1 79;\n");
+    ASSERT_TRUE(withC.faithful()) << withC.unsupported.front().text();
+    P4 q{vec3(0.3, -0.4, 0.5), 1.5};
+    for (const Node& n : withC.preset.formula.nodes) n.block->apply(q, vec3(0.1, 0.2, 0.3), n.args());
+    EXPECT_NEAR(q.w, 1.5 * 2.0 * std::sqrt(0.5), 1e-12);
+    expectExampleImports("quaternion4D_001.fract");
+}
+
+// visual.bermarte's Mandelbulb against 2.20's MandelbulbBermarteIteration (fractal_formulas.cpp)
+// written out, c added: |x| first (option Ax_false); the latitude asin(z / r) plus 10 degrees times
+// 4 x 1.2 and the azimuth atan2(y, x) less 20 degrees, the point of those at r in the sine form
+// (cos t sin f, cos f cos t, sin t); |x| and |z| (Ay off); then asin(z / r) less 5 degrees and
+// atan2(y, x) times 4 x 0.8, r^4 times the point of those; |x| (Bx_false). The second case takes
+// both measurements by acos and atan of the quotient, in the cosine form, power 3. Its example
+// imports; a DE tweak off the default derivative is refused by name.
+TEST(FractImport, MandelbulbBermarteFollowsMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 94;\nN 6;\n[fractal_1]\ntransf_pwr_8 4;\ntransf_scaleA_1 1,2;\ntransf_scaleB_1 0,8;\n"
+         "beta_angle_offset 10;\nalpha_angle_offset -20;\ntransf_beta_angle_offset -5;\n"
+         "transf_function_enabledAx_false true;\ntransf_function_enabledAy false;\n"
+         "transf_function_enabledBx_false true;\n",
+         {"plane_fold", "mandelbulb_bermarte", "plane_fold", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z(std::abs(v.x), v.y, v.z);
+             const double r = length(z);
+             double th = (std::asin(z.z / r) + glm::radians(10.0)) * 4.0 * 1.2;
+             double ph = std::atan2(z.y, z.x) + glm::radians(-20.0);
+             z = r * vec3(std::cos(th) * std::sin(ph), std::cos(ph) * std::cos(th), std::sin(th));
+             z.x = std::abs(z.x);
+             z.z = std::abs(z.z);
+             th = std::asin(z.z / r) + glm::radians(-5.0);
+             ph = std::atan2(z.y, z.x) * 4.0 * 0.8;
+             z = std::pow(r, 4.0) * vec3(std::cos(th) * std::sin(ph), std::cos(ph) * std::cos(th), std::sin(th));
+             z.x = std::abs(z.x);
+             return z + c;
+         }},
+        {"formula_1 94;\nN 6;\n[fractal_1]\ntransf_pwr_8 3;\ntransf_function_enabled_false true;\n"
+         "transf_function_enabledx_false true;\n",
+         {"mandelbulb_bermarte", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             const double r = length(v);
+             double th = std::acos(v.z / r) * 3.0, ph = std::atan(v.y / v.x);
+             vec3 z = r * vec3(std::sin(th) * std::cos(ph), std::sin(ph) * std::sin(th), std::cos(th));
+             z = glm::abs(z);
+             th = std::acos(z.z / r);
+             ph = std::atan(z.y / z.x) * 3.0;
+             return std::pow(r, 3.0) * vec3(std::sin(th) * std::cos(ph), std::sin(ph) * std::sin(th), std::cos(th)) + c;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+    // Luca GN's inverse cylindrical coordinates (TransfInvCylindricalIteration written out: (x cos(s
+    // y), x sin(s y), z_scale z) times scale_all, no c) before the default bulb of power 4, one each
+    // iteration in turn, as the mechanical-ribs example alternates them; Mandelbulber2's +1 a
+    // derivative tweak.
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 1053;\nformula_2 94;\nN 10;\n[fractal_1]\ntransf_scale_1 0,8;\n"
+         "transf_scaleA_1 1,1;\ntransf_scaleC_1 0,9;\n[fractal_2]\ntransf_pwr_8 4;\n",
+         {"inv_cylindrical", "derivative_tweak", "mandelbulb_bermarte", "add_c"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3& c, int i) {
+             if (i % 2 == 0) return vec3(v.x * std::cos(0.8 * v.y), v.x * std::sin(0.8 * v.y), 0.9 * v.z) * 1.1;
+             const double r = length(v);
+             double th = std::asin(v.z / r) * 4.0, ph = std::atan2(v.y, v.x);
+             vec3 z = glm::abs(r * vec3(std::cos(th) * std::sin(ph), std::cos(ph) * std::cos(th), std::sin(th)));
+             th = std::asin(z.z / r);
+             ph = std::atan2(z.y, z.x) * 4.0;
+             return std::pow(r, 4.0) * vec3(std::cos(th) * std::sin(ph), std::cos(ph) * std::cos(th), std::sin(th)) + c;
+         }});
+    // The transform carries Mandelbulber2's derivative, |scale_all| (its bound, max(1, |s x|) times
+    // that, made the estimate far from mechanical-ribs 30 times smaller: bench/import/README.md).
+    const mb2::FractImport cylindrical =
+        importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 1053;\nformula_2 94;\n");
+    ASSERT_TRUE(cylindrical.faithful()) << cylindrical.unsupported.front().text();
+    EXPECT_EQ(param(cylindrical.preset.formula.nodes.front(), "mb2_derivative"), 1.0);
+    expectRefused(
+        "formula_1 8;\nformula_2 1053;\nhybrid_fractal_enable true;\n[fractal_2]\n"
+        "transf_function_enabled_false true;\n",
+        "slot 2 (transf_inv_cylindrical)", "x cos(y) in place of the radius");
+    // The derivative takes Mandelbulber2's n r^(n-1).
+    const mb2::FractImport plain = importText("[main_parameters]\nformula_1 94;\n[fractal_1]\ntransf_pwr_8 5;\n");
+    ASSERT_TRUE(plain.faithful()) << plain.unsupported.front().text();
+    const Node& bulb = plain.preset.formula.nodes.front();
+    ASSERT_EQ(bulb.block->id, "mandelbulb_bermarte");
+    P4 p{vec3(0.3, -0.4, 0.5), 1.5};
+    bulb.block->apply(p, vec3(0.0), bulb.args());
+    EXPECT_NEAR(p.w, 1.5 * 5.0 * std::pow(std::sqrt(0.5), 4.0), 1e-12);
+    EXPECT_NEAR(length(p.xyz), std::pow(std::sqrt(0.5), 5.0), 1e-12);
+    expectRefused("formula_1 94;\n[fractal_1]\nanalyticDE_enabled_false true;\nanalyticDE_scale_1 1,5;\n",
+                  "slot 1 (mandelbulb_bermarte)", "running derivative");
+    expectExampleImports("mandelbulb_bermarte 001.fract");
+    expectExampleImports(
+        "Sebastian Jennen collection - license Creative Commons  (CC-BY 4.0)/inverse-reciprocal-iqbulb "
+        "mechanical-ribs.fract");
 }
 
 // Kali's Mandelbulb against 2.20's MandelbulbKaliIteration (fractal_formulas.cpp) written out: |y|
@@ -2548,6 +2812,44 @@ TEST(FractImport, AboxMod11PartsRunInTheirWindows) {
     EXPECT_EQ(r.preset.formula.nodes[3].stop, 1);
 }
 
+// abox_mod11's scale varying with the iteration against 2.20's AboxMod11Iteration written out:
+// actualScale = -1.6 + (-0.2) (|actualScale| - 1) at the start of each iteration, from -1.6 (the
+// first slot's Mandelbox scale, compute_fractal.cpp), Tglad's fold at 1, the sphere fold of squared
+// radii 0.15 and 1, z times actualScale, then c. A scale that starts from another slot's Mandelbox
+// scale, or whose window leaves out iterations the formula varies it on, is refused by name; the
+// example that varies it imports.
+TEST(FractImport, AboxMod11VaryingScaleFollowsMandelbulber2sOrbits) {
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nformula_1 119;\nN 10;\n[fractal_1]\nmandelbox_scale -1,6;\n"
+        "mandelbox_vary_scale_vary -0,2;\ntransf_minR2_p25 0,15;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    EXPECT_EQ(blockIds(r.preset.formula), (std::vector<std::string>{"box_fold", "sphere_fold", "scale_vary", "add_c"}));
+    const double bailout = r.preset.formula.bailout;
+    expectEscapesFollow(r.preset.formula, 3.0, "abox_mod11", [bailout](const vec3& point) {
+        vec3 z = point;
+        double actualScale = -1.6;
+        for (int i = 0; i < 10; ++i) {
+            actualScale = -1.6 + -0.2 * (std::abs(actualScale) - 1.0);
+            z = glm::abs(z + 1.0) - glm::abs(z - 1.0) - z;
+            const double rr = dot(z, z);
+            if (rr < 0.15)
+                z *= 1.0 / 0.15;
+            else if (rr < 1.0)
+                z *= 1.0 / rr;
+            z = z * actualScale + point;
+            if (length(z) > bailout) return true;
+        }
+        return false;
+    });
+    expectRefused(
+        "hybrid_fractal_enable true;\nformula_1 8;\nformula_2 119;\n[fractal_2]\nmandelbox_scale -1,6;\n"
+        "mandelbox_vary_scale_vary -0,2;\n",
+        "slot 2 (abox_mod11)", "starts from another slot's Mandelbox scale");
+    expectRefused("formula_1 119;\n[fractal_1]\nmandelbox_vary_scale_vary -0,2;\ntransf_start_iterations_A 2;\n",
+                  "slot 1 (abox_mod11)", "window A leaves out iterations");
+    expectExampleImports("Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/abox_mod11_rotVary.fract");
+}
+
 // abox_mod11's sphere fold with transf_function_enabledy_false: its squared inner radius follows
 // Mandelbulber2's Cpara curve, transf_minR2_p25 plus the linear stretches through para00, paraA,
 // paraB and paraC at iterations 0, iterA, iterB and iterC (fractal_formulas.cpp
@@ -3000,7 +3302,7 @@ std::vector<Expected> fixedSet() {
         {"formula/img/difs_cylinder.fract", ""},
         // abox_mod_kali_v2 with c added signed by the point (add_c_symmetric).
         {"formula/img/abox_mod_kali_v2.fract", ""},
-        {"examples/quaternion4D_001.fract", "slot 1 (quaternion4d): the formula quaternion4d"},
+        {"examples/aboxmod2_001.fract", "slot 1 (abox_mod2): the formula abox_mod2"},
         // Boolean mode: a kaleidoscopic IFS with a Mandelbulb carved from it and a Menger sponge
         // joined, in a limit box (each fractal placed and measured alone).
         {"examples/boolean001.fract", ""},
@@ -3022,6 +3324,20 @@ std::vector<Expected> fixedSet() {
         // checks the orbit).
         {"examples/Daniel Luchansky collection - license Creative Commons -CC-BY 4.0/pseuklein x mod mandelbulb.fract",
          ""},
+        // Mandelbulber2's dIFS box (difs_box_v1), and its dIFS cylinder with the polygonal fold
+        // (poly_fold).
+        {"formula/img/difs_box_v1.fract", ""},
+        {gm + "DIFS Cylinder complex primitive.fract", ""},
+        // Views from inside, which check that the import runs (the orbit tests check the orbits:
+        // FractImport.Quaternion4dFollowsMandelbulber2sOrbits, MandelbulbBermarteFollowsMandelbulber2sOrbits,
+        // AboxMod11VaryingScaleFollowsMandelbulber2sOrbits): quaternion4d in 4D; visual.bermarte's bulb
+        // after the inverse cylindrical transform in a hybrid with the Mandelbox; abox_mod11's scale
+        // varying with the iteration (scale_vary's from_scale) beside the varying rotation.
+        {"examples/quaternion4D_001.fract", ""},
+        {"examples/Sebastian Jennen collection - license Creative Commons  (CC-BY 4.0)/inverse-reciprocal-iqbulb "
+         "mechanical-ribs.fract",
+         ""},
+        {gm + "abox_mod11_rotVary.fract", ""},
     };
 }
 

@@ -44,12 +44,12 @@ constexpr int kAmazingSurfId = 73;
 constexpr int kHypercomplexId = 4;
 constexpr int kAexionId = 19;
 // The formulas that carry the point's fourth coordinate through fraktal's loop (formulas/four_d.hpp).
-constexpr int kSierpinski4dId = 109, kMenger4dId = 111, kAbox4dId = 116;
+constexpr int kSierpinski4dId = 109, kMenger4dId = 111, kAbox4dId = 116, kQuaternion4dId = 79;
 // Formulas whose 4D orbit a fraktal estimator runs whole (alone in a file).
 bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula == kAexionId; }
 // Formulas whose steps carry the fourth coordinate through fraktal's loop.
 bool carriesFourthCoordinate(int formula) {
-    return formula == kMenger4dId || formula == kSierpinski4dId || formula == kAbox4dId;
+    return formula == kMenger4dId || formula == kSierpinski4dId || formula == kAbox4dId || formula == kQuaternion4dId;
 }
 
 const FormulaInfo* findFormula(int id) {
@@ -941,7 +941,6 @@ void symmetricMultipleOfC(Reader& r, NodeBuilder& b, const std::string& weights,
 // The fold's parabolic softening (window D .. D1) is the soft box fold where the windows meet.
 void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximated) {
     r.mustBeDefault("transf_function_enabledSw_false", "the swap of x and z");
-    r.mustBeDefault("mandelbox_vary_scale_vary", "a scale that varies with the iteration");
     const vec3 limit = r.vector("transf_addition_constant_111");
     const bool foldZ = r.boolean("transf_function_enabled");
     const int foldStart = r.integer("transf_start_iterations_B"), foldStop = r.integer("transf_stop_iterations_B");
@@ -964,7 +963,27 @@ void mapAboxMod11(Reader& r, NodeBuilder& b, std::vector<ImportItem>& approximat
     }
     inWindow(r, b, "S", "S",
              [&] { cparaSphereFold(r, b, r.boolean("transf_function_enabledy_false"), r.vector("mandelbox_offset")); });
-    inWindow(r, b, "A", "A", [&] { b.add("scale", {N::f("scale", r.number("mandelbox_scale"))}); });
+    const double scale = r.number("mandelbox_scale"), vary = r.number("mandelbox_vary_scale_vary");
+    if (vary == 0.0) {
+        inWindow(r, b, "A", "A", [&] { b.add("scale", {N::f("scale", scale)}); });
+    } else {
+        // Mandelbulber2's actualScale: scale + vary (|actualScale| - 1) at the start of every
+        // iteration of the formula, from the first slot's Mandelbox scale (compute_fractal.cpp), used
+        // by the scale in window A. One scale_vary with from_scale over window A follows it where
+        // that window holds every iteration the slot runs and the first slot's scale is this one.
+        const FractEntry* first = r.file().find("fractal_1", "mandelbox_scale");
+        const double firstScale =
+            parseNumber(first ? first->value : std::string(defaultValue("mandelbox_scale", false))).value_or(scale);
+        if (firstScale != scale)
+            r.unsupported("mandelbox_vary_scale_vary " + fmt(vary) +
+                          ": a varying scale that starts from another slot's Mandelbox scale");
+        if (r.integer("transf_start_iterations_A") > b.firstIteration() ||
+            r.integer("transf_stop_iterations_A") <= b.lastIteration())
+            r.unsupported("mandelbox_vary_scale_vary " + fmt(vary) +
+                          ": a varying scale whose window A leaves out iterations it varies on");
+        b.add("scale_vary", {N::f("scale", scale), N::f("vary", vary), N::f("limit", 1.0), N::f("update", 1.0),
+                             N::f("from_scale", 1.0)});
+    }
     additionConstant(r, b);
     extraMultipleOfC(r, b, "E");
     windowedRotation(r, b, "transf_rotation_enabled", "_R");
@@ -1488,6 +1507,20 @@ void mapAbox4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     if (glm::length(add) > 0.0) b.add("translate", {N::v("offset", vec3(add)), N::f("offset_w", add.w)});
 }
 
+// quaternion4d (Quaternion4dIteration in fractal_formulas.cpp of 2.20): (x^2 - y^2 - z^2 - w^2, x y,
+// x z, w) times transf_constant_multiplier_1220, plus transf_addition_constant_0000, on the 4D
+// point; then, with option R, the turn in 4D's six planes (transf_rotation44a and 44b, window R),
+// in the order and sense of abox4d's.
+void mapQuaternion4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const glm::dvec4 multiplier = r.vector4("transf_constant_multiplier_1220"),
+                     add = r.vector4("transf_addition_constant_0000");
+    b.add("quaternion4d", {N::v("multiplier", vec3(multiplier)), N::f("multiplier_w", multiplier.w),
+                           N::v("offset", vec3(add)), N::f("offset_w", add.w)});
+    const vec3 turns = r.vector("transf_rotation44a"), turnsW = r.vector("transf_rotation44b");
+    if (r.boolean("transf_function_enabledR_false") && length(turns) + length(turnsW) > 0.0)
+        inWindow(r, b, "R", "R", [&] { b.add("rotate4d", {N::v("angles", turns), N::v("angles_w", turnsW)}); });
+}
+
 // sierpinski4d (Sierpinski4dIteration): the six mirrors, the scale transf_scaleA_2, minus
 // transf_offset_1111 in window C; then, with analyticDE_enabled_false, the derivative times
 // analyticDE_scale_1 plus analyticDE_offset_0. Its turn in 4D's six planes (option R) is refused.
@@ -1567,6 +1600,7 @@ struct DifsOption {
     const char* param;
     const char* flag;
     const char* window;
+    double on = 1.0;  // the parameter's value where the option is on (a toggle's 1, or a number)
 };
 void difsShape(Reader& r, NodeBuilder& b, std::string_view block, const NodeBuilder::Values& shape,
                const std::vector<DifsOption>& options, const std::string& suffix = "") {
@@ -1584,10 +1618,21 @@ void difsShape(Reader& r, NodeBuilder& b, std::string_view block, const NodeBuil
                 values.push_back(N::f("w_offset", covered[0] ? 1.0 : 0.0));
                 values.push_back(N::f("w_vary", covered[0] && varies ? 1.0 : 0.0));
                 for (size_t k = 0; k < options.size(); ++k)
-                    values.push_back(N::f(options[k].param, r.boolean(options[k].flag) && covered[k + 1] ? 1.0 : 0.0));
+                    values.push_back(
+                        N::f(options[k].param, r.boolean(options[k].flag) && covered[k + 1] ? options[k].on : 0.0));
                 b.add(block, values);
             });
         });
+}
+
+// The dIFS formulas' polygonal fold (option P, window P): transf_int_6 sides.
+void polyFold(Reader& r, NodeBuilder& b) {
+    if (!r.boolean("transf_function_enabledP_false")) return;
+    const int sides = r.integer("transf_int_6");
+    if (sides < 1 || sides > 32)
+        return r.unsupported("transf_int_6 " + std::to_string(sides) +
+                             ": a polygonal fold of other than 1 to 32 sides");
+    inWindow(r, b, "P", "P", [&] { b.add("poly_fold", {N::f("order", double(sides))}); });
 }
 
 // The folds before the scale. The sphere's box offsets are transf_addition_constantA_111 under
@@ -1609,7 +1654,7 @@ void difsFolds(Reader& r, NodeBuilder& b, bool sphere) {
     };
     shift(sphere ? "transf_function_enabledA_false" : "transf_function_enabledBx_false", "A", vec3(box.x, box.y, 0.0));
     shift(sphere ? "transf_function_enabledB_false" : "transf_function_enabledBy_false", "B", box);
-    r.mustBeDefault("transf_function_enabledP_false", "the polygonal fold");
+    polyFold(r, b);
     fold("transf_function_enabledCx_false", "Cx", vec3(-1.0, 1.0, 0.0), 0.0);
     if (!sphere) fold("transf_function_enabledCy_false", "Cy", vec3(-1.0, 0.0, 1.0), 0.0);
     fold("transf_function_enabledC_false", "C", vec3(1.0, 0.0, 0.0), r.number("transf_offsetC_0"));
@@ -1734,6 +1779,58 @@ void mapDifsBoxDiagonal(Reader& r, NodeBuilder& b, bool v3) {
     });
 }
 void mapDifsBoxDiagonalV1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { mapDifsBoxDiagonal(r, b, false); }
+
+// Mandelbulber2's dIFS box (difs_box_v1: DIFSBoxV1Iteration in fractal_formulas.cpp of 2.20), the
+// diagonal box's sibling: |x|, |y|, |z| (options Ax, Ay, Az, windows X, Y, Z), Tglad's fold of x
+// and y at transf_addition_constantA_111 (option Cx, on by default; window A), that constant taken
+// off x, y and z (B), the polygonal fold (P), x and y swapped where x > y (Cx_false), the offset
+// folds (C, D), the swap again (Cy); then the scale about the reverse offsets, offset_001 and the
+// turn as the diagonal box, and the box of half-sizes transf_addition_constant_111 at the point
+// the iteration ends on (with option Y where it starts), its x and y sides curved by scale_0 z^2
+// (option T, window T) and narrowed by scaleA_0 z (M, window M). Option E takes offsetB_0 off the
+// least distance so far on every iteration, which is refused.
+void mapDifsBoxV1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    if (r.boolean("transf_function_enabledE_false"))
+        r.mustBeDefault("transf_offsetB_0", "the least dIFS distance less an offset every iteration");
+    const vec3 size = r.vector("transf_addition_constant_111");
+    const std::vector<DifsOption> sides{
+        {"curve", "transf_function_enabledT_false", "T", r.number("transf_scale_0")},
+        {"pyramid", "transf_function_enabledM_false", "M", r.number("transf_scaleA_0")}};
+    const bool atStart = r.boolean("transf_function_enabledY_false");
+    if (atStart) difsShape(r, b, "difs_box", {N::v("size", size)}, sides);
+    auto fold = [&](bool on, const std::string& window, const vec3& normal, double offset) {
+        if (on)
+            inWindow(r, b, window, window, [&] {
+                b.add("plane_fold", {N::v("normal", normal), N::f("offset", offset)});
+            });
+    };
+    fold(r.boolean("transf_function_enabledAx_false"), "X", vec3(1.0, 0.0, 0.0), 0.0);
+    fold(r.boolean("transf_function_enabledAy_false"), "Y", vec3(0.0, 1.0, 0.0), 0.0);
+    fold(r.boolean("transf_function_enabledAz_false"), "Z", vec3(0.0, 0.0, 1.0), 0.0);
+    const vec3 boxFold = r.vector("transf_addition_constantA_111");
+    if (r.boolean("transf_function_enabledCx"))
+        inWindow(r, b, "A", "A", [&] { b.add("box_fold_axes", {N::v("limit", boxFold), N::f("fold_z", 0.0)}); });
+    if (r.boolean("transf_function_enabledB_false"))
+        inWindow(r, b, "B", "B", [&] { b.add("translate", {N::v("offset", -boxFold)}); });
+    polyFold(r, b);
+    fold(r.boolean("transf_function_enabledCx_false"), "Cx", vec3(-1.0, 1.0, 0.0), 0.0);
+    fold(r.boolean("transf_function_enabledC_false"), "C", vec3(1.0, 0.0, 0.0), r.number("transf_offsetC_0"));
+    fold(r.boolean("transf_function_enabledD_false"), "D", vec3(0.0, 1.0, 0.0), r.number("transf_offsetD_0"));
+    fold(r.boolean("transf_function_enabledCy_false"), "Cy", vec3(-1.0, 1.0, 0.0), 0.0);
+    difsScaleAndTurn(r, b, true, false, true);
+    if (atStart) return;
+    acrossWindows(
+        r, r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), {"T", "M"},
+        [&](int start, int stop, const std::vector<bool>& covered) {
+            b.within(start, stop, [&] {
+                NodeBuilder::Values values{N::v("size", size), N::f("w_scale", 1.0), N::f("w_offset", 0.0),
+                                           N::f("w_vary", 0.0)};
+                for (size_t k = 0; k < sides.size(); ++k)
+                    values.push_back(N::f(sides[k].param, r.boolean(sides[k].flag) && covered[k] ? sides[k].on : 0.0));
+                b.add("difs_box", values);
+            });
+        });
+}
 void mapDifsBoxDiagonalV3(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { mapDifsBoxDiagonal(r, b, true); }
 
 // msltoe's sym2 mod and eiffie's variant share their parameters.
@@ -2085,6 +2182,53 @@ void mapMandelbulbKali(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
            N::f("theta_offset_second", r.number("transf_beta_angle_offset"))});
 }
 
+// Luca GN's inverse cylindrical coordinates (transf_inv_cylindrical: TransfInvCylindricalIteration
+// in fractal_formulas.cpp of 2.20): (x cos(s y), x sin(s y), z transf_scaleC_1) times
+// transf_scaleA_1, s transf_scale_1, the running derivative Mandelbulber2's (|transf_scaleA_1|, the
+// block's mb2_derivative), times transf_scaleB_1 plus transf_offset_1 (1 by default) every
+// iteration, as a derivative_tweak. Its forms with x cos(y) or
+// x sin(y) in place of x and y (options _false and x_false) are refused.
+void mapTransfInvCylindrical(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabled_false", "x cos(y) in place of the radius");
+    r.mustBeDefault("transf_function_enabledx_false", "x sin(y) in place of the angle");
+    b.add("inv_cylindrical",
+          {N::f("angle_scale", r.number("transf_scale_1")), N::f("z_scale", r.number("transf_scaleC_1")),
+           N::f("scale_all", r.number("transf_scaleA_1")), N::f("mb2_derivative", 1.0)});
+    const double tweak = r.number("transf_scaleB_1"), offset = r.number("transf_offset_1");
+    if (tweak != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", tweak), N::f("offset", offset)});
+}
+
+// visual.bermarte's Mandelbulb (mandelbulb_bermarte: MandelbulbBermarteIteration in
+// fractal_formulas.cpp of 2.20): |x|, |y|, |z| first where transf_function_enabledA{x,y,z}_false say
+// (plane folds), the bulb of both measurements (the first by acos with transf_function_enabled_false,
+// the second with transf_function_enabledx_false; the axes made absolute between them where
+// transf_function_enabledA{x,y,z} say, on by default), then |x| and |y| where
+// transf_function_enabledB{x,y}_false say. The DE tweak (analyticDE_enabled_false) with values off
+// those that give the default derivative is refused.
+void mapMandelbulbBermarte(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    if (r.boolean("analyticDE_enabled_false") &&
+        (r.number("analyticDE_scale_1") != 1.0 || r.number("analyticDE_offset_1") != 1.0 ||
+         r.number("analyticDE_offset_2") != 1.0))
+        r.unsupported("analyticDE_enabled_false true: a tweak of the bulb's running derivative");
+    auto absOf = [&](const std::string& flag, int axis) {
+        if (!r.boolean(flag)) return;
+        vec3 normal(0.0);
+        normal[axis] = 1.0;
+        b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+    };
+    for (int k = 0; k < 3; ++k) absOf(std::string("transf_function_enabledA") + "xyz"[k] + "_false", k);
+    vec3 between(0.0);
+    for (int k = 0; k < 3; ++k) between[k] = r.boolean(std::string("transf_function_enabledA") + "xyz"[k]) ? 1.0 : 0.0;
+    b.add("mandelbulb_bermarte",
+          {N::f("power", r.number("transf_pwr_8")), N::f("theta_scale", r.number("transf_scaleA_1")),
+           N::f("phi_scale", r.number("transf_scaleB_1")), N::f("theta_offset", r.number("beta_angle_offset")),
+           N::f("phi_offset", r.number("alpha_angle_offset")),
+           N::f("theta_offset_second", r.number("transf_beta_angle_offset")),
+           N::f("acos_first", r.boolean("transf_function_enabled_false") ? 1.0 : 0.0),
+           N::f("acos_second", r.boolean("transf_function_enabledx_false") ? 1.0 : 0.0), N::v("abs_between", between)});
+    for (int k = 0; k < 2; ++k) absOf(std::string("transf_function_enabledB") + "xy"[k] + "_false", k);
+}
+
 // Benesi's power-2 Mandelbulb (benesi_pwr2_mandelbulb): Benesi's T1 on its window, his power 2 with
 // c times transf_constant_multiplierA_100 per axis on window F (x alone by default), Julia mode's
 // offset on window E. Its prism fold, pine-tree step, cosine wrap, second rotation and DE tweak
@@ -2239,11 +2383,15 @@ constexpr Mapping kMappings[] = {
     {603, mapDifsCylinder},
     {604, mapDifsSphere},
     {600, mapDifsBoxDiagonalV1},
+    {601, mapDifsBoxV1},
+    {kQuaternion4dId, mapQuaternion4d},
     {78, mapMandelbulbVaryPowerV1},
     {131, mapModulusMandelbulb},
     {116, mapAbox4d},
     {1036, mapTransfRotationVaryV1},
     {92, mapMandelbulbKali},
+    {94, mapMandelbulbBermarte},
+    {1053, mapTransfInvCylindrical},
     {95, mapMengerMiddleMod},
     {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
@@ -2745,7 +2893,7 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
     if (!hypercomplex && !carriesW)
         main.mustBeDefault("initial_waxis" + own,
                            "a fourth coordinate beside formulas that do not carry it (fraktal's 4D formulas are "
-                           "menger4d, sierpinski4d and abox4d)");
+                           "menger4d, sierpinski4d, abox4d and quaternion4d)");
 
     // ---- Each slot's nodes ----
     // Files up to 2.04 store the factor as one number (MB2's Compatibility() makes it a vector).
@@ -2766,6 +2914,13 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
         const int formula = main.integer("formula_" + n);
         const int runs = int(std::count(sequence.begin(), sequence.end(), k));
         if (runs == 0) continue;  // outside its window on every iteration
+        // A hybrid's slot of weight 0 is an identity: Mandelbulber2 calls no formula for it and
+        // blends the point back to where the iteration started, c and all (compute_fractal.cpp: z =
+        // tempZ + (z - tempZ) weight), its derivative untouched. The slot keeps its iterations in
+        // the sequence and has no nodes.
+        if (main.boolean("hybrid_fractal_enable") && !main.boolean("boolean_operators") &&
+            main.number("formula_weight_" + n) == 0.0)
+            continue;
         const FormulaInfo* info = findFormula(formula);
         Reader r(file, "fractal_" + n, false, "slot " + n + " (" + formulaName(formula) + ")", out.unsupported);
         std::vector<Node>& group = groups[size_t(k)];
@@ -2816,6 +2971,13 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
         } else if (addC) {
             b.add("add_c",
                   {N::f("weight", factor.x), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor.x)});
+            // Quaternion4dIteration's derivative is 2 r DE alone: Mandelbulber2 adds c without the 1
+            // it adds to the derivative (every formula takes its own +1, and this one takes none),
+            // so the derivative_tweak takes back the 1 add_c adds. Its estimate is then
+            // Mandelbulber2's, no bound, and the step factor is measured (quaternion4D_001 pulled
+            // back to see the whole object: IoU 0.81 with the 1, 0.95 without; bench/import).
+            if (formula == kQuaternion4dId && !julia && factor.x != 0.0)
+                b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", -std::abs(factor.x))});
         }
         if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += runs;
         delta = delta || isDelta(info->de);
@@ -2978,7 +3140,10 @@ FractImport importFract(const FractFile& file) {
         sequencing.last[size_t(k)] = main.integer("formula_stop_iteration_" + n);
         Reader slotMain(file, "main_parameters", true, "slot " + n + " (" + formulaName(formula) + ")",
                         out.unsupported);
-        if (hybrid) slotMain.mustBeDefault("formula_weight_" + n, "a blend of the point before and after the slot");
+        // A weight of 0 makes the slot an identity (importFractal); one between takes a blend.
+        if (const double weight = slotMain.number("formula_weight_" + n); hybrid && weight != 0.0 && weight != 1.0)
+            slotMain.unsupported("formula_weight_" + n + " " + slotMain.raw("formula_weight_" + n) +
+                                 ": a blend of the point before and after the slot");
         // Mandelbulber2 skips the bailout test after such a slot's iterations (a pre-transform, or a
         // box whose linear estimate r / dr settles whatever the radius it stops at); fraktal tests
         // after every iteration, which ends some orbits an iteration sooner.
