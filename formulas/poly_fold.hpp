@@ -11,8 +11,10 @@ namespace fraktal::blocks {
 // (cos psi, sin psi) (DIFSBoxV1Iteration and DIFSCylinderIteration, "polyfold", in
 // fractal_formulas.cpp of 2.20). fmod truncates towards zero, so an angle below -pi / n is not
 // wrapped into the wedge but mirrored about pi / (2 n): the map is Mandelbulber2's, not a
-// kaleidoscope's. Each region is turned or mirrored about the z axis and the regions meet without
-// a gap, so distances are kept: the running derivative is unchanged.
+// kaleidoscope's. Each region is turned or mirrored about the z axis, so the running derivative is
+// unchanged, but the truncation jumps where the shifted angle crosses a negative multiple of the
+// wedge (psi goes from pi / n to 3 pi / n there): two points on either side of such a ray land
+// apart (SafeStep.GlobalBoundsHoldBetweenDistantPoints found them), so no bound holds across it.
 struct PolyFold {
     static constexpr std::string_view id = "poly_fold";
     static constexpr std::string_view menuGroup = "Mandelbulber2";
@@ -21,7 +23,10 @@ struct PolyFold {
         "Folds the xy plane into a wedge of an n-gon: x becomes |x|, the angle about z is folded by "
         "|fmod(angle + pi/n, 2 pi/n) - pi/n| and the distance from z kept (Mandelbulber2's dIFS polyfold).";
     static constexpr Category category = Category::Fold;
-    static constexpr DerivativeBound derivative = DerivativeBound::Global;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump =
+        "its map jumps where the angle, shifted by half a wedge, crosses a negative multiple of the wedge "
+        "(Mandelbulber2's truncating fmod)";
     static constexpr std::array params{
         ParamDecl{"order", ParamType::Float, {6.0, 0.0, 0.0}, 1.0, 32.0, "n: the polygon's number of sides."},
     };
