@@ -21,12 +21,16 @@ namespace fraktal::cpu {
 
 enum class MarchStatus { Marching, Hit, Escaped };
 
+// The least and the largest steepest fall a ray keeps (march.glsl's STEEPEST_FLOOR and its
+// quantizedSteepest's clamp): powers of two, exact in half precision.
+inline constexpr double kSteepestFloor = 1.0 / 8192.0, kSteepestCeiling = 8192.0;
+
 struct MarchState {
     double t = 0.0, lastD = 0.0, omega = 1.0;
     MarchStatus status = MarchStatus::Marching;
     int steps = 0;
-    double closest = 1e30;           // the smallest d / t of the points passed (not the hit), as in shaders/march.glsl
-    double steepest = 1.0 / 8192.0;  // the steepest fall of the estimate per unit of ray met (march.glsl's)
+    double closest = 1e30;  // the smallest d / t of the points passed (not the hit), as in shaders/march.glsl
+    double steepest = kSteepestFloor;  // the steepest fall of the estimate per unit of ray met (march.glsl's)
     // The length of the last step taken: omega * lastD unless the rule's maxStep capped it (march.glsl
     // has no cap, and reads omega * lastD).
     double lastStep = 0.0;
@@ -72,7 +76,7 @@ inline double quantizedOmega(double omega) { return std::floor(omega * 32.0) / 3
 
 inline double quantizedSteepest(double x) {
     int e = 0;
-    const double m = std::frexp(std::clamp(x, 1.0 / 8192.0, 8192.0), &e);
+    const double m = std::frexp(std::clamp(x, kSteepestFloor, kSteepestCeiling), &e);
     return std::ldexp(std::ceil(m * 16.0) / 16.0, e);
 }
 
