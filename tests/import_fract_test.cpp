@@ -404,11 +404,15 @@ TEST(FractImport, HitThresholdIsDividedOnlyByPowersThatBoundTheirStretch) {
     const mb2::FractImport bulb = importText("[main_parameters]\nformula_1 2;\n" + look + "[fractal_1]\npower 9;\n");
     EXPECT_EQ(bulb.preset.formula.nodes.front().block->id, "mandelbulb_sine");
     EXPECT_DOUBLE_EQ(bulb.preset.render.detail, 0.5 / 2.0 / 9.0);
-    // The quaternion, drawn with the Bristorbrot, whose derivative is its Jacobian's largest
-    // singular value.
+    // The Bristorbrot, whose derivative is its Jacobian's largest singular value, above 2 r off
+    // the x axis; the quaternion, drawn with it without the cross terms, where that value is 2 r,
+    // Mandelbulber2's own.
+    const mb2::FractImport bristorbrot = importText("[main_parameters]\nformula_1 21;\n" + look);
+    EXPECT_EQ(bristorbrot.preset.formula.nodes.front().block->id, "bristorbrot");
+    EXPECT_DOUBLE_EQ(bristorbrot.preset.render.detail, 0.5 / 2.0 / 2.0);
     const mb2::FractImport quaternion = importText("[main_parameters]\nformula_1 5;\n" + look);
     EXPECT_EQ(quaternion.preset.formula.nodes.front().block->id, "bristorbrot");
-    EXPECT_DOUBLE_EQ(quaternion.preset.render.detail, 0.5 / 2.0 / 2.0);
+    EXPECT_DOUBLE_EQ(quaternion.preset.render.detail, 0.5 / 2.0);
     for (const char* id : {"129", "139", "800"}) {  // coastalbrot, riemann_sphere_msltoe_v2, mandelbulb_eye
         const mb2::FractImport other = importText(std::string("[main_parameters]\nformula_1 ") + id + ";\n" + look);
         ASSERT_TRUE(other.faithful()) << id << ": " << other.unsupported.front().text();
@@ -2158,6 +2162,33 @@ TEST(FractImport, Abox4dFollowsMandelbulber2sOrbits) {
     expectExampleImports("Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/aBox 4D.fract");
 }
 
+// QuaternionIteration and BristorbrotIteration (fractal_quaternion.cpp, fractal_bristorbrot.cpp of
+// 2.20) carry aux.DE -> 2 r aux.DE and take no 1 for c, where add_c adds one: the import takes it
+// back. Written out for the quaternion (whose Jacobian's largest singular value is 2 r on the
+// slice), its running derivative is Mandelbulber2's aux.DE at every iteration, and its point
+// Mandelbulber2's z.
+TEST(FractImport, QuaternionDerivativeIsMandelbulber2sWithoutTheOneForC) {
+    for (const char* id : {"5", "21"}) {
+        const mb2::FractImport r = importText(std::string("[main_parameters]\nformula_1 ") + id + ";\n");
+        ASSERT_TRUE(r.faithful()) << id << ": " << r.unsupported.front().text();
+        EXPECT_EQ(blockIds(r.preset.formula), (std::vector<std::string>{"bristorbrot", "add_c", "derivative_tweak"}))
+            << id;
+    }
+    const mb2::FractImport r = importText("[main_parameters]\nformula_1 5;\n");
+    for (const vec3& point : {vec3(0.3, -0.4, 0.5), vec3(-0.7, 0.2, 0.1), vec3(0.1, 0.6, -0.3)}) {
+        P4 p{point, 1.0};
+        vec3 z = point;
+        double de = 1.0;
+        for (int i = 0; i < 4; ++i) {
+            for (const Node& n : r.preset.formula.nodes) n.block->apply(p, point, n.args());
+            de *= 2.0 * glm::length(z);
+            z = vec3(z.x * z.x - z.y * z.y - z.z * z.z, 2.0 * z.x * z.y, 2.0 * z.x * z.z) + point;
+            EXPECT_NEAR(p.w, de, 1e-7 * de) << "iteration " << i;  // the closed-form eigenvalue
+            EXPECT_NEAR(glm::length(p.xyz - z), 0.0, 1e-9 * glm::length(z)) << "iteration " << i;
+        }
+    }
+}
+
 // quaternion4d against 2.20's Quaternion4dIteration (fractal_formulas.cpp) written out in 4D:
 // (x^2 - y^2 - z^2 - w^2, x y, x z, w) times (1.1, 1.8, 2.1, 0.5), plus (0.1, -0.2, 0.05, 0.3), the
 // turn in the six planes from iteration 2 (option R), then c = (point, 0); the bailout on the 4D
@@ -3247,6 +3278,8 @@ std::vector<Expected> fixedSet() {
         {"toolbar/dodecahedron.fract", ""},
         {"toolbar/octahedron.fract", ""},
         {"toolbar/quaternion.fract", ""},
+        // The quaternion's derivative without the 1 for c, as Mandelbulber2's (0.89 with it).
+        {"examples/quaternion_001.fract", ""},
         // The power-2 sine bulb's hairs reach 1.96 in a view range of 50: the fitted bound holds
         // them (EditorFormulaFit.BoundHoldsASmallObjectInAWideSearch). Its surface is a little
         // thicker than Mandelbulber2's: the sine bulb's derivative bounds the azimuth's stretch,

@@ -51,6 +51,15 @@ bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula ==
 bool carriesFourthCoordinate(int formula) {
     return formula == kMenger4dId || formula == kSierpinski4dId || formula == kAbox4dId || formula == kQuaternion4dId;
 }
+// Formulas whose derivative is 2 r DE alone: Mandelbulber2 adds c without the 1 it adds to the
+// derivative (every formula takes its own +1, and these take none): QuaternionIteration,
+// Quaternion3dIteration, BristorbrotIteration and Quaternion4dIteration (fractal_quaternion.cpp,
+// fractal_quaternion3d.cpp, fractal_bristorbrot.cpp, fractal_quaternion4d.cpp of 2.20).
+constexpr int kQuaternionId = 5, kBristorbrotId = 21, kQuaternion3dId = 62;
+bool derivativeTakesNoOneForC(int formula) {
+    return formula == kQuaternionId || formula == kBristorbrotId || formula == kQuaternion3dId ||
+           formula == kQuaternion4dId;
+}
 
 const FormulaInfo* findFormula(int id) {
     for (const FormulaInfo& f : kFormulas)
@@ -2312,15 +2321,15 @@ constexpr Mapping kMappings[] = {
     {2, mapMandelbulb},
     {3, mapMandelbulbPower2},
     {16, mapBoxFoldBulbPow2},
-    {5, mapQuaternion3d},
+    {kQuaternionId, mapQuaternion3d},
     {7, mapMengerSponge},
     {8, mapMandelbox},
     {37, mapGeneralizedFoldBox},
     {10, mapKaleidoscopicIfs},
     {11, mapXenodreambuie},
-    {21, mapBristorbrot},
+    {kBristorbrotId, mapBristorbrot},
     {61, mapMengerMod1},
-    {62, mapQuaternion3d},
+    {kQuaternion3dId, mapQuaternion3d},
     {83, mapIqBulb},
     {103, mapPseudoKleinian},
     {104, mapPseudoKleinianMod1},
@@ -2971,12 +2980,12 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
         } else if (addC) {
             b.add("add_c",
                   {N::f("weight", factor.x), N::f("julia", julia ? 1.0 : 0.0), N::v("julia_c", juliaC * factor.x)});
-            // Quaternion4dIteration's derivative is 2 r DE alone: Mandelbulber2 adds c without the 1
-            // it adds to the derivative (every formula takes its own +1, and this one takes none),
-            // so the derivative_tweak takes back the 1 add_c adds. Its estimate is then
-            // Mandelbulber2's, no bound, and the step factor is measured (quaternion4D_001 pulled
-            // back to see the whole object: IoU 0.81 with the 1, 0.95 without; bench/import).
-            if (formula == kQuaternion4dId && !julia && factor.x != 0.0)
+            // The quaternions' and the Bristorbrot's derivative takes no 1 for c in Mandelbulber2
+            // (derivativeTakesNoOneForC), so the derivative_tweak takes back the 1 add_c adds. Its
+            // estimate is then Mandelbulber2's, no bound, and the step factor is measured
+            // (quaternion4D_001 pulled back to see the whole object: IoU 0.81 with the 1, 0.95
+            // without; the toolbar's quaternion: bench/import/README.md).
+            if (derivativeTakesNoOneForC(formula) && !julia && factor.x != 0.0)
                 b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", -std::abs(factor.x))});
         }
         if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += runs;
@@ -3199,19 +3208,26 @@ FractImport importFract(const FractFile& file) {
     // DE_factor; fraktal's threshold applies to the scaled estimate, so it scales by the factor too.
     // For the spherical powers fraktal's running derivative bounds the stretch from above (their
     // phi stretch, up to the power, formulas/mandelbulb.hpp and mandelbulb_variants.hpp) where
-    // Mandelbulber2 carries n r^(n-1) alone, and for the Bristorbrot (and the quaternion, which
-    // the import draws with it) its Jacobian's largest singular value where Mandelbulber2 carries
-    // 2 r: its log estimate is the smaller near the surface, and the threshold divided by the
-    // largest such power puts the surface where Mandelbulber2 draws it (bench/import/README.md:
-    // the toolbar's power-9 bulb IoU 0.77 undivided, 0.94 divided; its quaternion 0.89 and 0.96).
+    // Mandelbulber2 carries n r^(n-1) alone, and for the Bristorbrot its Jacobian's largest
+    // singular value where Mandelbulber2 carries 2 r: its log estimate is the smaller near the
+    // surface, and the threshold divided by the largest such power puts the surface where
+    // Mandelbulber2 draws it (bench/import/README.md: the toolbar's power-9 bulb IoU 0.77
+    // undivided, 0.94 divided). The quaternion's derivative is Mandelbulber2's own (2 r, and no 1
+    // for c: derivativeTakesNoOneForC), so its threshold is not divided (quaternion_001 0.89
+    // divided with the 1, 0.98 undivided without it; the toolbar's quaternion 0.96 and 0.97).
     // Powers whose derivative is Mandelbulber2's own keep the threshold (formula/img
     // riemann_sphere_msltoe_v2 0.79 divided by its 4, 0.97 not).
     constexpr std::string_view kBoundingPowers[] = {"mandelbulb", "mandelbulb_phase", "mandelbulb_sine",
                                                     "mandelbulb_cosine", "bristorbrot"};
     double degree = 1.0;
-    for (const Node& n : p.formula.nodes)
-        if (std::find(std::begin(kBoundingPowers), std::end(kBoundingPowers), n.block->id) != std::end(kBoundingPowers))
-            degree = std::max(degree, n.block->degreeAt(n.args()));
+    for (const Node& n : p.formula.nodes) {
+        if (std::find(std::begin(kBoundingPowers), std::end(kBoundingPowers), n.block->id) == std::end(kBoundingPowers))
+            continue;
+        // Without its cross terms (twist 0: the quaternion square on a 3D slice) the Jacobian's
+        // largest singular value is 2 r, Mandelbulber2's own derivative: nothing to divide.
+        if (n.block->id == "bristorbrot" && n.args().f(0) == 0.0) continue;
+        degree = std::max(degree, n.block->degreeAt(n.args()));
+    }
     const bool logType = p.formula.estimator.block && p.formula.estimator.block->id != "escape_linear" &&
                          p.formula.estimator.block->membership == Membership::EscapeTime;
     p.render.detail = std::clamp(
