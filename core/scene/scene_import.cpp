@@ -14,6 +14,10 @@ namespace fraktal {
 
 bool isImportedSceneFile(const std::filesystem::path& path) { return mb2::isFractPath(path) || frag::isFragPath(path); }
 
+std::string importedSceneProgram(const std::filesystem::path& path) {
+    return mb2::isFractPath(path) ? "Mandelbulber2" : frag::isFragPath(path) ? "Fragmentarium" : "";
+}
+
 namespace {
 
 // The bound sphere about the origin: fitted to the object found inside the view range; an object

@@ -44,6 +44,9 @@ struct ImportedScene {
 
 // Whether the file is opened by import rather than as a preset (by its extension: .fract, .frag).
 bool isImportedSceneFile(const std::filesystem::path& path);
+// The program an imported scene file comes from, for messages: "Mandelbulber2" (.fract),
+// "Fragmentarium" (.frag); empty for any other file.
+std::string importedSceneProgram(const std::filesystem::path& path);
 
 // Throws PresetError: for a file it cannot read, and (unless lenient) for a file that uses what
 // fraktal cannot express, listing every such thing with its slot.

@@ -140,8 +140,9 @@ Document loadDocument(const fs::path& file) {
     return d;
 }
 
-// A Mandelbulber2 file opens as a new, unsaved preset (Save asks where: never over the .fract),
-// and the status line lists what fraktal could not express or only approximates.
+// A Mandelbulber2 or Fragmentarium file opens as a new, unsaved preset (Save asks where: never
+// over the .fract or .frag), and the status line lists what fraktal could not express or only
+// approximates.
 bool openImportedScene(EditorState& s, const fs::path& file) {
     // The step factor is measured as after any structure change: between frames, then in the
     // background (AutoStepFactor), not here before the window shows the scene.
@@ -151,7 +152,7 @@ bool openImportedScene(EditorState& s, const fs::path& file) {
     adoptDocument(s, std::move(d), fs::path());
     s.stepFactor = AutoStepFactor{};
     rememberRecent(s, file);
-    std::string status = "Imported " + file.filename().string() + " (Mandelbulber2)";
+    std::string status = "Imported " + file.filename().string() + " (" + importedSceneProgram(file) + ")";
     if (!scene.unsupported.empty()) {
         status += ". Dropped, fraktal cannot express it:";
         for (const std::string& item : scene.unsupported) status += "\n  " + item;
