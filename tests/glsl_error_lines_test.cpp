@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "core/custom_block.hpp"
 #include "core/gl/program.hpp"
 #include "core/glsl_gen.hpp"
 #include "core/glsl_log.hpp"
@@ -83,6 +84,22 @@ TEST(GlslErrorLines, ValidationRefusalsNameTheirLine) {
               (std::vector<SourceError>{{3, "loops ('for') are not allowed"}}));
     EXPECT_EQ(validationSourceErrors("glsl: unbalanced '{'"), (std::vector<SourceError>{{0, "unbalanced '{'"}}));
     EXPECT_TRUE(validationSourceErrors("params[0].name: 'p' is reserved").empty());
+
+    // CustomBlock::validate's own refusals, of a whole DE and of a node block.
+    CustomBlock::Definition whole;
+    whole.id = "refused_de";
+    whole.category = Category::Estimator;
+    whole.wholeDE = true;
+    whole.glsl = "float DE(vec3 p) {\n    return length(p) - 1.0;\n}\nuniform float stray;\n";
+    const std::vector<SourceError> wholeErrors = validationSourceErrors(CustomBlock::validate(whole));
+    ASSERT_EQ(wholeErrors.size(), 1u) << CustomBlock::validate(whole);
+    EXPECT_EQ(wholeErrors[0].line, 4);
+    CustomBlock::Definition node;
+    node.id = "refused_fold";
+    node.glsl = "\np.xyz = abs(p.xyz);\nfor (int i = 0; i < 3; ++i) p.x += 1.0;\n";
+    const std::vector<SourceError> nodeErrors = validationSourceErrors(CustomBlock::validate(node));
+    ASSERT_EQ(nodeErrors.size(), 1u) << CustomBlock::validate(node);
+    EXPECT_EQ(nodeErrors[0].line, 3);
 }
 
 // A node-list block whose code starts with a blank line, as a preset's JSON often writes it:

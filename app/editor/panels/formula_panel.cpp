@@ -62,6 +62,7 @@ void addBlockMenu(EditorState& s) {
     ImGui::Separator();
     if (ImGui::MenuItem("New GLSL block...")) {
         s.customBlockEditor.definition = newBlockTemplate();
+        s.customBlockEditor.source = {};  // the cursor at the top of other code
         s.customBlockEditor.error.clear();
         s.customBlockEditor.open = true;
     }
@@ -403,6 +404,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
             noteWidgetRect(s.layout, "button:Edit GLSL");
             if (edit) {
                 s.customBlockEditor.definition = b->definition();
+                s.customBlockEditor.source = {};  // the cursor at the top of other code
                 s.customBlockEditor.error.clear();
                 s.customBlockEditor.open = true;
             }
