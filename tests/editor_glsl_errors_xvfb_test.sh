@@ -49,9 +49,9 @@ echo "whole DE $id; the broken line goes in at line $line"
 start "$preset"
 wait_settled
 # The parameters under the frag's #group headings, in its order.
-groups=$(q '[.paramGroups[].name] | join(",")')
+groups=$(q '[.paramGroups[]?.name] | join(",")')
 [ "$groups" = "Menger,Twist" ] || fail "the parameters show under groups '$groups', not Menger,Twist"
-[ "$(q '.paramGroups[1].firstWidget as $k | .paramWidgets[$k].name')" = Twist ] ||
+[ "$(q '(.paramGroups[1].firstWidget // -1) as $k | .paramWidgets[$k].name')" = Twist ] ||
     fail "the Twist group does not head its Twist checkbox"
 wait_frames 2
 import -window "$window" "$out/glsl_before.png"
@@ -65,6 +65,14 @@ click "button:Edit GLSL"
 [ "$(q .blockEditor.wholeDE)" = true ] || fail "the block editor does not hold the whole DE"
 [ "$(q .blockEditor.category)" = estimator ] || fail "the whole DE's category reads $(q .blockEditor.category)"
 [ "$(q '.blockEditor.errors | length')" = 0 ] || fail "errors before any edit: $(q .blockEditor.errors)"
+
+# The wheel over the code scrolls it, line numbers and all; back to the top.
+wheel_over "glsl:text" 5
+top=$(q .blockEditor.firstLineInView)
+echo "the wheel down over the code: line $top at the top"
+check "$top > 4" || fail "the wheel over the code left line $top at the top"
+wheel_over "glsl:text" 4
+[ "$(q .blockEditor.firstLineInView)" = 1 ] || fail "the wheel up left line $(q .blockEditor.firstLineInView) at the top"
 
 # Into the code: Ctrl+Home, down to the line, and type the broken helper there.
 click "glsl:text"
@@ -129,6 +137,7 @@ click "glsl:first error"
 wait_frames 3
 [ "$(q .blockEditor.cursorLine)" = "$line" ] ||
     fail "the error's row put the cursor on line $(q .blockEditor.cursorLine), not $line"
+check "$(q .blockEditor.firstLineInView) <= $line" || fail "line $line is scrolled out of view above"
 press_keys shift+End
 press_keys Delete
 press_keys Delete

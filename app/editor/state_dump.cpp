@@ -117,6 +117,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
                         {"wholeDE", s.customBlockEditor.definition.wholeDE},
                         {"category", std::string(categoryName(s.customBlockEditor.definition.category))},
                         {"cursorLine", s.customBlockEditor.source.cursorLine},
+                        {"firstLineInView", s.customBlockEditor.source.firstLineInView},
                         {"refusal", s.customBlockEditor.error},
                         {"errors", blockErrors}};
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;

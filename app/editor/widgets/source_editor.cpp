@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace fraktal::editor {
@@ -103,6 +104,8 @@ bool sourceEditor(const char* id, std::string& text, const std::vector<int>& err
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImU32 plain = ImGui::GetColorU32(ImGuiCol_TextDisabled), current = ImGui::GetColorU32(ImGuiCol_Text);
     st.firstMarkRect = {};
+    st.firstLineInView =
+        std::clamp(1 + int(std::ceil((viewTop - origin.y - style.FramePadding.y) / lineHeight)), 1, lines);
     const int first = std::max(1, int((viewTop - origin.y) / lineHeight)),
               last = std::min(lines, first + 1 + int((viewBottom - viewTop) / lineHeight) + 1);
     for (int line = first; line <= last; ++line) {

@@ -20,6 +20,7 @@ struct SourceEditorState {
     // marked line is in view (the Xvfb stories look at it).
     std::array<float, 4> firstMarkRect{};
     std::array<float, 4> textRect{};  // the visible part of the text box
+    int firstLineInView = 1;          // the topmost line shown whole
 };
 
 // Draws the editor `height` pixels tall and the full width; returns whether the text changed.
