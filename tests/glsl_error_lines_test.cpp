@@ -1,12 +1,12 @@
 // A compile error lands on the line of the block's own code that caused it (core/glsl_log.hpp):
-// the drivers' log forms are read, the generated shader's line numbers are mapped back through
-// the blocks' #line ranges, for a node-list GLSL block and for a whole DE an imported frag made.
+// the driver's log is read, the generated shader's line numbers are mapped back through the
+// blocks' #line ranges, for a node-list GLSL block and for a whole DE an imported frag made, and
+// NVIDIA's form of the same message lands alike. The log forms alone: glsl_log_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "core/custom_block.hpp"
 #include "core/gl/program.hpp"
 #include "core/glsl_gen.hpp"
 #include "core/glsl_log.hpp"
@@ -58,49 +58,6 @@ Preset importedMengerWith(const std::string& from, const std::string& to) {
 }
 
 }  // namespace
-
-// Mesa's, NVIDIA's and glslang's forms give the line and the message; other lines are none.
-TEST(GlslErrorLines, ParsesEachDriversLogForm) {
-    const std::vector<ShaderLogMessage> m = parseShaderLog(
-        "0:10012(7): error: `foo' undeclared\n"
-        "0(10013) : error C1008: undefined variable \"bar\"\r\n"
-        "ERROR: 0:10014: 'baz' : undeclared identifier\n"
-        "ERROR: 1 compilation errors.  No code generated.\n"
-        "\n"
-        "0:5003: warning: unused\n");
-    ASSERT_EQ(m.size(), 4u);
-    EXPECT_EQ(m[0].line, 10012);
-    EXPECT_EQ(m[0].text, "error: `foo' undeclared");
-    EXPECT_EQ(m[1].line, 10013);
-    EXPECT_EQ(m[1].text, "error C1008: undefined variable \"bar\"");
-    EXPECT_EQ(m[2].line, 10014);
-    EXPECT_EQ(m[2].text, "error: 'baz' : undeclared identifier");
-    EXPECT_EQ(m[3].line, 5003);
-}
-
-// A refusal of the block's GLSL names its line; a refusal of another field names none.
-TEST(GlslErrorLines, ValidationRefusalsNameTheirLine) {
-    EXPECT_EQ(validationSourceErrors("glsl: line 3: loops ('for') are not allowed"),
-              (std::vector<SourceError>{{3, "loops ('for') are not allowed"}}));
-    EXPECT_EQ(validationSourceErrors("glsl: unbalanced '{'"), (std::vector<SourceError>{{0, "unbalanced '{'"}}));
-    EXPECT_TRUE(validationSourceErrors("params[0].name: 'p' is reserved").empty());
-
-    // CustomBlock::validate's own refusals, of a whole DE and of a node block.
-    CustomBlock::Definition whole;
-    whole.id = "refused_de";
-    whole.category = Category::Estimator;
-    whole.wholeDE = true;
-    whole.glsl = "float DE(vec3 p) {\n    return length(p) - 1.0;\n}\nuniform float stray;\n";
-    const std::vector<SourceError> wholeErrors = validationSourceErrors(CustomBlock::validate(whole));
-    ASSERT_EQ(wholeErrors.size(), 1u) << CustomBlock::validate(whole);
-    EXPECT_EQ(wholeErrors[0].line, 4);
-    CustomBlock::Definition node;
-    node.id = "refused_fold";
-    node.glsl = "\np.xyz = abs(p.xyz);\nfor (int i = 0; i < 3; ++i) p.x += 1.0;\n";
-    const std::vector<SourceError> nodeErrors = validationSourceErrors(CustomBlock::validate(node));
-    ASSERT_EQ(nodeErrors.size(), 1u) << CustomBlock::validate(node);
-    EXPECT_EQ(nodeErrors[0].line, 3);
-}
 
 // A node-list block whose code starts with a blank line, as a preset's JSON often writes it:
 // the driver's error is on the block's line 3, where the undeclared name is, not line 2.
