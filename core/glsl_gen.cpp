@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <regex>
 #include <stdexcept>
 
+#include "core/glsl_log.hpp"
 #include "core/shader_library.hpp"
 #include "core/whole_de.hpp"
 
@@ -176,8 +176,8 @@ void GlslEmitter::nodeFunction(int k, std::string_view blockId, const std::strin
         signature += ", " + p.type + " " + std::string(p.name);
     }
     line(signature + ") {");
+    // The body as written, a leading blank line too: its line n is the block's line n.
     line("#line " + std::to_string(kNodeLineStride * (k + 1) + 1));
-    if (!body.empty() && body.front() == '\n') body.remove_prefix(1);
     out += body;
     if (!body.empty() && body.back() != '\n') out += '\n';
     restoreFormulaLines();
@@ -390,30 +390,33 @@ ShaderSource assembleShader(const GeneratedFormula& formula, std::string_view pr
 }
 
 std::string ShaderSource::explainLog(std::string_view log) const {
-    // Mesa: "101:3(5): error: ..."; glslang: "ERROR: 101:3: ...".
-    static const std::regex where(R"((\d+):(\d+)(\(\d+\))?:)");
+    // Each message's place (in any driver's form, parseShaderLog) becomes what the line numbers
+    // encode (kFormulaLineBase, kNodeLineStride); lines in no known form stay as they are.
     std::string out;
-    std::string text(log);
-    std::sregex_iterator it(text.begin(), text.end(), where), end;
-    size_t last = 0;
-    for (; it != end; ++it) {
-        const std::smatch& m = *it;
-        const int line = std::stoi(m[2]);
+    size_t from = 0;
+    while (from < log.size()) {
+        size_t end = log.find('\n', from);
+        if (end == std::string_view::npos) end = log.size();
+        const std::string_view text = log.substr(from, end - from);
+        const std::vector<ShaderLogMessage> parsed = parseShaderLog(text);
         std::string where;
-        if (line < kFormulaLineBase) {
-            where = programName + " line " + std::to_string(line);
-        } else if (line < kNodeLineStride) {
-            where = "generated formula code line " + std::to_string(line - kFormulaLineBase);
-        } else {
-            const size_t node = size_t(line / kNodeLineStride - 1);
-            if (node >= nodeNames.size()) continue;
-            where = nodeNames[node] + ", GLSL line " + std::to_string(line % kNodeLineStride);
+        if (!parsed.empty()) {
+            const int line = parsed[0].line;
+            if (line < kFormulaLineBase) {
+                where = programName + " line " + std::to_string(line);
+            } else if (line < kNodeLineStride) {
+                where = "generated formula code line " + std::to_string(line - kFormulaLineBase);
+            } else if (const size_t node = size_t(line / kNodeLineStride - 1); node < nodeNames.size()) {
+                where = nodeNames[node] + ", GLSL line " + std::to_string(line % kNodeLineStride);
+            }
         }
-        out += text.substr(last, m.position() - last);
-        out += where + ":";
-        last = m.position() + m.length();
+        if (where.empty())
+            out += text;
+        else
+            out += where + ": " + parsed[0].text;
+        if (end < log.size()) out += '\n';
+        from = end + 1;
     }
-    out += text.substr(last);
     return out;
 }
 

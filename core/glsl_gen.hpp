@@ -85,8 +85,9 @@ struct ShaderSource {
     std::string text;
     std::string programName;
     std::vector<std::string> nodeNames;
-    // Rewrites a driver's or glslang's log so that "0:20003(5): error" reads
-    // "node 1 (box_fold), GLSL line 3: error".
+    // Rewrites a driver's or glslang's log (Mesa's, NVIDIA's, glslang's forms: parseShaderLog) so
+    // that "0:20003(5): error: ..." or "0(20003) : error C1008: ..." reads
+    // "node 1 "Box fold" (box_fold), GLSL line 3: error...", one message a line.
     std::string explainLog(std::string_view log) const;
 };
 

@@ -17,6 +17,7 @@
 #include "app/editor/input/fly_speed.hpp"
 #include "app/editor/state/actions.hpp"
 #include "core/animation.hpp"
+#include "core/scene/scene_import.hpp"
 #include "core/scene/scene_revision.hpp"
 #include "editor_test_support.hpp"
 #include "test_support.hpp"
@@ -97,6 +98,24 @@ TEST(EditorUndo, CameraMovesRecordNoStepAndUndoKeepsTheCamera) {
     EXPECT_EQ(doc.preset.formula.nodes[0].values[0].x, 8.0);
     EXPECT_EQ(doc.preset.camera.position, vec3(0.3, 2.5, 1.0 / 3.0)) << "undo keeps where one looks";
     EXPECT_EQ(history.redoLabel(), "change of power");
+}
+
+// Apply in the GLSL block window replaces the block's definition: one step, named after the
+// block, that Undo takes back to the code before.
+TEST(EditorUndo, ApplyingAnEditedGlslBlockIsOneStepNamedAfterIt) {
+    Document doc;
+    doc.preset = importSceneFile(test::sourceDir() / "tests/data/frag_import/menger.frag").preset;
+    UndoHistory history;
+    history.reset(doc);
+    CustomBlock::Definition d = doc.preset.formula.customBlocks.at(0)->definition();
+    const std::string before = d.glsl;
+    d.glsl += "\nfloat unusedHelper(float x) { return x; }\n";
+    ASSERT_EQ(upsertCustomBlock(doc.preset.formula, d), "");
+    ASSERT_TRUE(history.commit(doc));
+    EXPECT_EQ(history.undoDepth(), 1u);
+    EXPECT_EQ(history.undoLabel(), "edit of " + std::string(doc.preset.formula.estimator.block->label));
+    ASSERT_TRUE(history.undo(doc));
+    EXPECT_EQ(doc.preset.formula.customBlocks.at(0)->definition().glsl, before);
 }
 
 TEST(EditorUndo, LabelsSayWhatUndoAndRedoWillDo) {

@@ -49,9 +49,10 @@ Formula withOneBlock(const BlockDesc& b) {
     return f;
 }
 
-// A block with a GLSL error on its second line, to see the error routed to its node.
+// A block with a GLSL error, to see the error routed to its node.
 constexpr std::array<ParamDecl, 1> kBrokenParams{ParamDecl{"amount", ParamType::Float, {1, 0, 0}, 0, 2, "test"}};
 void brokenApply(P4&, const vec3&, Args) {}
+// Its code starts with a blank line: the undeclared name is on its line 3, which the error names.
 const BlockDesc kBroken{.id = "broken_block",
                         .label = "Broken",
                         .help = "test",
@@ -89,7 +90,7 @@ TEST(GlslCompile, ErrorNamesTheNodeOnTheDriver) {
         FAIL() << "a shader using an undeclared variable compiled";
     } catch (const std::runtime_error& e) {
         const std::string message = e.what();
-        EXPECT_NE(message.find("node 2 \"Broken\" (broken_block), GLSL line 2"), std::string::npos) << message;
+        EXPECT_NE(message.find("node 2 \"Broken\" (broken_block), GLSL line 3"), std::string::npos) << message;
         EXPECT_NE(message.find("no_such_variable"), std::string::npos) << message;
     }
 }
@@ -101,7 +102,7 @@ TEST(GlslCompile, ErrorNamesTheNodeWithGlslang) {
     const ToolResult r = glslang(s, "broken");
     EXPECT_NE(r.status, 0);
     const std::string explained = s.explainLog(r.output);
-    EXPECT_NE(explained.find("node 2 \"Broken\" (broken_block), GLSL line 2"), std::string::npos) << explained;
+    EXPECT_NE(explained.find("node 2 \"Broken\" (broken_block), GLSL line 3"), std::string::npos) << explained;
 }
 
 // Parameters are uniforms: values do not change the generated code; structure does.

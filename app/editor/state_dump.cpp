@@ -109,6 +109,17 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["shortcutHelp"] = s.panels.help;
     j["tour"] = {{"shown", s.panels.tour}, {"text", s.panels.tourText.size()}};
     j["blockEditorOpen"] = s.customBlockEditor.open;
+    // The GLSL block window's errors, each on the line of the code it marks (0: no line).
+    json blockErrors = json::array();
+    for (const SourceError& e : blockEditorErrors(s.customBlockEditor, compileError))
+        blockErrors.push_back({{"line", e.line}, {"message", e.message}});
+    j["blockEditor"] = {{"id", s.customBlockEditor.definition.id},
+                        {"wholeDE", s.customBlockEditor.definition.wholeDE},
+                        {"category", std::string(categoryName(s.customBlockEditor.definition.category))},
+                        {"cursorLine", s.customBlockEditor.source.cursorLine},
+                        {"firstLineInView", s.customBlockEditor.source.firstLineInView},
+                        {"refusal", s.customBlockEditor.error},
+                        {"errors", blockErrors}};
     j["flyMode"] = s.cameraControls.mode == CameraMode::Fly;
     j["undoDepth"] = s.history.undoDepth();
     j["redoDepth"] = s.history.redoDepth();
@@ -203,6 +214,9 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     for (const auto& w : s.paramWidgets.widgets)
         widgets.push_back({{"name", w.name}, {"label", w.label}, {"rect", {w.x, w.y, w.w, w.h}}});
     j["paramWidgets"] = widgets;
+    json groups = json::array();
+    for (const auto& [name, first] : s.paramWidgets.groups) groups.push_back({{"name", name}, {"firstWidget", first}});
+    j["paramGroups"] = groups;
     j["tooltipParam"] = s.paramWidgets.tooltipParam;
     j["tooltip"] = s.paramWidgets.tooltip;
     j["lights"] = lightsJson(s.doc.preset.lighting, s.lights);

@@ -99,6 +99,16 @@ std::string nodeListChange(const Formula& before, const Formula& after) {
     return "";
 }
 
+// A custom GLSL block whose definition (code, parameters, label...) an Apply in its window
+// replaced, in the words of that window: "edit of <label>"; empty when none changed.
+std::string customBlockChange(const Formula& before, const Formula& after) {
+    for (const auto& b : after.customBlocks)
+        for (const auto& a : before.customBlocks)
+            if (a->definition().id == b->definition().id && customBlockToJson(*a) != customBlockToJson(*b))
+                return "edit of " + std::string(b->desc().label);
+    return {};
+}
+
 // An object beside the fractal or a combined fractal added or removed.
 std::string objectListChange(const Formula& before, const Formula& after) {
     const std::vector<SceneObject>&a = before.objects, &b = after.objects;
@@ -251,6 +261,8 @@ std::string describeChange(const Document& before, const Document& after) {
     if (std::string keys = describeAnimationChange(before.preset, after.preset); !keys.empty()) return keys;
     if (!before.plane && !after.plane) {
         const Formula &a = before.preset.formula, &b = after.preset.formula;
+        // Before the node list: the nodes of an edited block are bound to its new definition.
+        if (std::string block = customBlockChange(a, b); !block.empty()) return block;
         if (std::string nodes = nodeListChange(a, b); !nodes.empty()) return nodes;
         if (std::string objects = objectListChange(a, b); !objects.empty()) return objects;
         if (std::string lights = lightListChange(before.preset.lighting.lights, after.preset.lighting.lights);

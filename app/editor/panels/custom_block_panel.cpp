@@ -1,7 +1,9 @@
 // The GLSL block editor window: id, category, help, the parameter list (name, type, default,
-// range, help) and the GLSL body. Apply adds the block to the formula or replaces the one with
-// the same id (nodes using it are rebound); its compile errors show under the nodes that use it,
-// as for built-in blocks. A block library file stores every custom block of the formula.
+// range, help; an imported frag's groups) and the GLSL in a code editor with line numbers.
+// Apply adds the block to the formula or replaces the one with the same id (nodes using it are
+// rebound). A refused Apply's reason and the compile errors of the block's code are listed under
+// it and marked on their lines; they also show under the nodes that use it, as for built-in
+// blocks. A block library file stores every custom block of the formula.
 #include <imgui.h>
 
 #include <fstream>
@@ -11,7 +13,9 @@
 #include "app/editor/document/preset_files.hpp"
 #include "app/editor/panels/panels.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
+#include "app/editor/widgets/source_editor.hpp"
 #include "core/atomic_file.hpp"
+#include "core/whole_de.hpp"
 
 namespace fraktal::editor {
 
@@ -59,6 +63,9 @@ void parameterRows(CustomBlock::Definition& d) {
     int remove = -1;
     for (size_t i = 0; i < d.params.size(); ++i) {
         auto& p = d.params[i];
+        // An imported frag's #group, as the Formula panel heads its sliders.
+        if (!p.group.empty() && (i == 0 || d.params[i - 1].group != p.group))
+            ImGui::TextDisabled("%s", p.group.c_str());
         ImGui::PushID(int(i));
         ImGui::SetNextItemWidth(110.0f);
         inputString("##name", p.name);
@@ -99,7 +106,8 @@ void parameterRows(CustomBlock::Definition& d) {
         ImGui::PopID();
     }
     if (remove >= 0) d.params.erase(d.params.begin() + remove);
-    if (int(d.params.size()) < kMaxCustomParams && ImGui::SmallButton("+ parameter")) {
+    if (int(d.params.size()) < (d.wholeDE ? kMaxWholeDEParams : kMaxCustomParams) &&
+        ImGui::SmallButton("+ parameter")) {
         CustomBlock::Definition::Param p;
         p.name = "param" + std::to_string(d.params.size() + 1);
         d.params.push_back(p);
@@ -139,60 +147,124 @@ void libraryButtons(EditorState& s) {
     if (!e.libraryMessage.empty()) ImGui::TextWrapped("%s", e.libraryMessage.c_str());
 }
 
-}  // namespace
-
-void drawCustomBlockEditor(EditorState& s, const std::string& compileError) {
-    CustomBlockEditor& e = s.customBlockEditor;
-    if (!e.open || s.doc.plane) return;
-    ImGui::SetNextWindowSize(ImVec2(620, 560), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("GLSL block", &e.open)) {
-        ImGui::End();
-        return;
-    }
-    CustomBlock::Definition& d = e.definition;
+// Id, label, category (fixed for a whole DE, which computes the whole distance) and help.
+void identityFields(CustomBlock::Definition& d) {
     inputString("Id", d.id);
     inputString("Label", d.label);
-    int category = int(d.category);
-    ImGui::Combo("Category", &category, "fold\0transform\0power\0estimator\0");
-    d.category = Category(category);
+    if (d.wholeDE) {
+        ImGui::TextDisabled("Category: estimator (a whole DE computes the distance)");
+    } else {
+        int category = int(d.category);
+        ImGui::Combo("Category", &category, "fold\0transform\0power\0estimator\0");
+        d.category = Category(category);
+    }
     if (d.category == Category::Estimator) {
         int membership = d.membership == Membership::EscapeTime ? 1 : 0;
         ImGui::Combo("Inside is", &membership, "distance <= 0\0the orbit stays bounded\0");
         d.membership = membership ? Membership::EscapeTime : Membership::Distance;
     }
     inputString("Help", d.help);
-    sectionHeader("Parameters (name, type, default, min, max; help below)");
-    parameterRows(d);
-    sectionHeader(d.category == Category::Estimator
-                      ? "GLSL: statements over vec4 p (w: running scale) and c, ending in return <distance>;"
-                      : "GLSL: statements over inout vec4 p (w: running scale) and vec3 c");
-    inputString("##glsl", d.glsl, true, ImGui::GetTextLineHeight() * 12.0f);
-    if (ImGui::Button(findCustomBlock(s.doc.preset.formula, d.id) ? "Apply (replace)" : "Apply (add to the formula)")) {
-        Formula& f = s.doc.preset.formula;
-        const bool isNew = !findCustomBlock(f, d.id);
-        e.error = upsertCustomBlock(f, d);
-        if (e.error.empty() && isNew) {
-            const CustomBlock* b = findCustomBlock(f, d.id);
-            if (b->desc().isEstimator()) {
-                setEstimator(s.doc.preset, b->desc());
-                s.selectedNode = int(f.nodes.size());
-            } else {
-                const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
-                if (addNode(s.doc.preset, b->desc(), at)) s.selectedNode = at;
-            }
+}
+
+// What the code may hold, above it.
+const char* codeHint(const CustomBlock::Definition& d) {
+    if (d.wholeDE)
+        return "GLSL: functions, globals and #define lines that define float DE(vec3 p), returning the distance. "
+               "Loops, functions and #define are allowed (each DE call's loops are bounded); the parameters are "
+               "in scope by name.";
+    if (d.category == Category::Estimator)
+        return "GLSL: statements over vec4 p (w: running scale) and c, ending in return <distance>; "
+               "loops and the preprocessor are not allowed: every call is bounded.";
+    return "GLSL: statements over inout vec4 p (w: running scale) and vec3 c; loops and the preprocessor are "
+           "not allowed: every call is bounded.";
+}
+
+void applyDefinition(EditorState& s) {
+    CustomBlockEditor& e = s.customBlockEditor;
+    const CustomBlock::Definition& d = e.definition;
+    Formula& f = s.doc.preset.formula;
+    const bool isNew = !findCustomBlock(f, d.id);
+    e.error = upsertCustomBlock(f, d);
+    if (e.error.empty() && isNew) {
+        const CustomBlock* b = findCustomBlock(f, d.id);
+        if (b->desc().isEstimator()) {
+            setEstimator(s.doc.preset, b->desc());
+            s.selectedNode = int(f.nodes.size());
+        } else {
+            const int at = std::min(s.selectedNode + 1, int(f.nodes.size()));
+            if (addNode(s.doc.preset, b->desc(), at)) s.selectedNode = at;
         }
     }
-    ImGui::SameLine();
-    ImGui::TextDisabled("Loops and the preprocessor are not allowed: every call is bounded.");
-    if (!e.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", e.error.c_str());
-    // The viewport's compile error, when it is about this block (the last good image stays).
-    if (compileError.find("(" + d.id + ")") != std::string::npos) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-        ImGui::TextWrapped("%s", compileError.c_str());
+}
+
+const ImVec4 kErrorText(1.0f, 0.45f, 0.4f, 1.0f);
+
+// The errors on the code's lines, a row each ("line 12: 'foo' : undeclared identifier"); a click
+// puts the cursor on its line.
+void errorRows(EditorState& s, const std::vector<SourceError>& errors) {
+    CustomBlockEditor& e = s.customBlockEditor;
+    for (size_t i = 0; i < errors.size(); ++i) {
+        const SourceError& err = errors[i];
+        const std::string row =
+            (err.line > 0 ? "line " + std::to_string(err.line) + ": " : std::string()) + err.message;
+        ImGui::PushID(int(i));
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+        if (ImGui::Selectable(row.c_str()) && err.line > 0) e.source.goToLine = err.line;
         ImGui::PopStyleColor();
+        ImGui::PopID();
+        if (i == 0) noteWidgetRect(s.layout, "glsl:first error");
+        if (ImGui::IsItemHovered() && err.line > 0) ImGui::SetTooltip("Go to line %d", err.line);
     }
-    sectionHeader("Block library");
-    libraryButtons(s);
+}
+
+}  // namespace
+
+void drawCustomBlockEditor(EditorState& s, const std::string& compileError) {
+    CustomBlockEditor& e = s.customBlockEditor;
+    if (!e.open || s.doc.plane) return;
+    ImGui::SetNextWindowSize(ImVec2(620, 700), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("GLSL block", &e.open)) {
+        ImGui::End();
+        return;
+    }
+    const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    s.layout.widgetRects["window:GLSL block"] = {at.x, at.y, size.x, size.y};
+    CustomBlock::Definition& d = e.definition;
+    identityFields(d);
+    // A frag's tens of parameters would push the code out of sight: folded until asked for.
+    if (ImGui::CollapsingHeader("Parameters (name, type, default, min, max; help below)",
+                                d.wholeDE ? 0 : ImGuiTreeNodeFlags_DefaultOpen))
+        parameterRows(d);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", codeHint(d));
+    ImGui::PopTextWrapPos();
+
+    const std::vector<SourceError> errors = blockEditorErrors(e, compileError);
+    std::vector<int> errorLines;
+    for (const SourceError& err : errors)
+        if (err.line > 0) errorLines.push_back(err.line);
+    // The code takes what the window leaves: below it the Apply row, the errors (up to six rows
+    // before they scroll with the window) and the library's header.
+    const float row = ImGui::GetFrameHeightWithSpacing();
+    const float below = row * (3.0f + float(std::min<size_t>(errors.size(), 6)) + (e.error.empty() ? 0.0f : 1.0f));
+    const float codeHeight = std::max(ImGui::GetTextLineHeight() * 12.0f, ImGui::GetContentRegionAvail().y - below);
+    sourceEditor("glsl", d.glsl, errorLines, e.source, codeHeight);
+    noteWidgetRect(s.layout, "glsl:source");
+    s.layout.widgetRects["glsl:text"] = e.source.textRect;
+    s.layout.widgetRects["glsl:first error mark"] = e.source.firstMarkRect;
+
+    const bool apply =
+        ImGui::Button(findCustomBlock(s.doc.preset.formula, d.id) ? "Apply (replace)" : "Apply (add to the formula)");
+    noteWidgetRect(s.layout, "button:Apply GLSL");
+    if (apply) applyDefinition(s);
+    ImGui::SameLine();
+    ImGui::TextDisabled("line %d", e.source.cursorLine);
+    // A refusal of another field than the code (an id, a parameter) has no line to mark.
+    if (!e.error.empty() && validationSourceErrors(e.error).empty())
+        ImGui::TextColored(kErrorText, "%s", e.error.c_str());
+    // The compile errors are of the block as last applied; the viewport keeps its last good image.
+    errorRows(s, errors);
+    if (ImGui::CollapsingHeader("Block library")) libraryButtons(s);
     ImGui::End();
 }
 

@@ -23,6 +23,16 @@ namespace {
 
 constexpr const char* kNodePayload = "FRAKTAL_NODE";
 
+// The groups of a custom block's parameters (an imported frag's #group); none for a built-in one.
+std::function<std::string(size_t)> customParamGroups(const Formula& f, const BlockDesc& block) {
+    const CustomBlock* custom = block.custom ? findCustomBlock(f, block.id) : nullptr;
+    if (!custom) return {};
+    return [custom](size_t k) {
+        const auto& params = custom->definition().params;
+        return k < params.size() ? params[k].group : std::string();
+    };
+}
+
 void addBlockMenu(EditorState& s) {
     Formula& f = s.doc.preset.formula;
     const Category steps[] = {Category::Fold, Category::Transform, Category::Power};
@@ -52,6 +62,7 @@ void addBlockMenu(EditorState& s) {
     ImGui::Separator();
     if (ImGui::MenuItem("New GLSL block...")) {
         s.customBlockEditor.definition = newBlockTemplate();
+        s.customBlockEditor.source = {};  // the cursor at the top of other code
         s.customBlockEditor.error.clear();
         s.customBlockEditor.open = true;
     }
@@ -364,13 +375,16 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
     const bool estimatorSelected = s.selectedNode == int(f.nodes.size());
     const Node& selected = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
     Node& shown = estimatorSelected ? f.estimator : f.nodes[size_t(s.selectedNode)];
-    nodeParameters(shown, estimatorSelected, s.paramWidgets, [&](size_t k) {
-        const std::string name(shown.block->params[k].name);
-        const ParamValue& v = shown.values[k];
-        keyMarker(
-            s, estimatorSelected ? estimatorParamTarget(name) : paramTarget(s.selectedNode, name),
-            isScalar(shown.block->params[k].type) ? std::vector<double>{v.x} : std::vector<double>{v.x, v.y, v.z});
-    });
+    nodeParameters(
+        shown, estimatorSelected, s.paramWidgets,
+        [&](size_t k) {
+            const std::string name(shown.block->params[k].name);
+            const ParamValue& v = shown.values[k];
+            keyMarker(
+                s, estimatorSelected ? estimatorParamTarget(name) : paramTarget(s.selectedNode, name),
+                isScalar(shown.block->params[k].type) ? std::vector<double>{v.x} : std::vector<double>{v.x, v.y, v.z});
+        },
+        customParamGroups(f, *shown.block));
     if (estimatorSelected) {
         // Under the estimator's own parameters, so that the rows above keep their places.
         // The hit rules other than the plain surface, each a checkbox (ticking one unticks the other).
@@ -390,6 +404,7 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
             noteWidgetRect(s.layout, "button:Edit GLSL");
             if (edit) {
                 s.customBlockEditor.definition = b->definition();
+                s.customBlockEditor.source = {};  // the cursor at the top of other code
                 s.customBlockEditor.error.clear();
                 s.customBlockEditor.open = true;
             }

@@ -97,10 +97,12 @@ inline bool containsWord(std::string_view text, std::string_view word) {
 
 // The selected node's block, help, period and phase (not for estimators) and parameters;
 // `beforeParam(k)` draws what goes before parameter k's widget on its line (a key marker);
-// `shown` records the widgets (ParamWidgetsShown).
+// `shown` records the widgets (ParamWidgetsShown). `groupOf(k)` names parameter k's group (an
+// imported frag's #group): a heading goes above the first parameter of each run of one group.
 template <class NodeT>
 void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
-                    const std::function<void(size_t)>& beforeParam = {}) {
+                    const std::function<void(size_t)>& beforeParam = {},
+                    const std::function<std::string(size_t)>& groupOf = {}) {
     if (!n.block) return;
     const std::string label(n.block->label), category(categoryName(n.block->category));
     ImGui::Text("%s", label.c_str());
@@ -143,7 +145,15 @@ void nodeParameters(NodeT& n, bool estimator, ParamWidgetsShown& shown,
         n.stop = std::max(n.stop, n.start + 1);
     }
     if (n.block->params.empty()) ImGui::TextDisabled("This block has no parameters.");
+    std::string group;
     for (size_t k = 0; k < n.block->params.size(); ++k) {
+        if (const std::string g = groupOf ? groupOf(k) : std::string(); g != group) {
+            group = g;
+            if (!group.empty()) {
+                sectionHeader(group.c_str());
+                shown.groups.emplace_back(group, shown.widgets.size());
+            }
+        }
         if (beforeParam) beforeParam(k);
         paramWidget(n.block->params[k], n.values[k], &shown);
     }

@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "app/editor/widgets/value_clamp.hpp"
@@ -24,6 +25,9 @@ struct ParamWidgetsShown {
         float x = 0, y = 0, w = 0, h = 0;  // the drag or checkbox, in window coordinates
     };
     std::vector<Widget> widgets;
+    // The group headings above the parameters, in order (an imported frag's #group), each with
+    // the index in `widgets` of the first parameter under it.
+    std::vector<std::pair<std::string, size_t>> groups;
     std::string tooltipParam;  // the parameter whose tooltip is shown (empty: none)
     std::string tooltip;       // its declaration's help text, as the tooltip shows it
     void clear() { *this = {}; }
