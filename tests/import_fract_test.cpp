@@ -3412,6 +3412,11 @@ std::vector<Expected> fixedSet() {
          "mechanical-ribs.fract",
          ""},
         {gm + "abox_mod11_rotVary.fract", ""},
+        // Mandelbulber2's world-unit hit threshold (constant_DE_threshold, 1.95e-5 units) held in
+        // footprints at the target: the dIFS flower's petals as thin as Mandelbulber2's.
+        {gm + "DIFS BoxV1 flower.fract", ""},
+        // amazing_surf_mod2 in Julia mode, its derivative's 1 added without c (a derivative_tweak).
+        {gm + "asurf_julia.fract", ""},
     };
 }
 
