@@ -435,6 +435,15 @@ TEST(FractImport, ConstantHitThresholdIsWorldUnitsAtTheTarget) {
     const mb2::FractImport coarser = importText(scene + "DE_thresh 0,0004;\n");
     EXPECT_NEAR(coarser.preset.render.detail, 4.0 * r.preset.render.detail, 1e-12);
     EXPECT_DOUBLE_EQ(importText(scene + "DE_thresh 0,01;\n").preset.render.detail, 0.5 / 2.0);
+    // In iteration_threshold_mode Mandelbulber2's threshold is one footprint whatever it says.
+    const mb2::FractImport inside = importText(scene + "DE_thresh 0,0001;\niteration_threshold_mode true;\n");
+    EXPECT_DOUBLE_EQ(inside.preset.render.detail, 0.5 * 0.5);
+    EXPECT_FALSE(mentions(inside.approximated, "detail", "constant_DE_threshold"));
+    // A free-flying camera, its target on it, has no distance to hold it at: one footprint over
+    // detail_level.
+    std::string targetless = scene + "DE_thresh 0,0001;\n";
+    targetless.replace(targetless.find("target 0 0 0"), 12, "target 0 -2 0");
+    EXPECT_DOUBLE_EQ(importText(targetless).preset.render.detail, 0.5 / 2.0);
     // Without it, one footprint over detail_level.
     const mb2::FractImport perPixel = importText("[main_parameters]\nformula_1 8;\nDE_factor 0,5;\ndetail_level 2;\n");
     EXPECT_DOUBLE_EQ(perPixel.preset.render.detail, 0.5 / 2.0);

@@ -565,9 +565,9 @@ void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     for (int i = 0; i < 9; ++i) {
         const std::string n = std::to_string(i);
         if (!r.boolean("IFS_enabled_" + n)) continue;
-        // Each plane moves the point by 2 (length - distance) times its intensity toward it
-        // (2.20's KaleidoscopicIfsIteration, fractal_formulas.cpp): 1 reflects it, 0 leaves the
-        // point where the plane's rotation put it; a fraction between is refused.
+        // Where the point lies under a plane, the plane moves it along its normal by 2 (distance -
+        // length) times its intensity (2.20's KaleidoscopicIfsIteration, fractal_formulas.cpp): 1
+        // reflects it, 0 leaves it where the plane's rotation put it; a fraction between is refused.
         const double intensity = r.number("IFS_intensity_" + n);
         if (intensity != 0.0 && intensity != 1.0) {
             r.unsupported("IFS_intensity_" + n + " " + r.raw("IFS_intensity_" + n) +
@@ -3265,14 +3265,17 @@ FractImport importFract(const FractFile& file) {
     const bool logType = p.formula.estimator.block && p.formula.estimator.block->id != "escape_linear" &&
                          p.formula.estimator.block->membership == Membership::EscapeTime;
     importCamera(main, out);
-    p.render.detail =
-        std::clamp(p.formula.deFactor * mandelbulber2HitThreshold(main, p.camera, p.render, out.approximated) /
-                       (logType ? degree : 1.0),
-                   1e-3, 100.0);
-    // In iteration_threshold_mode the threshold is one footprint whatever detail_level says, and a
-    // step outside is at least (1.01 - 0.5) of it times DE_factor (CalcDistThresh, RayMarching):
-    // fraktal's step floor and bisection tolerance, 1.01 hit thresholds, is the same length.
-    if (p.formula.hitRule == HitRule::InsideOnly) p.render.detail = std::clamp(0.5 * p.formula.deFactor, 1e-3, 100.0);
+    // In iteration_threshold_mode the threshold is one footprint whatever detail_level and
+    // constant_DE_threshold say, and a step outside is at least (1.01 - 0.5) of it times DE_factor
+    // (CalcDistThresh, RayMarching): fraktal's step floor and bisection tolerance, 1.01 hit
+    // thresholds, is the same length.
+    if (p.formula.hitRule == HitRule::InsideOnly)
+        p.render.detail = std::clamp(0.5 * p.formula.deFactor, 1e-3, 100.0);
+    else
+        p.render.detail =
+            std::clamp(p.formula.deFactor * mandelbulber2HitThreshold(main, p.camera, p.render, out.approximated) /
+                           (logType ? degree : 1.0),
+                       1e-3, 100.0);
     importLook(file, main, out);
     return out;
 }
