@@ -2260,10 +2260,11 @@ TEST(FractImport, Quaternion4dFollowsMandelbulber2sOrbits) {
     expectExampleImports("quaternion4D_001.fract");
 }
 
-// AmazingSurfMod2Iteration and AboxModKaliV2Iteration (2.20, fractal_formulas.cpp) add 1 to the
-// running derivative themselves, aux.DE |m| + 1, so Mandelbulber2's derivative is the same whether c
-// is added, a Julia constant is, or nothing (dont_add_c): fraktal's add_c adds the 1 only with c,
-// and the other two take it from a derivative_tweak. abox_mod_kali_v2 at (0.3, -0.2, 0.1): the fold
+// AmazingSurfMod2Iteration, AboxMod11Iteration and AboxModKaliV2Iteration (2.20,
+// fractal_formulas.cpp) add 1 to the running derivative themselves, aux.DE |m| + 1, so
+// Mandelbulber2's derivative is the same whether c is added, a Julia constant is, or nothing
+// (dont_add_c): fraktal's add_c adds the 1 only with c, and the other two take it from a
+// derivative_tweak. abox_mod_kali_v2 at (0.3, -0.2, 0.1): the fold
 // 0.5 - |z| gives (0.2, 0.3, 0.4), r^2 0.29 inside the fold's shell, m = 1.5 / 0.29.
 TEST(FractImport, SurfAndKaliBoxAddTheirOneToTheDerivativeWithoutC) {
     const vec3 z(0.3, -0.2, 0.1), c(0.1, 0.2, 0.3);
@@ -2272,7 +2273,7 @@ TEST(FractImport, SurfAndKaliBoxAddTheirOneToTheDerivativeWithoutC) {
         for (const Node& n : r.preset.formula.nodes) n.block->apply(p, c, n.args());
         return p.w;
     };
-    for (const char* formula : {"135", "132"}) {
+    for (const char* formula : {"135", "132", "119"}) {
         SCOPED_TRACE(formula);
         const std::string slot = std::string("[main_parameters]\nformula_1 ") + formula + ";\n";
         const mb2::FractImport withC = importText(slot);

@@ -45,7 +45,7 @@ constexpr int kHypercomplexId = 4;
 constexpr int kAexionId = 19;
 // The formulas that carry the point's fourth coordinate through fraktal's loop (formulas/four_d.hpp).
 constexpr int kSierpinski4dId = 109, kMenger4dId = 111, kAbox4dId = 116, kQuaternion4dId = 79;
-constexpr int kAmazingSurfMod2Id = 132, kAboxModKaliV2Id = 135;
+constexpr int kAmazingSurfMod2Id = 132, kAboxModKaliV2Id = 135, kAboxMod11Id = 119;
 // Formulas whose 4D orbit a fraktal estimator runs whole (alone in a file).
 bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula == kAexionId; }
 // Formulas whose steps carry the fourth coordinate through fraktal's loop.
@@ -2989,16 +2989,21 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
             if (formula == kQuaternion4dId && !julia && factor.x != 0.0)
                 b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", -std::abs(factor.x))});
         }
-        // AmazingSurfMod2Iteration and AboxModKaliV2Iteration add their 1 to the derivative
-        // themselves (aux.DE = aux.DE |scale| + 1: Amazing Surf mod 2's in its scale's window S,
-        // unless its DE tweak replaces it), whether c is added or not; fraktal's add_c adds it only
-        // where it adds c, so a slot in Julia mode or without c takes it from a derivative_tweak.
+        // AmazingSurfMod2Iteration, AboxMod11Iteration and AboxModKaliV2Iteration add their 1 to
+        // the derivative themselves (aux.DE = aux.DE |scale| + 1: Amazing Surf mod 2's in its
+        // scale's window S, abox_mod11's in its window A, unless their DE tweak replaces it),
+        // whether c is added or not; fraktal's add_c adds it only where it adds c, so a slot in
+        // Julia mode or without c takes it from a derivative_tweak. abox_mod11's tweak scale
+        // (window C) multiplies that 1 after it, and the derivative_tweak comes at the slot's end:
+        // only where that scale is 1.
         if (!addC || julia) {
             auto addOne = [&] { b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", 1.0)}); };
+            const bool ownTweak = r.boolean("analyticDE_enabled_false");
             if (formula == kAboxModKaliV2Id) addOne();
-            if (formula == kAmazingSurfMod2Id && r.boolean("transf_function_enabledAy") &&
-                !r.boolean("analyticDE_enabled_false"))
+            if (formula == kAmazingSurfMod2Id && r.boolean("transf_function_enabledAy") && !ownTweak)
                 inWindow(r, b, "S", "S", addOne);
+            if (formula == kAboxMod11Id && r.number("transf_scaleG_1") == 1.0 && !ownTweak)
+                inWindow(r, b, "A", "A", addOne);
         }
         if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += runs;
         delta = delta || isDelta(info->de);
