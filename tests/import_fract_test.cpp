@@ -431,6 +431,37 @@ TEST(FractImport, HitThresholdIsDividedOnlyByPowersThatBoundTheirStretch) {
     }
 }
 
+// constant_DE_threshold: Mandelbulber2's hit threshold is DE_thresh in world units wherever the
+// point is (CalcDistThresh, render_worker.cpp); fraktal's, per pixel footprint, is taken so that it
+// is that length at the target, in an image of the file's size: here 1e-4 at 2 units from the
+// camera, a footprint there 2 x 2 tan(fovY / 2) / 600, times the step factor; the threshold follows
+// DE_thresh. Where that is coarser than a footprint over detail_level, the latter is kept.
+TEST(FractImport, ConstantHitThresholdIsWorldUnitsAtTheTarget) {
+    const std::string scene =
+        "[main_parameters]\nformula_1 8;\nDE_factor 0,5;\ndetail_level 2;\nimage_height 600;\n"
+        "camera 0 -2 0;\ntarget 0 0 0;\nconstant_DE_threshold true;\n";
+    const mb2::FractImport r = importText(scene + "DE_thresh 0,0001;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const double footprint = 2.0 * r.preset.camera.pixelAngle(600.0, r.preset.render.width);
+    EXPECT_NEAR(r.preset.render.detail, 0.5 * 1e-4 / footprint, 1e-12);
+    EXPECT_TRUE(mentions(r.approximated, "detail", "constant_DE_threshold"));
+    const mb2::FractImport coarser = importText(scene + "DE_thresh 0,0004;\n");
+    EXPECT_NEAR(coarser.preset.render.detail, 4.0 * r.preset.render.detail, 1e-12);
+    EXPECT_DOUBLE_EQ(importText(scene + "DE_thresh 0,01;\n").preset.render.detail, 0.5 / 2.0);
+    // In iteration_threshold_mode Mandelbulber2's threshold is one footprint whatever it says.
+    const mb2::FractImport inside = importText(scene + "DE_thresh 0,0001;\niteration_threshold_mode true;\n");
+    EXPECT_DOUBLE_EQ(inside.preset.render.detail, 0.5 * 0.5);
+    EXPECT_FALSE(mentions(inside.approximated, "detail", "constant_DE_threshold"));
+    // A free-flying camera, its target on it, has no distance to hold it at: one footprint over
+    // detail_level.
+    std::string targetless = scene + "DE_thresh 0,0001;\n";
+    targetless.replace(targetless.find("target 0 0 0"), 12, "target 0 -2 0");
+    EXPECT_DOUBLE_EQ(importText(targetless).preset.render.detail, 0.5 / 2.0);
+    // Without it, one footprint over detail_level.
+    const mb2::FractImport perPixel = importText("[main_parameters]\nformula_1 8;\nDE_factor 0,5;\ndetail_level 2;\n");
+    EXPECT_DOUBLE_EQ(perPixel.preset.render.detail, 0.5 / 2.0);
+}
+
 // Mandelbulber2's boolean mode (calculate_distance.cpp, nine_fractals.cpp): each enabled slot is
 // a fractal of its own, with its own Julia constant, constant factor and default bailout, placed
 // by formula_position, _rotation, _repeat and _scale (measured at M (p - position) / scale), and
@@ -1946,13 +1977,34 @@ TEST(FractImport, KaliMultiBenesiPwr2ScatorAndAxisSwapExamplesImport) {
     }
     const mb2::FractImport kali = mb2::importFract(mb2::loadFractFile(examples / "mandelbulb_kali_multi 001.fract"));
     EXPECT_TRUE(mentions(kali.unsupported, "slot 1 (mandelbulb_kali_multi)", "reordered anew"));
-    // Benesi's power-2 Mandelbulb maps here; the kaleidoscopic IFS beside it reflects partly.
-    const mb2::FractImport hybrid =
-        mb2::importFract(mb2::loadFractFile(examples / (sj + "hybrid 03 - christmas ornaments.fract")));
-    EXPECT_FALSE(hybrid.faithful());
-    for (const mb2::ImportItem& item : hybrid.unsupported)
-        EXPECT_TRUE(item.where == "slot 3 (kaleidoscopic_ifs)" && item.what.ends_with("a partial reflection"))
-            << item.text();
+    // Benesi's power-2 Mandelbulb maps here, beside a kaleidoscopic IFS whose planes of intensity 0
+    // turn the point and reflect nothing (FractImport.KaleidoscopicIfsReflectsByItsIntensity).
+    expectExampleImports(sj + "hybrid 03 - christmas ornaments.fract");
+}
+
+// The kaleidoscopic IFS against 2.20's KaleidoscopicIfsIteration (fractal_formulas.cpp) written
+// out: each enabled plane turns the point by its rotation (SetRotation3: here RotateZ of 30
+// degrees, x' = x cos - y sin) and then moves it by 2 (length - distance) times its intensity along
+// its normal where the length falls under the distance: plane 0 reflects (intensity 1, x about
+// 0.2), plane 1 only turns (intensity 0), plane 2 reflects (z about 0.1); then scale 2 about the
+// offset (1, 0, 0). An intensity between 0 and 1 is refused.
+TEST(FractImport, KaleidoscopicIfsReflectsByItsIntensity) {
+    const OrbitCase c{
+        "formula_1 10;\nN 6;\n[fractal_1]\nIFS_enabled_0 true;\nIFS_distance_0 0,2;\nIFS_enabled_1 true;\n"
+        "IFS_direction_1 0 1 0;\nIFS_rotations_1 30 0 0;\nIFS_intensity_1 0;\nIFS_enabled_2 true;\n"
+        "IFS_direction_2 0 0 1;\nIFS_distance_2 0,1;\n",
+        {"plane_fold", "rotate", "plane_fold", "scale"},
+        [](const vec3& v, const vec3&) {
+            vec3 z = v;
+            if (z.x < 0.2) z.x -= 2.0 * (z.x - 0.2);
+            const double s = std::sin(glm::radians(30.0)), co = std::cos(glm::radians(30.0));
+            z = vec3(z.x * co - z.y * s, z.x * s + z.y * co, z.z);
+            if (z.z < 0.1) z.z -= 2.0 * (z.z - 0.1);
+            return 2.0 * z - vec3(1.0, 0.0, 0.0);
+        }};
+    expectOrbitsFollowMandelbulber2(c);
+    expectRefused("formula_1 10;\n[fractal_1]\nIFS_enabled_0 true;\nIFS_intensity_0 0,5;\n",
+                  "slot 1 (kaleidoscopic_ifs)", "a partial reflection");
 }
 
 // The pseudo-Kleinian mod 1's general box fold (F: low (1, 0.8, 0.9), high (0.9, 1, 0.7), mirror 1,
@@ -2246,6 +2298,38 @@ TEST(FractImport, Quaternion4dFollowsMandelbulber2sOrbits) {
     for (const Node& n : withC.preset.formula.nodes) n.block->apply(q, vec3(0.1, 0.2, 0.3), n.args());
     EXPECT_NEAR(q.w, 1.5 * 2.0 * std::sqrt(0.5), 1e-12);
     expectExampleImports("quaternion4D_001.fract");
+}
+
+// AmazingSurfMod2Iteration, AboxMod11Iteration and AboxModKaliV2Iteration (2.20,
+// fractal_formulas.cpp) add 1 to the running derivative themselves, aux.DE |m| + 1, so
+// Mandelbulber2's derivative is the same whether c is added, a Julia constant is, or nothing
+// (dont_add_c): fraktal's add_c adds the 1 only with c, and the other two take it from a
+// derivative_tweak. abox_mod_kali_v2 at (0.3, -0.2, 0.1): the fold
+// 0.5 - |z| gives (0.2, 0.3, 0.4), r^2 0.29 inside the fold's shell, m = 1.5 / 0.29.
+TEST(FractImport, SurfAndKaliBoxAddTheirOneToTheDerivativeWithoutC) {
+    const vec3 z(0.3, -0.2, 0.1), c(0.1, 0.2, 0.3);
+    auto derivative = [&](const mb2::FractImport& r) {
+        P4 p{z, 1.5};
+        for (const Node& n : r.preset.formula.nodes) n.block->apply(p, c, n.args());
+        return p.w;
+    };
+    for (const char* formula : {"135", "132", "119"}) {
+        SCOPED_TRACE(formula);
+        const std::string slot = std::string("[main_parameters]\nformula_1 ") + formula + ";\n";
+        const mb2::FractImport withC = importText(slot);
+        const mb2::FractImport julia = importText(slot + "julia_mode true;\njulia_c 0,2 0,1 0;\n");
+        const mb2::FractImport none = importText(slot + "dont_add_c_constant_1 true;\n");
+        for (const mb2::FractImport* r : {&withC, &julia, &none})
+            ASSERT_TRUE(r->faithful()) << r->unsupported.front().text();
+        EXPECT_EQ(blockIds(withC.preset.formula).back(), "add_c");
+        EXPECT_EQ(blockIds(julia.preset.formula).back(), "derivative_tweak");
+        EXPECT_EQ(blockIds(none.preset.formula).back(), "derivative_tweak");
+        EXPECT_NEAR(derivative(julia), derivative(withC), 1e-12);
+        EXPECT_NEAR(derivative(none), derivative(withC), 1e-12);
+        if (formula == std::string("135")) {
+            EXPECT_NEAR(derivative(withC), 1.5 * 1.5 / 0.29 + 1.0, 1e-12);
+        }
+    }
 }
 
 // visual.bermarte's Mandelbulb against 2.20's MandelbulbBermarteIteration (fractal_formulas.cpp)
@@ -3380,6 +3464,11 @@ std::vector<Expected> fixedSet() {
          "mechanical-ribs.fract",
          ""},
         {gm + "abox_mod11_rotVary.fract", ""},
+        // Mandelbulber2's world-unit hit threshold (constant_DE_threshold, 1.95e-5 units) held in
+        // footprints at the target: the dIFS flower's petals as thin as Mandelbulber2's.
+        {gm + "DIFS BoxV1 flower.fract", ""},
+        // amazing_surf_mod2 in Julia mode, its derivative's 1 added without c (a derivative_tweak).
+        {gm + "asurf_julia.fract", ""},
     };
 }
 

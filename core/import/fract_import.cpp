@@ -45,6 +45,7 @@ constexpr int kHypercomplexId = 4;
 constexpr int kAexionId = 19;
 // The formulas that carry the point's fourth coordinate through fraktal's loop (formulas/four_d.hpp).
 constexpr int kSierpinski4dId = 109, kMenger4dId = 111, kAbox4dId = 116, kQuaternion4dId = 79;
+constexpr int kAmazingSurfMod2Id = 132, kAboxModKaliV2Id = 135, kAboxMod11Id = 119;
 // Formulas whose 4D orbit a fraktal estimator runs whole (alone in a file).
 bool runsOwnOrbit(int formula) { return formula == kHypercomplexId || formula == kAexionId; }
 // Formulas whose steps carry the fourth coordinate through fraktal's loop.
@@ -573,8 +574,17 @@ void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     for (int i = 0; i < 9; ++i) {
         const std::string n = std::to_string(i);
         if (!r.boolean("IFS_enabled_" + n)) continue;
-        r.mustBeDefault("IFS_intensity_" + n, "a partial reflection");
+        // Where the point lies under a plane, the plane moves it along its normal by 2 (distance -
+        // length) times its intensity (2.20's KaleidoscopicIfsIteration, fractal_formulas.cpp): 1
+        // reflects it, 0 leaves it where the plane's rotation put it; a fraction between is refused.
+        const double intensity = r.number("IFS_intensity_" + n);
+        if (intensity != 0.0 && intensity != 1.0) {
+            r.unsupported("IFS_intensity_" + n + " " + r.raw("IFS_intensity_" + n) +
+                          ": a partial reflection (fraktal reflects whole or not at all)");
+            continue;
+        }
         b.rotation(setRotation3(r.vector("IFS_rotations_" + n)));
+        if (intensity == 0.0) continue;
         const vec3 dir = r.vector("IFS_direction_" + n);
         if (length(dir) < 1e-12) {
             r.unsupported("IFS_direction_" + n + " 0 0 0: a plane without a normal");
@@ -2988,6 +2998,22 @@ Formula importFractal(const FractFile& file, Reader& main, const std::vector<int
             if (derivativeTakesNoOneForC(formula) && !julia && factor.x != 0.0)
                 b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", -std::abs(factor.x))});
         }
+        // AmazingSurfMod2Iteration, AboxMod11Iteration and AboxModKaliV2Iteration add their 1 to
+        // the derivative themselves (aux.DE = aux.DE |scale| + 1: Amazing Surf mod 2's in its
+        // scale's window S, abox_mod11's in its window A, unless their DE tweak replaces it),
+        // whether c is added or not; fraktal's add_c adds it only where it adds c, so a slot in
+        // Julia mode or without c takes it from a derivative_tweak. abox_mod11's tweak scale
+        // (window C) multiplies that 1 after it, and the derivative_tweak comes at the slot's end:
+        // only where that scale is 1.
+        if (!addC || julia) {
+            auto addOne = [&] { b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", 1.0)}); };
+            const bool ownTweak = r.boolean("analyticDE_enabled_false");
+            if (formula == kAboxModKaliV2Id) addOne();
+            if (formula == kAmazingSurfMod2Id && r.boolean("transf_function_enabledAy") && !ownTweak)
+                inWindow(r, b, "S", "S", addOne);
+            if (formula == kAboxMod11Id && r.number("transf_scaleG_1") == 1.0 && !ownTweak)
+                inWindow(r, b, "A", "A", addOne);
+        }
         if (info->de != Mb2De::None) deVotes[analyticOf(info->de)] += runs;
         delta = delta || isDelta(info->de);
         bailout = std::max(bailout, info->bailout);
@@ -3123,6 +3149,39 @@ void importBooleanFractals(const FractFile& file, Reader& main, const std::vecto
     }
 }
 
+// Mandelbulber2's hit threshold in fraktal's unit, pixel footprints (2.20's
+// cRenderWorker::CalcDistThresh in render_worker.cpp): a footprint at the point over detail_level,
+// or with constant_DE_threshold DE_thresh in world units wherever the point is. fraktal's threshold
+// is per footprint, so the world one is taken at the target's distance from the camera in an image
+// of the file's own size, and kept only where it is the finer of the two: at that size it is
+// Mandelbulber2's at the target, and in a smaller image (whose footprints are larger) it stays
+// finer than the per-footprint one there. A camera without a target keeps the per-footprint one.
+// Measured against Mandelbulber2 at 160x120 (bench/import/README.md): the world threshold lifts the
+// dIFS files that set it far under a footprint (DIFS BoxV1 flower 0.80 to 0.94: 1.95e-5 units,
+// 0.009 footprints at the target), and where it was the coarser it drew surfaces too thick
+// (TransfDIFSEllipsoid asurf 0.97 to 0.86, menger addConstCond 0.94 to 0.89).
+double mandelbulber2HitThreshold(Reader& main, const Camera& camera, const RenderSettings& render,
+                                 std::vector<ImportItem>& approximated) {
+    const double perFootprint = 1.0 / std::max(main.number("detail_level"), 1e-6);
+    if (!main.boolean("constant_DE_threshold")) return perFootprint;
+    // A free-flying camera's target sits on it (importCamera): no distance to take it at.
+    const vec3 camera3 = main.vector("camera");
+    const double targetDistance = length(main.vector("target") - camera3);
+    if (targetDistance < 1e-9 * std::max(1.0, length(camera3))) {
+        approximated.push_back({"detail",
+                                "constant_DE_threshold: a hit threshold in world units, with no target to "
+                                "hold it at; fraktal's is a footprint over detail_level"});
+        return perFootprint;
+    }
+    const double atTarget =
+        main.number("DE_thresh") / (targetDistance * camera.pixelAngle(render.height, render.width));
+    approximated.push_back({"detail", "constant_DE_threshold: the hit threshold of " + fmt(main.number("DE_thresh")) +
+                                          " world units held in pixel footprints as at the target, " +
+                                          fmt(targetDistance) + " from the camera (" + fmt(atTarget) +
+                                          "), where finer than a footprint over detail_level"});
+    return std::min(atTarget, perFootprint);
+}
+
 }  // namespace
 
 FractImport importFract(const FractFile& file) {
@@ -3195,10 +3254,6 @@ FractImport importFract(const FractFile& file) {
         p.formula.hitRule = HitRule::InsideOnly;
     }
     importObjects(file, main, out);
-    if (main.boolean("constant_DE_threshold"))
-        out.approximated.push_back({"detail",
-                                    "constant_DE_threshold: a hit threshold in world units; fraktal's is "
-                                    "per pixel footprint"});
 
     // ---- Image, camera, look ----
     p.render.width = std::clamp(main.integer("image_width"), 16, 16384);
@@ -3237,13 +3292,18 @@ FractImport importFract(const FractFile& file) {
     }
     const bool logType = p.formula.estimator.block && p.formula.estimator.block->id != "escape_linear" &&
                          p.formula.estimator.block->membership == Membership::EscapeTime;
-    p.render.detail = std::clamp(
-        p.formula.deFactor / std::max(main.number("detail_level"), 1e-6) / (logType ? degree : 1.0), 1e-3, 100.0);
-    // In iteration_threshold_mode the threshold is one footprint whatever detail_level says, and a
-    // step outside is at least (1.01 - 0.5) of it times DE_factor (CalcDistThresh, RayMarching):
-    // fraktal's step floor and bisection tolerance, 1.01 hit thresholds, is the same length.
-    if (p.formula.hitRule == HitRule::InsideOnly) p.render.detail = std::clamp(0.5 * p.formula.deFactor, 1e-3, 100.0);
     importCamera(main, out);
+    // In iteration_threshold_mode the threshold is one footprint whatever detail_level and
+    // constant_DE_threshold say, and a step outside is at least (1.01 - 0.5) of it times DE_factor
+    // (CalcDistThresh, RayMarching): fraktal's step floor and bisection tolerance, 1.01 hit
+    // thresholds, is the same length.
+    if (p.formula.hitRule == HitRule::InsideOnly)
+        p.render.detail = std::clamp(0.5 * p.formula.deFactor, 1e-3, 100.0);
+    else
+        p.render.detail =
+            std::clamp(p.formula.deFactor * mandelbulber2HitThreshold(main, p.camera, p.render, out.approximated) /
+                           (logType ? degree : 1.0),
+                       1e-3, 100.0);
     importLook(file, main, out);
     return out;
 }
