@@ -11,7 +11,10 @@
 # - the Scale slider dragged by hand: the value moves, one undo step, and the object in the
 #   viewport changes with it;
 # - F12, a file typed, Render: the job ends Done naming two files that exist; the EXR carries the
-#   edited preset (its header), whose Scale is the dragged value, and the PNG shows the object.
+#   edited preset (its header), whose Scale is the dragged value, and the PNG shows the object;
+# - the Formula panel's "Frag preset" combo lists the frag's #presets with Default applied; its
+#   row "Twisted" clicked: that preset's values (Twist on, Iterations, Angle) and its camera (Eye)
+#   are the document's, one undo step, and Ctrl+Z takes the values back.
 # X test tools cannot drag files, so the drop goes through --replay-drops, which hands the path to
 # the window's GLFW drop callback, the function a real drop calls.
 # Usage: editor_frag_story_xvfb_test.sh FRAKTAL PRESET_DIR FRAG OUT_DIR
@@ -115,6 +118,29 @@ echo "export: $(ex status): $(ex statusText)"
 [ "$(ex status)" = done ] || fail "the export ended $(ex status): $(ex statusText)"
 case "$(ex statusText)" in "Done: $still.exr and $still.png"*) ;; *) fail "the Done line is '$(ex statusText)'" ;; esac
 [ -f "$still.exr" ] && [ -f "$still.png" ] || fail "the files it names are not there"
+
+# The frag's presets: the combo lists them, Default applied; "Twisted" picked from it.
+xdotool key Escape
+wait_frames 3
+[ "$(q '.fragPresets.names | join(",")')" = "$(sed -n 's/^#preset //p' "$frag" | paste -sd,)" ] ||
+    fail "the combo lists '$(q '.fragPresets.names | join(",")')', the frag's presets are $(sed -n 's/^#preset //p' "$frag" | paste -sd,)"
+[ "$(q .fragPresets.applied)" = Default ] || fail "the preset applied on opening is '$(q .fragPresets.applied)'"
+twisted_row=$(sed -n 's/^#preset //p' "$frag" | grep -n -x Twisted | cut -d: -f1)
+undo_before=$(q .undoDepth)
+pick $((twisted_row - 1)) "$(q '.widgets["combo:Frag preset"] | tojson')"
+wait_for .fragPresets.applied Twisted
+twisted_value() { sed -n "/^#preset Twisted/,/^#endpreset/s/^$1 = \([-0-9.,a-z]*\).*/\1/p" "$frag"; }
+echo "after picking Twisted: $(q .status.text); Twist $(param Twist), Iterations $(param Iterations), Angle $(param Angle); camera $(camera)"
+[ "$(q .fragPresets.applied)" = Twisted ] || fail "picking Twisted left '$(q .fragPresets.applied)' applied"
+case "$(param Twist)" in 1 | true) ;; *) fail "Twisted sets Twist on; it is $(param Twist)" ;; esac
+check "$(param Iterations) == $(twisted_value Iterations)" || fail "Iterations is $(param Iterations), Twisted says $(twisted_value Iterations)"
+check "$(param Angle) == $(twisted_value Angle)" || fail "Angle is $(param Angle), Twisted says $(twisted_value Angle)"
+[ "$(camera | awk '{ printf "%g,%g,%g", $1, $2, $3 }')" = "$(twisted_value Eye)" ] || fail "the camera is at $(camera), Twisted's Eye is $(twisted_value Eye)"
+[ "$(q .undoDepth)" = $((undo_before + 1)) ] || fail "the preset made $(($(q .undoDepth) - undo_before)) undo steps"
+press_keys ctrl z
+wait_frames 3
+case "$(param Twist)" in 0 | false) true ;; *) false ;; esac && check "$(param Iterations) == $(preset_value Iterations)" ||
+    fail "Ctrl+Z left Twist $(param Twist), Iterations $(param Iterations)"
 stop
 cp "$still.png" "$out/frag_export.png"
 o1=$(object_pixels "$still.png")

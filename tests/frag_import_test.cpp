@@ -180,6 +180,23 @@ TEST(FragImport, PresetAndCameraFollowTheFragsModel) {
     }
 }
 
+// The presets the editor offers: every #preset of the frag once, in file order, and the one the
+// import applied (FragM's choice by default, else the one asked for).
+TEST(FragImport, ListsThePresetsItCanApply) {
+    const ImportedScene byDefault = importFrag("menger.frag", {.measure = false});
+    EXPECT_EQ(byDefault.presetChoices, (std::vector<std::string>{"Default", "Twisted"}));
+    EXPECT_EQ(byDefault.presetUsed, "Default");
+    const ImportedScene twisted = importFrag("menger.frag", {.measure = false, .fragPreset = "Twisted"});
+    EXPECT_EQ(twisted.presetChoices, byDefault.presetChoices);
+    EXPECT_EQ(twisted.presetUsed, "Twisted");
+    EXPECT_EQ(twisted.preset.camera.position, vec3(0.0, 0.0, 5.0));
+    // FragM applies the first preset, in sorted order, named like "default".
+    const ImportedScene sorted =
+        importSceneFile(test::sourceDir() / "tests/data/frag/box_fold.frag", {.lenient = true, .measure = false});
+    EXPECT_EQ(sorted.presetChoices, (std::vector<std::string>{"Default", "A default of sorts"}));
+    EXPECT_EQ(sorted.presetUsed, "A default of sorts");
+}
+
 TEST(FragImport, PresetRoundTripsExactly) {
     for (const char* name : {"menger.frag", "annotations.frag", "init_bulb.frag"}) {
         const Preset p = importFrag(name).preset;

@@ -223,6 +223,7 @@ std::string stateJson(const EditorState& s, int frame, const std::string& compil
     j["exportDialog"] = exportJson(s);
     j["meshExportDialog"] = meshExportJson(s);
     j["document"] = json::parse(fingerprint(s.doc));
+    j["fragPresets"] = {{"names", s.fragPresets.names}, {"applied", s.fragPresets.applied}};
     // Text cut by the edge of its window, cell or box this frame (widgets/text_fit.hpp): the
     // layout tests hold it empty at the default window sizes.
     json clipped = json::array();

@@ -160,6 +160,11 @@ ImportedScene importFragScene(const std::filesystem::path& path, const SceneImpo
     ImportedScene scene;
     for (const frag::ImportItem& item : result.unsupported) scene.unsupported.push_back(item.text());
     for (const frag::ImportItem& item : result.approximated) scene.approximated.push_back(item.text());
+    for (const frag::FragPreset& p : file.presets)
+        if (!p.keyFrame() &&
+            std::find(scene.presetChoices.begin(), scene.presetChoices.end(), p.name) == scene.presetChoices.end())
+            scene.presetChoices.push_back(p.name);
+    scene.presetUsed = result.presetUsed;
     refuseUnlessLenient(path, scene, options);
     result.preset.name = path.stem().string();
     measureFragStep(result, scene, options);

@@ -40,6 +40,10 @@ struct ImportedScene {
     Preset preset;
     std::vector<std::string> unsupported;   // "slot 2 (mandelbulb_power2): ..." (lenient only)
     std::vector<std::string> approximated;  // what only looks different
+    // A .frag: the #preset blocks one can apply (FragM's preset list: every named preset of the
+    // file and its includes, once each, keyframes left out), and the one this import applied.
+    std::vector<std::string> presetChoices = {};
+    std::string presetUsed = {};
 };
 
 // Whether the file is opened by import rather than as a preset (by its extension: .fract, .frag).

@@ -10,6 +10,7 @@
 
 #include "app/editor/document/formula_edits.hpp"
 #include "app/editor/panels/panels.hpp"
+#include "app/editor/state/actions.hpp"
 #include "app/editor/timeline/timeline_panel.hpp"
 #include "app/editor/widgets/node_list_widgets.hpp"
 #include "app/editor/widgets/param_widgets.hpp"
@@ -296,6 +297,24 @@ void hitRuleCheckbox(EditorState& s, HitRule& hitRule, HitRule rule, const char*
 
 }  // namespace
 
+// An opened frag's #presets, as FragM lists them: choosing one applies its values (the DE's
+// parameters, the camera, the raytracer's settings) as one undo step.
+void fragPresetCombo(EditorState& s) {
+    const FragPresets& presets = s.fragPresets;
+    const char* shown = presets.applied.empty() ? "(none)" : presets.applied.c_str();
+    std::string chosen;
+    if (ImGui::BeginCombo("Frag preset", shown)) {
+        for (const std::string& name : presets.names)
+            if (ImGui::Selectable(name.c_str(), name == presets.applied)) chosen = name;
+        ImGui::EndCombo();
+    }
+    noteWidgetRect(s.layout, "combo:Frag preset");
+    helpMarker(
+        "The frag's own #preset blocks: choosing one sets the values it holds (parameters, camera, "
+        "lights), as Fragmentarium does.");
+    if (!chosen.empty()) applyFragPreset(s, chosen);
+}
+
 void beginFormulaWindow(EditorState& s) { beginSideColumnWindow(s, "Formula", &s.panels.formula, true); }
 
 void drawFormulaPanel(EditorState& s, const ViewportView& v) {
@@ -367,6 +386,8 @@ void drawFormulaPanel(EditorState& s, const ViewportView& v) {
         fitFormulaAfterEdit(s.doc.preset);
     }
     s.selectedNode = std::clamp(s.selectedNode, 0, int(f.nodes.size()));
+    // A frag's own presets, by its code's row (which holds their values).
+    if (wholeDE && !s.fragPresets.names.empty()) fragPresetCombo(s);
     // Under the list the artist just edited, above the parameters.
     slowStackNotice(s);
 

@@ -12,6 +12,7 @@
 #include "core/atomic_file.hpp"
 #include "core/plane/plane_still.hpp"
 #include "core/preset.hpp"
+#include "core/safe_step.hpp"
 #include "core/scene/scene_import.hpp"
 
 namespace fraktal::editor {
@@ -34,6 +35,7 @@ void adoptDocument(EditorState& s, Document d, const fs::path& path) {
     s.stepFactor = AutoStepFactor::adopting(s.doc.preset.formula);
     s.slowStack = SlowStackAdvice{};
     s.planeSelection = {};
+    s.fragPresets = {};
     if (s.doc.plane) s.planeHome = s.doc.plane->view;
     clampSelection(s);
 }
@@ -151,6 +153,7 @@ bool openImportedScene(EditorState& s, const fs::path& file) {
     d.preset = std::move(scene.preset);
     adoptDocument(s, std::move(d), fs::path());
     s.stepFactor = AutoStepFactor{};
+    if (!scene.presetChoices.empty()) s.fragPresets = {file, scene.presetChoices, scene.presetUsed};
     rememberRecent(s, file);
     std::string status = "Imported " + file.filename().string() + " (" + importedSceneProgram(file) + ")";
     if (!scene.unsupported.empty()) {
@@ -163,6 +166,26 @@ bool openImportedScene(EditorState& s, const fs::path& file) {
     }
     setStatus(s, status, !scene.unsupported.empty());
     return true;
+}
+
+bool applyFragPreset(EditorState& s, const std::string& name) {
+    try {
+        Preset next =
+            importSceneFile(s.fragPresets.file, {.lenient = true, .measure = false, .fragPreset = name}).preset;
+        const Formula& now = s.doc.preset.formula;
+        if (stepFactorMeasured(now) && stepFactorTag(next.formula) == now.deFactorMeasuredFor) {
+            next.formula.deFactor = now.deFactor;
+            next.formula.deFactorMeasuredFor = now.deFactorMeasuredFor;
+        }
+        s.doc.preset = std::move(next);
+        s.fragPresets.applied = name;
+        s.history.commit(s.doc);
+        setStatus(s, "Applied the preset " + name + " of " + s.fragPresets.file.filename().string());
+        return true;
+    } catch (const std::exception& e) {
+        setStatus(s, e.what(), true);
+        return false;
+    }
 }
 
 bool openDocument(EditorState& s, const fs::path& file) {

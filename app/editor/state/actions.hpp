@@ -16,6 +16,11 @@ void newPlaneDocument(EditorState& s);
 // Loads a preset (.json, 3D or 2D) or the preset embedded in an exported EXR (3D or 2D still).
 // False on error (shown).
 bool openDocument(EditorState& s, const std::filesystem::path& file);
+// Applies the opened frag's #preset `name` as FragM does: the frag is imported again with it and
+// its values (the DE's parameters, the camera, the raytracer's settings) replace the document's,
+// one undo step; the step factor the editor measured for the DE is kept (a preset's FudgeFactor is
+// no measurement). False, with the reason on the status line, where the frag no longer imports.
+bool applyFragPreset(EditorState& s, const std::string& name);
 // A file dropped on the window: opened (asking about unsaved changes first) when it is a preset
 // or an EXR with a fraktal preset in its header; anything else is refused with a message naming
 // the file and the reason, and changes nothing.

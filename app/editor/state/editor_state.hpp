@@ -124,6 +124,14 @@ struct StatusLine {
     double until = 0.0;  // glfwGetTime() at which it fades
 };
 
+// An opened frag's #presets, FragM's preset list: the Formula panel offers them, and choosing one
+// imports the frag again with it (applyFragPreset). Empty for any other document.
+struct FragPresets {
+    std::filesystem::path file;
+    std::vector<std::string> names;
+    std::string applied;  // the preset the document's values came from
+};
+
 // Which node of a 2D formula the Formula panel has selected: a start node, a loop node or the
 // estimator (index unused).
 enum class PlaneList { Start, Loop, Estimator };
@@ -157,6 +165,7 @@ struct EditorState {
     ExportJob exportJob;
     MeshExportJob meshExportJob;
     StatusLine status;
+    FragPresets fragPresets;
     int selectedNode = 0;           // formula.nodes.size() selects the estimator
     PlaneSelection planeSelection;  // the same for a 2D document
     PlaneViewRect planeHome;        // the 2D view as opened: "reset view" returns to it
