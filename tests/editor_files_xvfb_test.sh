@@ -16,15 +16,6 @@ fraktal=$1
 presets=$(cd "$2" && pwd)
 bad=$3
 
-drops="$home/drops"
-# drop FILE...: the editor takes the list on its next frame (written whole, then renamed).
-drop() {
-    printf '%s\n' "$@" >"$drops.tmp"
-    mv "$drops.tmp" "$drops"
-    tries=0
-    while [ -f "$drops" ] && [ $tries -lt 100 ]; do sleep 0.1; tries=$((tries + 1)); done
-    wait_frames 2
-}
 snapshot() { jq -c '[.document, .undoDepth, .redoDepth, .undoLabel, .title]' "$state"; }
 
 echo "plain text, not a preset" >"$home/notes.txt"

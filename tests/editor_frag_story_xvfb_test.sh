@@ -26,14 +26,6 @@ frag=$(cd "$(dirname "$3")" && pwd)/$(basename "$3")
 out=$4
 mkdir -p "$out"
 
-drops="$home/drops"
-drop() {
-    printf '%s\n' "$@" >"$drops.tmp"
-    mv "$drops.tmp" "$drops"
-    tries=0
-    while [ -f "$drops" ] && [ $tries -lt 100 ]; do sleep 0.1; tries=$((tries + 1)); done
-    wait_frames 2
-}
 ex() { q ".exportDialog.$1"; }
 # The viewport's pixels as the screen shows them.
 grab_viewport() {

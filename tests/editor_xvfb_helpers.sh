@@ -23,6 +23,17 @@ failures=0
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 q() { jq -r "$1" "$state"; }
+# Drops: X test tools cannot drag files, so a story starts the editor with --replay-drops "$drops",
+# which hands the paths listed there to the window's GLFW drop callback, the function a real drop
+# calls. drop FILE...: the editor takes the list on its next frame (written whole, then renamed).
+drops="$home/drops"
+drop() {
+    printf '%s\n' "$@" >"$drops.tmp"
+    mv "$drops.tmp" "$drops"
+    tries=0
+    while [ -f "$drops" ] && [ $tries -lt 100 ]; do sleep 0.1; tries=$((tries + 1)); done
+    wait_frames 2
+}
 # The editor's tick: the frame count, the window events it holds for later frames and whether the
 # view settled, from the line it writes beside the state file every frame (frameTickLine in
 # app/editor/state_dump.hpp), read by the shell itself: the polls below run ten times a second, and

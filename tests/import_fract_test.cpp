@@ -394,11 +394,6 @@ TEST(FractImport, PrimitiveTakesItsMaterialsSurfaceColour) {
     EXPECT_TRUE(mentions(palette.approximated, "primitive sphere 1", "palette"));
 }
 
-// The hit threshold: one pixel footprint over detail_level, times the step factor (fraktal's
-// threshold applies to the scaled estimate), divided by the largest power only where that power
-// is a spherical one or the Bristorbrot, whose derivatives bound a stretch that Mandelbulber2's
-// leaves out; the other powers keep Mandelbulber2's threshold (bench/import/README.md: riemann_sphere_msltoe_v2
-// 0.79 divided, 0.97 not).
 // Mandelbulber2 makes a pixel of its own rays alone (a box); the import keeps that footprint with
 // the reconstruction filter's narrowest radius, where a preset of fraktal's own keeps the default.
 TEST(FractImport, PixelsKeepMandelbulber2sFootprint) {
@@ -408,6 +403,11 @@ TEST(FractImport, PixelsKeepMandelbulber2sFootprint) {
     EXPECT_GT(Preset{}.render.filterRadius, 0.5);
 }
 
+// The hit threshold: one pixel footprint over detail_level, times the step factor (fraktal's
+// threshold applies to the scaled estimate), divided by the largest power only where that power
+// is a spherical one or the Bristorbrot, whose derivatives bound a stretch that Mandelbulber2's
+// leaves out; the other powers keep Mandelbulber2's threshold (bench/import/README.md: riemann_sphere_msltoe_v2
+// 0.79 divided, 0.97 not).
 TEST(FractImport, HitThresholdIsDividedOnlyByPowersThatBoundTheirStretch) {
     const std::string look = "DE_factor 0,5;\ndetail_level 2;\n";
     const mb2::FractImport bulb = importText("[main_parameters]\nformula_1 2;\n" + look + "[fractal_1]\npower 9;\n");
