@@ -51,6 +51,7 @@ TEST(EditorAutosave, CrashThenRestartOffersTheAutosavedDocumentCleanExitDoesNot)
     autosaveTick(first, doc, original, /*dirty=*/true, 30.0);
     EXPECT_FALSE(fs::exists(first.paths.recovery)) << "not a minute yet";
     autosaveTick(first, doc, original, true, 61.0);
+    finishAutosave(first);  // written on a thread of its own
     ASSERT_TRUE(fs::exists(first.paths.recovery)) << first.error;
     abandonSession(first);  // the crash: lock released, files left
 

@@ -96,5 +96,47 @@ TEST(EditorCompile, StructureEditsCompileOnASharedContextInTheBackground) {
     EXPECT_EQ(readDisplay(background), good);
 }
 
+// A grid made ahead on the worker for a size the viewport has left is still handed over, so that
+// the caller frees it (about 90 MB at 690x520 on llvmpipe), and the newer request stands: the next
+// grid handed over is of the newer size.
+TEST(EditorCompile, AGridOfASizeAskedForBeforeIsHandedOverAndTheNewerRequestStands) {
+    gl::HeadlessContext& context = test::glContext();
+    auto shared = context.createShared();
+    BackgroundCompiler compiler([&] { shared->bind(); }, [&] { shared->unbind(); });
+    using GridSize = BackgroundCompiler::GridSize;
+    const auto takeWithin = [&](std::chrono::seconds limit) {
+        const auto deadline = std::chrono::steady_clock::now() + limit;
+        for (;;) {
+            if (std::unique_ptr<viewport::MarchState> grid = compiler.takeGrid()) return grid;
+            if (std::chrono::steady_clock::now() > deadline) return std::unique_ptr<viewport::MarchState>();
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+    };
+    const GridSize first{64, 40, 8}, second{96, 60, 8};
+    EXPECT_EQ(compiler.takeGrid(), nullptr) << "a grid before any was asked for";
+    compiler.requestGrid(first);
+    std::unique_ptr<viewport::MarchState> made = takeWithin(std::chrono::seconds(30));
+    ASSERT_NE(made, nullptr) << "the worker made no grid";
+    EXPECT_EQ((GridSize{made->width(), made->height(), made->coneTile()}), first);
+
+    // The window changes size while a grid is made (a large one, under way after a few
+    // milliseconds): every grid made comes out, the old size's for its taker to free, and the
+    // newer size's follows.
+    const GridSize large{1024, 768, 8};
+    compiler.requestGrid(large);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    compiler.requestGrid(second);
+    std::vector<GridSize> handed;
+    while (std::unique_ptr<viewport::MarchState> grid = takeWithin(std::chrono::seconds(30))) {
+        handed.push_back({grid->width(), grid->height(), grid->coneTile()});
+        if (handed.back() == second) break;
+    }
+    ASSERT_FALSE(handed.empty()) << "no grid after the resize";
+    EXPECT_EQ(handed.back(), second) << "the newer request was dropped with the older grid";
+    for (const GridSize& g : handed) EXPECT_TRUE(g == large || g == second) << g.width << "x" << g.height;
+    std::printf("grids handed over after the resize: %zu (the old size's made first: %s)\n", handed.size(),
+                handed.front() == large ? "yes" : "no");
+}
+
 }  // namespace
 }  // namespace fraktal::editor

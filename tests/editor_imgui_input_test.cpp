@@ -94,6 +94,41 @@ TEST(InputQueue, ACombinationIsOneFrame) {
     EXPECT_FALSE(q.pending());
 }
 
+// Every shortcut letter ImGui reads with Ctrl, released before or after Ctrl, and every way the
+// four events can be split between the polls of successive frames (X hands them over as they
+// arrive: Ctrl alone may reach one frame and the rest the next): some frame sees the letter down
+// with Ctrl, which is what ImGui needs to see the shortcut.
+TEST(InputQueue, ACtrlShortcutIsSeenHoweverItsEventsArriveAndInWhateverOrderTheyAreReleased) {
+    for (const int letter : {GLFW_KEY_A, GLFW_KEY_C, GLFW_KEY_V, GLFW_KEY_X, GLFW_KEY_Y, GLFW_KEY_Z})
+        for (const bool ctrlReleasedFirst : {false, true}) {
+            std::vector<InputEvent> events{key(GLFW_KEY_LEFT_CONTROL, true), key(letter, true)};
+            if (ctrlReleasedFirst)
+                events.insert(events.end(), {key(GLFW_KEY_LEFT_CONTROL, false), key(letter, false)});
+            else
+                events.insert(events.end(), {key(letter, false), key(GLFW_KEY_LEFT_CONTROL, false)});
+            // Which events arrive before each poll: bit i set, the poll after event i.
+            for (unsigned splits = 0; splits < (1u << events.size()); ++splits) {
+                InputQueue q;
+                bool seen = false;
+                for (size_t i = 0; i < events.size(); ++i) {
+                    q.push(events[i]);
+                    if (splits & (1u << i)) {
+                        q.takeFrame();
+                        seen |= q.keyDown(letter) && q.keyDown(GLFW_KEY_LEFT_CONTROL);
+                    }
+                }
+                for (int frames = 0; q.pending() && frames < 10; ++frames) {
+                    q.takeFrame();
+                    seen |= q.keyDown(letter) && q.keyDown(GLFW_KEY_LEFT_CONTROL);
+                }
+                EXPECT_FALSE(q.pending());
+                EXPECT_TRUE(seen) << "key " << letter << ", Ctrl released " << (ctrlReleasedFirst ? "first" : "last")
+                                  << ", polls after events " << splits << ": no frame saw the shortcut";
+                EXPECT_FALSE(q.keyDown(letter) || q.keyDown(GLFW_KEY_LEFT_CONTROL)) << "a key left down";
+            }
+        }
+}
+
 // During a camera gesture the window is drawn whole on its first frame (and kept), then from the
 // copy for kUiRefreshFrames - 1 frames, then whole again; a resize or the gesture's end draws it
 // whole at once, and a frame after the gesture never reuses the copy.

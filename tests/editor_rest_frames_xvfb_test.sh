@@ -6,8 +6,8 @@
 # bound leaves room for two stories side by side on two cores, as CI runs them, where the other
 # story of three Kleinian nodes measured 157 ms), from the editor's frame log. A click on the
 # Scene panel's Render tab during these frames acts. The view opens whole: its first rendered frame
-# is a small whole view (one slice, under full size), which the slices at full size then refine
-# (opened straight into slices, it showed black between the slices for seconds).
+# is a small whole view (one slice, at the smallest motion scale), which the slices at full size
+# then refine (opened straight into slices, it showed black between the slices for seconds).
 # Usage: editor_rest_frames_xvfb_test.sh FRAKTAL PRESET_DIR
 set -eu
 . "$(dirname "$0")/editor_xvfb_helpers.sh"
@@ -28,10 +28,13 @@ slices=$(jq -s "[$rest_filter | .slices] | max // 0" "$log")
 echo "at rest: frames $p50 ms (median), $p95 ms (95th percentile), up to $slices slices a view"
 check "$slices > 1" || fail "the frames at rest refined the whole view ($slices slice)"
 check "$p95 > 0 && $p95 < 300" || fail "the frames at rest took $p95 ms (95th percentile), over 300 ms"
+# At the smallest motion scale (a sixteenth by default): nothing rendered was measured yet. Frames that
+# rendered nothing while the programs compiled had raised it step by step (0.25-0.31 here, full size
+# with an empty shader cache in the viewport bench: 0.6-0.9 s).
 first=$(jq -s -c '[.[] | select(.render_ms > 0)][0] | [.scale, .slices]' "$log")
 echo "first rendered frame: [scale, slices] $first"
-[ "$(echo "$first" | jq '.[0] < 1 and .[1] == 1')" = true ] ||
-    fail "the view opened at [scale, slices] $first, not as a small whole view"
+[ "$(echo "$first" | jq '.[0] <= 0.0625 and .[1] == 1')" = true ] ||
+    fail "the view opened at [scale, slices] $first, not as a small whole view at the smallest scale"
 
 # A click during the sliced frames acts within a few frames.
 click tab:Render

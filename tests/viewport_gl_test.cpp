@@ -115,6 +115,29 @@ TEST(ViewportGL, ReprojectedImageConvergesToFreshRenderThroughWideProjections) {
     }
 }
 
+// The view distance in the viewport: its settled image is the CPU reference's with the same
+// limit (the Mandelbulb cut at the median depth of its hits), not the uncut one's.
+TEST(ViewportGL, CameraRaysEndAtTheViewDistanceAsInTheStill) {
+    test::glContext();
+    Scene s = loadScene(test::sourceDir() / "presets/mandelbulb.json");
+    RenderSettings r = s.render;
+    r.width = kW;
+    r.height = kH;
+    r.spp = 4;
+    const ImageStrip uncut =
+        renderReference(s.preset.formula, s.preset.camera, r, resolveShading(s.preset.shading, r, s.preset.formula));
+    const std::vector<float> depths = test::hitDepths(uncut);
+    ASSERT_GT(depths.size(), 100u);
+    s.render.viewDistance = r.viewDistance = depths[depths.size() / 2];
+    const ImageStrip cut =
+        renderReference(s.preset.formula, s.preset.camera, r, resolveShading(s.preset.shading, r, s.preset.formula));
+    const std::vector<float> settled = freshRender(s, s.preset.camera);
+    const double same = displayPsnr(settled, cut.rgba), other = displayPsnr(settled, uncut.rgba);
+    std::printf("settled viewport at view distance %.3f: against the cut CPU reference %.1f dB, the uncut %.1f dB\n",
+                r.viewDistance, same, other);
+    EXPECT_GT(same, other + 6.0);
+}
+
 // Where the moving viewport's centre rays found a different first surface than a fresh render's
 // ("different": more than 8 pixel footprints apart; hits on the same surface agree to within the
 // hit band). A hole: the fresh ray hit and the moving one escaped or hit farther, the failure a
@@ -266,6 +289,41 @@ TEST(ViewportGL, AFrameAtRestAfterMotionOnASmallerGridIsASlicedReset) {
         EXPECT_EQ(atRest.action, slices > 1 ? FrameAction::Reset : FrameAction::Reproject);
         EXPECT_EQ(atRest.slices, slices);
     }
+}
+
+// A grid made ahead (the editor's worker makes the full-size one, its memory written there) is the
+// one the first frame at its size uses, and the view it refines is the same to the bit as on a grid
+// the viewport made itself, from the small first picture on: a grid written whole (touchAll) holds
+// nothing a frame reads before writing it. One of another cone tile is not taken.
+TEST(ViewportGL, AGridMadeAheadRendersAsTheViewportsOwn) {
+    test::glContext();
+    const Scene s = loadScene(test::sourceDir() / "presets" / "mandelbulb.json");
+    std::vector<float> images[2], moves[2];
+    for (int ahead : {0, 1}) {
+        SCOPED_TRACE(ahead ? "made ahead" : "the viewport's own");
+        ViewportOptions options;
+        options.slices = 4;
+        Viewport v(options);
+        v.render(s.preset.formula, s.preset.camera, s.render, s.preset.shading, kW / 8, kH / 8);
+        EXPECT_FALSE(v.hasGrid(kW, kH));
+        if (ahead) {
+            v.adoptSpareGrid(std::make_unique<MarchState>(kW, kH, options.coneTile + 8));
+            EXPECT_FALSE(v.hasGrid(kW, kH)) << "a grid of another cone tile";
+            auto grid = std::make_unique<MarchState>(kW, kH, options.coneTile);
+            grid->touchAll();
+            v.adoptSpareGrid(std::move(grid));
+            EXPECT_TRUE(v.hasGrid(kW, kH));
+        }
+        renderUntilSettled(v, s.preset.formula, s.preset.camera, s.render, s.preset.shading, kW, kH, kMaxFrames);
+        images[ahead] = v.readImage();
+        // And a moved frame on it, which reprojects the settled view.
+        const Camera moved = cameraOnPath(s.preset.camera, CameraPath::Orbit, 1, 1.0);
+        EXPECT_EQ(v.render(s.preset.formula, moved, s.render, s.preset.shading, kW, kH).action, FrameAction::Reproject);
+        moves[ahead] = v.readImage();
+    }
+    ASSERT_FALSE(images[0].empty());
+    EXPECT_EQ(images[0], images[1]);
+    EXPECT_EQ(moves[0], moves[1]);
 }
 
 // Every colour the viewport holds, fresh or carried by reprojection, is the shading of a point on

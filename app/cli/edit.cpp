@@ -81,7 +81,8 @@ void addEditCommand(CLI::App& app, Action& action) {
         ->check(CLI::Range(0, 10000));
     cmd->add_option("--export-size", o->exportSize, "The export dialog's size at start, WIDTHxHEIGHT (Custom)");
     cmd->add_option("--frame-log", o->frameLog,
-                    "Append one JSON line per frame (frame time, viewport scale and size, camera) to this file");
+                    "Append one JSON line per frame (frame time and where it went, viewport scale and size, camera) "
+                    "to this file");
     cmd->add_option("--replay-drops", o->dropReplay,
                     "When this file appears, drop the files it lists (one a line) on the window, through the "
                     "window's drop callback, and remove it (for tests)");

@@ -406,7 +406,12 @@ int runEditor(const EditorOptions& o) {
                 status = 2;
                 s.quit = true;
             }
+        // The hooks after the last frame's log line (undo commit, autosave, title): counted into
+        // the next frame's phases, whose frame time they are part of.
+        double hooksMs = 0.0;
         while (!s.quit && !glfwWindowShouldClose(window)) {
+            FramePhases phases;
+            const double frameStart = glfwGetTime();
             // Idle when the image is converged and nothing happens: no busy loop on a laptop.
             const bool settled = s.doc.plane ? !planeViewport.refining() : viewport->stats().settled;
             const bool compiling = !s.doc.plane && viewport->stats().compiling;
@@ -424,6 +429,8 @@ int runEditor(const EditorOptions& o) {
                 s.dropped.clear();
             }
             s.browser.visible = false;
+            const double eventsEnd = glfwGetTime();
+            phases.eventsMs = (eventsEnd - frameStart) * 1000.0;
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
@@ -476,6 +483,8 @@ int runEditor(const EditorOptions& o) {
                 setStatus(s, clampMessage(*clamped), true);
 
             ImGui::Render();
+            const double panelsEnd = glfwGetTime();
+            phases.panelsMs = (panelsEnd - eventsEnd) * 1000.0;
             int fbW = 0, fbH = 0;
             glfwGetFramebufferSize(window, &fbW, &fbH);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -501,6 +510,8 @@ int runEditor(const EditorOptions& o) {
                 if (uiDraw == UiDraw::FullAndCapture) uiLayers.capture(fbW, fbH, viewportPixels);
             }
 
+            const double drawEnd = glfwGetTime();
+            phases.drawMs = (drawEnd - panelsEnd) * 1000.0;
             // Settled: the image on screen is this document's final one. Further rounds of the step
             // factor's measurement may still change the factor, and the image with it.
             const bool viewSettled =
@@ -510,7 +521,7 @@ int runEditor(const EditorOptions& o) {
                                                s.layout.viewportH};
                 if (!s.doc.plane)
                     logFrame(frameLog, glfwGetTime(), viewport->stats(), s.doc.preset.camera, viewportRect, uiDraw,
-                             s.browser.rendering);
+                             s.browser.rendering, phases);
             };
             // A scripted run counts frames the viewport drew, not frames spent waiting for a compile.
             if (o.frames > 0 && !(!s.doc.plane && viewport->stats().compiling) &&
@@ -532,6 +543,8 @@ int runEditor(const EditorOptions& o) {
                 break;
             }
             glfwSwapBuffers(window);
+            const double swapEnd = glfwGetTime();
+            phases.swapMs = (swapEnd - drawEnd) * 1000.0;
             ++framesDrawn;
             if (!o.stateFile.empty()) {
                 try {
@@ -546,7 +559,9 @@ int runEditor(const EditorOptions& o) {
                 }
             }
             if (o.slowFrameMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.slowFrameMs));
+            phases.afterMs = hooksMs + (glfwGetTime() - swapEnd) * 1000.0;
             logThisFrame();
+            const double hooksStart = glfwGetTime();
 
             // One undo step per finished gesture: commit only when nothing is being dragged.
             if (!ImGui::IsAnyItemActive() && !s.cameraGesture) s.history.commit(s.doc);
@@ -559,6 +574,7 @@ int runEditor(const EditorOptions& o) {
                 title = t;
                 glfwSetWindowTitle(window, title.c_str());
             }
+            hooksMs = (glfwGetTime() - hooksStart) * 1000.0;
         }
         closeFrameLog(frameLog);
         finishExport(s.exportJob);

@@ -25,9 +25,7 @@ FrameAction decideFrame(const FrameKey* previous, const FrameKey& current, bool 
     if (!previous) return FrameAction::Reset;
     const bool resized = previous->width != current.width || previous->height != current.height;
     if (previous->structure != current.structure || previous->values != current.values) return FrameAction::Reset;
-    if (!(previous->shading.s == current.shading.s) || previous->shading.detail != current.shading.detail ||
-        previous->shading.overRelaxation != current.shading.overRelaxation ||
-        previous->shading.maxStepGrowth != current.shading.maxStepGrowth || previous->maxSteps != current.maxSteps ||
+    if (!(previous->shading == current.shading) || previous->maxSteps != current.maxSteps ||
         !(previous->lens == current.lens))
         return FrameAction::Reset;
     if (previous->camera == current.camera) {

@@ -20,7 +20,7 @@ GLuint makeTexture(GLenum format, int width, int height) {
 
 }  // namespace
 
-MarchState::MarchState(int width, int height, int coneTile) : width_(width), height_(height) {
+MarchState::MarchState(int width, int height, int coneTile) : width_(width), height_(height), coneTile_(coneTile) {
     rayState = makeTexture(GL_RGBA32F, width, height);
     rayInfo = makeTexture(GL_RGBA32I, width, height);
     sampleColor = makeTexture(GL_RGBA32F, width, height);
@@ -56,6 +56,17 @@ MarchState::~MarchState() {
     const GLuint textures[] = {rayState,    rayInfo, sampleColor,    accum,       image,         centre,     cone,
                                colourPoint, shown,   samplePosition, reprojColor, reprojCarried, reprojDepth};
     glDeleteTextures(GLsizei(std::size(textures)), textures);
+}
+
+void MarchState::touchAll() const {
+    const float zero[4] = {0, 0, 0, 0};
+    for (GLuint texture :
+         {rayState, sampleColor, accum, image, colourPoint, shown, samplePosition, reprojColor, reprojCarried, cone})
+        glClearTexImage(texture, 0, texture == cone ? GL_RED : GL_RGBA, GL_FLOAT, zero);
+    const GLuint noKey[4] = {0, 0, 0, 0};
+    glClearTexImage(reprojDepth, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, noKey);
+    for (GLuint list : {shadeList, marchList})
+        glClearNamedBufferData(list, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, noKey);
 }
 
 void MarchState::bindLists() const {

@@ -17,6 +17,11 @@ class MarchState {
 
     int width() const { return width_; }
     int height() const { return height_; }
+    int coneTile() const { return coneTile_; }
+    // Writes every image and list once, so that their memory is in place: on llvmpipe a new
+    // 690x520 grid's first writes (page faults over about 90 MB) took 60 ms of the frame that made
+    // them. A grid made ahead on another context (the editor's worker) pays them there.
+    void touchAll() const;
     // The view the rays were last started for (viewport_common.glsl, GENERATION_SHIFT): a pixel
     // whose rayInfo and centre hold another is of an older view, not started yet. 0: none (a new
     // state's rays, cleared to 0).
@@ -59,7 +64,7 @@ class MarchState {
     GLuint marchList = 0;
 
    private:
-    int width_, height_;
+    int width_, height_, coneTile_;
 };
 
 }  // namespace fraktal::viewport

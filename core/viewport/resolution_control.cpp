@@ -32,10 +32,25 @@ double ResolutionController::next(bool changed, double lastFrameMs) {
     // frame, light scenes orbited on a loaded machine jumped from 0.19 to full size mid-drag: 650-700 ms frames.
     const double current = wasMoving ? scale_ : lastMotion;
     double chosen = current;
-    if (stepped < current)
+    // Lowered where the estimate says so, but not below a scale whose last frame held the target.
+    const bool heldTarget = wasMoving && lastFrameMs > 0.0 && lastFrameMs <= control_.targetMs;
+    if (stepped < current && !heldTarget)
         chosen = stepped;
     else if (stepped >= current + control_.step)
         chosen = std::min(current + control_.step, 1.0);
+    // The estimate bounds the pixels' part from above (frameMs / scale^2), so where a frame is
+    // mostly the editor's fixed work (a sixteenth of the size: 8 ms of fixed work and 1 of pixels)
+    // it held light scenes at the smallest scale. A frame under half the target probes a step up;
+    // a probe that went over the target waits kProbeWaitFrames before the next (a heavy scene does
+    // not swing between a short frame and one over the target).
+    const bool probeFailed = probed_ && wasMoving && lastFrameMs > control_.targetMs;
+    probeWait_ = probeFailed ? kProbeWaitFrames : std::max(probeWait_ - 1, 0);
+    probed_ = false;
+    if (chosen <= current && chosen < 1.0 && wasMoving && lastFrameMs > 0.0 && lastFrameMs < 0.5 * control_.targetMs &&
+        probeWait_ == 0) {
+        chosen = std::min(current + control_.step, 1.0);
+        probed_ = true;
+    }
     motionScale_ = chosen;
     return scale_ = chosen;
 }
@@ -54,12 +69,19 @@ void RestSlices::measure(const RestFrame& f) {
     if (fullSize && !f.newView) fixedMs_ = fixedMs_ < 0.0 ? f.renderMs : std::min(fixedMs_, f.renderMs);
     const double sliced = fullSize && fixedMs_ > 0.0 ? std::max(f.renderMs - fixedMs_, 0.0) : f.renderMs;
     const double whole = sliced * f.slices / (f.scale * f.scale);
-    if (f.newView) newViewMs_ = whole;
+    // Each estimate is the costliest of the recent frames, fading by half within a cycle of the
+    // slices (each slice comes once a cycle) or within about 7 frames, whichever is sooner: the
+    // slices of one view differ in cost (by +-40 % on kleinian.json at 64 slices), and an average
+    // let one cheap slice halve the next frame's slices, whose render then took up to 1.4 times
+    // the target. Fading over a whole cycle of 256 slices held a view that grew cheap at 256
+    // slices, and inverted_menger.json settled in 24 s instead of 8 s.
+    const double fade = std::min(0.9, std::pow(0.5, 1.0 / f.slices));
+    const auto recentMost = [whole, fade](double estimate) {
+        return estimate < 0.0 ? whole : std::max(whole, estimate * fade);
+    };
+    if (f.newView) newViewMs_ = recentMost(newViewMs_);
     if (!fullSize) return;
-    if (f.newView || viewMs_ < 0.0 || whole > viewMs_)
-        viewMs_ = whole;
-    else
-        viewMs_ = 0.5 * (viewMs_ + whole);
+    viewMs_ = f.newView ? whole : recentMost(viewMs_);
     otherMs_ = f.frameMs > f.renderMs ? f.frameMs - f.renderMs : 0.0;
     lastSlices_ = f.slices;
 }

@@ -16,10 +16,11 @@ namespace fraktal::viewport {
 
 struct ResolutionControl {
     double targetMs = 33.0;  // frame time to hold under motion; <= 0: always full resolution
-    // Never below this share of each side. An eighth: on a loaded 2-core machine (a 2-job build
-    // beside the editor) a quarter-size Mandelbulb orbit still missed the target by half
-    // (bench/viewport/README.md, "The editor under a person's hands").
-    double minScale = 0.125;
+    // Never below this share of each side. A sixteenth (one step): on a loaded 2-core machine (a
+    // 2-job build beside the editor) a quarter-size Mandelbulb orbit still missed the target by
+    // half (bench/viewport/README.md, "The editor under a person's hands"), and three Kleinian
+    // nodes took 150-230 ms a moving frame at an eighth.
+    double minScale = 1.0 / 16;
     double step = 1.0 / 16;  // scales are multiples of this (fewer distinct grids)
     int restFrames = 3;      // unchanged frames in a row before the view counts as at rest
 };
@@ -36,8 +37,8 @@ struct ResolutionControl {
 // on a loaded machine the other work alone can take most of the target, and each frame's other work then slows the
 // view's settling the more, the more slices. A new view (a reset: every ray starts from the camera, the costliest
 // frames) is sized from the last new view's cost, or gets the most slices when none was measured; a continued view from
-// its own frames, rising at once when a frame was over and falling through an average and by at most half a frame (its
-// rays finish, and the frames grow cheap). Pure logic, unit-tested (tests/resolution_control_test.cpp).
+// its own frames: the costliest of the recent ones, fading by half over a cycle of the slices, and by at most half a
+// frame (its rays finish, and the frames grow cheap). Pure logic, unit-tested (tests/resolution_control_test.cpp).
 struct RestFrame {
     bool newView = false;   // the frame started a new view (a reset)
     int slices = 1;         // it refined one slice of this many
@@ -105,6 +106,9 @@ class ResolutionController {
     double fullFrameMs_ = -1.0;   // estimated time of a full-resolution frame (< 0: none yet)
     double seededMs_ = -1.0;      // seedFullFrameMs's, until fullFrameMs_ is measured
     int framesUnchanged_ = 1000;  // at rest until the first change
+    static constexpr int kProbeWaitFrames = 30;
+    bool probed_ = false;  // the last scale was a probe a step above the estimate's
+    int probeWait_ = 0;    // frames until the next probe may come
 };
 
 }  // namespace fraktal::viewport

@@ -157,6 +157,17 @@ FrameStats Viewport::render(const Formula& formula, const Camera& camera, const 
     return stats;
 }
 
+bool Viewport::hasGrid(int width, int height) const {
+    const auto sized = [&](const std::unique_ptr<MarchState>& grid) {
+        return grid && grid->width() == width && grid->height() == height;
+    };
+    return sized(state_) || sized(spareGrid_);
+}
+
+void Viewport::adoptSpareGrid(std::unique_ptr<MarchState> grid) {
+    if (grid && grid->coneTile() == options_.coneTile) spareGrid_ = std::move(grid);
+}
+
 void Viewport::resampleInto(const MarchState& from, GLuint MarchState::*texture, const MarchState& to) {
     if (!resampleFramebuffers_[0]) glCreateFramebuffers(2, resampleFramebuffers_);
     glNamedFramebufferTexture(resampleFramebuffers_[0], GL_COLOR_ATTACHMENT0, from.*texture, 0);

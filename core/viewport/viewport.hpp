@@ -62,6 +62,12 @@ class Viewport {
     // scene::SceneRevision holds it) would compile first: the current programs were built for
     // another structure (or none yet).
     bool needsPrograms(const std::string& structure) const { return !programs_ || programs_->structure != structure; }
+    // Whether a grid of this size is here (the present one, or the spare one kept for it).
+    bool hasGrid(int width, int height) const;
+    // A grid made ahead (on a context sharing this one's objects, its commands complete), kept as
+    // the spare one until a frame at its size takes it. Dropped when its cone tile is not this
+    // viewport's.
+    void adoptSpareGrid(std::unique_ptr<MarchState> grid);
     // Programs compiled elsewhere, e.g. on a shared context in a background thread (the editor's
     // BackgroundCompiler), so that render() of their structure does not compile.
     void adoptPrograms(std::unique_ptr<ViewportPrograms> programs) { programs_ = std::move(programs); }

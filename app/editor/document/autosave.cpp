@@ -4,6 +4,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -112,9 +113,21 @@ bool beginSession(AutosaveState& s, const fs::path& configFolder, double now) {
     return true;
 }
 
+void finishAutosave(AutosaveState& s) {
+    if (!s.writing.valid()) return;
+    const std::string failure = s.writing.get();
+    if (failure.empty()) return;
+    s.error = failure;
+    s.recoveryFingerprint.clear();  // not in the file: the next tick tries again
+}
+
 void autosaveTick(AutosaveState& s, const Document& doc, const fs::path& originalFile, bool dirty, double now) {
     // While the restore prompt is open the old recovery file is still the user's to choose.
     if (!s.enabled || s.offer) return;
+    if (s.writing.valid()) {
+        if (s.writing.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+        finishAutosave(s);
+    }
     const std::string print = dirty ? fingerprint(doc) : std::string();
     switch (autosaveDecision(now, s.lastWrite, dirty, print, s.recoveryFingerprint)) {
         case AutosaveAction::Nothing: return;
@@ -127,7 +140,15 @@ void autosaveTick(AutosaveState& s, const Document& doc, const fs::path& origina
         case AutosaveAction::Write:
             s.lastWrite = now;
             try {
-                writeFileAtomically(s.paths.recovery, recoveryText(doc, originalFile));
+                s.writing =
+                    std::async(std::launch::async, [file = s.paths.recovery, text = recoveryText(doc, originalFile)] {
+                        try {
+                            writeFileAtomically(file, text);
+                            return std::string();
+                        } catch (const std::exception& e) {
+                            return std::string("autosave failed: ") + e.what();
+                        }
+                    });
                 s.recoveryFingerprint = print;
             } catch (const std::exception& e) {
                 s.error = std::string("autosave failed: ") + e.what();
@@ -151,6 +172,7 @@ std::optional<RecoveryOffer> answerRecovery(AutosaveState& s, bool restore) {
 }
 
 void endSession(AutosaveState& s) {
+    finishAutosave(s);
     if (!s.enabled) return;
     std::error_code ec;
     fs::remove(s.paths.recovery, ec);
@@ -163,6 +185,7 @@ void endSession(AutosaveState& s) {
 }
 
 void abandonSession(AutosaveState& s) {
+    finishAutosave(s);
     if (s.lockFd >= 0) ::close(s.lockFd);  // closing releases the flock
     s.lockFd = -1;
     s.enabled = false;

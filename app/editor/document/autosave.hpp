@@ -3,10 +3,12 @@
 // exit removes it and marks the session "clean"; so when the next start finds the recovery file
 // and a session marker that does not say "clean", the last session crashed (or was killed) and
 // the editor offers to restore it. An flock on "session.lock" makes a second editor running at
-// the same time leave the first one's files alone (it does not autosave).
+// the same time leave the first one's files alone (it does not autosave). The file is written off
+// the UI thread: its fsync held a frame for 100-150 ms when the disk was busy.
 #pragma once
 
 #include <filesystem>
+#include <future>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -57,21 +59,26 @@ struct AutosaveState {
     std::string recoveryFingerprint;     // fingerprint of what the recovery file holds ("" none)
     std::optional<RecoveryOffer> offer;  // found at start: the restore prompt shows it
     std::string error;                   // the last failure, for the status line
+    std::future<std::string> writing;    // the recovery file being written: its failure ("" none)
 };
 
 // Takes the lock, reads what the previous session left, and marks this one "running". Returns
 // false (autosave disabled, s.error says why) when another editor holds the lock or the folder is
 // not writable.
 bool beginSession(AutosaveState& s, const std::filesystem::path& configFolder, double now);
-// Writes or removes the recovery file per autosaveDecision; never throws (s.error).
+// Writes (on a thread of its own, one write at a time) or removes the recovery file per
+// autosaveDecision; never throws (s.error, once the write has ended).
 void autosaveTick(AutosaveState& s, const Document& doc, const std::filesystem::path& originalFile, bool dirty,
                   double now);
 // The user answered the restore prompt. Restoring keeps the recovery file (the restored document
 // has unsaved changes until the user saves it); declining deletes it.
 std::optional<RecoveryOffer> answerRecovery(AutosaveState& s, bool restore);
+// Waits for a write in flight and takes its failure into s.error.
+void finishAutosave(AutosaveState& s);
 // Clean exit: removes the recovery file, marks the session "clean" and releases the lock.
 void endSession(AutosaveState& s);
-// What a crash does: the lock goes, the files stay (for tests of the crash path).
+// What a crash does: the lock goes, the files stay (for tests of the crash path; a write in flight
+// ends first).
 void abandonSession(AutosaveState& s);
 
 }  // namespace fraktal::editor

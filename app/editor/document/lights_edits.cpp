@@ -99,7 +99,7 @@ std::optional<vec3> surfaceUnderCursor(const Formula& formula, const Camera& cam
     const ShadingParams params = resolveShading(shading, render, formula);
     const cpu::Scene scene{formula, params};
     double tStart = 0.0, tEnd = 0.0;
-    if (!cpu::clipToBound(scene, ro, rd, tStart, tEnd)) return std::nullopt;
+    if (!cpu::clipCameraRay(scene, ro, rd, tStart, tEnd)) return std::nullopt;
     if (formula.cpuEvaluable()) {
         // The viewport's own marcher and hit test (cpu_renderer.cpp), so the focus lands where the
         // image shows the surface.

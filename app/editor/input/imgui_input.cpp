@@ -7,6 +7,24 @@
 
 namespace fraktal::editor {
 
+namespace {
+
+bool isModifier(int key) {
+    switch (key) {
+        case GLFW_KEY_LEFT_CONTROL:
+        case GLFW_KEY_RIGHT_CONTROL:
+        case GLFW_KEY_LEFT_SHIFT:
+        case GLFW_KEY_RIGHT_SHIFT:
+        case GLFW_KEY_LEFT_ALT:
+        case GLFW_KEY_RIGHT_ALT:
+        case GLFW_KEY_LEFT_SUPER:
+        case GLFW_KEY_RIGHT_SUPER: return true;
+        default: return false;
+    }
+}
+
+}  // namespace
+
 bool InputQueue::imguiReads(int key) const {
     switch (key) {
         // The keys the GLFW backend maps into io.KeyMap, and the modifiers.
@@ -25,15 +43,7 @@ bool InputQueue::imguiReads(int key) const {
         case GLFW_KEY_SPACE:
         case GLFW_KEY_ENTER:
         case GLFW_KEY_ESCAPE:
-        case GLFW_KEY_KP_ENTER:
-        case GLFW_KEY_LEFT_CONTROL:
-        case GLFW_KEY_RIGHT_CONTROL:
-        case GLFW_KEY_LEFT_SHIFT:
-        case GLFW_KEY_RIGHT_SHIFT:
-        case GLFW_KEY_LEFT_ALT:
-        case GLFW_KEY_RIGHT_ALT:
-        case GLFW_KEY_LEFT_SUPER:
-        case GLFW_KEY_RIGHT_SUPER: return true;
+        case GLFW_KEY_KP_ENTER: return true;
         // Select all, copy, paste, cut, redo, undo: read with Ctrl (or Super) held.
         case GLFW_KEY_A:
         case GLFW_KEY_C:
@@ -43,7 +53,7 @@ bool InputQueue::imguiReads(int key) const {
         case GLFW_KEY_Z:
             return keyDown(GLFW_KEY_LEFT_CONTROL) || keyDown(GLFW_KEY_RIGHT_CONTROL) || keyDown(GLFW_KEY_LEFT_SUPER) ||
                    keyDown(GLFW_KEY_RIGHT_SUPER);
-        default: return false;
+        default: return isModifier(key);
     }
 }
 
@@ -76,10 +86,16 @@ void InputQueue::takeFrame() {
                     {e.down ? PointerEvent::Kind::Press : PointerEvent::Kind::Release, e.code, e.x, e.y, e.mods});
                 break;
             case InputEvent::Kind::Key:
-                if (imguiReads(e.code)) {
-                    if (std::find(keysChanged.begin(), keysChanged.end(), e.code) != keysChanged.end()) return;
-                    keysChanged.push_back(e.code);
-                }
+                // ImGui sees the keys as they are at the end of the poll, so a combination must
+                // end a frame whole. A key read this frame waits for the next however the
+                // modifiers changed since, and a modifier waits once a key it modifies changed:
+                // xdotool and some keyboards release Ctrl before A, and Ctrl+A would otherwise
+                // be A alone or no press at all.
+                if (std::find(keysChanged.begin(), keysChanged.end(), e.code) != keysChanged.end()) return;
+                if (isModifier(e.code) &&
+                    std::any_of(keysChanged.begin(), keysChanged.end(), [](int k) { return !isModifier(k); }))
+                    return;
+                if (imguiReads(e.code)) keysChanged.push_back(e.code);
                 if (e.code >= 0 && e.code < kKeys) keysDown_[size_t(e.code)] = e.down;
                 if (e.down) keyPresses_.push_back({e.code, e.mods});
                 break;

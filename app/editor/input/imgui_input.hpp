@@ -12,11 +12,12 @@
 //
 // So the editor queues the events in the order GLFW delivers them, and each frame takes those that
 // Dear ImGui can see in one poll: a run of cursor moves, or one change of the mouse buttons, never
-// both, and never two changes of a key ImGui reads (editing and navigation keys, modifiers, and
-// the letters of Ctrl+A/C/V/X/Y/Z while Ctrl is down); the rest waits for the next frame (the
-// editor polls instead of waiting while any do). Characters keep their place among the keys, so a
-// Backspace typed between two letters edits what it followed; a plain letter's own key state is
-// no reason to wait (ImGui reads its character). What a frame took is the state ImGui's io is
+// both, never two changes of a key ImGui reads (editing and navigation keys, modifiers, and the
+// letters of Ctrl+A/C/V/X/Y/Z while Ctrl is down), and no change of a modifier after a key it
+// modifies changed (Ctrl released before A would leave A alone); the rest waits for the next frame
+// (the editor polls instead of waiting while any do). Characters keep their place among the keys,
+// so a Backspace typed between two letters edits what it followed; a plain letter's own key state
+// is no reason to wait (ImGui reads its character). What a frame took is the state ImGui's io is
 // given after the backend's own poll, and the pointer events and key presses the editor's
 // viewport, shortcuts and dialogs handle that frame (editor.cpp).
 #pragma once

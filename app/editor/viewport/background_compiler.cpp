@@ -37,6 +37,26 @@ std::optional<BackgroundCompiler::Result> BackgroundCompiler::take(const std::st
     return result;
 }
 
+void BackgroundCompiler::requestGrid(const GridSize& size) {
+    {
+        std::lock_guard lock(mutex_);
+        if (size == gridRequested_) return;
+        gridRequested_ = size;
+        gridQueued_ = size;
+    }
+    wake_.notify_one();
+}
+
+std::unique_ptr<viewport::MarchState> BackgroundCompiler::takeGrid() {
+    std::lock_guard lock(mutex_);
+    if (!gridDone_) return nullptr;
+    // Taken: the viewport may need one of this size again after a resize. A grid of a size asked
+    // for before leaves the newer request standing.
+    if (GridSize{gridDone_->width(), gridDone_->height(), gridDone_->coneTile()} == gridRequested_)
+        gridRequested_ = GridSize{};
+    return std::move(gridDone_);
+}
+
 void BackgroundCompiler::work() {
     std::string unavailable;  // why this thread has no GL context (each request then fails with it)
     try {
@@ -46,8 +66,21 @@ void BackgroundCompiler::work() {
     }
     std::unique_lock lock(mutex_);
     for (;;) {
-        wake_.wait(lock, [this] { return stop_ || queued_; });
+        wake_.wait(lock, [this] { return stop_ || queued_ || gridQueued_; });
         if (stop_) break;
+        if (gridQueued_ && unavailable.empty()) {
+            const GridSize size = *gridQueued_;
+            gridQueued_.reset();
+            lock.unlock();
+            auto grid = std::make_unique<viewport::MarchState>(size.width, size.height, size.coneTile);
+            grid->touchAll();
+            glFinish();  // complete before the editor's context uses it
+            lock.lock();
+            gridDone_ = std::move(grid);  // replaces (deletes here) one not taken
+            continue;
+        }
+        gridQueued_.reset();
+        if (!queued_) continue;
         const Formula formula = std::move(*queued_);
         queued_.reset();
         lock.unlock();
@@ -68,6 +101,7 @@ void BackgroundCompiler::work() {
         done_ = std::move(result);
     }
     done_.reset();
+    gridDone_.reset();
     lock.unlock();
     if (unavailable.empty()) unbind_();
 }

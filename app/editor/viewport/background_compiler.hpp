@@ -2,6 +2,8 @@
 // structure are built on a worker thread whose GL context shares objects with the editor's (GL
 // programs are shared objects), so the window keeps drawing the last good image meanwhile. Only
 // the newest requested structure matters: requests made while one compiles replace the queued one.
+// The same worker makes the viewport's grid for a new size ahead (its memory written once there),
+// before any compile waiting: the first frame at full size after opening had spent 60 ms on it.
 //
 // The context is the caller's business (the editor makes a hidden GLFW window sharing its
 // context); this class only calls `bind` once on the worker before compiling and `unbind` when it
@@ -17,6 +19,7 @@
 #include <thread>
 
 #include "core/formula.hpp"
+#include "core/viewport/march_state.hpp"
 #include "core/viewport/viewport_programs.hpp"
 #include "core/viewport/warm_up.hpp"
 
@@ -43,6 +46,16 @@ class BackgroundCompiler {
     // The finished result for this structure, once (nullopt while it compiles or for another).
     std::optional<Result> take(const std::string& structure);
 
+    // A march grid of this size and cone tile, made on the worker unless it is the one asked for
+    // last; takeGrid hands over the last one made, whatever its size (null while none is), so
+    // that the caller frees one it no longer wants.
+    struct GridSize {
+        int width = 0, height = 0, coneTile = 0;
+        bool operator==(const GridSize&) const = default;
+    };
+    void requestGrid(const GridSize& size);
+    std::unique_ptr<viewport::MarchState> takeGrid();
+
    private:
     void work();
 
@@ -53,6 +66,9 @@ class BackgroundCompiler {
     std::optional<Formula> queued_;
     std::string requested_;  // the newest structure asked for
     std::optional<Result> done_;
+    std::optional<GridSize> gridQueued_;
+    GridSize gridRequested_;
+    std::unique_ptr<viewport::MarchState> gridDone_;
     bool stop_ = false;
     std::thread worker_;  // last: starts after every member above exists
 };

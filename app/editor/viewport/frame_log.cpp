@@ -14,7 +14,7 @@ void openFrameLog(FrameLog& log, const std::filesystem::path& path) {
 }
 
 void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camera& camera, const float viewport[4],
-              UiDraw ui, bool thumbnails) {
+              UiDraw ui, bool thumbnails, const FramePhases& phases) {
     if (!log.file) return;
     const double frameMs = log.lastFrameAt < 0.0 ? 0.0 : (now - log.lastFrameAt) * 1000.0;
     log.lastFrameAt = now;
@@ -31,6 +31,12 @@ void logFrame(FrameLog& log, double now, const ViewportStats& stats, const Camer
                                  {"action", stats.action},
                                  {"ui", uiDrawName(ui)},
                                  {"thumbnails", thumbnails},
+                                 {"phases",
+                                  {{"events_ms", phases.eventsMs},
+                                   {"panels_ms", phases.panelsMs},
+                                   {"draw_ms", phases.drawMs},
+                                   {"swap_ms", phases.swapMs},
+                                   {"after_ms", phases.afterMs}}},
                                  {"viewport", {viewport[0], viewport[1], viewport[2], viewport[3]}},
                                  {"camera",
                                   {{"position", vec(camera.position)},

@@ -220,7 +220,10 @@ double CoreViewportView::chooseScale(const scene::SceneRevision& revision, const
     control.minScale = settings.motionMinScale;
     resolution_.setControl(control);
     resolution_.seedFullFrameMs(restSlices_.wholeViewMs());
-    return resolution_.next(changed, frameMs);
+    // Only a frame that rendered measures the cost of one: while a structure compiles, frames of
+    // the panels alone (about 10 ms) had taught the controller that a whole view was cheap, and
+    // the first picture of every opened preset came at full size, unsliced (0.6-0.9 s).
+    return resolution_.next(changed, previousFrameRendered_ ? frameMs : 0.0);
 }
 
 void CoreViewportView::render(const Preset& preset, const scene::SceneRevision& revision, const ViewSettings& settings,
@@ -228,7 +231,8 @@ void CoreViewportView::render(const Preset& preset, const scene::SceneRevision& 
     // What changed since the last frame is decided on `revision`, once, by every consumer below.
     if (path_ && !pathStillValid(revision, settings, fullWidth, fullHeight)) dropPath();
     if (path_) {
-        lastRefined_.reset();  // a path-traced frame says nothing about the fast mode's slices
+        lastRefined_.reset();            // a path-traced frame says nothing about the fast mode's slices
+        previousFrameRendered_ = false;  // nor about its motion's cost
         pathFrame(preset, settings);
         return;
     }
@@ -239,15 +243,30 @@ void CoreViewportView::render(const Preset& preset, const scene::SceneRevision& 
     const int width = std::max(int(std::lround(fullWidth * scale)), 2);
     const int height = std::max(int(std::lround(fullHeight * scale)), 2);
     stats_.internalScale = scale;
+    // The grid at full size is made ahead on the worker (asked for before any compile this frame
+    // may ask for, which the worker then does after it), and kept as the viewport's spare.
+    const BackgroundCompiler::GridSize fullGrid{fullWidth, fullHeight, viewportOptions(settings).coneTile};
+    const bool gridWanted = compiler_ && !viewport_.hasGrid(fullWidth, fullHeight);
+    if (gridWanted) compiler_->requestGrid(fullGrid);
+    previousFrameRendered_ = false;
     try {
         if (renderFrame(preset, revision, settings, width, height)) {
             imageChanged_ = true;
             lastView_ = revision;
+            previousFrameRendered_ = true;
         }
     } catch (const std::exception& e) {
         lastAction_ = viewport::FrameAction::Reset;
         displayError_ = e.what();  // e.g. an unknown working space
     }
+    // Every grid the worker finishes is taken: kept while the viewport has none of the full size,
+    // freed otherwise (one the viewport no longer needs, having made its own first or left that
+    // size, would hold about 90 MB at 690x520 until the next resize).
+    if (compiler_)
+        if (std::unique_ptr<viewport::MarchState> grid = compiler_->takeGrid();
+            grid && BackgroundCompiler::GridSize{grid->width(), grid->height(), grid->coneTile()} == fullGrid &&
+            !viewport_.hasGrid(fullWidth, fullHeight))
+            viewport_.adoptSpareGrid(std::move(grid));
     if (!viewport_.imageTexture()) return;
     ensureDisplayTarget(viewport_.width(), viewport_.height());
     redisplay(preset, viewport_.imageTexture());

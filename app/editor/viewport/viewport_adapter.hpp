@@ -125,6 +125,9 @@ class CoreViewportView final : public ViewportView {
     std::optional<viewport::RestFrame> lastRefined_;  // the last frame's, if it refined the view
     std::string slicedStructure_;                     // the structure restSlices_ measured
     double previousFrameMs_ = 0.0;                    // the editor's last frame, start to start (chooseScale)
+    // Whether the last frame rendered anything: a frame that did not (its programs still compiling)
+    // says nothing of what a frame costs, and is not measured.
+    bool previousFrameRendered_ = false;
     // Path traced at rest. The tracer is kept while the structure and size stay (its program
     // takes a while to compile); `path_` is the running accumulation.
     std::string presetFile_;
