@@ -281,6 +281,7 @@ void parseRender(const ReadContext& context, const json& j, RenderSettings& s) {
     s.overRelaxation = r.number("overRelaxation", s.overRelaxation, 1.0, 1.95);
     s.maxStepGrowth = r.number("maxStepGrowth", s.maxStepGrowth, 1.0, kMaxStepGrowth);
     s.filterRadius = r.number("filterRadius", s.filterRadius, 0.5, 4.0);
+    s.viewDistance = r.number("viewDistance", s.viewDistance, 0.0, 1e6);
     s.transparentBackground = r.boolean("transparentBackground", s.transparentBackground);
     r.finish();
 }
@@ -409,6 +410,7 @@ json renderJson(const RenderSettings& s) {
     put("overRelaxation", s.overRelaxation, d.overRelaxation);
     put("maxStepGrowth", s.maxStepGrowth, d.maxStepGrowth);
     put("filterRadius", s.filterRadius, d.filterRadius);
+    put("viewDistance", s.viewDistance, d.viewDistance);
     put("transparentBackground", s.transparentBackground, d.transparentBackground);
     return j;
 }

@@ -27,6 +27,9 @@ struct RenderSettings {
     // parts. 1: no longer than over-relaxation's first steps.
     double maxStepGrowth = 1.9;
     double filterRadius = 2.0;  // Blackman-Harris reconstruction filter radius, pixels
+    // Camera rays end this far from the camera (Mandelbulber2's view_distance_max); 0: at the bound
+    // sphere alone. Shadow, reflection and light rays keep the bound sphere.
+    double viewDistance = 0.0;
     bool transparentBackground = false;
     // Colour: the working (scene-linear) space is an OCIO colour space name or the role
     // "scene_linear"; the PNG preview goes through display/view with exposure (stops).

@@ -21,6 +21,7 @@ ShadingParams resolveShading(const ShadingSettings& shading, const RenderSetting
     p.overRelaxation = render.overRelaxation;
     // Over-relaxation's first steps are already that long.
     p.maxStepGrowth = std::max(render.maxStepGrowth, render.overRelaxation);
+    p.viewDistance = render.viewDistance;
     return p;
 }
 

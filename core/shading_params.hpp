@@ -19,6 +19,9 @@ struct ShadingParams {
     double detail = 0.5;
     double overRelaxation = 1.3;
     double maxStepGrowth = 1.9;
+    double viewDistance = 0.0;  // camera rays end this far from the camera (0: no limit)
+
+    bool operator==(const ShadingParams&) const = default;
 };
 
 // `toWorking` converts a linear Rec.709 colour into the working space (identity by default).

@@ -18,6 +18,7 @@
 #include "formulas/box_fold_soft.hpp"
 #include "formulas/box_fold_value.hpp"
 #include "formulas/coastalbrot.hpp"
+#include "formulas/conditional_shift.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/derivative_tweak.hpp"
 #include "formulas/difs.hpp"
@@ -59,6 +60,7 @@
 #include "formulas/scator.hpp"
 #include "formulas/sierpinski_fold.hpp"
 #include "formulas/sin_cos_max.hpp"
+#include "formulas/sin_or_cos.hpp"
 #include "formulas/smooth_box_fold.hpp"
 #include "formulas/sphere_fold.hpp"
 #include "formulas/sphere_invert.hpp"
@@ -103,6 +105,7 @@ constexpr std::array kBlocks{
     // rows (each category lists its blocks in this order).
     describe<AxisScale>(),
     describe<MengerScale>(),
+    describe<ConditionalShift>(),
     describe<BoxFoldAxes>(),
     describe<BenesiPow2>(),
     describe<BenesiPineTree>(),
@@ -133,6 +136,7 @@ constexpr std::array kBlocks{
     describe<DifsGrid>(),
     describe<DifsHexGrid>(),
     describe<SinCosMax>(),
+    describe<SinOrCos>(),
     describe<ScaleVary>(),
     describe<DifsCylinder>(),
     describe<AddCSymmetric>(),

@@ -19,6 +19,7 @@
 uniform float u_detail;
 uniform float u_overRelaxation;
 uniform float u_maxStepGrowth;
+uniform float u_viewDistance;  // camera rays end this far from the camera (0: no limit)
 
 // The adaptive step. The step factor (DE()'s deFactor) is measured once for the whole scene, so it
 // is set by the worst rays, where the estimate exceeds the distance most; elsewhere the estimate
@@ -172,6 +173,12 @@ void recoverOvershoot(vec3 ro, vec3 rd, float tOut, float dOut, float tIn, float
 // stalled ray does.
 void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
     for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
+        // Past tEnd (the bound sphere, a camera ray's view distance, a shadow ray's light) nothing
+        // counts, not even a hit.
+        if (s.t > tEnd) {
+            s.status = MARCH_ESCAPED;
+            break;
+        }
         float threshold = pixelAngle * s.t * u_detail;
         hitThreshold = threshold;
         float d = DE(ro + rd * s.t);
@@ -183,10 +190,6 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
             s.status = MARCH_HIT;
             break;
         }
-        if (s.t > tEnd) {
-            s.status = MARCH_ESCAPED;
-            break;
-        }
         s.lastD = d;
         s.closest = min(s.closest, d / max(s.t, 1e-20));
         s.t += d - 0.8 * threshold;
@@ -195,6 +198,12 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
 #else
 void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, inout MarchState s, inout float deEvals) {
     for (int i = 0; i < maxSteps && s.status == MARCH_MARCHING; ++i) {
+        // Past tEnd (the bound sphere, a camera ray's view distance, a shadow ray's light) nothing
+        // counts, not even a hit.
+        if (s.t > tEnd) {
+            s.status = MARCH_ESCAPED;
+            break;
+        }
         bool inside;
         hitThreshold = pixelAngle * s.t * u_detail;
         float d = DEInside(ro + rd * s.t, inside);
@@ -220,6 +229,7 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
         }
         if (inside && s.lastD > 0.0) {  // the step from the previous point crossed the surface
             recoverOvershoot(ro, rd, s.t - previousStep, s.lastD, s.t, pixelAngle, s, deEvals);
+            if (s.t > tEnd) s.status = MARCH_ESCAPED;  // the crossing lies past the end
             break;
         }
         // At or below the threshold: an estimate of 0 at the ray's start (a camera inside an
@@ -227,10 +237,6 @@ void marchSteps(vec3 ro, vec3 rd, float tEnd, float pixelAngle, int maxSteps, in
         if (d <= pixelAngle * s.t * u_detail) {
             s.lastD = d;
             s.status = MARCH_HIT;
-            break;
-        }
-        if (s.t > tEnd) {
-            s.status = MARCH_ESCAPED;
             break;
         }
         if (s.lastD > 0.0) s.omega = nextOmega(s.omega, s.steepest, abs(d), pixelAngle * s.t * u_detail);
@@ -270,4 +276,12 @@ bool clipToBound(vec3 ro, vec3 rd, out float tStart, out float tEnd) {
     tStart = max(-b - h, 0.0);
     tEnd = -b + h;
     return tEnd > 0.0;
+}
+
+// A camera ray's part within the bound sphere and within u_viewDistance of the camera (0: no
+// limit; RenderSettings::viewDistance, Mandelbulber2's view_distance_max).
+bool clipCameraRay(vec3 ro, vec3 rd, out float tStart, out float tEnd) {
+    if (!clipToBound(ro, rd, tStart, tEnd)) return false;
+    if (u_viewDistance > 0.0) tEnd = min(tEnd, u_viewDistance);
+    return tEnd > tStart;
 }

@@ -254,7 +254,7 @@ void main() {
         float tStart, tEnd;
         bool hit = false;
         MarchState s = marchStart(0.0);
-        if (clipToBound(ro, rd, tStart, tEnd)) {
+        if (clipCameraRay(ro, rd, tStart, tEnd)) {
             s = marchStart(tStart);
             marchRay(ro, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
             hit = countsAsHit(s, pixelAngle);
@@ -360,7 +360,7 @@ void main() {
                                 1.0 - 2.0 * (float(pixel.y) + 0.5) / float(u_imageSize.y), aspect, u_cameraRight,
                                 u_cameraUp, u_cameraForward, u_tanHalfFovY, u_halfFovY, u_projection);
         float tStart, tEnd;
-        if (clipToBound(u_cameraPosition, rd, tStart, tEnd)) {
+        if (clipCameraRay(u_cameraPosition, rd, tStart, tEnd)) {
             MarchState s = marchStart(tStart);
             marchRay(u_cameraPosition, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
             if (s.status == MARCH_HIT) depth = s.t;

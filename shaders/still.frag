@@ -110,7 +110,7 @@ void main() {
         float tStart, tEnd;
         bool hit = false;
         MarchState s = marchStart(0.0);
-        if (clipToBound(ro, rd, tStart, tEnd)) {
+        if (clipCameraRay(ro, rd, tStart, tEnd)) {
             s = marchStart(tStart);
             marchRay(ro, rd, tEnd, pixelAngle, u_maxSteps, s, deEvals);
             hit = countsAsHit(s, pixelAngle);

@@ -20,7 +20,7 @@ void main() {
     float tStart, tEnd;
     float t = 0.0;
     float deEvals = 0.0;
-    if (clipToBound(ro, rd, tStart, tEnd)) {
+    if (clipCameraRay(ro, rd, tStart, tEnd)) {
         t = tStart;
         for (int i = 0; i < u_coneSteps && t < tEnd; ++i) {
             float d = DE(ro + rd * t);

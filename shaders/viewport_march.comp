@@ -110,7 +110,7 @@ void main() {
     bool mayStopCoarse = sampleIndex == 0 && (info.w & FLAG_CARRIED) != 0 && u_coarseHits != 0 && u_atRest == 0;
     float tStart, tEnd;
     int i = 0, budget = 0;  // steps taken here, of the frame's budget
-    if (!clipToBound(ro, rd, tStart, tEnd)) {
+    if (!clipCameraRay(ro, rd, tStart, tEnd)) {
         // Misses the bound sphere: nothing anywhere along it.
         s.status = MARCH_ESCAPED;
         s.t = parkedDistance(length(ro), u_boundRadius);

@@ -45,7 +45,7 @@ float reprojectedDistance(ivec2 q) {
 RayStart startRay(ivec2 px, vec3 ro, vec3 rd) {
     RayStart start;
     float tStart, tEnd;
-    bool inBound = clipToBound(ro, rd, tStart, tEnd);
+    bool inBound = clipCameraRay(ro, rd, tStart, tEnd);
     start.restartAt = tStart;
     if (u_coneTile > 0) start.restartAt = max(tStart, imageLoad(u_cone, px / u_coneTile).x);
     start.t = start.restartAt;

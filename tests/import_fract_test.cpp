@@ -685,13 +685,13 @@ void expectDifsMembershipFollows(const Formula& f, double extent, unsigned seed,
     EXPECT_LT(inside, points - points / 100);
 }
 
-// Mandelbulber2's dIFS cylinder and sphere formulas: the shape measured where each iteration
+// Mandelbulber2's dIFS cylinder, sphere and torus formulas: the shape measured where each iteration
 // starts, then |x| and |y|, the diagonal fold, the scale about the reverse offsets (x and y less 2)
 // varying with option K, offset_001. A point is inside where some shape distance along its orbit
 // is negative, whatever the divisors: fraktal's membership follows a replica of
-// DIFSCylinderIteration and DIFSSphereIteration (fractal_formulas.cpp) on random points, and the
-// first iteration's estimate is Mandelbulber2's, the shape over DE |s| + 1.
-TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
+// DIFSCylinderIteration, DIFSSphereIteration and DIFSTorusIteration (fractal_formulas.cpp) on
+// random points, and the first iteration's estimate is Mandelbulber2's, the shape over DE |s| + 1.
+TEST(FractImport, DifsCylinderSphereAndTorusFollowMandelbulber2) {
     struct Case {
         const char* body;
         double (*shape)(const vec3& z, int i);  // the shape's distance at the iteration's start
@@ -711,6 +711,10 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
          0.3, 0.5},
         {"formula_1 604;\nN 6;\n[fractal_1]\ntransf_offsetR_1 0,8;\ntransf_scale_2 2,35;\n",
          [](const vec3& z, int) { return length(z) - 0.8; }, 0.0, 1.0},
+        // DIFSTorusIteration: the sphere's folds and scale, its torus about z.
+        {"formula_1 606;\nN 6;\n[fractal_1]\ntransf_offsetT_1 0,9;\ntransf_offset_05 0,35;\ntransf_scale_2 2,35;\n",
+         [](const vec3& z, int) { return length(glm::dvec2(length(glm::dvec2(z.x, z.y)) - 0.9, z.z)) - 0.35; }, 0.0,
+         1.0},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.body);
@@ -718,7 +722,9 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
         ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
         const Formula& f = r.preset.formula;
         EXPECT_EQ(f.estimator.block->id, "difs");
-        const bool sphere = std::string(c.body).find("604") != std::string::npos;
+        // The sphere's and the torus's folds and scale are the same.
+        const bool sphere = std::string(c.body).find("604") != std::string::npos ||
+                            std::string(c.body).find("606") != std::string::npos;
         const double s = sphere ? 2.35 : 2.0;
         expectDifsMembershipFollows(f, 1.5, 9, [&](const vec3& point) {
             vec3 z = point;
@@ -751,6 +757,18 @@ TEST(FractImport, DifsCylinderAndSphereFollowMandelbulber2) {
     EXPECT_EQ(ring.start, 2);
     EXPECT_EQ(param(ring, "ring_radius"), 0.7);
     EXPECT_EQ(param(ring, "w_scale"), 2.0);
+    // The dIFS torus formula's own torus in its window; about x, stretched or switched off, refused.
+    const mb2::FractImport windowed =
+        importText("[main_parameters]\nformula_1 606;\n[fractal_1]\ntransf_start_iterations 3;\n");
+    ASSERT_TRUE(windowed.faithful()) << windowed.unsupported.front().text();
+    EXPECT_EQ(windowed.preset.formula.nodes.front().block->id, "difs_torus");
+    EXPECT_EQ(windowed.preset.formula.nodes.front().start, 3);
+    expectRefused("formula_1 606;\n[fractal_1]\ntransf_function_enabledSw_false true;\n", "slot 1 (difs_torus)",
+                  "the torus about x");
+    expectRefused("formula_1 606;\n[fractal_1]\ntransf_function_enabledM_false true;\n", "slot 1 (difs_torus)",
+                  "the stretched torus");
+    expectRefused("formula_1 606;\n[fractal_1]\ntransf_function_enabledM false;\n", "slot 1 (difs_torus)",
+                  "the torus switched off");
 }
 
 // Mandelbulber2's dIFS diagonal boxes: folds, the scale about the reverse offsets, offset_001 and
@@ -2523,6 +2541,12 @@ TEST(FractImport, BoxFoldsWithTheirOwnValueFollowMandelbulber2sOrbits) {
     expectExampleImports("Robert Pancoast collection - license Creative Commons (CC-BY 4.0)/hybrid77.fract");
 }
 
+// Mandelbulber2's MandelbulbIteration at power 2 (fractal_formulas.cpp of 2.20), before c.
+vec3 mb2MandelbulbPower2(const vec3& z) {
+    const double r = length(z), th = std::asin(z.z / r) * 2.0, ph = std::atan2(z.y, z.x) * 2.0;
+    return r * r * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th));
+}
+
 // Graeme McLaren's sine and cosine maximum on all three axes (its own periods, the product halved,
 // each over |v| + 1), alternating with a power-2 bulb, against Mandelbulber2's
 // TransfSinAndCosMaxIteration and MandelbulbIteration written out; combo4 types 1 to 4 keep v
@@ -2538,10 +2562,7 @@ TEST(FractImport, SinAndCosMaxFollowsMandelbulber2sOrbits) {
          nullptr,
          3.0,
          [](const vec3& z, const vec3& c, int i) {
-             if (i % 2 == 1) {  // MandelbulbIteration, power 2
-                 const double r = length(z), th = std::asin(z.z / r) * 2.0, ph = std::atan2(z.y, z.x) * 2.0;
-                 return r * r * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + c;
-             }
+             if (i % 2 == 1) return mb2MandelbulbPower2(z) + c;
              const vec3 a(3.0, 4.0, 5.0), b(5.0, 6.0, 7.0);
              vec3 m;
              for (int k = 0; k < 3; ++k) {
@@ -2559,6 +2580,159 @@ TEST(FractImport, SinAndCosMaxFollowsMandelbulber2sOrbits) {
             const Node& n = r.preset.formula.nodes.front();
             EXPECT_EQ(n.values[size_t(n.block->paramIndex("keep"))].x, on ? type : 0);
         }
+}
+
+// Graeme McLaren's sine or cosine: the cosine on x and z, the sine on y, each axis multiplied,
+// scaled twice and over |v| + 1, alternating with a power-2 bulb, against Mandelbulber2's
+// TransfSinOrCosIteration and MandelbulbIteration written out; an axis left out becomes 0. The
+// running derivative is Mandelbulber2's |scale| + 1 (mb2_derivative and a derivative tweak), or its
+// analytic tweak's scale and offset.
+TEST(FractImport, SinOrCosFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 1082;\nformula_2 2;\nN 8;\nuse_default_bailout false;\nbailout 3;\n"
+         "[fractal_1]\ntransf_constant_multiplierC_111 0,9 0,7 -1,1;\ntransf_function_enabled_false true;\n"
+         "transf_function_enabledAx_false true;\ntransf_function_enabledAz_false true;\ntransf_scale 1,68;\n"
+         "[fractal_2]\npower 2;\n",
+         {"sin_or_cos", "derivative_tweak", "mandelbulb_sine", "add_c"},
+         nullptr,
+         3.0,
+         [](const vec3& z, const vec3& c, int i) {
+             if (i % 2 == 1) return mb2MandelbulbPower2(z) + c;
+             const vec3 m(0.9, 0.7, -1.1);
+             vec3 t(std::cos(z.x * m.x), std::sin(z.y * m.y), std::cos(z.z * m.z));
+             t *= 1.68;
+             for (int k = 0; k < 3; ++k) t[k] = t[k] * 1.68 / (std::abs(z[k]) + 1.0);
+             return t;
+         }});
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 1082;\nformula_2 2;\nN 8;\nuse_default_bailout false;\nbailout 3;\n"
+         "[fractal_1]\ntransf_function_enabledAy false;\ntransf_scale 1,3;\n[fractal_2]\npower 2;\n",
+         {"sin_or_cos", "derivative_tweak", "mandelbulb_sine", "add_c"},
+         nullptr,
+         3.0,
+         [](const vec3& z, const vec3& c, int i) {
+             if (i % 2 == 1) return mb2MandelbulbPower2(z) + c;
+             return vec3(std::sin(z.x), 0.0, std::sin(z.z)) * 1.3;
+         }});
+    // The derivative: |scale| times the incoming one, plus 1; with the analytic tweak its own.
+    for (const bool tweak : {false, true}) {
+        const mb2::FractImport r = importText(
+            std::string("[main_parameters]\nformula_1 1082;\n[fractal_1]\ntransf_scale -2;\n") +
+            (tweak ? "analyticDE_enabled_false true;\nanalyticDE_scale_1 0,5;\nanalyticDE_offset_1 0,25;\n" : ""));
+        ASSERT_GE(r.preset.formula.nodes.size(), 2u);
+        P4 p{vec3(0.3, -0.4, 0.5), 1.5};
+        for (size_t i = 0; i < 2; ++i) {
+            const Node& n = r.preset.formula.nodes[i];
+            n.block->apply(p, vec3(0.0), n.args());
+        }
+        EXPECT_NEAR(p.w, tweak ? 1.5 * 2.0 * 0.5 + 0.25 : 1.5 * 2.0 + 1.0, 1e-12);
+    }
+}
+
+// Mandelbulber2's Vicsek written out (VicsekIteration of 2.20): the sphere fold and its scale
+// (option S), |v| sorted, scaled, each axis shifted back above its threshold, x offset (option M),
+// and the turn of 45 degrees about z (option X); the octahedral fold and iteration weights are
+// refused.
+vec3 mb2Vicsek(vec3 z, bool sphereFold, bool turn) {
+    if (sphereFold) {
+        const double rr = dot(z, z);
+        if (rr < 0.5)
+            z *= 1.0 / 0.5;
+        else if (rr < 1.0)
+            z *= 1.0 / rr;
+        z *= 0.7;
+    }
+    z = glm::abs(z);
+    if (z.x - z.y < 0.0) std::swap(z.y, z.x);
+    if (z.x - z.z < 0.0) std::swap(z.z, z.x);
+    if (z.y - z.z < 0.0) std::swap(z.z, z.y);
+    z *= 2.8;
+    const vec3 limit(1.2, 0.9, 1.1);
+    if (z.x > limit.x * 0.5) z.x -= limit.x * 1.3;
+    if (z.y > limit.y * 0.5) z.y -= limit.y;
+    if (z.z > limit.z) z.z -= 2.0 * limit.z;
+    z.x += 0.1;
+    if (turn) z = vec3(std::sqrt(0.5) * (z.x - z.y), std::sqrt(0.5) * (z.y + z.x), z.z);
+    return z;
+}
+
+TEST(FractImport, VicsekFollowsMandelbulber2sOrbits) {
+    const char* vicsek =
+        "[fractal_1]\ntransf_scale_3 2,8;\ntransf_offset_111 1,2 0,9 1,1;\ntransf_scaleA_1 1,3;\n"
+        "transf_offset_0 0,1;\n";
+    expectOrbitsFollowMandelbulber2({(std::string("formula_1 142;\nN 6;\n") + vicsek).c_str(),
+                                     {"abs_fold", "menger_fold", "scale", "conditional_shift", "translate"},
+                                     [](const vec3& z, const vec3&) { return mb2Vicsek(z, false, false); },
+                                     2.0});
+    expectOrbitsFollowMandelbulber2(
+        {(std::string("formula_1 142;\nN 6;\n") + vicsek +
+          "transf_function_enabledS_false true;\ntransf_minR2_p25 0,5;\ntransf_scale_08 0,7;\n"
+          "transf_function_enabledX_false true;\n")
+             .c_str(),
+         {"sphere_fold", "scale", "abs_fold", "menger_fold", "scale", "conditional_shift", "translate", "rotate"},
+         [](const vec3& z, const vec3&) { return mb2Vicsek(z, true, true); },
+         2.0});
+    expectRefused("formula_1 142;\n[fractal_1]\ntransf_function_enabledx_false true;\n", "slot 1 (vicsek)",
+                  "the octahedral fold");
+    expectRefused("formula_1 142;\n[fractal_1]\ntransf_function_enabled_false true;\ntransf_offsetA_0 0,5;\n",
+                  "slot 1 (vicsek)", "iteration weights");
+    // With no weights the iteration weight is the identity (formula/img vicsek switches it on).
+    EXPECT_TRUE(
+        importText("[main_parameters]\nformula_1 142;\n[fractal_1]\ntransf_function_enabled_false true;\n").faithful());
+    expectExampleImports("Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/vicsek_001.fract");
+}
+
+// transf_rotation_folding written out (TransfRotationFoldingIteration of 2.20): the turn, |v + o| -
+// o on x and y, Tglad's fold on x and y (z kept), the box fold at limit 1 value 2.2, the second
+// turn; alternating with a power-2 bulb. The box fold on some axes only is refused.
+TEST(FractImport, RotationFoldingFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 1064;\nformula_2 2;\nN 8;\nuse_default_bailout false;\nbailout 3;\n"
+         "[fractal_1]\ntransf_rotation 0 0 30;\ntransf_rotation2 20 0 0;\ntransf_offset_000 0,2 -0,1 0,3;\n"
+         "transf_function_enabledz false;\ntransf_function_enabledAy_false true;\ntransf_offset_111 0,8 1,1 1;\n"
+         "transf_function_enabledAz false;\ntransf_function_enabledAz_false true;\nmandelbox_folding_value 2,2;\n"
+         "[fractal_2]\npower 2;\n",
+         {"rotate", "plane_fold", "plane_fold", "box_fold_general", "box_fold_value", "rotate", "mandelbulb_sine",
+          "add_c"},
+         nullptr,
+         3.0,
+         [](const vec3& v, const vec3& c, int i) {
+             if (i % 2 == 1) return mb2MandelbulbPower2(v) + c;
+             vec3 z = glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(30.0), vec3(0, 0, 1))) * v;
+             const vec3 o(0.2, -0.1, 0.3), l(0.8, 1.1, 1.0);
+             for (int k = 0; k < 2; ++k) z[k] = std::abs(z[k] + o[k]) - o[k];
+             for (int k = 0; k < 2; ++k) z[k] = std::abs(z[k] + l[k]) - std::abs(z[k] - l[k]) - z[k];
+             for (int k = 0; k < 3; ++k)
+                 if (std::abs(z[k]) > 1.0) z[k] = (z[k] > 0.0 ? 2.2 : -2.2) - z[k];
+             return glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(20.0), vec3(1, 0, 0))) * z;
+         }});
+    expectRefused(
+        "formula_1 1064;\n[fractal_1]\ntransf_function_enabledAz_false true;\ntransf_function_enabledBy false;\n",
+        "slot 1 (transf_rotation_folding)", "the box fold with an axis left out");
+}
+
+// transf_rotation4d's turns in the xy, yz and xz planes are rotate4d's (its own test follows the 4D
+// turn written out); at Mandelbulber2's defaults it is no step; a turn with w is refused, as it
+// would move w off 0 beside formulas that leave w at 0.
+TEST(FractImport, Rotation4dTurnsInTheSpaceOfTheOrbit) {
+    const mb2::FractImport turned = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 7;\nformula_2 1069;\n[fractal_2]\n"
+        "transf_rotation44a 14 -17 20;\n");
+    ASSERT_TRUE(turned.faithful()) << turned.unsupported.front().text();
+    const std::vector<std::string> ids = blockIds(turned.preset.formula);
+    const auto at = std::find(ids.begin(), ids.end(), "rotate4d");
+    ASSERT_NE(at, ids.end());
+    const Node& turn = turned.preset.formula.nodes[size_t(at - ids.begin())];
+    EXPECT_EQ(turn.values[size_t(turn.block->paramIndex("angles"))], vec3(14.0, -17.0, 20.0));
+    EXPECT_EQ(turn.values[size_t(turn.block->paramIndex("angles_w"))], vec3(0.0));
+    const mb2::FractImport plain =
+        importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 7;\nformula_2 1069;\n");
+    ASSERT_TRUE(plain.faithful()) << plain.unsupported.front().text();
+    const std::vector<std::string> plainIds = blockIds(plain.preset.formula);
+    EXPECT_EQ(std::find(plainIds.begin(), plainIds.end(), "rotate4d"), plainIds.end());
+    expectRefused(
+        "hybrid_fractal_enable true;\nformula_1 7;\nformula_2 1069;\n[fractal_2]\ntransf_rotation44b 0 -45 0;\n",
+        "slot 2 (transf_rotation4d)", "a turn in a plane with w");
 }
 
 // Pseudo-Kleinian orbits stay bounded (no escape to compare): the orbit trap's least |v| over N
@@ -3469,6 +3643,21 @@ std::vector<Expected> fixedSet() {
         {gm + "DIFS BoxV1 flower.fract", ""},
         // amazing_surf_mod2 in Julia mode, its derivative's 1 added without c (a derivative_tweak).
         {gm + "asurf_julia.fract", ""},
+        // Mandelbulber2's dIFS torus formula (difs_torus with the dIFS sphere's folds).
+        {"formula/img/difs_torus.fract", ""},
+        // transf_rotation_folding: two turns about the abs folds.
+        {"formula/img/transf_rotation_folding.fract", ""},
+        // Mandelbulber2's Vicsek (the Menger fold's sort, conditional_shift).
+        {"formula/img/vicsek.fract", ""},
+        // Camera rays end at view_distance_max (render.viewDistance): past it, 97 % of this
+        // hybrid's extra hits (0.51 without it); with sin_or_cos and the spherical inversion's 1.
+        // At 160x120, the bench's size (0.910; 0.899 at 128x96: its thin horns' rims).
+        {gm + "Jos Leys Kleinian Hybrid inv cos.fract", "", 0.9, 160},
+        // Graeme McLaren's sine or cosine (sin_or_cos) with Mandelbulber2's derivative.
+        {"formula/img/transf_sin_or_cos.fract", ""},
+        // The spherical inversion transform with the 1 Mandelbulber2 adds to its running
+        // derivative (a derivative_tweak): 0.91 without it.
+        {gm + "sphere_invert_menger_sponge.fract", ""},
     };
 }
 

@@ -2,6 +2,7 @@
 // DE, the same marcher and shading) on every shipped preset, at 96x64, one sample per pixel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/color/color_pipeline.hpp"
@@ -118,6 +119,39 @@ TEST(GoldenProjections, FishEyeAndEquirectangularGlMatchCpuReference) {
         EXPECT_GT(cpu.coverage, 0.05) << name;
         EXPECT_LT(cpu.coverage, 0.9) << name;
     }
+}
+
+// The view distance (RenderSettings::viewDistance, Mandelbulber2's view_distance_max): camera rays
+// end that far from the camera, on the GL still and the CPU reference alike. The Mandelbulb cut at
+// the median depth of its hits: no hit lies beyond the limit (but for the refinement within a hit
+// threshold), about half the hits are gone, and GL and CPU agree.
+TEST(GoldenViewDistance, CameraRaysEndAtTheViewDistanceOnGlAndCpuAlike) {
+    const Preset preset = loadPreset(test::sourceDir() / "presets/mandelbulb.json");
+    RenderSettings r = preset.render;
+    r.width = 96;
+    r.height = 64;
+    r.spp = 1;
+    const ImageStrip whole =
+        renderReference(preset.formula, preset.camera, r, resolveShading(preset.shading, r, preset.formula));
+    const std::vector<float> before = test::hitDepths(whole);
+    ASSERT_GT(before.size(), 500u);
+    r.viewDistance = before[before.size() / 2];
+    const ShadingParams shading = resolveShading(preset.shading, r, preset.formula);
+    const ImageStrip gl = renderGL(preset, r, shading),
+                     cpu = renderReference(preset.formula, preset.camera, r, shading);
+    for (const ImageStrip* image : {&gl, &cpu}) {
+        const std::vector<float> after = test::hitDepths(*image);
+        ASSERT_FALSE(after.empty());
+        EXPECT_LE(after.back(), r.viewDistance * 1.01) << (image == &gl ? "GL" : "CPU") << ": a hit past the limit";
+        EXPECT_LT(after.size(), before.size() * 3 / 4) << (image == &gl ? "GL" : "CPU") << ": the limit cut nothing";
+    }
+    const ColorPipeline color = ColorPipeline::fromFile(shippedOcioConfigPath());
+    const DisplayTransform display(color, "scene_linear", "sRGB", "Standard", 0.0);
+    const DisplayImage gpuImage = toDisplay(gl, display), cpuImage = toDisplay(cpu, display);
+    std::printf("view distance %.3f: hits %zu -> %zu; PSNR GL against CPU %.1f dB\n", r.viewDistance, before.size(),
+                test::hitDepths(cpu).size(), psnr(gpuImage.rgb, cpuImage.rgb));
+    EXPECT_GE(psnr(gpuImage.rgb, cpuImage.rgb), 35.0);
+    EXPECT_NEAR(gpuImage.coverage, cpuImage.coverage, 0.03);
 }
 
 // Adaptive sampling (shaders/still.frag) stops where a pixel's samples agree: flat sky and smooth

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "core/gl/context.hpp"
+#include "core/image/image_strip.hpp"
 #include "core/preset.hpp"
 #include "core/random_vec.hpp"
 
@@ -58,6 +60,15 @@ inline Formula squaringBall(int iterations, int period = 1, int phase = 0) {
     square.phase = phase;
     f.nodes = {square};
     return f;
+}
+
+// The depths of an image's pixels that hit (ImageStrip::normalDepth's w below 1e30), sorted.
+inline std::vector<float> hitDepths(const ImageStrip& image) {
+    std::vector<float> depths;
+    for (size_t i = 3; i < image.normalDepth.size(); i += 4)
+        if (image.normalDepth[i] < 1e29f) depths.push_back(image.normalDepth[i]);
+    std::sort(depths.begin(), depths.end());
+    return depths;
 }
 
 // One headless GL context for a whole test program (made on first use).

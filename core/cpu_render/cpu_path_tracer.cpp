@@ -188,7 +188,7 @@ struct Tracer {
         double tStart, tEnd;
         bool hit = false;
         cpu::MarchState s = cpu::marchStart(march, 0.0);
-        if (cpu::clipToBound(march, ro, rd, tStart, tEnd)) {
+        if (cpu::clipCameraRay(march, ro, rd, tStart, tEnd)) {
             s = cpu::marchStart(march, tStart);
             cpu::marchRay(march, ro, rd, tEnd, pixelAngle, render.maxSteps, s, deEvals);
             hit = cpu::countsAsHit(march, s, pixelAngle);
@@ -306,7 +306,7 @@ struct Tracer {
         const vec3 rd = scene.camera.rayDirection(2.0 * (x + 0.5) / scene.render.width - 1.0,
                                                   1.0 - 2.0 * (y + 0.5) / scene.render.height, aspect);
         double tStart, tEnd;
-        if (!cpu::clipToBound(march, scene.camera.position, rd, tStart, tEnd)) return 1e30f;
+        if (!cpu::clipCameraRay(march, scene.camera.position, rd, tStart, tEnd)) return 1e30f;
         cpu::MarchState s = cpu::marchStart(march, tStart);
         cpu::marchRay(march, scene.camera.position, rd, tEnd, pixelAngle, scene.render.maxSteps, s, deEvals);
         return s.status == cpu::MarchStatus::Hit ? float(s.t) : 1e30f;

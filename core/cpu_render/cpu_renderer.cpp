@@ -26,7 +26,7 @@ ImageStrip renderReference(const Formula& formula, const Camera& camera, const R
         double deEvals = 0.0, tStart, tEnd;
         bool hit = false;
         cpu::MarchState s = cpu::marchStart(scene, 0.0);
-        if (cpu::clipToBound(scene, ro, rd, tStart, tEnd)) {
+        if (cpu::clipCameraRay(scene, ro, rd, tStart, tEnd)) {
             s = cpu::marchStart(scene, tStart);
             cpu::marchRay(scene, ro, rd, tEnd, pixelAngle, render.maxSteps, s, deEvals);
             hit = cpu::countsAsHit(scene, s, pixelAngle);

@@ -74,6 +74,12 @@ bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tSt
     return tEnd > 0.0;
 }
 
+bool clipCameraRay(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd) {
+    if (!clipToBound(scene, ro, rd, tStart, tEnd)) return false;
+    if (scene.params.viewDistance > 0.0) tEnd = std::min(tEnd, scene.params.viewDistance);
+    return tEnd > tStart;
+}
+
 double surfaceEpsilon(const Scene& scene, double t, double pixelAngle) {
     return std::max(0.5 * pixelAngle * t, 2e-5 * scene.formula.boundRadius);
 }

@@ -35,6 +35,8 @@ void marchRay(const Scene& scene, const vec3& ro, const vec3& rd, double tEnd, d
 // Mirror of march.glsl's countsAsHit (why: there).
 bool countsAsHit(const Scene& scene, const MarchState& s, double pixelAngle);
 bool clipToBound(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd);
+// A camera ray's part: within the bound and within the view distance of the camera (march.glsl).
+bool clipCameraRay(const Scene& scene, const vec3& ro, const vec3& rd, double& tStart, double& tEnd);
 SurfaceSample shadeSurface(const Scene& scene, const vec3& pos, const vec3& rd, double t, double pixelAngle,
                            double& deEvals);
 vec3 shadeBackground(const Scene& scene, const vec3& rd);

@@ -123,6 +123,11 @@ template <class Source>
 void marchSteps(const Source& at, const vec3& ro, const vec3& rd, double tEnd, const MarchRule& rule, int maxSteps,
                 MarchState& s, double& deEvals) {
     for (int i = 0; i < maxSteps && s.status == MarchStatus::Marching; ++i) {
+        // Mirror of march.glsl's marchSteps: past tEnd nothing counts, not even a hit.
+        if (s.t > tEnd) {
+            s.status = MarchStatus::Escaped;
+            break;
+        }
         const double threshold = rule.threshold(s.t);
         const DistanceSample e = at(ro + rd * s.t, threshold);
         deEvals += 1.0;
@@ -137,10 +142,6 @@ void marchSteps(const Source& at, const vec3& ro, const vec3& rd, double tEnd, c
             if (d < threshold || d <= 0.0) {
                 s.lastD = std::max(d, 0.0);
                 s.status = MarchStatus::Hit;
-                break;
-            }
-            if (s.t > tEnd) {
-                s.status = MarchStatus::Escaped;
                 break;
             }
             s.lastD = d;
@@ -162,15 +163,12 @@ void marchSteps(const Source& at, const vec3& ro, const vec3& rd, double tEnd, c
         }
         if (rule.recoverOvershoot && e.inside && s.lastD > 0.0) {
             recoverOvershoot(at, ro, rd, rule, s.t - previousStep, s.lastD, s.t, s, deEvals);
+            if (s.t > tEnd) s.status = MarchStatus::Escaped;  // the crossing lies past the end
             break;
         }
         if (d <= threshold) {
             s.lastD = d;
             s.status = MarchStatus::Hit;
-            break;
-        }
-        if (s.t > tEnd) {
-            s.status = MarchStatus::Escaped;
             break;
         }
         if (s.lastD > 0.0) s.omega = nextOmega(s.omega, s.steepest, std::abs(d), threshold, rule.maxStepGrowth);
@@ -189,8 +187,7 @@ std::optional<double> traceFirstHit(const Source& at, const vec3& ro, const vec3
     MarchState s;
     s.t = tStart;
     marchSteps(at, ro, rd, tEnd, rule, maxSteps, s, deEvals);
-    // The loop tests for a hit before it tests the end (as march.glsl does): a hit past tEnd (past a
-    // shadow ray's light) is none.
+    // A hit refined past tEnd (past a shadow ray's light) is none.
     if (s.status != MarchStatus::Hit || s.t > tEnd) return std::nullopt;
     return s.t;
 }

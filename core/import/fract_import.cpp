@@ -1323,6 +1323,12 @@ void derivativeTweak(Reader& r, NodeBuilder& b, bool withOffset = false) {
     const double scale = r.number("analyticDE_scale_1"), offset = withOffset ? r.number("analyticDE_offset_1") : 0.0;
     if (scale != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", offset)});
 }
+// The analytic DE tweak behind analyticDE_enabled_false: the running derivative times
+// analyticDE_scale_1 plus `offsetKey` (analyticDE_offset_0 or _1, as the formula reads it).
+void analyticTweakWhereEnabled(Reader& r, NodeBuilder& b, const char* offsetKey) {
+    if (r.boolean("analyticDE_enabled_false"))
+        b.add("derivative_tweak", {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number(offsetKey))});
+}
 void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const vec3 axes = enabledAxes(r);
     const vec3 offset = r.vector("transf_offset_000");
@@ -1416,6 +1422,16 @@ void mapTransfSphericalFold4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>
     const auto offset = r.vector4("transf_offset_0000");
     if (offset.w != 0.0) r.unsupported("transf_offset_0000's w " + fmt(offset.w) + ": a fold that moves w off 0");
     squaredRadiiSphereFold(r, b, vec3(offset));
+}
+// transf_rotation4d (TransfRotation4dIteration of 2.20): turns in the xy, yz and xz planes
+// (transf_rotation44a, degrees), then in xw, yw and zw (transf_rotation44b), as rotate4d turns.
+// Nothing when every angle is 0 (Mandelbulber2's default); a turn with w is refused: it would move
+// w off 0.
+void mapTransfRotation4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const vec3 turns = r.vector("transf_rotation44a"), turnsW = r.vector("transf_rotation44b");
+    if (length(turnsW) != 0.0)
+        return r.unsupported("transf_rotation44b " + fmt(turnsW) + ": a turn in a plane with w moves w off 0");
+    if (length(turns) != 0.0) b.add("rotate4d", {N::v("angles", turns), N::v("angles_w", vec3(0.0))});
 }
 // z times transf_scale, plus z times transf_offset on iteration transf_int_A and times
 // transf_offset_0 on transf_int_B: the scale, and on those iterations a scale by the ratio.
@@ -1557,6 +1573,76 @@ void mapSierpinski4d(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
         const double tweak = r.number("analyticDE_scale_1"), offset = r.number("analyticDE_offset_0");
         if (tweak != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", tweak), N::f("offset", offset)});
     }
+}
+
+// Mandelbulber2's Vicsek (VicsekIteration in fractal_formulas.cpp of 2.20), each part in its
+// window: the sphere fold (option S: radii from transf_minR2_p25 and transf_maxR2_1, then
+// transf_scale_08), the Vicsek step (option M, on by default: |v| sorted, scaled by transf_scale_3,
+// x shifted back by limit.x transf_scaleA_1 above limit.x / 2, y by limit.y above limit.y / 2, z by
+// 2 limit.z above limit.z, limit transf_offset_111, then x plus transf_offset_0), the turn of 45
+// degrees about z (option X) and the analytic DE tweak. The octahedral fold before them (option
+// x) and iteration weights other than none are refused.
+void mapVicsek(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledx_false", "the octahedral fold before the Vicsek step");
+    if (r.boolean("transf_function_enabled_false") &&
+        (r.number("transf_scale_1") != 1.0 || r.number("transf_offsetA_0") != 0.0 ||
+         r.number("transf_offsetB_0") != 0.0))
+        r.unsupported("transf_function_enabled_false true: iteration weights");
+    if (r.boolean("transf_function_enabledS_false"))
+        inWindow(r, b, "S", "S", [&] {
+            sphereFold(b, std::sqrt(r.number("transf_minR2_p25")), std::sqrt(r.number("transf_maxR2_1")));
+            b.add("scale", {N::f("scale", r.number("transf_scale_08"))});
+        });
+    if (r.boolean("transf_function_enabledM"))
+        inWindow(r, b, "M", "M", [&] {
+            const vec3 limit = r.vector("transf_offset_111");
+            b.add("abs_fold", {});
+            b.add("menger_fold", {});
+            b.add("scale", {N::f("scale", r.number("transf_scale_3"))});
+            b.add("conditional_shift",
+                  {N::v("threshold", vec3(limit.x * 0.5, limit.y * 0.5, limit.z)),
+                   N::v("shift", vec3(limit.x * r.number("transf_scaleA_1"), limit.y, 2.0 * limit.z))});
+            const double offset = r.number("transf_offset_0");
+            if (offset != 0.0) b.add("translate", {N::v("offset", vec3(offset, 0.0, 0.0))});
+        });
+    if (r.boolean("transf_function_enabledX_false"))
+        b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"),
+                 [&] { b.rotation(setRotation2(vec3(0.0, 0.0, 45.0))); });
+    analyticTweakWhereEnabled(r, b, "analyticDE_offset_0");
+}
+
+// transf_rotation_folding (TransfRotationFoldingIteration in fractal_formulas.cpp of 2.20): the turn
+// transf_rotation, then (option on by default) |v + o| - o on the axes transf_function_enabledx/y/z
+// say (a plane fold at -o each, o transf_offset_000), Tglad's fold |v + l| - |v - l| - v at
+// l transf_offset_111 on the axes transf_function_enabledA{x,y,z} say (option Ay), Mandelbulber2's
+// box fold at mandelbox_folding_limit and _value (option Az), and the turn transf_rotation2. The box
+// fold on some axes only, or with z's limit scaled, is refused.
+void mapTransfRotationFolding(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.rotation(setRotation2(r.vector("transf_rotation")));
+    if (r.boolean("transf_function_enabled")) {
+        const vec3 o = r.vector("transf_offset_000"), axes = enabledAxes(r);
+        for (int k = 0; k < 3; ++k) {
+            if (axes[k] == 0.0) continue;
+            vec3 normal(0.0);
+            normal[k] = 1.0;
+            b.add("plane_fold", {N::v("normal", normal), N::f("offset", -o[k])});
+        }
+    }
+    if (r.boolean("transf_function_enabledAy_false")) {
+        const vec3 l = r.vector("transf_offset_111");
+        const vec3 on(r.boolean("transf_function_enabledAx"), r.boolean("transf_function_enabledAy"),
+                      r.boolean("transf_function_enabledAz"));
+        // An axis left out keeps v: |v| - |v| + v, the mirror -1.
+        b.add("box_fold_general",
+              {N::v("low", l * on), N::v("high", l * on), N::v("mirror", 2.0 * on - 1.0), N::v("offset", vec3(0.0))});
+    }
+    if (r.boolean("transf_function_enabledAz_false")) {
+        for (const char* axis : {"transf_function_enabledBx", "transf_function_enabledBy", "transf_function_enabledBz"})
+            r.mustBeDefault(axis, "the box fold with an axis left out");
+        r.mustBeDefault("transf_scale_1", "the box fold's z limit scaled");
+        boxFold(b, r.number("mandelbox_folding_limit"), r.number("mandelbox_folding_value"));
+    }
+    b.rotation(setRotation2(r.vector("transf_rotation2")));
 }
 
 // ---- dIFS: shape steps whose least distance along the orbit is the estimate (formulas/difs.hpp) ----
@@ -1738,6 +1824,20 @@ void mapDifsSphere(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_function_enabledT_false", "the torus beside the sphere");
     const double radius = r.number("transf_offsetR_1");
     difsShape(r, b, "difs_ellipsoid", {N::v("radii", vec3(radius))}, {});
+    difsFolds(r, b, true);
+    difsScaleAndTurn(r, b);
+}
+
+// difs_torus (DIFSTorusIteration in fractal_formulas.cpp of 2.20): the torus about z (ring radius
+// transf_offsetT_1, tube transf_offset_05) in its window, measured as the sphere is, then the
+// sphere's folds, scale and turn. The torus about x (option Sw) and the stretched torus (option
+// M) are refused, and so is a torus switched off (nothing left to measure).
+void mapDifsTorus(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledM", "the torus switched off");
+    r.mustBeDefault("transf_function_enabledSw_false", "the torus about x");
+    r.mustBeDefault("transf_function_enabledM_false", "the stretched torus");
+    difsShape(r, b, "difs_torus",
+              {N::f("ring_radius", r.number("transf_offsetT_1")), N::f("thickness", r.number("transf_offset_05"))}, {});
     difsFolds(r, b, true);
     difsScaleAndTurn(r, b);
 }
@@ -2075,6 +2175,25 @@ void mapTransfSinAndCosMax(Reader& r, NodeBuilder& b, std::vector<ImportItem>& a
            N::f("scale", r.number("transf_scale")), N::f("keep", keep)});
 }
 
+// transf_sin_or_cos (TransfSinOrCosIteration in fractal_formulas.cpp of 2.20): each axis where
+// transf_function_enabledA{x,y,z} say becomes transf_scale sin(m v), cos where
+// transf_function_enabledA{x,y,z}_false say, m transf_constant_multiplierC_111; the others 0. With
+// transf_function_enabled_false each axis is scaled again and divided by |v| + 1. The running
+// derivative is Mandelbulber2's (|transf_scale|, the block's mb2_derivative) plus 1, or times
+// analyticDE_scale_1 plus analyticDE_offset_1 with analyticDE_enabled_false: a derivative_tweak.
+void mapTransfSinOrCos(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    auto on = [&](const char* key) { return r.boolean(key) ? 1.0 : 0.0; };
+    b.add("sin_or_cos",
+          {N::f("x", on("transf_function_enabledAx")), N::f("y", on("transf_function_enabledAy")),
+           N::f("z", on("transf_function_enabledAz")), N::f("cos_x", on("transf_function_enabledAx_false")),
+           N::f("cos_y", on("transf_function_enabledAy_false")), N::f("cos_z", on("transf_function_enabledAz_false")),
+           N::v("multiplier", r.vector("transf_constant_multiplierC_111")), N::f("scale", r.number("transf_scale")),
+           N::f("divide", on("transf_function_enabled_false")), N::f("mb2_derivative", 1.0)});
+    const bool tweak = r.boolean("analyticDE_enabled_false");
+    b.add("derivative_tweak", {N::f("scale", tweak ? r.number("analyticDE_scale_1") : 1.0),
+                               N::f("offset", tweak ? r.number("analyticDE_offset_1") : 1.0)});
+}
+
 // transf_spherical_inv: v + offset scaled, inverted in the unit sphere, less offset and the added
 // constant. Its conditional mode (inversion within a radius) is refused.
 void mapTransfSphericalInv(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -2082,9 +2201,13 @@ void mapTransfSphericalInv(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
     const vec3 offset = r.vector("mandelbox_offset");
     if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
     b.add("scale", {N::f("scale", r.number("transf_scale"))});
+    // TransfSphericalInvIteration (fractal_formulas.cpp of 2.20) adds 1 to the running derivative
+    // with the scale, and its analytic tweak (scale_1, offset_0) after the inversion.
+    b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", 1.0)});
     b.add("sphere_invert", {N::f("radius", 1.0)});
     const vec3 back = offset + r.vector("transf_addition_constant");
     if (length(back) > 0.0) b.add("translate", {N::v("offset", -back)});
+    analyticTweakWhereEnabled(r, b, "analyticDE_offset_0");
 }
 
 // transf_benesi_t1: |v| scaled per axis in Benesi's frame, less offset_200 (its rotation inside the
@@ -2401,6 +2524,10 @@ constexpr Mapping kMappings[] = {
     {1613, mapTransfDifsGrid},
     {603, mapDifsCylinder},
     {604, mapDifsSphere},
+    {606, mapDifsTorus},
+    {142, mapVicsek},
+    {1064, mapTransfRotationFolding},
+    {1069, mapTransfRotation4d},
     {600, mapDifsBoxDiagonalV1},
     {601, mapDifsBoxV1},
     {kQuaternion4dId, mapQuaternion4d},
@@ -2414,6 +2541,7 @@ constexpr Mapping kMappings[] = {
     {95, mapMengerMiddleMod},
     {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
+    {1082, mapTransfSinOrCos},
     {93, mapMandelbulbKaliMulti},
     {105, mapBenesiPwr2Mandelbulb},
     {1022, mapTransfZvectorAxisSwap},
@@ -3238,6 +3366,9 @@ FractImport importFract(const FractFile& file) {
         p.formula.placement.repeat = glm::max(main.vector("repeat"), vec3(0.0));
     }
     p.formula.boundRadius = std::clamp(main.number("view_distance_max"), 1e-3, 1e4);
+    // Mandelbulber2's camera rays end at view_distance_max from the camera (the scene import
+    // fits the bound sphere to the object, which may reach past it).
+    p.render.viewDistance = std::clamp(main.number("view_distance_max"), 1e-3, 1e6);
     // iteration_threshold_mode: Mandelbulber2 stops only where the orbit stays bounded for N
     // iterations, fraktal's hits only inside, the estimate sizing the steps. interior_mode: it stops
     // only in a band just outside the set and crawls through the set, fraktal's interior walls.

@@ -19,6 +19,7 @@ void eachUniform(const ShadingParams& p, Set&& set) {
     set("u_detail", p.detail);
     set("u_overRelaxation", p.overRelaxation);
     set("u_maxStepGrowth", p.maxStepGrowth);
+    set("u_viewDistance", p.viewDistance);
     const ShadingSettings& s = p.s;
     set("u_lightDirection", s.lightDirection);
     set("u_lightColor", s.lightColor);
