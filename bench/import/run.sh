@@ -11,7 +11,9 @@
 # bench/import/README.md) and OUT/worst.png (a contact sheet of the worst matches: fraktal's
 # mask, Mandelbulber2's, both overlaid; yellow both, red fraktal only, green Mandelbulber2 only).
 # FRACT_LIST: a file of settings files' paths (one a line) to run instead of the whole library.
-# PEER_CACHE: a previous run's img/ folder at the same size, whose mandelbulber2 masks are reused.
+# PEER_CACHE: a folder of mandelbulber2's masks, keyed by the settings file's content and the size
+# (mandelbulber2's image depends on them alone): a mask found there is reused, one rendered is added.
+# fraktal's rows are always new.
 # Needs mandelbulber2 (scripts/install-deps.sh installs it).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -45,16 +47,22 @@ peerSettings() {  # FILE OUT
   for kv in "${pairs[@]}"; do deletes+="/^${kv%% *} /d;"; appends+="${kv};\\n"; done
   sed "$deletes" "$1" | sed "/^\[main_parameters\]/a ${appends%\\n}" > "$2"
 }
-# mandelbulber2's mask of FILE as KEY: from PEER_CACHE (a previous run's img/ at the same size) when
-# it is there (the peer's image depends on the file and the size alone), else rendered.
+# mandelbulber2's mask of FILE as KEY: from PEER_CACHE when it holds one for the file's content at
+# this size, else rendered (and added there).
 peerMask() {  # FILE KEY
-  if [ -n "${PEER_CACHE:-}" ] && [ -f "$PEER_CACHE/mb_$2.png" ]; then
-    cp "$PEER_CACHE/mb_$2.png" "$out/img/mb_$2.png"
-    return
+  local cached=
+  if [ -n "${PEER_CACHE:-}" ]; then
+    mkdir -p "$PEER_CACHE"
+    cached="$PEER_CACHE/$(sha256sum "$1" | cut -c1-32)-$size.png"
+    if [ -f "$cached" ]; then
+      cp "$cached" "$out/img/mb_$2.png"
+      return
+    fi
   fi
   peerSettings "$1" "$tmp/peer.fract" &&
     HOME="$tmp" QT_QPA_PLATFORM=offscreen timeout 300 mandelbulber2 -n -f png16alpha -r "$size" \
-      -o "$out/img/mb_$2" "$tmp/peer.fract" > "$tmp/mb.log" 2>&1
+      -o "$out/img/mb_$2" "$tmp/peer.fract" > "$tmp/mb.log" 2>&1 || return
+  if [ -n "$cached" ] && [ -f "$out/img/mb_$2.png" ]; then cp "$out/img/mb_$2.png" "$cached.part" && mv "$cached.part" "$cached"; fi
 }
 expressible() { grep -qxF "$1 / $2" "$root/bench/import/expressible.txt"; }
 
@@ -100,7 +108,15 @@ while IFS= read -r -d "" -u 3 file; do
 done 3< <(if [ -n "${FRACT_LIST:-}" ]; then tr '\n' '\0' < "$FRACT_LIST"; else
   find "$share/toolbar" "$share/examples" "$share/formula/img" -name "*.fract" -print0 | sort -z; fi)
 
-python3 "$root/bench/import/summarize.py" "$out/results.tsv" "$(( ${size%x*} * ${size#*x} ))" > "$out/summary.md"
+{
+  # What the table is: one run, its date, the commit of the fraktal that ran (its source tree, with
+  # a mark when that tree had changes not committed) and the files it covered.
+  commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+  git -C "$root" diff --quiet HEAD 2>/dev/null || commit+=" (with changes not committed)"
+  echo "Run $(date -u +%Y-%m-%d) at $commit, $size, $(( $(wc -l < "$out/results.tsv") - 1 )) files$( [ -n "${FRACT_LIST:-}" ] && echo " (FRACT_LIST)" || echo " (the whole library)")."
+  echo
+  python3 "$root/bench/import/summarize.py" "$out/results.tsv" "$(( ${size%x*} * ${size#*x} ))"
+} > "$out/summary.md"
 # The contact sheet: the 12 worst imported matches.
 mapfile -t worst < <(awk -F'\t' 'NR > 1 && $6 != "" { print $6 "\t" $1 "-" $2 }' "$out/results.tsv" | sort -g | head -12 |
   cut -f2 | tr -c 'A-Za-z0-9_.\n-' '_')

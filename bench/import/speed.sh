@@ -8,7 +8,9 @@
 # imports, spread evenly over its list: those whose object does not fill the view first (an edge to
 # measure), then views from inside. Environment: FRAKTAL_SPP (default "1 2 4"), PEER_AA (default "1 2"), TRUTH_AA (default 3:
 # both truths take 9 samples per pixel), DE_COUNT (bench_de_count: with it each row gains the
-# breakdown of what each program computes, below).
+# breakdown of what each program computes, below), PEER_TIMEOUT (seconds, default none: a scene
+# whose mandelbulber2 truth runs longer is listed as not timed, and the next one is taken), ROWS
+# (default all: stop once this many scenes have a timed row; with SCENES, candidates in order).
 # Each render is timed by the wall clock and by its CPU time (user + system, threads included): both
 # programs render on every core, and the CPU time stays comparable when something else runs beside
 # the bench. The last lines give the distribution of the CPU-time ratio.
@@ -114,8 +116,14 @@ for scene in "${scenes[@]}"; do
     read -r fError[$spp] _ _ < <("$tmp/coverage_error" "$tmp/truth.exr" "$tmp/f.exr")
   done
   withSettings "$fract" "$tmp/truth.fract" antialiasing_enabled=true antialiasing_size=$truthAa
-  HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n -f png16alpha -r "$size" -o "$tmp/mb_truth" "$tmp/truth.fract" \
-    > /dev/null 2>&1 < /dev/null
+  # A truth over the time limit (Monte Carlo global illumination at 4 samples a pixel ran for hours):
+  # the scene is named, not timed, and not counted.
+  if ! HOME="$tmp" QT_QPA_PLATFORM=offscreen timeout "${PEER_TIMEOUT:-0}" mandelbulber2 -n -f png16alpha -r "$size" \
+      -o "$tmp/mb_truth" "$tmp/truth.fract" > /dev/null 2>&1 < /dev/null; then
+    echo "| $c / $name | not timed: mandelbulber2's $((truthAa * truthAa))-sample truth ran over ${PEER_TIMEOUT:-0} s | | | | | | |"
+    unset fTime fCpu fError
+    continue
+  fi
   for aa in "${peerAa[@]}"; do
     withSettings "$fract" "$tmp/peer.fract" antialiasing_enabled=$([[ $aa -gt 1 ]] && echo true || echo false) antialiasing_size=$aa
     timed env HOME="$tmp" QT_QPA_PLATFORM=offscreen mandelbulber2 -n --stats -f png16alpha -r "$size" -o "$tmp/mb" \
@@ -144,6 +152,8 @@ for scene in "${scenes[@]}"; do
     fi
   done
   unset fTime fCpu fError
+  timedRows=$((${timedRows:-0} + 1))
+  [[ -n ${ROWS:-} ]] && ((timedRows >= ROWS)) && break
 done
 # The CPU-time ratio's distribution over the rows with an equal-error fraktal setting.
 if (( ${#ratios[@]} > 0 )); then

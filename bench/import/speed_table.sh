@@ -6,7 +6,8 @@
 #   - the formula/img files that match (IoU >= 0.9 at 160x120, bench/import/run.sh);
 #   - RANDOM (default 10) matching imports with an edge in view (the object does not fill
 #     Mandelbulber2's 160x120 mask), drawn from the whole example library (examples/ and its
-#     artist collections) in an order shuffled by SEED,
+#     artist collections) in an order shuffled by SEED; a drawn scene whose mandelbulber2 truth runs
+#     over PEER_TIMEOUT seconds (default 600) is listed as not timed and the next one drawn,
 # the last two at SIZE (default 640x360). Which files match is measured in the same run
 # (bench/import/run.sh on formula/img and on the drawn files, batch by batch until RANDOM are
 # found), or read from a previous run's results.tsv (--results).
@@ -81,7 +82,8 @@ selectScenes() {
           python3 -c "import random, sys; l = sys.stdin.read().splitlines(); random.Random($seed).shuffle(l); print('\n'.join(l))" \
             > "$tmp/shuffled"
         batch=0
-        while (( $(awk -F'\t' '$1 != "formula"' "$results" | matchingWithEdge | wc -l) < random )); do
+        # Twice as many as wanted: a drawn scene may run over the time limit.
+        while (( $(awk -F'\t' '$1 != "formula"' "$results" | matchingWithEdge | wc -l) < 2 * random )); do
           sed -n "$((batch * 40 + 1)),$((batch * 40 + 40))p" "$tmp/shuffled" > "$tmp/list"
           [[ -s $tmp/list ]] || break
           FRACT_LIST=$tmp/list bench/import/run.sh "$fraktal" 160x120 "$tmp/batch$batch" > /dev/null
@@ -97,19 +99,19 @@ selectScenes() {
         python3 -c "import random, sys
 l = sys.stdin.read().splitlines()
 if '$shuffle' == 'yes': random.Random($seed).shuffle(l)
-print('\n'.join(l[:$random]))")
+print('\n'.join(l))")
     fi
   fi
 }
 
 # Each part through speed.sh: truths at 4 samples per pixel, mandelbulber2 at 1, fraktal at 1 or 2
 # (bench/import/README.md, "Speed on imported scenes").
-part() {  # TITLE SIZE SCENES
+part() {  # TITLE SIZE SCENES [ROWS]
   [[ -n $3 ]] || return 0
   echo
   echo "### $1 at $2"
   echo
-  SCENES=$3 TRUTH_AA=2 PEER_AA=1 FRAKTAL_SPP="1 2" DE_COUNT=$deCount bench/import/speed.sh /dev/null 0 "$2" "$fraktal" |
+  ROWS=${4:-} PEER_TIMEOUT=${PEER_TIMEOUT:-600} SCENES=$3 TRUTH_AA=2 PEER_AA=1 FRAKTAL_SPP="1 2" DE_COUNT=$deCount bench/import/speed.sh /dev/null 0 "$2" "$fraktal" |
     tee -a "$tmp/rows" /dev/stderr
 }
 toolbarScenes=""
@@ -128,7 +130,7 @@ fi
   has toolbar && part "The toolbar's nine" "$toolbarSize" "$toolbarScenes"
   selectScenes
   has formula && part "formula/img files that match" "$size" "$formulaScenes"
-  has random && part "$random matching imports with an edge, drawn with seed $seed" "$size" "$randomScenes"
+  has random && part "$random matching imports with an edge, drawn with seed $seed" "$size" "$randomScenes" "$random"
   echo
   # Over every row: the median, the worst and how many are under 2x (the issue's goal: each at least 2x, the median 5x).
   grep -E '^\| [a-zA-Z]+ / ' "$tmp/rows" | awk -F'|' '{ split($9, a, /[()]/); if (a[2] != "") print a[2] "\t" $2 }' | sort -g |
