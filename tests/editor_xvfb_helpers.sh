@@ -201,13 +201,14 @@ viewport_centre() { q '"\(.viewport[0] + .viewport[2] / 2 | floor) \(.viewport[1
 # (where the panel draws it this frame, so that a row added above it moves nothing in a test).
 widget_centre() { q ".paramWidgets[] | select(.name == \"$1\") | .rect | \"\\(.[0] + .[2] / 2 | floor) \\(.[1] + .[3] / 2 | floor)\""; }
 
-# press_keys KEY...: a key or chord held for a frame, as a hand presses it (ImGui 1.86 polls keys
-# once a frame): down in order, up in reverse.
+# press_keys KEY...: a key or chord tapped as a hand taps it: down in order, held 60 ms, up in
+# reverse; then the frames that take it. The editor's input queue hands the press and the release
+# to ImGui in frames of their own however slow a frame is. Held until a frame is drawn instead,
+# a key stays down past ImGui's key-repeat delay (275 ms) whenever a loaded machine's frame takes
+# longer, and a repeat is what a person holding the key gets: one Down would move two lines.
 press_keys() {
-    xdotool keydown "$@"
-    wait_frames 1
     for k in "$@"; do last="$k $(echo ${last:-})"; done
-    xdotool keyup $last
+    xdotool keydown "$@" sleep 0.06 keyup $last
     last=
     wait_frames 1
 }
