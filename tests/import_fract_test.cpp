@@ -1970,6 +1970,46 @@ TEST(FractImport, MengerMiddleModFollowsMandelbulber2sOrbits) {
     expectExampleImports("menger middle mod.fract");
 }
 
+// menger_octo against MengerOctoIteration (fractal_formulas.cpp of 2.20) written out: the
+// octahedral fold's four conditional reflections, |x|, the scale 1.8 about (1.2, 0.1, 0), then
+// the Menger step of scale 2.8 (|z| sorted, x and y less 2 and 1.8, z less 2 above 1), the
+// addition constant and the weight 0.95 (Mandelbulber2 adds no c).
+TEST(FractImport, MengerOctoFollowsMandelbulber2sOrbits) {
+    const OrbitCase c{
+        "formula_1 115;\nN 6;\n[fractal_1]\ntransf_offset_100 1,2 0,1 0;\ntransf_scale_2 1,8;\n"
+        "transf_scale_3 2,8;\ntransf_constant_multiplier_111 1 0,9 1;\ntransf_addition_constant 0,05 0 -0,1;\n"
+        "transf_function_enabled_false true;\ntransf_scale_1 0,95;\n",
+        {"octahedral_fold", "plane_fold", "scale", "abs_fold", "menger_fold", "menger_scale", "translate", "scale"},
+        [](const vec3& v, const vec3&) {
+            vec3 z = v;
+            if (z.x + z.y < 0.0) z = vec3(-z.y, -z.x, z.z);
+            if (z.x + z.z < 0.0) z = vec3(-z.z, z.y, -z.x);
+            if (z.x - z.y < 0.0) z = vec3(z.y, z.x, z.z);
+            if (z.x - z.z < 0.0) z = vec3(z.z, z.y, z.x);
+            z.x = std::abs(z.x);
+            z = z * 1.8 - vec3(1.2, 0.1, 0.0) * (1.8 - 1.0);
+            z = glm::abs(z);
+            if (z.x - z.y < 0.0) std::swap(z.y, z.x);
+            if (z.x - z.z < 0.0) std::swap(z.z, z.x);
+            if (z.y - z.z < 0.0) std::swap(z.z, z.y);
+            z *= 2.8;
+            z.x -= 2.0;
+            z.y -= 1.8;
+            if (z.z > 1.0) z.z -= 2.0;
+            z += vec3(0.05, 0.0, -0.1);
+            return z * 0.95;
+        }};
+    expectOrbitsFollowMandelbulber2(c);
+    // The box offset, the sphere fold and weights that add a named iteration's point are refused.
+    expectRefused("formula_1 115;\n[fractal_1]\ntransf_function_enabledx_false true;\n", "slot 1 (menger_octo)",
+                  "box offset");
+    expectRefused("formula_1 115;\n[fractal_1]\ntransf_function_enabledS_false true;\n", "slot 1 (menger_octo)",
+                  "sphere fold");
+    expectRefused("formula_1 115;\n[fractal_1]\ntransf_function_enabled_false true;\ntransf_offsetA_0 0,5;\n",
+                  "slot 1 (menger_octo)", "iteration weights");
+    expectExampleImports("menger octo 001.fract");
+}
+
 // Mandelbulber2's example files that use these formulas import with nothing refused, but for the
 // scator files, the one whose formula adds c reordered anew each iteration and the hybrid with a
 // partly reflecting IFS, each refused by its reason.
@@ -3658,6 +3698,8 @@ std::vector<Expected> fixedSet() {
         // The spherical inversion transform with the 1 Mandelbulber2 adds to its running
         // derivative (a derivative_tweak): 0.91 without it.
         {gm + "sphere_invert_menger_sponge.fract", ""},
+        // menger_octo: the octahedral fold and its scale about a point before the Menger step.
+        {"formula/img/menger_octo.fract", ""},
     };
 }
 

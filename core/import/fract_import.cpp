@@ -562,6 +562,46 @@ void mapMengerMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     additionConstant(r, b);
 }
 
+// menger_octo (MengerOctoIteration of 2.20): in window E the octahedral fold (x+y, x+z, x-y and
+// x-z reflected where negative: Knighty's octahedral KIFS), |x| and the scale transf_scale_2 about
+// transf_offset_100 (the derivative times the scale, no 1 added); the rotation (option R, window
+// R); with option M, in window M, the Menger step of scale transf_scale_3 (|z| sorted, x and y less
+// 2 transf_constant_multiplier_111, z less its 2 z above 1) and transf_addition_constant after it;
+// the iteration weights (option "enabled_false") as their scale transf_scale_1 where they carry no
+// point of a named iteration. The sign-dependent box offset (option x) and the sphere fold (option
+// S, whose test reads |z| before the offset it folds about) are refused.
+void mapMengerOcto(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledx_false", "the sign-dependent box offset");
+    r.mustBeDefault("transf_function_enabledS_false", "the octo step's sphere fold");
+    inWindow(r, b, "E", "E", [&] {
+        b.add("octahedral_fold", {});
+        b.add("plane_fold", {N::v("normal", vec3(1.0, 0.0, 0.0)), N::f("offset", 0.0)});
+        b.add("scale", {N::f("scale", r.number("transf_scale_2")), N::v("center", r.vector("transf_offset_100"))});
+    });
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
+    if (r.boolean("transf_function_enabledM")) {
+        const double s = r.number("transf_scale_3");
+        const vec3 m = r.vector("transf_constant_multiplier_111");
+        if (std::abs(m.z - 1.0) > 1e-9)
+            return r.unsupported("transf_constant_multiplier_111.z " + fmt(m.z) +
+                                 ": the z shift's threshold stays at 1");
+        if (std::abs(s - 1.0) < 1e-9)
+            return r.unsupported("transf_scale_3 1: a Menger step with scale 1 does not shrink");
+        inWindow(r, b, "M", "M", [&] {
+            b.add("abs_fold", {});
+            b.add("menger_fold", {});
+            b.add("menger_scale", {N::f("scale", s), N::v("offset", 2.0 * m / (s - 1.0))});
+            additionConstant(r, b);
+        });
+    }
+    if (!r.boolean("transf_function_enabled_false")) return;
+    if (r.number("transf_offsetA_0") != 0.0 || r.number("transf_offsetB_0") != 0.0)
+        return r.unsupported("iteration weights: the point of iterations transf_int_A and transf_int_B added back");
+    const double weight = r.number("transf_scale_1");
+    if (weight <= 0.0) return r.unsupported("transf_scale_1 " + fmt(weight) + ": a weight of the point of 0 or below");
+    if (weight != 1.0) b.add("scale", {N::f("scale", weight)});
+}
+
 void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const bool ax = r.boolean("IFS_abs_x"), ay = r.boolean("IFS_abs_y"), az = r.boolean("IFS_abs_z");
     if (ax && ay && az) {
@@ -2539,6 +2579,7 @@ constexpr Mapping kMappings[] = {
     {94, mapMandelbulbBermarte},
     {1053, mapTransfInvCylindrical},
     {95, mapMengerMiddleMod},
+    {115, mapMengerOcto},
     {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
     {1082, mapTransfSinOrCos},
