@@ -2010,6 +2010,67 @@ TEST(FractImport, MengerOctoFollowsMandelbulber2sOrbits) {
     expectExampleImports("menger octo 001.fract");
 }
 
+// Mandelbulber2's rotationMatrix of a rotation in degrees applied to v (CRotationMatrix of
+// algebra.cpp in 2.20: SetRotation2 multiplies RotateZ, RotateY, RotateX in that order onto the
+// identity, each the right-handed turn about its axis; RotateVector is the matrix times v).
+vec3 mb2RotateVector(const vec3& degrees, const vec3& v) {
+    const vec3 a = degrees * (M_PI / 180.0);
+    const glm::dmat3 rz(std::cos(a.z), std::sin(a.z), 0.0, -std::sin(a.z), std::cos(a.z), 0.0, 0.0, 0.0, 1.0);
+    const glm::dmat3 ry(std::cos(a.y), 0.0, -std::sin(a.y), 0.0, 1.0, 0.0, std::sin(a.y), 0.0, std::cos(a.y));
+    const glm::dmat3 rx(1.0, 0.0, 0.0, 0.0, std::cos(a.x), std::sin(a.x), 0.0, -std::sin(a.x), std::cos(a.x));
+    return rz * ry * rx * v;
+}
+
+// ifs_xy against IfsXYIteration (fractal_formulas.cpp of 2.20) written out, with GM ifs_xy's
+// options and windows: the box size off from iteration 2 (option Bx_false), |y|, the pentagonal
+// fold on iteration 0 only, x and y swapped where y > x, the box size off again from iteration 3,
+// x reflected below -0.3 and y below 0.5, x less 0.6 and y less 0.7, the scale 1.8, the offset
+// added and the turn (Mandelbulber2 adds no c).
+TEST(FractImport, IfsXyFollowsMandelbulber2sOrbits) {
+    const OrbitCase c{
+        "formula_1 150;\nN 12;\n[fractal_1]\ntransf_addition_constant_0555 0,5 0,5 0,4;\n"
+        "transf_function_enabledAy_false true;\ntransf_function_enabledBx_false true;\n"
+        "transf_start_iterations_B 2;\ntransf_function_enabledCx_false true;\ntransf_int_3 5;\n"
+        "transf_stop_iterations_J 1;\ntransf_start_iterations_I 3;\ntransf_function_enabledx_false true;\n"
+        "transf_offset_0 -0,3;\ntransf_offset_1 0,6;\ntransf_offsetA_1 0,7;\ntransf_offset_111 0,57 0,67 0,2;\n"
+        "transf_rotation 19 -6 0;\ntransf_scale_2 1,8;\n",
+        {"translate", "plane_fold", "poly_fold", "plane_fold", "translate", "plane_fold", "plane_fold", "translate",
+         "translate", "scale", "derivative_tweak", "translate", "rotate"},
+        nullptr,
+        1.2,
+        [](const vec3& v, const vec3&, int i) {
+            const vec3 box(0.5, 0.5, 0.4);
+            vec3 z = v;
+            if (i >= 2) z -= box;
+            z.y = std::abs(z.y);
+            if (i < 1) {
+                z.x = std::abs(z.x);
+                const double poly = 5.0;
+                const double psi =
+                    std::abs(std::fmod(std::atan(z.y / z.x) + M_PI / poly, M_PI / (0.5 * poly)) - M_PI / poly);
+                const double len = std::sqrt(z.x * z.x + z.y * z.y);
+                z.x = std::cos(psi) * len;
+                z.y = std::sin(psi) * len;
+            }
+            if (z.y > z.x) std::swap(z.x, z.y);
+            if (i >= 3) z -= box;
+            if (z.x < -0.3) z.x = std::abs(z.x + 0.3) - 0.3;
+            if (z.y < 0.5) z.y = std::abs(z.y - 0.5) + 0.5;
+            z.x -= 0.6;
+            z.y -= 0.7;
+            z *= 1.8;
+            z += vec3(0.57, 0.67, 0.2);
+            return mb2RotateVector(vec3(19.0, -6.0, 0.0), z);
+        }};
+    expectOrbitsFollowMandelbulber2(c);
+    // The varying scale and a polygon of more than 32 sides are refused.
+    expectRefused("formula_1 150;\n[fractal_1]\ntransf_function_enabledF_false true;\n", "slot 1 (ifs_xy)",
+                  "scale varied");
+    expectRefused("formula_1 150;\n[fractal_1]\ntransf_function_enabledCx_false true;\ntransf_int_3 40;\n",
+                  "slot 1 (ifs_xy)", "polygonal fold");
+    expectExampleImports("Graeme McLaren  collection - license Creative Commons  (CC-BY 4.0)/ifs_xy.fract");
+}
+
 // Mandelbulber2's example files that use these formulas import with nothing refused, but for the
 // scator files, the one whose formula adds c reordered anew each iteration and the hybrid with a
 // partly reflecting IFS, each refused by its reason.
@@ -3700,6 +3761,9 @@ std::vector<Expected> fixedSet() {
         {gm + "sphere_invert_menger_sponge.fract", ""},
         // menger_octo: the octahedral fold and its scale about a point before the Menger step.
         {"formula/img/menger_octo.fract", ""},
+        // ifs_xy with its windows: the box size off from iteration 2, the pentagonal fold on the
+        // first iteration only, the offset folds and the turn.
+        {gm + "ifs_xy.fract", ""},
     };
 }
 

@@ -602,6 +602,61 @@ void mapMengerOcto(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     if (weight != 1.0) b.add("scale", {N::f("scale", weight)});
 }
 
+// ifs_xy (IfsXYIteration of 2.20), each part in its window: the point less the box size
+// transf_addition_constant_0555 (option Bx, window B); |x|, |y|, |z| (options Ax, Ay, Az,
+// windows X, Y, Z); the polygonal fold of transf_int_3 sides (option Cx, window J); x and y
+// swapped where y > x (option By, window D); the box size taken off again (option Bx, window I);
+// x and y reflected where below transf_offset_0 and transf_offset_05 (options x and y, windows A
+// and C); x less transf_offset_1 (window E) and y less transf_offsetA_1 (window F); the swap again
+// (option By_false, window G); the scale transf_scale_2 with 1 added to the derivative, or
+// analyticDE's scale and offset_1 (window S); transf_offset_111 added (window H); the turn
+// transf_rotation (window R); analyticDE's closing tweak. The varying scale is refused.
+void mapIfsXy(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledF_false", "the scale varied with the iteration");
+    auto translate = [&](const std::string& window, const vec3& offset) {
+        if (length(offset) > 0.0) inWindow(r, b, window, window, [&] { b.add("translate", {N::v("offset", offset)}); });
+    };
+    auto mirror = [&](const std::string& window, const vec3& normal, double offset) {
+        inWindow(r, b, window, window, [&] { b.add("plane_fold", {N::v("normal", normal), N::f("offset", offset)}); });
+    };
+    const vec3 box = r.vector("transf_addition_constant_0555");
+    if (r.boolean("transf_function_enabledBx_false")) translate("B", -box);
+    for (int k = 0; k < 3; ++k) {
+        const std::string axis(1, "xyz"[k]);
+        if (!r.boolean("transf_function_enabledA" + axis + "_false")) continue;
+        vec3 normal(0.0);
+        normal[k] = 1.0;
+        mirror(std::string(1, "XYZ"[k]), normal, 0.0);
+    }
+    if (r.boolean("transf_function_enabledCx_false")) {
+        const int sides = r.integer("transf_int_3");
+        if (sides < 1 || sides > 32)
+            return r.unsupported("transf_int_3 " + std::to_string(sides) +
+                                 ": a polygonal fold of other than 1 to 32 sides");
+        inWindow(r, b, "J", "J", [&] { b.add("poly_fold", {N::f("order", double(sides))}); });
+    }
+    const vec3 swapXy(1.0, -1.0, 0.0);  // the mirror across x = y: x and y swapped where y > x
+    if (r.boolean("transf_function_enabledBy")) mirror("D", swapXy, 0.0);
+    if (r.boolean("transf_function_enabledBx")) translate("I", -box);
+    if (r.boolean("transf_function_enabledx_false")) mirror("A", vec3(1.0, 0.0, 0.0), r.number("transf_offset_0"));
+    if (r.boolean("transf_function_enabledy")) mirror("C", vec3(0.0, 1.0, 0.0), r.number("transf_offset_05"));
+    translate("E", vec3(-r.number("transf_offset_1"), 0.0, 0.0));
+    translate("F", vec3(0.0, -r.number("transf_offsetA_1"), 0.0));
+    if (r.boolean("transf_function_enabledBy_false")) mirror("G", swapXy, 0.0);
+    const bool tweak = r.boolean("analyticDE_enabled_false");
+    inWindow(r, b, "S", "S", [&] {
+        b.add("scale", {N::f("scale", r.number("transf_scale_2"))});
+        b.add("derivative_tweak", {N::f("scale", tweak ? r.number("analyticDE_scale_1") : 1.0),
+                                   N::f("offset", tweak ? r.number("analyticDE_offset_1") : 1.0)});
+    });
+    translate("H", r.vector("transf_offset_111"));
+    if (length(r.vector("transf_rotation")) > 0.0)
+        inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("transf_rotation"))); });
+    if (tweak)
+        b.add("derivative_tweak",
+              {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number("analyticDE_offset_0"))});
+}
+
 void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const bool ax = r.boolean("IFS_abs_x"), ay = r.boolean("IFS_abs_y"), az = r.boolean("IFS_abs_z");
     if (ax && ay && az) {
@@ -2580,6 +2635,7 @@ constexpr Mapping kMappings[] = {
     {1053, mapTransfInvCylindrical},
     {95, mapMengerMiddleMod},
     {115, mapMengerOcto},
+    {150, mapIfsXy},
     {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
     {1082, mapTransfSinOrCos},
