@@ -47,6 +47,7 @@
 #include "formulas/plane_fold.hpp"
 #include "formulas/platonic_solid.hpp"
 #include "formulas/poly_fold.hpp"
+#include "formulas/poly_fold_sym.hpp"
 #include "formulas/primitives.hpp"
 #include "formulas/pseudo_kleinian.hpp"
 #include "formulas/quadratic_bulbs.hpp"
@@ -152,6 +153,7 @@ constexpr std::array kBlocks{
     describe<AboxFold4d>(),
     describe<Rotate4d>(),
     describe<PolyFold>(),
+    describe<PolyFoldSym>(),
     describe<Quaternion4d>(),
     describe<MandelbulbBermarte>(),
     describe<InvCylindrical>(),

@@ -2683,6 +2683,45 @@ TEST(FractImport, SinAndCosMaxFollowsMandelbulber2sOrbits) {
         }
 }
 
+// One plane of TransfPolyFoldSymMultiIteration (fractal_formulas.cpp of 2.20) as Mandelbulber2
+// writes it: the sector from atan(a / b) (atan2 with the whole turn), truncated, turns (a, b) by
+// its multiple of 2 pi / order, and an odd sector mirrors b.
+void mb2PolyFoldSym(double& a, double& b, int order, bool wholeTurn) {
+    const double div2Pi = double(order) / (2.0 * M_PI);
+    const int sector = int(-div2Pi * (wholeTurn ? std::atan2(a, b) : std::atan(a / b)));
+    const double angle = double(sector / div2Pi);
+    const double temp = a;
+    a = a * std::cos(angle) - b * std::sin(angle);
+    b = temp * std::sin(angle) + b * std::cos(angle);
+    if (sector & 1) b = -b;
+}
+
+// transf_poly_fold_sym_multi before the power-2 bulb in a hybrid: |y|, the fold of 5 sectors in
+// the xy plane (atan) and in the zx plane over the whole turn, the addition constant and the
+// analytic tweak's offset, against Mandelbulber2's iteration written out.
+TEST(FractImport, PolyFoldSymMultiFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 1081;\nformula_2 2;\nN 8;\nuse_default_bailout false;\nbailout 3;\n"
+         "[fractal_1]\ntransf_function_enabledy_false true;\ntransf_int_6 5;\ntransf_function_enabledCz_false true;\n"
+         "transf_function_enabledAz_false true;\ntransf_addition_constant 0,1 0 -0,05;\nanalyticDE_offset_0 0,2;\n"
+         "[fractal_2]\npower 2;\n",
+         {"plane_fold", "poly_fold_sym", "poly_fold_sym", "translate", "derivative_tweak", "mandelbulb_sine", "add_c"},
+         nullptr,
+         2.0,
+         [](const vec3& v, const vec3& c, int i) {
+             if (i % 2 == 1) return mb2MandelbulbPower2(v) + c;
+             vec3 z = v;
+             z.y = std::abs(z.y);
+             mb2PolyFoldSym(z.x, z.y, 5, false);
+             mb2PolyFoldSym(z.z, z.x, 5, true);
+             return z + vec3(0.1, 0.0, -0.05);
+         }});
+    // The tweak by the average stretch and a fold of more than 32 sectors are refused.
+    expectRefused("formula_1 1081;\n[fractal_1]\nanalyticDE_enabled_false true;\n",
+                  "slot 1 (transf_poly_fold_sym_multi)", "average stretch");
+    expectRefused("formula_1 1081;\n[fractal_1]\ntransf_int_6 40;\n", "slot 1 (transf_poly_fold_sym_multi)", "sectors");
+}
+
 // Graeme McLaren's sine or cosine: the cosine on x and z, the sine on y, each axis multiplied,
 // scaled twice and over |v| + 1, alternating with a power-2 bulb, against Mandelbulber2's
 // TransfSinOrCosIteration and MandelbulbIteration written out; an axis left out becomes 0. The
@@ -3764,6 +3803,9 @@ std::vector<Expected> fixedSet() {
         // ifs_xy with its windows: the box size off from iteration 2, the pentagonal fold on the
         // first iteration only, the offset folds and the turn.
         {gm + "ifs_xy.fract", ""},
+        // transf_poly_fold_sym_multi (poly_fold_sym) in the xy and zx planes before the Menger
+        // sponge, on the first three iterations.
+        {"formula/img/transf_poly_fold_sym_multi.fract", ""},
     };
 }
 

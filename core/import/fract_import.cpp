@@ -657,6 +657,40 @@ void mapIfsXy(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
               {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number("analyticDE_offset_0"))});
 }
 
+// transf_poly_fold_sym_multi (TransfPolyFoldSymMultiIteration of 2.20): |x|, |y|, |z| (options
+// x, y, z _false), then the symmetric polygonal fold of transf_int_6 sectors in the xy plane
+// (option Cx), the yz plane (Cy_false) and the zx plane (Cz_false), each over the whole turn with
+// its option A*_false; transf_addition_constant; analyticDE's scale and offset_0 (analyticDE_enabled,
+// on by default, the identity at its defaults). The tweak by the point's average stretch
+// (analyticDE_enabled_false) is refused.
+void mapTransfPolyFoldSymMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    for (int k = 0; k < 3; ++k) {
+        if (!r.boolean(std::string("transf_function_enabled") + "xyz"[k] + "_false")) continue;
+        vec3 normal(0.0);
+        normal[k] = 1.0;
+        b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+    }
+    const int order = r.integer("transf_int_6");
+    if (order < 1 || order > 32)
+        return r.unsupported("transf_int_6 " + std::to_string(order) + ": a fold of other than 1 to 32 sectors");
+    const struct {
+        const char* enabled;
+        const char* fullTurn;
+    } planes[] = {{"transf_function_enabledCx", "transf_function_enabledAx_false"},
+                  {"transf_function_enabledCy_false", "transf_function_enabledAy_false"},
+                  {"transf_function_enabledCz_false", "transf_function_enabledAz_false"}};
+    for (int k = 0; k < 3; ++k)
+        if (r.boolean(planes[k].enabled))
+            b.add("poly_fold_sym", {N::f("order", double(order)), N::f("plane", double(k)),
+                                    N::f("full_turn", r.boolean(planes[k].fullTurn) ? 1.0 : 0.0)});
+    additionConstant(r, b);
+    if (!r.boolean("analyticDE_enabled")) return;
+    if (r.boolean("analyticDE_enabled_false"))
+        return r.unsupported("analyticDE_enabled_false: the derivative times the point's average stretch");
+    const double scale = r.number("analyticDE_scale_1"), offset = r.number("analyticDE_offset_0");
+    if (scale != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", offset)});
+}
+
 void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const bool ax = r.boolean("IFS_abs_x"), ay = r.boolean("IFS_abs_y"), az = r.boolean("IFS_abs_z");
     if (ax && ay && az) {
@@ -2636,6 +2670,7 @@ constexpr Mapping kMappings[] = {
     {95, mapMengerMiddleMod},
     {115, mapMengerOcto},
     {150, mapIfsXy},
+    {1081, mapTransfPolyFoldSymMulti},
     {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
     {1082, mapTransfSinOrCos},
