@@ -64,6 +64,7 @@
 #include "formulas/sin_or_cos.hpp"
 #include "formulas/smooth_box_fold.hpp"
 #include "formulas/sphere_fold.hpp"
+#include "formulas/sphere_fold_parabolic.hpp"
 #include "formulas/sphere_invert.hpp"
 #include "formulas/translate.hpp"
 
@@ -78,6 +79,7 @@ constexpr std::array kBlocks{
     describe<PlaneFold>(),
     describe<BoxFold>(),
     describe<SphereFold>(),
+    describe<SphereFoldParabolic>(),
     describe<MengerFold>(),
     describe<SierpinskiFold>(),
     describe<OctahedralFold>(),

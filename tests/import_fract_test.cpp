@@ -2722,6 +2722,63 @@ TEST(FractImport, PolyFoldSymMultiFollowsMandelbulber2sOrbits) {
     expectRefused("formula_1 1081;\n[fractal_1]\ntransf_int_6 40;\n", "slot 1 (transf_poly_fold_sym_multi)", "sectors");
 }
 
+// transf_spherical_fold_parab before the power-2 bulb in a hybrid, against
+// TransfSphericalFoldParabIteration (fractal_formulas.cpp of 2.20) written out: the sphere fold
+// (option S), then |z|^2 moved by -0.2, the shift and the scale 1.1, the parabolas from 2.5 at
+// the centre to 1 at 1.4 (the shift taken back in the outer band only, as Mandelbulber2 does),
+// and the scale 0.6.
+TEST(FractImport, SphericalFoldParabFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 1073;\nformula_2 2;\nN 8;\nuse_default_bailout false;\nbailout 3;\n"
+         "[fractal_1]\ntransf_function_enabledS_false true;\ntransf_minR2_p25 0,5;\ntransf_maxR2_1 1;\n"
+         "transf_offset_0 -0,2;\nmandelbox_offset 0 0,3 0;\ntransf_scale 1,1;\ntransf_scale_4 1,5;\n"
+         "transf_scale_1 1,4;\ntransf_scaleA_1 0,6;\n[fractal_2]\npower 2;\n",
+         {"sphere_fold", "sphere_fold_parabolic", "scale", "derivative_tweak", "mandelbulb_sine", "add_c"},
+         nullptr,
+         2.0,
+         [](const vec3& v, const vec3& c, int i) {
+             if (i % 2 == 1) return mb2MandelbulbPower2(v) + c;
+             vec3 z = v;
+             double rr = dot(z, z);
+             if (rr < 0.5)
+                 z *= 1.0 / 0.5;
+             else if (rr < 1.0)
+                 z *= 1.0 / rr;
+             const vec3 offset(0.0, 0.3, 0.0);
+             rr = dot(z, z);
+             z += offset;
+             z *= 1.1;
+             const double maxScale = 1.5, maxR2 = 1.4, halfMax = 0.5 * maxR2;
+             const double factor = (maxScale - 1.0) * 0.5 / (halfMax * halfMax);
+             rr += -0.2;
+             if (rr < halfMax) {
+                 z *= maxScale - rr * rr * factor;
+             } else if (rr < maxR2) {
+                 z *= 1.0 + (maxR2 - rr) * (maxR2 - rr) * factor;
+                 z -= offset;
+             }
+             return z * 0.6;
+         }});
+    // The derivative: Mandelbulber2's (w |scale| + 1) m, then the last scale's |0.9| and 1.
+    const mb2::FractImport r = importText(
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 1073;\nformula_2 2;\n[fractal_1]\n"
+        "transf_scale_4 2,5;\ntransf_scaleA_1 0,9;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    P4 p{vec3(0.2, -0.1, 0.3), 1.5};
+    ASSERT_GE(r.preset.formula.nodes.size(), 3u);
+    for (size_t k = 0; k < 3; ++k) {
+        const Node& n = r.preset.formula.nodes[k];
+        n.block->apply(p, vec3(0.0), n.args());
+    }
+    const double rr = 0.04 + 0.01 + 0.09, factor = 1.5 * 0.5 / 0.25;
+    EXPECT_NEAR(p.w, ((1.5 + 1.0) * (2.5 - rr * rr * factor)) * 0.9 + 1.0, 1e-12);
+    // The reflection of m about |p|^2 and a varying scale are refused.
+    expectRefused("formula_1 1073;\n[fractal_1]\ntransf_function_enabledAx_false true;\n",
+                  "slot 1 (transf_spherical_fold_parab)", "reflected");
+    expectRefused("formula_1 1073;\n[fractal_1]\ntransf_function_enabledX_false true;\ntransf_scale_vary_0 0,1;\n",
+                  "slot 1 (transf_spherical_fold_parab)", "varied");
+}
+
 // Graeme McLaren's sine or cosine: the cosine on x and z, the sine on y, each axis multiplied,
 // scaled twice and over |v| + 1, alternating with a power-2 bulb, against Mandelbulber2's
 // TransfSinOrCosIteration and MandelbulbIteration written out; an axis left out becomes 0. The
@@ -3806,6 +3863,9 @@ std::vector<Expected> fixedSet() {
         // transf_poly_fold_sym_multi (poly_fold_sym) in the xy and zx planes before the Menger
         // sponge, on the first three iterations.
         {"formula/img/transf_poly_fold_sym_multi.fract", ""},
+        // transf_spherical_fold_parab (sphere_fold_parabolic) with the sphere fold from the second
+        // iteration and Mandelbulber2's offset taken back in the outer band only.
+        {"formula/img/transf_spherical_fold_parab.fract", ""},
     };
 }
 

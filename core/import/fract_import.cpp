@@ -691,6 +691,41 @@ void mapTransfPolyFoldSymMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem
     if (scale != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", offset)});
 }
 
+// transf_spherical_fold_parab (TransfSphericalFoldParabIteration of 2.20): with option S (window
+// S) Mandelbulber2's sphere fold of squared radii transf_minR2_p25 and transf_maxR2_1; in the
+// formula's window the parabolic fold (sphere_fold_parabolic) of transf_scale_4 at the centre over
+// the squared radius transf_scale_1, its |p|^2 moved by transf_offset_0, after the shift
+// mandelbox_offset and the scale transf_scale, with Mandelbulber2's derivative (the scale's 1
+// added); then the scale transf_scaleA_1 with analyticDE's scale and offset_1 on the derivative
+// (its 1 by default). The options that reflect m about |p|^2 (Ax; Ay of the sphere fold) and a
+// scale varied with the iteration are refused.
+void mapTransfSphericalFoldParab(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_function_enabledAx_false", "the parabolic fold's m reflected about |p|^2");
+    if (r.boolean("transf_function_enabledS_false")) {
+        r.mustBeDefault("transf_function_enabledAy_false", "the sphere fold's m reflected about |p|^2");
+        inWindow(r, b, "S", "S", [&] {
+            sphereFold(b, std::sqrt(std::max(r.number("transf_minR2_p25"), 0.0)),
+                       std::sqrt(std::max(r.number("transf_maxR2_1"), 0.0)));
+        });
+    }
+    const double maxR2 = r.number("transf_scale_1");
+    if (maxR2 < 0.01)
+        return r.unsupported("transf_scale_1 " + fmt(maxR2) + ": a parabolic fold's squared radius below 0.01");
+    b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), [&] {
+        b.add("sphere_fold_parabolic",
+              {N::f("max_scale", r.number("transf_scale_4")), N::f("max_r2", maxR2),
+               N::f("r2_offset", r.number("transf_offset_0")), N::f("scale", r.number("transf_scale")),
+               N::v("offset", r.vector("mandelbox_offset")), N::f("mb2_derivative", 1.0)});
+    });
+    if (r.boolean("transf_function_enabledX_false") && r.number("transf_scale_vary_0") != 0.0)
+        return r.unsupported("transf_scale_vary_0 " + fmt(r.number("transf_scale_vary_0")) +
+                             ": the scale varied with the iteration");
+    const double scale = r.number("transf_scaleA_1");
+    if (scale != 1.0) b.add("scale", {N::f("scale", scale)});
+    b.add("derivative_tweak",
+          {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number("analyticDE_offset_1"))});
+}
+
 void mapKaleidoscopicIfs(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const bool ax = r.boolean("IFS_abs_x"), ay = r.boolean("IFS_abs_y"), az = r.boolean("IFS_abs_z");
     if (ax && ay && az) {
@@ -2671,6 +2706,7 @@ constexpr Mapping kMappings[] = {
     {115, mapMengerOcto},
     {150, mapIfsXy},
     {1081, mapTransfPolyFoldSymMulti},
+    {1073, mapTransfSphericalFoldParab},
     {602, mapDifsBoxDiagonalV3},
     {1084, mapTransfSinAndCosMax},
     {1082, mapTransfSinOrCos},
