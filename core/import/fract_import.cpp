@@ -257,6 +257,13 @@ void additionConstant(Reader& r, NodeBuilder& b) {
     if (length(add) > 0.0) b.add("translate", {N::v("offset", add)});
 }
 
+// The analytic DE tweak behind analyticDE_enabled_false: the running derivative times
+// analyticDE_scale_1 plus `offsetKey` (analyticDE_offset_0 or _1, as the formula reads it).
+void analyticTweakWhereEnabled(Reader& r, NodeBuilder& b, const char* offsetKey) {
+    if (r.boolean("analyticDE_enabled_false"))
+        b.add("derivative_tweak", {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number(offsetKey))});
+}
+
 // A multiple of c given per axis: fraktal's add_c has one weight; its x when the three agree.
 double uniformMultiplier(Reader& r, const std::string& key) {
     const vec3 m = r.vector(key);
@@ -410,6 +417,14 @@ void sphereFold(NodeBuilder& b, double minRadius, double fixedRadius, const vec3
           {N::f("min_radius", std::max(minRadius, 0.001)), N::f("fixed_radius", fixedRadius), N::v("offset", offset)});
 }
 
+// The plane fold across axis `axis`'s plane at `offset`: the coordinate reflected where it lies
+// below the offset (at 0, Mandelbulber2's z.x = fabs(z.x)).
+void axisMirror(NodeBuilder& b, int axis, double offset = 0.0) {
+    vec3 normal(0.0);
+    normal[axis] = 1.0;
+    b.add("plane_fold", {N::v("normal", normal), N::f("offset", offset)});
+}
+
 // Mandelbulber2's box fold at `limit` with its folding `value` (BoxFolding, MandelboxIteration):
 // the box fold where the value is twice the limit, else the fold that jumps there.
 void boxFold(NodeBuilder& b, double limit, double value) {
@@ -460,9 +475,7 @@ void mapAboxMod1(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_addCpixel_enabled_false", "an extra multiple of c in a chosen axis order");
     const bool foldZ = r.boolean("transf_function_enabledz");
     for (int k = 0; k < (foldZ ? 3 : 2); ++k) {
-        vec3 normal(0.0);
-        normal[k] = 1.0;
-        b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+        axisMirror(b, k);
     }
     const double value = r.number("mandelbox_folding_value");
     b.add("box_fold_axes",
@@ -575,7 +588,7 @@ void mapMengerOcto(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     r.mustBeDefault("transf_function_enabledS_false", "the octo step's sphere fold");
     inWindow(r, b, "E", "E", [&] {
         b.add("octahedral_fold", {});
-        b.add("plane_fold", {N::v("normal", vec3(1.0, 0.0, 0.0)), N::f("offset", 0.0)});
+        axisMirror(b, 0);
         b.add("scale", {N::f("scale", r.number("transf_scale_2")), N::v("center", r.vector("transf_offset_100"))});
     });
     windowedRotation(r, b, "transf_function_enabledR_false", "_R");
@@ -616,17 +629,18 @@ void mapIfsXy(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     auto translate = [&](const std::string& window, const vec3& offset) {
         if (length(offset) > 0.0) inWindow(r, b, window, window, [&] { b.add("translate", {N::v("offset", offset)}); });
     };
-    auto mirror = [&](const std::string& window, const vec3& normal, double offset) {
-        inWindow(r, b, window, window, [&] { b.add("plane_fold", {N::v("normal", normal), N::f("offset", offset)}); });
+    // The mirror across x = y: x and y swapped where y > x.
+    auto swapXy = [&](const std::string& window) {
+        inWindow(r, b, window, window, [&] {
+            b.add("plane_fold", {N::v("normal", vec3(1.0, -1.0, 0.0)), N::f("offset", 0.0)});
+        });
     };
     const vec3 box = r.vector("transf_addition_constant_0555");
     if (r.boolean("transf_function_enabledBx_false")) translate("B", -box);
     for (int k = 0; k < 3; ++k) {
-        const std::string axis(1, "xyz"[k]);
-        if (!r.boolean("transf_function_enabledA" + axis + "_false")) continue;
-        vec3 normal(0.0);
-        normal[k] = 1.0;
-        mirror(std::string(1, "XYZ"[k]), normal, 0.0);
+        const std::string window(1, "XYZ"[k]);
+        if (r.boolean(std::string("transf_function_enabledA") + "xyz"[k] + "_false"))
+            inWindow(r, b, window, window, [&] { axisMirror(b, k); });
     }
     if (r.boolean("transf_function_enabledCx_false")) {
         const int sides = r.integer("transf_int_3");
@@ -635,14 +649,15 @@ void mapIfsXy(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
                                  ": a polygonal fold of other than 1 to 32 sides");
         inWindow(r, b, "J", "J", [&] { b.add("poly_fold", {N::f("order", double(sides))}); });
     }
-    const vec3 swapXy(1.0, -1.0, 0.0);  // the mirror across x = y: x and y swapped where y > x
-    if (r.boolean("transf_function_enabledBy")) mirror("D", swapXy, 0.0);
+    if (r.boolean("transf_function_enabledBy")) swapXy("D");
     if (r.boolean("transf_function_enabledBx")) translate("I", -box);
-    if (r.boolean("transf_function_enabledx_false")) mirror("A", vec3(1.0, 0.0, 0.0), r.number("transf_offset_0"));
-    if (r.boolean("transf_function_enabledy")) mirror("C", vec3(0.0, 1.0, 0.0), r.number("transf_offset_05"));
+    if (r.boolean("transf_function_enabledx_false"))
+        inWindow(r, b, "A", "A", [&] { axisMirror(b, 0, r.number("transf_offset_0")); });
+    if (r.boolean("transf_function_enabledy"))
+        inWindow(r, b, "C", "C", [&] { axisMirror(b, 1, r.number("transf_offset_05")); });
     translate("E", vec3(-r.number("transf_offset_1"), 0.0, 0.0));
     translate("F", vec3(0.0, -r.number("transf_offsetA_1"), 0.0));
-    if (r.boolean("transf_function_enabledBy_false")) mirror("G", swapXy, 0.0);
+    if (r.boolean("transf_function_enabledBy_false")) swapXy("G");
     const bool tweak = r.boolean("analyticDE_enabled_false");
     inWindow(r, b, "S", "S", [&] {
         b.add("scale", {N::f("scale", r.number("transf_scale_2"))});
@@ -652,9 +667,7 @@ void mapIfsXy(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     translate("H", r.vector("transf_offset_111"));
     if (length(r.vector("transf_rotation")) > 0.0)
         inWindow(r, b, "R", "R", [&] { b.rotation(setRotation2(r.vector("transf_rotation"))); });
-    if (tweak)
-        b.add("derivative_tweak",
-              {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number("analyticDE_offset_0"))});
+    analyticTweakWhereEnabled(r, b, "analyticDE_offset_0");
 }
 
 // transf_poly_fold_sym_multi (TransfPolyFoldSymMultiIteration of 2.20): |x|, |y|, |z| (options
@@ -666,9 +679,7 @@ void mapIfsXy(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
 void mapTransfPolyFoldSymMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     for (int k = 0; k < 3; ++k) {
         if (!r.boolean(std::string("transf_function_enabled") + "xyz"[k] + "_false")) continue;
-        vec3 normal(0.0);
-        normal[k] = 1.0;
-        b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+        axisMirror(b, k);
     }
     const int order = r.integer("transf_int_6");
     if (order < 1 || order > 32)
@@ -1487,12 +1498,6 @@ void derivativeTweak(Reader& r, NodeBuilder& b, bool withOffset = false) {
     const double scale = r.number("analyticDE_scale_1"), offset = withOffset ? r.number("analyticDE_offset_1") : 0.0;
     if (scale != 1.0 || offset != 0.0) b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", offset)});
 }
-// The analytic DE tweak behind analyticDE_enabled_false: the running derivative times
-// analyticDE_scale_1 plus `offsetKey` (analyticDE_offset_0 or _1, as the formula reads it).
-void analyticTweakWhereEnabled(Reader& r, NodeBuilder& b, const char* offsetKey) {
-    if (r.boolean("analyticDE_enabled_false"))
-        b.add("derivative_tweak", {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", r.number(offsetKey))});
-}
 void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     const vec3 axes = enabledAxes(r);
     const vec3 offset = r.vector("transf_offset_000");
@@ -1510,9 +1515,7 @@ void mapBuffalo(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     auto absFolds = [&](const std::string& prefix) {
         for (int k = 0; k < 3; ++k)
             if (r.boolean(prefix + "xyz"[k])) {
-                vec3 normal(0.0);
-                normal[k] = 1.0;
-                b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+                axisMirror(b, k);
             }
     };
     absFolds("buffalo_preabs_");
@@ -1541,9 +1544,7 @@ void mapMandelbulbAbsPower2(Reader& r, NodeBuilder& b, std::vector<ImportItem>& 
         inWindow(r, b, "H", "H", [&] {
             for (int k = 0; k < 3; ++k)
                 if (r.boolean(std::string("transf_function_enabledC") + "xyz"[k] + "_false")) {
-                    vec3 normal(0.0);
-                    normal[k] = 1.0;
-                    b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+                    axisMirror(b, k);
                 }
         });
     if (r.boolean("analyticDE_enabled_false"))
@@ -1787,9 +1788,7 @@ void mapTransfRotationFolding(Reader& r, NodeBuilder& b, std::vector<ImportItem>
         const vec3 o = r.vector("transf_offset_000"), axes = enabledAxes(r);
         for (int k = 0; k < 3; ++k) {
             if (axes[k] == 0.0) continue;
-            vec3 normal(0.0);
-            normal[k] = 1.0;
-            b.add("plane_fold", {N::v("normal", normal), N::f("offset", -o[k])});
+            axisMirror(b, k, -o[k]);
         }
     }
     if (r.boolean("transf_function_enabledAy_false")) {
@@ -2430,9 +2429,7 @@ void absOfChosenAxes(Reader& r, NodeBuilder& b) {
     if (!r.boolean("transf_function_enabled_false")) return;
     for (int k = 0; k < 3; ++k)
         if (r.boolean(std::string("transf_function_enabledA") + "xyz"[k] + "_false")) {
-            vec3 normal(0.0);
-            normal[k] = 1.0;
-            b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+            axisMirror(b, k);
         }
 }
 
@@ -2518,9 +2515,7 @@ void mapMandelbulbBermarte(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) 
         r.unsupported("analyticDE_enabled_false true: a tweak of the bulb's running derivative");
     auto absOf = [&](const std::string& flag, int axis) {
         if (!r.boolean(flag)) return;
-        vec3 normal(0.0);
-        normal[axis] = 1.0;
-        b.add("plane_fold", {N::v("normal", normal), N::f("offset", 0.0)});
+        axisMirror(b, axis);
     };
     for (int k = 0; k < 3; ++k) absOf(std::string("transf_function_enabledA") + "xyz"[k] + "_false", k);
     vec3 between(0.0);
