@@ -217,4 +217,60 @@ struct Bristorbrot {
     }
 };
 
+// Buddhi's Mandelbulb 4 (Mandelbulber2's mandelbulb4): the point turned about z by (n - 1) times
+// its azimuth atan2(y, x) plus alpha, then about y by (n - 1) times atan2(z, x) plus beta, then
+// about x by (n - 1) times atan2(z, y) plus gamma (Mandelbulber2's CRotationMatrix RotateX, RotateY,
+// RotateZ in that order, which turns the vector about z first), and scaled by r^(n - 1). The
+// running derivative is Mandelbulber2's n r^(n - 1). atan2(0, 0) is 0, as in C.
+struct Mandelbulb4 {
+    static constexpr std::string_view id = "mandelbulb4";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "Mandelbulb 4";
+    static constexpr std::string_view help =
+        "Buddhi's bulb: the point turned about z, y and x by (n - 1) times its angle in each plane, scaled by "
+        "r^(n - 1).";
+    static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump =
+        "its map jumps across the atan2 seams when the power is not a whole number, and where a plane's pair "
+        "passes through 0";
+    static constexpr Degree degree{"power"};
+    static constexpr std::array params{
+        ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 32.0, "Exponent n."},
+        ParamDecl{"alpha", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Added to the xy angle, degrees."},
+        ParamDecl{"beta", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Added to the xz angle, degrees."},
+        ParamDecl{"gamma", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Added to the yz angle, degrees."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float r = length(p.xyz);
+    float rp = pow(r, power - 1.0);
+    p.w *= power * rp;
+    vec3 v = p.xyz;
+    float turnZ = ((v.x == 0.0 && v.y == 0.0) ? 0.0 : atan(v.y, v.x)) + radians(alpha);
+    float turnY = ((v.x == 0.0 && v.z == 0.0) ? 0.0 : atan(v.z, v.x)) + radians(beta);
+    float turnX = ((v.y == 0.0 && v.z == 0.0) ? 0.0 : atan(v.z, v.y)) + radians(gamma);
+    vec3 angle = vec3(turnX, turnY, turnZ) * (power - 1.0);
+    vec3 cs = cos(angle), sn = sin(angle);
+    v.xy = vec2(cs.z * v.x - sn.z * v.y, sn.z * v.x + cs.z * v.y);
+    v.xz = vec2(cs.y * v.x + sn.y * v.z, -sn.y * v.x + cs.y * v.z);
+    v.yz = vec2(cs.x * v.y - sn.x * v.z, sn.x * v.y + cs.x * v.z);
+    p.xyz = v * rp;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double power = a.f(0), alpha = a.f(1), beta = a.f(2), gamma = a.f(3);
+        const double r = length(p.xyz), rp = std::pow(r, power - 1.0);
+        p.w *= power * rp;
+        vec3 v = p.xyz;
+        const vec3 angle = vec3(std::atan2(v.z, v.y) + glm::radians(gamma), std::atan2(v.z, v.x) + glm::radians(beta),
+                                std::atan2(v.y, v.x) + glm::radians(alpha)) *
+                           (power - 1.0);
+        const vec3 cs = glm::cos(angle), sn = glm::sin(angle);
+        v = vec3(cs.z * v.x - sn.z * v.y, sn.z * v.x + cs.z * v.y, v.z);
+        v = vec3(cs.y * v.x + sn.y * v.z, v.y, -sn.y * v.x + cs.y * v.z);
+        v = vec3(v.x, cs.x * v.y - sn.x * v.z, sn.x * v.y + cs.x * v.z);
+        p.xyz = v * rp;
+    }
+};
+
 }  // namespace fraktal::blocks

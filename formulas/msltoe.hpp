@@ -64,6 +64,12 @@ struct MsltoeDonut {
     }
 };
 
+// The closing step of msltoe's sym2 and sym3 family: v pulled `offset` towards the origin
+// (v (1 - offset / |v|), Mandelbulber2's z *= 1 + offset / -|z|), then scaled.
+inline vec3 pulledAndScaled(const vec3& v, double offset, double scale) {
+    return v * (1.0 - offset / std::max(length(v), 1e-30)) * scale;
+}
+
 // msltoe's sym2 mod (Mandelbulber2's msltoe_sym2_mod, from Mandelbulb3D; fractalforums.com
 // "choosing the squaring formula by location"): y and z swapped where |y| < |z|, x negated where
 // then y > z, White's power-2 triplex with the xy term times y_scale, plus `add`, then pulled
@@ -106,8 +112,7 @@ struct MsltoeSym2Mod {
         vec3 v2 = v * v;
         double zr = 1.0 - v2.z / std::max(v2.x + v2.y + v2.z, 1e-30);
         v = vec3((v2.x - v2.y) * zr, 2.0 * v.x * v.y * zr * y_scale, 2.0 * v.z * std::sqrt(v2.x + v2.y)) + add;
-        double len = std::max(length(v), 1e-30);
-        p.xyz = v * (1.0 - offset / len) * scale;
+        p.xyz = pulledAndScaled(v, offset, scale);
     }
 };
 
@@ -149,8 +154,175 @@ struct EiffieMsltoe {
         vec3 v2 = v * v;
         double zr = 1.0 - v2.z / std::max(v2.x + v2.y + v2.z, 1e-30);
         v = vec3((v2.x - v2.y) * zr, 2.0 * v.x * v.y * zr * y_scale, 2.0 * v.z * std::sqrt(v2.x + v2.y)) + add;
-        double len = std::max(length(v), 1e-30);
-        p.xyz = v * (1.0 - offset / len) * scale;
+        p.xyz = pulledAndScaled(v, offset, scale);
+    }
+};
+
+// msltoe's sym3 mod (Mandelbulber2's msltoe_sym3_mod; with `sector` its msltoe_sym3_mod3, from
+// fractalforums.com "choosing the squaring formula by location"). Without `sector`: y and z
+// swapped where |y| < |z|, x and z negated where then y > z. With `sector`: the (y, z) plane turned
+// by k pi / 4, k the whole eighths of a turn that bring atan2(z, y) + 2 pi under pi / 8 (as
+// Mandelbulber2's loop counts them), and turned back after the power. The power is White's
+// power-2 triplex whose latitude term divides by r^2 + stretch^2 y^2 z^2, its xy term times
+// y_scale; then `add`, the pull towards the origin by `offset` and the scale, as in the sym2 mod.
+// The running derivative is Mandelbulber2's 2 r |scale|.
+struct MsltoeSym3Mod {
+    static constexpr std::string_view id = "msltoe_sym3_mod";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "msltoe sym3 mod";
+    static constexpr std::string_view help =
+        "Power 2 triplex after an octant swap (or an eighth-turn sector turn), its latitude term stretched, plus "
+        "add, pulled in by offset, scaled.";
+    static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump =
+        "its map jumps where it swaps y and z (|y| = |z|) and negates x and z, or at the sector edges";
+    static constexpr Degree degree{{}, 2.0};
+    static constexpr std::array params{
+        ParamDecl{"y_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the triplex's y term."},
+        ParamDecl{"add", ParamType::Vec3, {0.0, 0.0, 0.0}, -4.0, 4.0, "Added after the power."},
+        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."},
+        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."},
+        ParamDecl{"stretch", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Its square times y^2 z^2 joins r^2."},
+        toggleParam("sector", false, "On: turn (y, z) into an eighth-turn sector (mod3) in place of the octant swap."),
+    };
+
+    static constexpr std::string_view glsl = R"(
+    p.w *= 2.0 * length(p.xyz) * abs(scale);
+    vec3 v = p.xyz;
+    float turn = 0.0;
+    if (sector > 0.5) {
+        float psi = atan(v.z, v.y) + 6.28318530717959;
+        turn = -0.785398163397448 * max(ceil((psi - 0.392699081698724) / 0.785398163397448), 0.0);
+        v.yz = vec2(v.y * cos(turn) - v.z * sin(turn), v.y * sin(turn) + v.z * cos(turn));
+    } else {
+        if (abs(v.y) < abs(v.z)) v = v.xzy;
+        if (v.y > v.z) v.xz = -v.xz;
+    }
+    vec3 v2 = v * v;
+    float zr = 1.0 - v2.z / max(v2.x + v2.y + v2.z + stretch * stretch * v2.y * v2.z, 1e-30);
+    v = vec3((v2.x - v2.y) * zr, 2.0 * v.x * v.y * zr * y_scale, 2.0 * v.z * sqrt(v2.x + v2.y));
+    v.yz = vec2(v.y * cos(turn) + v.z * sin(turn), -v.y * sin(turn) + v.z * cos(turn));
+    v += add;
+    float len = max(length(v), 1e-30);
+    p.xyz = v * (1.0 - offset / len) * scale;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double y_scale = a.f(0), offset = a.f(2), scale = a.f(3), stretch = a.f(4);
+        const vec3 add = a.v3(1);
+        p.w *= 2.0 * length(p.xyz) * abs(scale);
+        vec3 v = p.xyz;
+        double turn = 0.0;
+        if (a.f(5) > 0.5) {
+            const double psi = std::atan2(v.z, v.y) + 6.28318530717959;
+            turn = -0.785398163397448 * std::max(std::ceil((psi - 0.392699081698724) / 0.785398163397448), 0.0);
+            v = vec3(v.x, v.y * cos(turn) - v.z * sin(turn), v.y * sin(turn) + v.z * cos(turn));
+        } else {
+            if (abs(v.y) < abs(v.z)) v = vec3(v.x, v.z, v.y);
+            if (v.y > v.z) v = vec3(-v.x, v.y, -v.z);
+        }
+        const vec3 v2 = v * v;
+        const double zr = 1.0 - v2.z / std::max(v2.x + v2.y + v2.z + stretch * stretch * v2.y * v2.z, 1e-30);
+        v = vec3((v2.x - v2.y) * zr, 2.0 * v.x * v.y * zr * y_scale, 2.0 * v.z * std::sqrt(v2.x + v2.y));
+        v = vec3(v.x, v.y * cos(turn) + v.z * sin(turn), -v.y * sin(turn) + v.z * cos(turn)) + add;
+        p.xyz = pulledAndScaled(v, offset, scale);
+    }
+};
+
+// msltoe's Julia bulb mod 2 (Mandelbulber2's msltoe_sym3_mod2; same thread): where z^2 < y^2 the
+// azimuth atan2(y, x) and the latitude asin(z / r') doubled, r' = (r^2 + stretch y^2 z^2)^(1/2),
+// into (cos theta cos phi, sin theta cos phi, -sin phi) r^2; elsewhere the same in the xz plane with
+// y as the latitude, (cos theta cos phi, -sin phi, sin theta cos phi) r^2. Then `add`, the pull by
+// `offset` and the scale. The doubled angles' cosines and sines are written without trigonometry
+// (cos 2a = 1 - 2 sin^2 a, sin 2a = 2 sin a cos a): the GPU's asin and atan are not correctly
+// rounded, and an error of 1e-3 decided the next iteration's chart differently near y^2 = z^2.
+// The running derivative is Mandelbulber2's 2 r |scale|.
+struct MsltoeSym3Mod2 {
+    static constexpr std::string_view id = "msltoe_sym3_mod2";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "msltoe sym3 mod2";
+    static constexpr std::string_view help =
+        "Power 2 bulb whose angles are measured about z or about y, whichever the point is nearer, plus add, pulled "
+        "in by offset, scaled.";
+    static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = "its map jumps where it changes the axis its angles are measured about";
+    static constexpr Degree degree{{}, 2.0};
+    static constexpr std::array params{
+        ParamDecl{"stretch", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 4.0, "Times y^2 z^2, joins r^2 in the latitude."},
+        ParamDecl{"add", ParamType::Vec3, {0.0, 0.0, 0.0}, -4.0, 4.0, "Added after the power."},
+        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."},
+        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    p.w *= 2.0 * length(p.xyz) * abs(scale);
+    vec3 v2 = p.xyz * p.xyz;
+    float rr = v2.x + v2.y + v2.z;
+    float r1 = max(sqrt(max(rr + stretch * v2.y * v2.z, 0.0)), 1e-30);
+    bool aboutZ = v2.z < v2.y;
+    float u = aboutZ ? p.y : p.z;
+    float rho2 = v2.x + u * u;
+    vec2 theta = rho2 > 0.0 ? vec2(v2.x - u * u, 2.0 * p.x * u) / rho2 : vec2(1.0, 0.0);
+    float s = clamp((aboutZ ? p.z : p.y) / r1, -1.0, 1.0);
+    vec2 phi = vec2(1.0 - 2.0 * s * s, 2.0 * s * sqrt(1.0 - s * s));
+    vec3 v = rr * (aboutZ ? vec3(theta.x * phi.x, theta.y * phi.x, -phi.y)
+                          : vec3(theta.x * phi.x, -phi.y, theta.y * phi.x)) + add;
+    float len = max(length(v), 1e-30);
+    p.xyz = v * (1.0 - offset / len) * scale;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double stretch = a.f(0), offset = a.f(2), scale = a.f(3);
+        const vec3 add = a.v3(1);
+        p.w *= 2.0 * length(p.xyz) * abs(scale);
+        const vec3 v2 = p.xyz * p.xyz;
+        const double rr = v2.x + v2.y + v2.z;
+        const double r1 = std::max(std::sqrt(std::max(rr + stretch * v2.y * v2.z, 0.0)), 1e-30);
+        const bool aboutZ = v2.z < v2.y;
+        const double u = aboutZ ? p.xyz.y : p.xyz.z, rho2 = v2.x + u * u;
+        const glm::dvec2 theta = rho2 > 0.0 ? glm::dvec2(v2.x - u * u, 2.0 * p.xyz.x * u) / rho2 : glm::dvec2(1.0, 0.0);
+        const double s = clamp((aboutZ ? p.xyz.z : p.xyz.y) / r1, -1.0, 1.0);
+        const glm::dvec2 phi(1.0 - 2.0 * s * s, 2.0 * s * std::sqrt(1.0 - s * s));
+        vec3 v = rr * (aboutZ ? vec3(theta.x * phi.x, theta.y * phi.x, -phi.y)
+                              : vec3(theta.x * phi.x, -phi.y, theta.y * phi.x)) +
+                 add;
+        p.xyz = pulledAndScaled(v, offset, scale);
+    }
+};
+
+// The fold of msltoe's sym4 mod (Mandelbulber2's msltoe_sym4_mod, from Mandelbulb3D): x and z
+// swapped where |x| < |z| m.x, then x and y where |x| < |y| m.y, then y and z where |y| < |z| m.z
+// (at m = 1 the coordinates sorted by size, the largest in x), then y and z negated where their
+// sign differs from x's. A permutation and mirror per region keep distances; the map jumps where
+// the swaps and signs change.
+struct MsltoeSym4Fold {
+    static constexpr std::string_view id = "msltoe_sym4_fold";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "msltoe sym4 fold";
+    static constexpr std::string_view help =
+        "Swap the coordinates towards |x| >= |y| >= |z| (each test weighted), then give y and z the sign of x.";
+    static constexpr Category category = Category::Fold;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = "its map jumps where a swap or a sign changes";
+    static constexpr std::array params{
+        ParamDecl{"weights", ParamType::Vec3, {1.0, 1.0, 1.0}, 0.0, 4.0, "Weigh the x-z, x-y and y-z swap tests."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    if (abs(p.x) < abs(p.z) * weights.x) p.xz = p.zx;
+    if (abs(p.x) < abs(p.y) * weights.y) p.xy = p.yx;
+    if (abs(p.y) < abs(p.z) * weights.z) p.yz = p.zy;
+    if (p.x * p.z < 0.0) p.z = -p.z;
+    if (p.x * p.y < 0.0) p.y = -p.y;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const vec3 weights = a.v3(0);
+        vec3& v = p.xyz;
+        if (abs(v.x) < abs(v.z) * weights.x) std::swap(v.x, v.z);
+        if (abs(v.x) < abs(v.y) * weights.y) std::swap(v.x, v.y);
+        if (abs(v.y) < abs(v.z) * weights.z) std::swap(v.y, v.z);
+        if (v.x * v.z < 0.0) v.z = -v.z;
+        if (v.x * v.y < 0.0) v.y = -v.y;
     }
 };
 

@@ -26,6 +26,7 @@
 #include "formulas/four_d.hpp"
 #include "formulas/generalized_box_fold.hpp"
 #include "formulas/hypercomplex.hpp"
+#include "formulas/ides.hpp"
 #include "formulas/inv_cylindrical.hpp"
 #include "formulas/kifs_icosahedral.hpp"
 #include "formulas/kifs_octahedral.hpp"
@@ -159,6 +160,15 @@ constexpr std::array kBlocks{
     describe<Quaternion4d>(),
     describe<MandelbulbBermarte>(),
     describe<InvCylindrical>(),
+    describe<QuickDudley>(),
+    describe<Makin3d2>(),
+    describe<Mandelbulb3>(),
+    describe<Mandelbulb4>(),
+    describe<MsltoeSym3Mod>(),
+    describe<MsltoeSym3Mod2>(),
+    describe<MsltoeSym4Fold>(),
+    describe<Ides>(),
+    describe<AexionOctopus>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

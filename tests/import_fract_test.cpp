@@ -246,10 +246,10 @@ TEST(FractImport, NodeSchedulesFollowTheSequenceIterationByIteration) {
 
 TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
     const mb2::FractImport r = importText(
-        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 15;\nformula_weight_1 0,5;\n"
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 88;\nformula_weight_1 0,5;\n"
         "primitive_torus_1_enabled true;\nprimitive_torus_1_radius_lpow 2;\n[fractal_2]\n");
     EXPECT_FALSE(r.faithful());
-    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (mandelbulb4)", "no fraktal blocks")) << r.unsupported.size();
+    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (collatz)", "no fraktal blocks")) << r.unsupported.size();
     EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "formula_weight_1 0,5: a blend"));
     EXPECT_TRUE(mentions(r.unsupported, "main", "primitive torus 1: a torus measured in another norm"));
     // Values outside a block's range.
@@ -1372,6 +1372,129 @@ void smoothSort(double& a, double& b, double weight, double k) {
     b += t;
 }
 
+vec3 mb2RotateVector(const vec3& degrees, const vec3& v);
+
+// The signed multiple of c of msltoe's sym3 family (transf_addCpixel_enabled_false), as
+// MsltoeSym3ModIteration and its mods write it: z + sign(z) |c| m.
+vec3 mb2SignedMultipleOfC(const vec3& z, const vec3& c, const vec3& m) {
+    const vec3 k = glm::abs(c) * m;
+    auto sign = [](double v) { return v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0; };
+    return z + vec3(sign(z.x) * k.x, sign(z.y) * k.y, sign(z.z) * k.z);
+}
+
+// msltoe's sym3 mod with its stretch, the signed c and the quaternion fold in window A; mod3's
+// sector turn (Mandelbulber2's loop); mod2's two charts; sym4 mod's weighted swaps, per-axis scale
+// and rotation. mod2, mod3 and sym4 mod take no 1 for c (the derivative_tweak after add_c).
+TEST(FractImport, MsltoeSym3AndSym4ModsFollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 68;\nN 6;\n[fractal_1]\ntransf_scale 1,2;\ntransf_scale_0 0,7;\ntransf_addition_constant 0 0,1 0;\n"
+         "transf_addCpixel_enabled_false true;\ntransf_constant_multiplier_000 0,1 0,2 0,1;\n"
+         "transf_function_enabled_false true;\ntransf_start_iterations_A 2;\n",
+         {"msltoe_sym3_mod", "add_c_symmetric", "bristorbrot", "add_c"},
+         nullptr,
+         1.0,
+         [](const vec3& v, const vec3& c, int i) {
+             vec3 z = std::abs(v.y) < std::abs(v.z) ? vec3(v.x, v.z, v.y) : v;
+             if (z.y > z.z) z.x = -z.x, z.z = -z.z;
+             const vec3 z2 = z * z;
+             const double v3 = z2.x + z2.y + z2.z + 0.7 * 0.7 * z2.y * z2.z;
+             const double zr = 1.0 - z2.z / v3;
+             vec3 t((z2.x - z2.y) * zr, 2.0 * z.x * z.y * zr * 1.2, 2.0 * z.z * std::sqrt(z2.x + z2.y));
+             t = mb2SignedMultipleOfC(t + vec3(0.0, 0.1, 0.0), c, vec3(0.1, 0.2, 0.1));
+             if (i >= 2) t = vec3(t.x * t.x - t.y * t.y - t.z * t.z, t.x * t.y, t.x * t.z) * vec3(1.0, 2.0, 2.0);
+             return t + c;
+         }},
+        {"formula_1 81;\nN 6;\n[fractal_1]\ntransf_scale 0,9;\ntransf_offset 0,1;\ntransf_scale_1 1,1;\n",
+         {"msltoe_sym3_mod", "add_c", "derivative_tweak"},
+         [](const vec3& v, const vec3& c) {
+             const double pi = 3.14159265358979;
+             vec3 z = v;
+             double psi = std::atan2(z.z, z.y) + pi * 2.0, psi2 = 0.0;
+             while (psi > pi / 8.0) {
+                 psi -= pi / 4.0;
+                 psi2 -= pi / 4.0;
+             }
+             const double cs = std::cos(psi2), sn = std::sin(psi2);
+             z = vec3(z.x, z.y * cs - z.z * sn, z.y * sn + z.z * cs);
+             const vec3 zs = z * z;
+             const double zs2 = zs.x + zs.y, zsd = 1.0 - zs.z / (zs2 + zs.z);
+             const vec3 z1((zs.x - zs.y) * zsd, 2.0 * z.x * z.y * zsd * 0.9, 2.0 * z.z * std::sqrt(zs2));
+             vec3 t(z1.x, z1.y * cs + z1.z * sn, -z1.y * sn + z1.z * cs);
+             t *= 1.0 + 0.1 / -length(t);
+             return t * 1.1 + c;
+         }},
+        {"formula_1 80;\nN 6;\n[fractal_1]\ntransf_scale_0 0,5;\ntransf_addCpixel_enabled_false true;\n"
+         "transf_constant_multiplier_000 0,1 0,1 0,1;\ntransf_function_enabledy false;\n",
+         {"msltoe_sym3_mod2", "add_c_symmetric", "add_c", "derivative_tweak"},
+         [](const vec3& z, const vec3& c) {
+             const vec3 z2 = z * z;
+             const double r = z2.x + z2.y + z2.z, r1 = std::sqrt(r + 0.5 * z2.y * z2.z);
+             vec3 t;
+             if (z2.z < z2.y) {
+                 const double theta = 2.0 * std::atan2(z.y, z.x), phi = 2.0 * std::asin(z.z / r1);
+                 t = vec3(r * std::cos(theta) * std::cos(phi), r * std::sin(theta) * std::cos(phi), -r * std::sin(phi));
+             } else {
+                 const double theta = 2.0 * std::atan2(z.z, z.x), phi = 2.0 * std::asin(z.y / r1);
+                 t = vec3(r * std::cos(theta) * std::cos(phi), -r * std::sin(phi), r * std::sin(theta) * std::cos(phi));
+             }
+             // c's abs taken on x and z only (transf_function_enabledy false).
+             const vec3 k = vec3(std::abs(c.x), c.y, std::abs(c.z)) * 0.1;
+             auto sign = [](double v) { return v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0; };
+             return t + vec3(sign(t.x) * k.x, sign(t.y) * k.y, sign(t.z) * k.z) + c;
+         }},
+        {"formula_1 69;\nN 6;\n[fractal_1]\ntransf_constant_multiplier_111 1,2 0,9 1;\ntransf_scale3D_111 1 1,1 0,9;\n"
+         "transf_addition_constant 0,1 0 0;\ntransf_rotation_enabled true;\ntransf_rotation 10 0 -15;\n",
+         {"msltoe_sym4_fold", "axis_scale", "bristorbrot", "translate", "rotate", "add_c", "derivative_tweak"},
+         [](const vec3& v, const vec3& c) {
+             vec3 z = v;
+             if (std::abs(z.x) < std::abs(z.z) * 1.2) std::swap(z.x, z.z);
+             if (std::abs(z.x) < std::abs(z.y) * 0.9) std::swap(z.x, z.y);
+             if (std::abs(z.y) < std::abs(z.z) * 1.0) std::swap(z.y, z.z);
+             if (z.x * z.z < 0.0) z.z = -z.z;
+             if (z.x * z.y < 0.0) z.y = -z.y;
+             z *= vec3(1.0, 1.1, 0.9);
+             const vec3 t(z.x * z.x - z.y * z.y - z.z * z.z, 2.0 * z.x * z.y, 2.0 * z.x * z.z);
+             return mb2RotateVector(vec3(10.0, 0.0, -15.0), t + vec3(0.1, 0.0, 0.0)) + c;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
+// Ide's formulas with their multipliers (ides damps x and z under 2.5, ides2 keeps the point) and
+// Aexion's octopus with its scales, the abs of x and z only, a turn, an offset and c signed by the
+// point: Mandelbulber2 adds c only where that option says.
+// IdesIteration and Ides2Iteration with the multipliers (1.4, 1.7, 0.4) and the subtracted (0.8, 0.5, 0.7).
+vec3 mb2Ides(vec3 z, bool damp) {
+    if (damp && std::abs(z.x) < 2.5) z.x *= 0.9;
+    if (damp && std::abs(z.z) < 2.5) z.z *= 0.9;
+    const vec3 z2 = z * z, m(1.4, 1.7, 0.4), s(0.8, 0.5, 0.7);
+    return vec3(m.x * z2.x - s.x * (z2.y + z2.z), m.y * z.x * z.y * z.z, m.z * z2.z - s.z * (z2.x + z2.y)) +
+           (damp ? vec3(0.0) : z);
+}
+
+TEST(FractImport, IdesAndAexionsOctopusFollowMandelbulber2sOrbits) {
+    const char* values =
+        "[fractal_1]\ntransf_addition_constant_0555 0,8 0,5 0,7;\n"
+        "transf_constant_multiplier_121 1,4 1,7 0,4;\n";
+    const std::string idesBody = std::string("formula_1 39;\nN 6;\n") + values;
+    const std::string ides2Body = std::string("formula_1 40;\nN 6;\n") + values;
+    const OrbitCase cases[] = {
+        {idesBody.c_str(), {"ides", "add_c"}, [](const vec3& z, const vec3& c) { return mb2Ides(z, true) + c; }},
+        {ides2Body.c_str(), {"ides", "add_c"}, [](const vec3& z, const vec3& c) { return mb2Ides(z, false) + c; }},
+        {"formula_1 63;\nN 6;\n[fractal_1]\ntransf_scale3D_111 0,6 1,1 1;\ntransf_function_enabledAy false;\n"
+         "transf_rotation_enabled true;\ntransf_rotation 0 20 0;\ntransf_addition_constant 0,1 0 -0,2;\n"
+         "transf_addCpixel_enabled_false true;\ntransf_constant_multiplier_000 1 1 1;\n",
+         {"aexion_octopus", "rotate", "translate", "add_c_symmetric"},
+         [](const vec3& z, const vec3& c) {
+             vec3 t(z.x * z.z * 0.6, (z.x * z.x - z.z * z.z) * 1.1, z.y);
+             t.x = std::abs(t.x), t.z = std::abs(t.z);
+             t = mb2RotateVector(vec3(0.0, 20.0, 0.0), t) + vec3(0.1, 0.0, -0.2);
+             return mb2SignedMultipleOfC(t, c, vec3(1.0));
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 // eiffie's msltoe, the smooth Menger sponge and its mod 1 (the corner and z's fold centre given
 // differently, the sorts weighted, the box offset after).
 TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {
@@ -1702,6 +1825,69 @@ TEST(FractImport, QuadraticBulbsFollowMandelbulber2sOrbits) {
              return vec3(z.x * z.x - 2.0 * z.y * z.z, z.z * z.z + 2.0 * z.x * z.y, z.y * z.y - 2.0 * z.x * z.z) +
                     c * vec3(1.0, 0.5, 0.8);
          }},
+        // Quick Dudley's, its mod's multipliers (the DE tweak a derivative_tweak), Makin's 3D-2.
+        {"formula_1 48;\nN 6;\n",
+         {"quick_dudley", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             return vec3(z.x * z.x - 2.0 * z.y * z.z, z.z * z.z + 2.0 * z.x * z.y, z.y * z.y + 2.0 * z.x * z.z) + c;
+         }},
+        {"formula_1 84;\nN 6;\n[fractal_1]\ntransf_constant_multiplier_111 0,75 1,6 1,2;\n"
+         "transf_constant_multiplier_222 1,3 2,8 2,5;\nanalyticDE_scale_1 0,8;\n",
+         {"quick_dudley", "derivative_tweak", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             return vec3(z.x * z.x * 0.75 - 1.3 * z.y * z.z, z.z * z.z * 1.6 + 2.8 * z.x * z.y,
+                         z.y * z.y * 1.2 + 2.5 * z.z * z.x) +
+                    c;
+         }},
+        {"formula_1 50;\nN 6;\n",
+         {"makin3d2", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             return vec3(z.x * z.x + 2.0 * z.y * z.z, -z.y * z.y - 2.0 * z.x * z.z, -z.z * z.z + 2.0 * z.x * z.y) + c;
+         }},
+        // Mandelbulb 3: its derivative takes no 1 for c (the derivative_tweak takes add_c's back).
+        {"formula_1 14;\nN 6;\n",
+         {"mandelbulb3", "add_c", "derivative_tweak"},
+         [](const vec3& v, const vec3& c) {
+             const double r = length(v);
+             vec3 z = v;
+             const double sign2 = z.x < 0.0 ? -1.0 : 1.0;
+             double tempR = std::sqrt(z.x * z.x + z.y * z.y);
+             z *= 1.0 / tempR;
+             double temp = z.x * z.x - z.y * z.y;
+             z.y = 2.0 * z.x * z.y;
+             z.x = temp;
+             z *= tempR;
+             const double sign = z.x < 0.0 ? -1.0 : 1.0;
+             tempR = std::sqrt(z.x * z.x + z.z * z.z);
+             z *= 1.0 / tempR;
+             temp = z.x * z.x - z.z * z.z;
+             z.z = 2.0 * z.x * z.z * sign2;
+             z.x = temp * sign;
+             z *= tempR;
+             return z * r + c;
+         }},
+        // Mandelbulb 4 at power 3 with its three offsets: Mandelbulber2's matrix I Rx Ry Rz
+        // (CRotationMatrix's RotateX, RotateY, RotateZ, each multiplying on the right).
+        {"formula_1 15;\nN 6;\n[fractal_1]\npower 3;\nalpha_angle_offset 10;\nbeta_angle_offset -20;\n"
+         "gamma_angle_offset 30;\n",
+         {"mandelbulb4", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             const double pi = 3.14159265358979, n = 3.0, rp = std::pow(length(z), n - 1.0);
+             const double angZ = std::atan2(z.y, z.x) + 10.0 * pi / 180.0;
+             const double angY = std::atan2(z.z, z.x) - 20.0 * pi / 180.0;
+             const double angX = std::atan2(z.z, z.y) + 30.0 * pi / 180.0;
+             auto rot = [](int axis, double a) {
+                 const double s = std::sin(a), co = std::cos(a);
+                 glm::dmat3 m(1.0);  // column-major: m[column][row]
+                 const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+                 m[i][i] = co, m[j][j] = co;
+                 m[j][i] = -s, m[i][j] = s;  // row i, column j: -s; row j, column i: s
+                 return m;
+             };
+             // RotateY's rot.m31 = -s, m13 = s: the same pattern with i = z, j = x.
+             const glm::dmat3 matrix = rot(0, angX * (n - 1.0)) * rot(1, angY * (n - 1.0)) * rot(2, angZ * (n - 1.0));
+             return matrix * z * rp + c;
+         }},
         {"formula_1 41;\nN 6;\n[fractal_1]\nbuffalo_preabs_z true;\nbuffalo_abs_x true;\nbuffalo_pos_z true;\n",
          {"plane_fold", "mandelbulb_sine", "plane_fold", "add_c"},
          [](const vec3& v, const vec3& c) {
@@ -1915,7 +2101,7 @@ TEST(FractImport, MandelbulbVaryPowerFollowsMandelbulber2sOrbits) {
 // A hybrid's slot of weight 0 is an identity (compute_fractal.cpp of 2.20 calls no formula for it
 // and blends the point back to where the iteration started, c and all): the power-9 bulb (Mandelbulber2's default) and
 // c on even iterations, the point left as it is on odd ones, where the Mandelbox of weight 0 runs. Its formula needs no
-// blocks (a mandelbulb4 of weight 0 is not refused), and the Mandelbox-Menger morph, whose Mandelbox and IFS slots are
+// blocks (a collatz of weight 0 is not refused), and the Mandelbox-Menger morph, whose Mandelbox and IFS slots are
 // at weight 0 between its keyframes, imports.
 TEST(FractImport, ASlotOfWeightZeroIsAnIdentity) {
     expectOrbitsFollowMandelbulber2(
@@ -1929,7 +2115,7 @@ TEST(FractImport, ASlotOfWeightZeroIsAnIdentity) {
              const double th = std::asin(z.z / r) * 9.0, ph = std::atan2(z.y, z.x) * 9.0;
              return std::pow(r, 9.0) * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + c;
          }});
-    EXPECT_TRUE(importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 15;\n"
+    EXPECT_TRUE(importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 88;\n"
                            "formula_weight_2 0;\n")
                     .faithful());
     expectExampleImports("mandelbox_menger_morph.fract");
@@ -3866,6 +4052,14 @@ std::vector<Expected> fixedSet() {
         // transf_spherical_fold_parab (sphere_fold_parabolic) with the sphere fold from the second
         // iteration and Mandelbulber2's offset taken back in the outer band only.
         {"formula/img/transf_spherical_fold_parab.fract", ""},
+        // The quadratics of "another shot at the holy grail": Quick Dudley's with its per-term
+        // multipliers (quick_dudley) in a repeated view; Buddhi's Mandelbulb 3 (mandelbulb3, its
+        // derivative without the 1 for c) and Mandelbulb 4 (mandelbulb4's three turns).
+        {"examples/quick-dudley_mod_001.fract", ""},
+        {"examples/mandelbulb3_001.fract", ""},
+        {"examples/mandelbulb4_001.fract", ""},
+        // msltoe's Julia bulb mod 2 (msltoe_sym3_mod2) with c signed by the point in Julia mode.
+        {"examples/msltoe_julia_bulb_mod2_001.fract", ""},
     };
 }
 

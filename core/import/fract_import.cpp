@@ -55,11 +55,15 @@ bool carriesFourthCoordinate(int formula) {
 // Formulas whose derivative is 2 r DE alone: Mandelbulber2 adds c without the 1 it adds to the
 // derivative (every formula takes its own +1, and these take none): QuaternionIteration,
 // Quaternion3dIteration, BristorbrotIteration and Quaternion4dIteration (fractal_quaternion.cpp,
-// fractal_quaternion3d.cpp, fractal_bristorbrot.cpp, fractal_quaternion4d.cpp of 2.20).
-constexpr int kQuaternionId = 5, kBristorbrotId = 21, kQuaternion3dId = 62;
+// fractal_quaternion3d.cpp, fractal_bristorbrot.cpp, fractal_quaternion4d.cpp of 2.20), and
+// Mandelbulb3Iteration, MsltoeSym4ModIteration, MsltoeSym3Mod2Iteration and MsltoeSym3Mod3Iteration
+// (fractal_formulas.cpp).
+constexpr int kQuaternionId = 5, kBristorbrotId = 21, kQuaternion3dId = 62, kMandelbulb3Id = 14;
+constexpr int kMsltoeSym4ModId = 69, kMsltoeSym3Mod2Id = 80, kMsltoeSym3Mod3Id = 81;
 bool derivativeTakesNoOneForC(int formula) {
     return formula == kQuaternionId || formula == kBristorbrotId || formula == kQuaternion3dId ||
-           formula == kQuaternion4dId;
+           formula == kQuaternion4dId || formula == kMandelbulb3Id || formula == kMsltoeSym4ModId ||
+           formula == kMsltoeSym3Mod2Id || formula == kMsltoeSym3Mod3Id;
 }
 
 const FormulaInfo* findFormula(int id) {
@@ -1509,6 +1513,62 @@ void mapTransfAbsAddConditional(Reader& r, NodeBuilder& b, std::vector<ImportIte
 void mapMandelbulb2(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("mandelbulb2", {}); }
 void mapLkmitch(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("lkmitch", {}); }
 
+// The quadratics of "another shot at the holy grail" (QuickDudleyIteration, QuickDudleyModIteration,
+// Makin3d2Iteration of 2.20) take their derivative as 2 r DE analyticDE_scale_1 +
+// analyticDE_offset_1 whatever the analytic DE switch says: 2 r DE + 1 at the defaults, which the
+// block's 2 r and add_c's 1 give. Elsewhere a derivative_tweak after the block carries the rest.
+void quadraticDerivativeTweak(Reader& r, NodeBuilder& b) {
+    const double scale = r.number("analyticDE_scale_1"), offset = r.number("analyticDE_offset_1");
+    if (scale != 1.0 || offset != 1.0) b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", offset - 1.0)});
+}
+void mapQuickDudley(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("quick_dudley", {});
+    quadraticDerivativeTweak(r, b);
+}
+// quick_dudley_mod: the squares times transf_constant_multiplier_111, the products times _222.
+void mapQuickDudleyMod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("quick_dudley", {N::v("squares", r.vector("transf_constant_multiplier_111")),
+                           N::v("products", r.vector("transf_constant_multiplier_222"))});
+    quadraticDerivativeTweak(r, b);
+}
+void mapMakin3d2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("makin3d2", {});
+    quadraticDerivativeTweak(r, b);
+}
+// Ide's formulas (IdesIteration, Ides2Iteration of 2.20): the multipliers
+// transf_constant_multiplier_121 and the subtracted transf_addition_constant_0555; ides damps x and
+// z first, ides2 keeps the point. Mandelbulber2 measures their distance by differences (the
+// gradient estimator here).
+void ides(Reader& r, NodeBuilder& b, bool damp) {
+    b.add("ides", {N::v("multiplier", r.vector("transf_constant_multiplier_121")),
+                   N::v("subtract", r.vector("transf_addition_constant_0555")), N::f("damp", damp ? 1.0 : 0.0),
+                   N::f("keep", damp ? 0.0 : 1.0)});
+}
+void mapIdes(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { ides(r, b, true); }
+void mapIdes2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { ides(r, b, false); }
+// aexion_octopus_mod (AexionOctopusModIteration): the octopus with transf_scale3D_111's x and y
+// (its z is unused) and the abs of the axes transf_function_enabledAx/Ay/Az, the rotation
+// (transf_rotation_enabled), transf_addition_constant, then the signed multiple of c. Mandelbulber2
+// adds no other c.
+void mapAexionOctopusMod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    const vec3 scale = r.vector("transf_scale3D_111");
+    b.add("aexion_octopus",
+          {N::f("x_scale", scale.x), N::f("y_scale", scale.y),
+           N::v("abs_axes", vec3(r.boolean("transf_function_enabledAx"), r.boolean("transf_function_enabledAy"),
+                                 r.boolean("transf_function_enabledAz")))});
+    if (r.boolean("transf_rotation_enabled")) b.rotation(setRotation2(r.vector("transf_rotation")));
+    additionConstant(r, b);
+    symmetricMultipleOfC(r, b, "transf_constant_multiplier_000");
+}
+// Mandelbulb3Iteration takes 2 r DE and no 1 for c (derivativeTakesNoOneForC).
+void mapMandelbulb3(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("mandelbulb3", {}); }
+// Mandelbulb4Iteration: its turns' offsets are alpha_angle_offset (about z), beta_angle_offset
+// (about y) and gamma_angle_offset (about x), degrees in the file.
+void mapMandelbulb4(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("mandelbulb4", {N::f("power", r.number("power")), N::f("alpha", r.number("alpha_angle_offset")),
+                          N::f("beta", r.number("beta_angle_offset")), N::f("gamma", r.number("gamma_angle_offset"))});
+}
+
 // The buffalo bulb: White's power-2 triplex (the sine bulb of power 2, z mirrored unless
 // buffalo_pos_z) between |axis| folds chosen per axis (plane folds through the origin).
 void mapBuffalo(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
@@ -2124,6 +2184,65 @@ void msltoeTriplex(Reader& r, NodeBuilder& b, std::string_view block) {
 void mapMsltoeSym2Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "msltoe_sym2_mod"); }
 void mapEiffieMsltoe(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeTriplex(r, b, "eiffie_msltoe"); }
 
+// The sym3 family's signed multiple of c (transf_addCpixel_enabled_false) comes after `add` and
+// before the pull and the scale: a step of its own after the block where those two leave the point
+// as it is, else refused.
+void msltoeSymmetricMultipleOfC(Reader& r, NodeBuilder& b) {
+    if (!r.boolean("transf_addCpixel_enabled_false")) return;
+    if (r.number("transf_offset") != 0.0 || r.number("transf_scale_1") != 1.0)
+        return r.unsupported(
+            "transf_addCpixel_enabled_false: a multiple of c signed by the point before the pull "
+            "towards the origin (transf_offset) and the scale (transf_scale_1)");
+    symmetricMultipleOfC(r, b, "transf_constant_multiplier_000");
+}
+// The quaternion fold of sym3 mod and mod3 (option "enabled_false", window A): the point becomes
+// (x^2 - y^2 - z^2, 2 x y, 2 x z), the twist-free Bristorbrot, whose derivative 2 r is
+// Mandelbulber2's. Its other derivative (analyticDE_enabled_false: times the average stretch of
+// the (1, 2, 2) factor) is refused.
+void msltoeQuaternionFold(Reader& r, NodeBuilder& b) {
+    if (!r.boolean("transf_function_enabled_false")) return;
+    r.mustBeDefault("analyticDE_enabled_false", "the quaternion fold's derivative times its average stretch");
+    inWindow(r, b, "A", "A", [&] { b.add("bristorbrot", {N::f("twist", 0.0)}); });
+}
+// msltoe_sym3_mod and msltoe_sym3_mod3 (MsltoeSym3ModIteration, MsltoeSym3Mod3Iteration of 2.20):
+// the block's octant swap or sector turn, the triplex with the stretch transf_scale_0, then the
+// signed multiple of c and the quaternion fold. mod3's derivative takes no 1 for c
+// (derivativeTakesNoOneForC).
+void msltoeSym3(Reader& r, NodeBuilder& b, bool sector) {
+    b.add("msltoe_sym3_mod",
+          {N::f("y_scale", r.number("transf_scale")), N::v("add", r.vector("transf_addition_constant")),
+           N::f("offset", r.number("transf_offset")), N::f("scale", r.number("transf_scale_1")),
+           N::f("stretch", r.number("transf_scale_0")), N::f("sector", sector ? 1.0 : 0.0)});
+    msltoeSymmetricMultipleOfC(r, b);
+    msltoeQuaternionFold(r, b);
+}
+void mapMsltoeSym3Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeSym3(r, b, false); }
+void mapMsltoeSym3Mod3(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) { msltoeSym3(r, b, true); }
+// msltoe_sym3_mod2 (MsltoeSym3Mod2Iteration): the block with the stretch transf_scale_0, then the
+// signed multiple of c; its derivative takes no 1 for c (derivativeTakesNoOneForC).
+void mapMsltoeSym3Mod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("msltoe_sym3_mod2",
+          {N::f("stretch", r.number("transf_scale_0")), N::v("add", r.vector("transf_addition_constant")),
+           N::f("offset", r.number("transf_offset")), N::f("scale", r.number("transf_scale_1"))});
+    msltoeSymmetricMultipleOfC(r, b);
+}
+// msltoe_sym4_mod (MsltoeSym4ModIteration): the fold weighted by transf_constant_multiplier_111,
+// the scale per axis transf_scale3D_111, the quaternion square (the twist-free Bristorbrot),
+// transf_addition_constant, the rotation (transf_rotation_enabled), then the signed multiple of c.
+// The pull towards the origin and the scale after the rotation are refused where set; its
+// derivative takes no 1 for c (derivativeTakesNoOneForC).
+void mapMsltoeSym4Mod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_offset", "the pull towards the origin after the rotation");
+    r.mustBeDefault("transf_scale_1", "the scale after the rotation");
+    b.add("msltoe_sym4_fold", {N::v("weights", r.vector("transf_constant_multiplier_111"))});
+    const vec3 stretch = r.vector("transf_scale3D_111");
+    if (stretch != vec3(1.0)) b.add("axis_scale", {N::v("scale", stretch)});
+    b.add("bristorbrot", {N::f("twist", 0.0)});
+    additionConstant(r, b);
+    if (r.boolean("transf_rotation_enabled")) b.rotation(setRotation2(r.vector("transf_rotation")));
+    symmetricMultipleOfC(r, b, "transf_constant_multiplier_000");
+}
+
 // The platonic solid transform: v times A theta(F v) + rhoMul rho (platonic_solid). Its first
 // mode takes rho = sqrt(r); its second (transf_function_enabled_false) sums sqrt(r), r and r^2 as
 // options x, y and z say, or blends the first two (Ax) or the last two (Ay) by transf_scale_1, and
@@ -2709,6 +2828,18 @@ constexpr Mapping kMappings[] = {
     {105, mapBenesiPwr2Mandelbulb},
     {1022, mapTransfZvectorAxisSwap},
     {173, mapScatorPower2},
+    {48, mapQuickDudley},
+    {84, mapQuickDudleyMod},
+    {50, mapMakin3d2},
+    {kMandelbulb3Id, mapMandelbulb3},
+    {15, mapMandelbulb4},
+    {68, mapMsltoeSym3Mod},
+    {kMsltoeSym3Mod2Id, mapMsltoeSym3Mod2},
+    {kMsltoeSym3Mod3Id, mapMsltoeSym3Mod3},
+    {kMsltoeSym4ModId, mapMsltoeSym4Mod},
+    {39, mapIdes},
+    {40, mapIdes2},
+    {63, mapAexionOctopusMod},
 };
 
 MapFn findMapping(int id) {
