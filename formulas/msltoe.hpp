@@ -326,4 +326,64 @@ struct MsltoeSym4Fold {
     }
 };
 
+// msltoe's toroidal bulb (Mandelbulber2's msltoe_toroidal; fractalforums.com "toroidal
+// coordinates"): the point measured from the nearest point of the ring of radius R about z, at
+// squared distance d^2 and latitude phi = asin(z / d) there (atan2(z, its distance in the plane),
+// which the GPU rounds better), with azimuth theta = atan2(y, x); then
+// rp = (d^2)^radial_power, and the point becomes ((R + rp cos(m phi)) cos(n theta),
+// (R + rp cos(m phi)) sin(n theta), -rp sin(m phi)), m the latitude and n the azimuth power; then the
+// pull by `offset` and the scale, as in the sym2 mod. The running derivative is Mandelbulber2's
+// rp (radial_power + 1) |scale|, an estimate the check measures against.
+struct MsltoeToroidal {
+    static constexpr std::string_view id = "msltoe_toroidal";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "msltoe toroidal bulb";
+    static constexpr std::string_view help =
+        "A bulb in toroidal coordinates about a ring: its distance raised, its latitude and azimuth multiplied.";
+    static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = kNonIntegerPowerSeam;
+    static DerivativeBound derivativeFor(Args a) { return sphericalPowerBound(a.f(3)); }
+    // |v'| grows as |v|^(2 radial_power); a degree names one parameter, so the potential estimate
+    // reads half the growth (the import closes it with the log estimate, which needs none).
+    static constexpr Degree degree{"radial_power"};
+    static constexpr std::array params{
+        ParamDecl{"ring_radius", ParamType::Float, {0.5, 0.0, 0.0}, 0.0, 8.0, "R: the ring's radius about z."},
+        ParamDecl{"radial_power", ParamType::Float, {4.0, 0.0, 0.0}, 0.5, 16.0, "The squared distance's power."},
+        ParamDecl{"latitude_power", ParamType::Float, {8.0, 0.0, 0.0}, -32.0, 32.0, "m: multiplies the latitude."},
+        ParamDecl{"azimuth_power", ParamType::Float, {9.0, 0.0, 0.0}, -32.0, 32.0, "n: multiplies the azimuth."},
+        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."},
+        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    float theta = (p.x == 0.0 && p.y == 0.0) ? 0.0 : atan(p.y, p.x);
+    vec2 ring = ring_radius * vec2(cos(theta), sin(theta));
+    float planar = length(p.xy - ring);
+    float d2 = max(planar * planar + p.z * p.z, 1e-30);
+    float phi = ((planar == 0.0 && p.z == 0.0) ? 0.0 : atan(p.z, planar)) * latitude_power;
+    float rp = pow(d2, radial_power);
+    p.w *= rp * (radial_power + 1.0) * abs(scale);
+    theta *= azimuth_power;
+    float around = ring_radius + rp * cos(phi);
+    vec3 v = vec3(around * cos(theta), around * sin(theta), -rp * sin(phi));
+    float len = max(length(v), 1e-30);
+    p.xyz = v * (1.0 - offset / len) * scale;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double ring_radius = a.f(0), radial_power = a.f(1), latitude_power = a.f(2), azimuth_power = a.f(3),
+                     offset = a.f(4), scale = a.f(5);
+        double theta = std::atan2(p.xyz.y, p.xyz.x);
+        const glm::dvec2 ring = ring_radius * glm::dvec2(cos(theta), sin(theta));
+        const glm::dvec2 off = glm::dvec2(p.xyz.x, p.xyz.y) - ring;
+        const double planar = length(off), d2 = std::max(planar * planar + p.xyz.z * p.xyz.z, 1e-30);
+        const double phi = std::atan2(p.xyz.z, planar) * latitude_power;
+        const double rp = std::pow(d2, radial_power);
+        p.w *= rp * (radial_power + 1.0) * abs(scale);
+        theta *= azimuth_power;
+        const double around = ring_radius + rp * cos(phi);
+        p.xyz = pulledAndScaled(vec3(around * cos(theta), around * sin(theta), -rp * sin(phi)), offset, scale);
+    }
+};
+
 }  // namespace fraktal::blocks

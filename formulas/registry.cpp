@@ -169,6 +169,8 @@ constexpr std::array kBlocks{
     describe<MsltoeSym4Fold>(),
     describe<Ides>(),
     describe<AexionOctopus>(),
+    describe<MsltoeToroidal>(),
+    describe<RiemannBulb>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

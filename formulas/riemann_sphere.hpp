@@ -157,4 +157,97 @@ struct RiemannSphereV2 {
     }
 };
 
+// msltoe's Riemann bulb, mod 2 (Mandelbulber2's riemann_bulb_msltoe_mod2): inside the sphere of
+// radius^2 about the origin (|v|^2 < radius^2) the point is scaled, smoothly by
+// radius 1.18 inside_scale (0.1 |v|^2 + 0.4) / |v|^2 or by `inside_multiplier` per axis; outside it
+// is scaled per axis by `multiplier`, inverted in the unit sphere about (0, shift, 0) (w / |w|^2),
+// scaled by `scale`, y moved by y_offset, then with `tile` x and z wrapped to their remainder after
+// rounding (C's round), with `sine` made |sin(pi sine_scale x)| and the same of z. The running
+// derivative is the largest stretch of the branch taken (the inversion's 1 / |w|^2 times the
+// multiplier's and the scale's, the sine's pi |sine_scale|); the sphere's edge and the wrap jump.
+struct RiemannBulb {
+    static constexpr std::string_view id = "riemann_bulb";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "Riemann bulb";
+    static constexpr std::string_view help =
+        "Inside a sphere the point scaled; outside it inverted about (0, shift, 0), scaled, moved up and tiled in x "
+        "and z.";
+    static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump = "its map jumps at the inner sphere's edge and where x or z wrap";
+    static constexpr std::array params{
+        ParamDecl{"radius", ParamType::Float, {0.5, 0.0, 0.0}, 0.0, 4.0, "Its square is the inner sphere's radius."},
+        toggleParam("smooth_inside", true, "On: the smooth scale inside; off: inside_multiplier."),
+        ParamDecl{"inside_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the smooth scale inside."},
+        ParamDecl{"inside_multiplier", ParamType::Vec3, {1.0, 1.0, 1.0}, -4.0, 4.0, "Scale per axis inside."},
+        ParamDecl{"multiplier", ParamType::Vec3, {2.0, 2.0, 2.0}, -8.0, 8.0, "Scale per axis outside."},
+        ParamDecl{"shift", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "y of the inversion's centre."},
+        ParamDecl{"scale", ParamType::Float, {3.0, 0.0, 0.0}, -10.0, 10.0, "Scales the inverted point."},
+        ParamDecl{"y_offset", ParamType::Float, {1.5, 0.0, 0.0}, -4.0, 4.0, "Added to y after the inversion."},
+        toggleParam("tile", true, "On: x and z wrapped to their remainder after rounding."),
+        toggleParam("sine", false, "On: x and z made |sin(pi sine_scale v)|."),
+        ParamDecl{"sine_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "The sine's frequency."},
+    };
+
+    static constexpr std::string_view glsl = R"(
+    vec3 v = p.xyz;
+    float rr = dot(v, v);
+    if (rr < radius * radius) {
+        if (smooth_inside > 0.5) {
+            float k = radius * 1.18 * inside_scale;
+            p.w *= abs(k) * (0.1 + 0.4 / max(rr, 1e-30));
+            v *= k * (rr * 0.1 + 0.4) / max(rr, 1e-30);
+        } else {
+            p.w *= max(abs(inside_multiplier.x), max(abs(inside_multiplier.y), abs(inside_multiplier.z)));
+            v *= inside_multiplier;
+        }
+    } else {
+        vec3 w = v * multiplier - vec3(0.0, shift, 0.0);
+        float r1 = max(dot(w, w), 1e-30);
+        float stretch = max(abs(multiplier.x), max(abs(multiplier.y), abs(multiplier.z))) * abs(scale) / r1;
+        v = w / r1 * scale;
+        v.y += y_offset;
+        if (tile > 0.5) v.xz -= sign(v.xz) * floor(abs(v.xz) + 0.5);
+        if (sine > 0.5) {
+            v.xz = abs(sin(3.14159265358979 * v.xz * sine_scale));
+            stretch *= max(1.0, 3.14159265358979 * abs(sine_scale));
+        }
+        p.w *= stretch;
+    }
+    p.xyz = v;
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double radius = a.f(0), inside_scale = a.f(2), shift = a.f(5), scale = a.f(6), y_offset = a.f(7),
+                     sine_scale = a.f(10);
+        const vec3 inside_multiplier = a.v3(3), multiplier = a.v3(4);
+        vec3 v = p.xyz;
+        const double rr = dot(v, v);
+        if (rr < radius * radius) {
+            if (a.f(1) > 0.5) {
+                const double k = radius * 1.18 * inside_scale;
+                p.w *= abs(k) * (0.1 + 0.4 / std::max(rr, 1e-30));
+                v *= k * (rr * 0.1 + 0.4) / std::max(rr, 1e-30);
+            } else {
+                p.w *= max(abs(inside_multiplier.x), max(abs(inside_multiplier.y), abs(inside_multiplier.z)));
+                v *= inside_multiplier;
+            }
+        } else {
+            const vec3 w = v * multiplier - vec3(0.0, shift, 0.0);
+            const double r1 = std::max(dot(w, w), 1e-30);
+            double stretch = max(abs(multiplier.x), max(abs(multiplier.y), abs(multiplier.z))) * abs(scale) / r1;
+            v = w / r1 * scale;
+            v.y += y_offset;
+            auto wrap = [](double x) { return x - glm::sign(x) * std::floor(abs(x) + 0.5); };
+            if (a.f(8) > 0.5) v.x = wrap(v.x), v.z = wrap(v.z);
+            if (a.f(9) > 0.5) {
+                v.x = abs(sin(3.14159265358979 * v.x * sine_scale));
+                v.z = abs(sin(3.14159265358979 * v.z * sine_scale));
+                stretch *= max(1.0, 3.14159265358979 * abs(sine_scale));
+            }
+            p.w *= stretch;
+        }
+        p.xyz = v;
+    }
+};
+
 }  // namespace fraktal::blocks

@@ -1495,6 +1495,93 @@ TEST(FractImport, IdesAndAexionsOctopusFollowMandelbulber2sOrbits) {
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// Benesi's T1 pine tree (T1's |v| scaled per axis in Benesi's frame, less its offset; the pine
+// tree's square plus c with y and z exchanged, times its multipliers; the Julia offset) and msltoe's
+// toroidal bulb with its pre-scale on the first iteration and its spherical offset, as
+// BenesiT1PineTreeIteration and MsltoeToroidalIteration write them. Mandelbulber2 adds no other c
+// to the pine tree.
+TEST(FractImport, BenesiT1PineTreeAndTheToroidalBulbFollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 67;\nN 6;\n[fractal_1]\ntransf_scale3D_222 2,1 1,9 2;\n"
+         "transf_constant_multiplier_100 1 0,5 0,3;\ntransf_constant_julia_mode true;\ntransf_offset_000 0,1 0 0;\n",
+         {"benesi_t1", "derivative_tweak", "benesi_pine_tree", "translate"},
+         [](const vec3& v, const vec3& point) {
+             const double s23 = std::sqrt(2.0 / 3.0), s13 = std::sqrt(1.0 / 3.0), s12 = std::sqrt(0.5);
+             vec3 z = v;
+             double tempXZ = z.x * s23 - z.z * s13;
+             z = vec3((tempXZ - z.y) * s12, (tempXZ + z.y) * s12, z.x * s13 + z.z * s23);
+             z = glm::abs(z) * vec3(2.1, 1.9, 2.0);
+             tempXZ = (z.y + z.x) * s12;
+             z = vec3(z.z * s13 + tempXZ * s23, (z.y - z.x) * s12, z.z * s23 - tempXZ * s13);
+             z -= vec3(2.0, 0.0, 0.0);
+             const vec3 zz = z * z;
+             double t = 1.0;
+             if (zz.y + zz.z > 0.0) t = 2.0 * z.x / std::sqrt(zz.y + zz.z);
+             const double temp = z.z;
+             z = vec3(zz.x - zz.y - zz.z, 2.0 * t * z.y * temp, t * (zz.y - zz.z));
+             const vec3 c = point * vec3(1.0, 0.5, 0.3);
+             z += vec3(c.x, c.z, c.y);
+             return z + vec3(0.1, 0.0, 0.0);
+         }},
+        {"formula_1 86;\nN 6;\n[fractal_1]\ntransf_function_enabled_false true;\ntransf_scale3D_111 1,2 1 0,9;\n"
+         "transf_minimum_radius_05 0,4;\ntransf_pwr_4 2;\ntransf_pwr_8 5;\npower 4;\n"
+         "transf_function_enabledAx_false true;\ntransf_offset 0,1;\ntransf_scale 1,1;\n",
+         {"axis_scale", "msltoe_toroidal", "derivative_tweak", "add_c"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3& c, int i) {
+             vec3 z = i < 1 ? v * vec3(1.2, 1.0, 0.9) : v;
+             double theta = std::atan2(z.y, z.x);
+             const double x1 = 0.4 * std::cos(theta), y1 = 0.4 * std::sin(theta);
+             const double rr = (z.x - x1) * (z.x - x1) + (z.y - y1) * (z.y - y1) + z.z * z.z;
+             const double phi = std::asin(z.z / std::sqrt(rr)) * 5.0, rp = std::pow(rr, 2.0);
+             theta *= 4.0;
+             const double around = 0.4 + rp * std::cos(phi);
+             z = vec3(around * std::cos(theta), around * std::sin(theta), -rp * std::sin(phi));
+             z *= 1.0 + 0.1 / -length(z);
+             return z * 1.1 + c;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
+// RiemannBulbMsltoeMod2Iteration of 2.20 written out, with the given radius, smooth inside or not,
+// and wrap or sine outside (its other values Mandelbulber2's defaults but the multiplier 1.7).
+vec3 mb2RiemannBulb(vec3 z, bool smoothInside, bool wrap, bool sine) {
+    const double radius2 = 0.6, rr = dot(z, z);
+    if (rr < radius2 * radius2) {
+        if (smoothInside) return z * (radius2 * ((rr * 0.1) + 0.4) * 1.18 * 1.0 / rr);
+        return z * vec3(0.9, 1.1, 1.0);
+    }
+    z *= vec3(1.7);
+    const double shift = 1.0, r1 = z.x * z.x + (z.y - shift) * (z.y - shift) + z.z * z.z;
+    z = vec3(z.x / r1, (z.y - shift) / r1, z.z / r1) * 3.0;
+    z.y += 1.5;
+    if (wrap) z.x -= std::round(z.x), z.z -= std::round(z.z);
+    if (sine) {
+        z.x = std::abs(std::sin(3.14159265358979 * z.x * 0.8));
+        z.z = std::abs(std::sin(3.14159265358979 * z.z * 0.8));
+    }
+    return z;
+}
+
+// msltoe's Riemann bulb mod 2 both ways inside and outside (no c: Mandelbulber2 adds none).
+TEST(FractImport, RiemannBulbFollowsMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 85;\nN 6;\n[fractal_1]\ntransf_minimum_radius_05 0,6;\ntransf_constant_multiplier_222 1,7 1,7 "
+         "1,7;\n",
+         {"riemann_bulb"},
+         [](const vec3& z, const vec3&) { return mb2RiemannBulb(z, true, true, false); }},
+        {"formula_1 85;\nN 6;\n[fractal_1]\ntransf_minimum_radius_05 0,6;\ntransf_constant_multiplier_222 1,7 1,7 "
+         "1,7;\n"
+         "transf_function_enabled false;\ntransf_constant_multiplier_111 0,9 1,1 1;\ntransf_function_enabledx false;\n"
+         "transf_function_enabledx_false true;\ntransf_scale_1 0,8;\n",
+         {"riemann_bulb"},
+         [](const vec3& z, const vec3&) { return mb2RiemannBulb(z, false, false, true); }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 // eiffie's msltoe, the smooth Menger sponge and its mod 1 (the corner and z's fold centre given
 // differently, the sorts weighted, the box offset after).
 TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {

@@ -911,6 +911,34 @@ void mapBenesiPineTree(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
           {N::v("multiplier", r.vector("transf_constant_multiplier_100")), N::f("angle", r.number("transf_angle_0"))});
 }
 
+// benesi_t1_pine_tree (BenesiT1PineTreeIteration of 2.20): Benesi's T1 transform (option
+// transf_benesi_T1_enabled, in the formula's window: benesi_t1, and the 1 Mandelbulber2's
+// derivative takes with it), then the pine tree's square with c added, y and z exchanged, times
+// transf_constant_multiplier_100 (option transf_addCpixel_enabled, window C), the Julia offset
+// transf_offset_000 (transf_constant_julia_mode) and the second rotation
+// (transf_rotation2_enabled_false). The turn inside T1, c's axes exchanged anew each iteration and
+// the cosine wrap of x by y are refused.
+void mapBenesiT1PineTree(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_alternate_enabled_false", "c's axes exchanged anew each iteration");
+    r.mustBeDefault("transf_function_enabledBx_false", "x wrapped by the cosine and sine of y");
+    if (r.boolean("transf_benesi_T1_enabled")) {
+        r.mustBeDefault("transf_rotation_enabled", "a rotation inside Benesi's frame");
+        b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"), [&] {
+            b.add("benesi_t1",
+                  {N::v("scale", r.vector("transf_scale3D_222")), N::v("offset", r.vector("transf_offset_200"))});
+            b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", 1.0)});
+        });
+    }
+    if (r.boolean("transf_addCpixel_enabled"))
+        inWindow(r, b, "C", "C",
+                 [&] { b.add("benesi_pine_tree", {N::v("multiplier", r.vector("transf_constant_multiplier_100"))}); });
+    if (r.boolean("transf_constant_julia_mode")) {
+        const vec3 offset = r.vector("transf_offset_000");
+        if (length(offset) > 0.0) b.add("translate", {N::v("offset", offset)});
+    }
+    if (r.boolean("transf_rotation2_enabled_false")) b.rotation(setRotation2(r.vector("transf_rotation2")));
+}
+
 void mapQuaternion3d(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("bristorbrot", {N::f("twist", 0.0)}); }
 void mapBristorbrot(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("bristorbrot", {N::f("twist", 1.0)}); }
 
@@ -1559,6 +1587,47 @@ void mapAexionOctopusMod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
     if (r.boolean("transf_rotation_enabled")) b.rotation(setRotation2(r.vector("transf_rotation")));
     additionConstant(r, b);
     symmetricMultipleOfC(r, b, "transf_constant_multiplier_000");
+}
+// msltoe_toroidal (MsltoeToroidalIteration of 2.20): the scale per axis transf_scale3D_111 (option
+// "enabled_false", window D to D1), the toroidal bulb of ring radius transf_minimum_radius_05,
+// powers transf_pwr_4 (radial), transf_pwr_8 (latitude) and power (azimuth), with its spherical
+// offset transf_offset and scale transf_scale (option Ax_false, which adds its own 1 to the
+// derivative). Its DE tweak (analyticDE_enabled_false: rp DE (pwr4 + offset_2) scale_1 + offset_1
+// in place of rp DE (pwr4 + 1) + 1) is the derivative_tweak that turns the one into the other.
+void mapMsltoeToroidal(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    if (r.boolean("transf_function_enabled_false")) {
+        const vec3 stretch = r.vector("transf_scale3D_111");
+        b.within(r.integer("transf_start_iterations_D"), r.integer("transf_stop_iterations_D1"), [&] {
+            if (stretch != vec3(1.0)) b.add("axis_scale", {N::v("scale", stretch)});
+        });
+    }
+    const bool pulled = r.boolean("transf_function_enabledAx_false");
+    const double power = r.number("transf_pwr_4");
+    b.add("msltoe_toroidal",
+          {N::f("ring_radius", r.number("transf_minimum_radius_05")), N::f("radial_power", power),
+           N::f("latitude_power", r.number("transf_pwr_8")), N::f("azimuth_power", r.number("power")),
+           N::f("offset", pulled ? r.number("transf_offset") : 0.0),
+           N::f("scale", pulled ? r.number("transf_scale") : 1.0)});
+    if (r.boolean("analyticDE_enabled_false")) {
+        const double scale = (power + r.number("analyticDE_offset_2")) * r.number("analyticDE_scale_1") / (power + 1.0);
+        b.add("derivative_tweak", {N::f("scale", scale), N::f("offset", r.number("analyticDE_offset_1") - 1.0)});
+    }
+    if (pulled) b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", 1.0)});
+}
+// riemann_bulb_msltoe_mod2 (RiemannBulbMsltoeMod2Iteration of 2.20): the Riemann bulb with its
+// parameters as the formula names them. Mandelbulber2 adds no c and measures the distance by
+// differences (the gradient estimator here).
+void mapRiemannBulbMsltoeMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("riemann_bulb",
+          {N::f("radius", r.number("transf_minimum_radius_05")),
+           N::f("smooth_inside", r.boolean("transf_function_enabled") ? 1.0 : 0.0),
+           N::f("inside_scale", r.number("transf_scaleA_1")),
+           N::v("inside_multiplier", r.vector("transf_constant_multiplier_111")),
+           N::v("multiplier", r.vector("transf_constant_multiplier_222")), N::f("shift", r.number("transf_offset_1")),
+           N::f("scale", r.number("transf_scale_3")), N::f("y_offset", r.number("transf_offset_105")),
+           N::f("tile", r.boolean("transf_function_enabledx") ? 1.0 : 0.0),
+           N::f("sine", r.boolean("transf_function_enabledx_false") ? 1.0 : 0.0),
+           N::f("sine_scale", r.number("transf_scale_1"))});
 }
 // Mandelbulb3Iteration takes 2 r DE and no 1 for c (derivativeTakesNoOneForC).
 void mapMandelbulb3(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("mandelbulb3", {}); }
@@ -2840,6 +2909,9 @@ constexpr Mapping kMappings[] = {
     {39, mapIdes},
     {40, mapIdes2},
     {63, mapAexionOctopusMod},
+    {67, mapBenesiT1PineTree},
+    {86, mapMsltoeToroidal},
+    {85, mapRiemannBulbMsltoeMod2},
 };
 
 MapFn findMapping(int id) {
