@@ -137,4 +137,88 @@ struct MandelbulbKaliMulti {
     }
 };
 
+// Mandelbulber2's multi Mandelbulb (mandelbulb_multi, and the bulb of mandelbulb_multi2;
+// fractal_formulas.cpp of 2.20): the bulb's angles measured once. With r = |v| and the axes taken
+// in `order` as a = (a1, a2, a3): theta0 = theta_offset + acos(a1 / r) (or asin), phi0 =
+// phi_offset + atan2(a2, a3) (or atan of the quotient); theta = n theta_scale theta0, phi = n
+// phi_scale phi0; the result r^n (c cos phi, c sin phi, sin theta) with c = cos theta (the sine
+// form), or r^n (s sin phi, s cos phi, cos theta) with s = sin theta (the cosine form), c and s
+// taken of theta0 with `latitude_unscaled`. The running derivative is Mandelbulber2's n r^(n-1)
+// (c's 1 from add_c). acos and asin are taken as angles of (|(a2, a3)|, a1), as in the Kali bulb.
+struct MandelbulbMulti {
+    static constexpr std::string_view id = "mandelbulb_multi";
+    static constexpr std::string_view menuGroup = "Mandelbulber2";
+    static constexpr std::string_view label = "Mandelbulb, multi";
+    static constexpr std::string_view help =
+        "Mandelbulb whose angles are measured in a chosen axis order, with acos or asin, atan2 or atan; sine or "
+        "cosine form.";
+    static constexpr Category category = Category::Power;
+    static constexpr DerivativeBound derivative = DerivativeBound::None;
+    static constexpr std::string_view jump =
+        "its map jumps across the atan2 seam and where atan's quotient changes sign";
+    static constexpr Degree degree{"power"};
+    static constexpr std::array params{
+        ParamDecl{"power", ParamType::Float, {8.0, 0.0, 0.0}, 1.0, 16.0, "Exponent n."},
+        ParamDecl{"order",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  0.0,
+                  5.0,
+                  "Axis order of the measurement: 0 xyz, 1 xzy, 2 yxz, 3 yzx, 4 zxy, 5 zyx."}
+            .labelled("Axis order"),
+        toggleParam("theta_asin", false, "On: the latitude by asin (off: acos).").labelled("Theta by asin"),
+        toggleParam("phi_atan", false, "On: the azimuth by atan of the quotient (off: atan2).").labelled("Phi by atan"),
+        toggleParam("cosine", false, "On: the cosine form (s sin phi, s cos phi, cos theta); off: the sine form."),
+        toggleParam("latitude_unscaled", false, "On: the horizontal factor of theta before the power multiplies it."),
+        ParamDecl{"theta_scale", ParamType::Float, {1.0, 0.0, 0.0}, -2.0, 2.0, "Multiplies n on theta."},
+        ParamDecl{"phi_scale", ParamType::Float, {1.0, 0.0, 0.0}, -2.0, 2.0, "Multiplies n on phi."},
+        ParamDecl{"theta_offset",
+                  ParamType::Float,
+                  {0.0, 0.0, 0.0},
+                  -180.0,
+                  180.0,
+                  "Added to theta before the power, degrees."},
+        ParamDecl{
+            "phi_offset", ParamType::Float, {0.0, 0.0, 0.0}, -180.0, 180.0, "Added to phi before the power, degrees."},
+    };
+    static constexpr std::string_view glsl = R"(
+    float r = length(p.xyz);
+    if (r > 0.0) {
+        int k = int(order + 0.5);
+        vec3 v = p.xyz;
+        vec3 a = k == 1 ? v.xzy : k == 2 ? v.yxz : k == 3 ? v.yzx : k == 4 ? v.zxy : k == 5 ? v.zyx : v;
+        float lat = length(a.yz);
+        float th0 = radians(theta_offset) + (theta_asin > 0.5 ? atan(a.x, lat) : atan(lat, a.x));
+        float ph = radians(phi_offset) + (phi_atan > 0.5 ? atan(a.y / a.z) : atan(a.y, a.z));
+        float th = th0 * power * theta_scale;
+        ph *= power * phi_scale;
+        float horizontal = latitude_unscaled > 0.5 ? th0 : th;
+        p.w *= power * pow(r, power - 1.0);
+        p.xyz = pow(r, power) * (cosine > 0.5 ? vec3(sin(horizontal) * sin(ph), cos(ph) * sin(horizontal), cos(th))
+                                              : vec3(cos(horizontal) * cos(ph), sin(ph) * cos(horizontal), sin(th)));
+    } else {
+        p.w = 0.0;
+    }
+)";
+    static void apply(P4& p, const vec3&, Args a) {
+        const double power = a.f(0), theta_scale = a.f(6), phi_scale = a.f(7);
+        const double r = length(p.xyz);
+        if (!(r > 0.0)) {
+            p.w = 0.0;
+            return;
+        }
+        const vec3 u = MandelbulbKaliMulti::ordered(p.xyz, a.f(1));
+        const double lat = std::hypot(u.y, u.z);
+        const double th0 = glm::radians(a.f(8)) + (a.f(2) > 0.5 ? std::atan2(u.x, lat) : std::atan2(lat, u.x));
+        double ph = glm::radians(a.f(9)) + (a.f(3) > 0.5 ? std::atan(u.y / u.z) : std::atan2(u.y, u.z));
+        const double th = th0 * power * theta_scale;
+        ph *= power * phi_scale;
+        const double horizontal = a.f(5) > 0.5 ? th0 : th;
+        p.w *= power * std::pow(r, power - 1.0);
+        p.xyz =
+            std::pow(r, power) * (a.f(4) > 0.5 ? vec3(sin(horizontal) * sin(ph), cos(ph) * sin(horizontal), cos(th))
+                                               : vec3(cos(horizontal) * cos(ph), sin(ph) * cos(horizontal), sin(th)));
+    }
+};
+
 }  // namespace fraktal::blocks

@@ -171,6 +171,7 @@ constexpr std::array kBlocks{
     describe<AexionOctopus>(),
     describe<MsltoeToroidal>(),
     describe<RiemannBulb>(),
+    describe<MandelbulbMulti>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

@@ -1582,6 +1582,63 @@ TEST(FractImport, RiemannBulbFollowsMandelbulber2sOrbits) {
     for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
+// MandelbulbMultiIteration's bulb (and MandelbulbMulti2Iteration's) written out: the axes of v in
+// the order's vector, theta0 and phi0 by asin or acos and atan or atan2 plus the offsets (in
+// degrees), the sine or cosine form, its horizontal factor of theta0 where `unscaled`.
+vec3 mb2MultiBulb(const vec3& z, const vec3& v, double power, bool asin, bool atan2, bool cosine, bool unscaled,
+                  double scaleA, double scaleB, double beta, double alpha) {
+    const double pi = 3.14159265358979, r = length(z);
+    const double th0 = beta * pi / 180.0 + (asin ? std::asin(v.x / r) : std::acos(v.x / r));
+    const double ph0 = alpha * pi / 180.0 + (atan2 ? std::atan2(v.y, v.z) : std::atan(v.y / v.z));
+    const double rp = std::pow(r, power), th = th0 * power * scaleA, ph = ph0 * power * scaleB;
+    if (cosine) {
+        const double sinth = std::sin(unscaled ? th0 : th);
+        return rp * vec3(sinth * std::sin(ph), std::cos(ph) * sinth, std::cos(th));
+    }
+    const double costh = std::cos(unscaled ? th0 : th);
+    return rp * vec3(costh * std::cos(ph), std::sin(ph) * costh, std::sin(th));
+}
+
+// The multi bulb: axis order xzy, asin and atan of the quotient (Mandelbulber2's default), its
+// scales and offsets; the cosine form with the horizontal factor unscaled and acos, atan2, the abs
+// of y first. The multi2 bulb: Mandelbulber2's zyx numbering (1: zxy), x and y exchanged from the
+// second iteration, z negated, an offset and a turn on the first three iterations.
+TEST(FractImport, MultiBulbsFollowMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 65;\nN 6;\n[fractal_1]\npower 3;\nmandelbulbMulti_acos_or_asin asin;\n"
+         "mandelbulbMulti_order_of_xyz xzy;\ntransf_scaleA_1 0,9;\ntransf_scaleB_1 1,1;\nbeta_angle_offset 10;\n"
+         "alpha_angle_offset -20;\n",
+         {"mandelbulb_multi", "add_c"},
+         [](const vec3& z, const vec3& c) {
+             return mb2MultiBulb(z, vec3(z.x, z.z, z.y), 3.0, true, false, false, false, 0.9, 1.1, 10.0, -20.0) + c;
+         }},
+        {"formula_1 65;\nN 6;\n[fractal_1]\npower 4;\nmandelbulbMulti_atan_or_atan2 atan2;\n"
+         "transf_function_enabledx_false true;\ntransf_function_enabledy_false true;\n"
+         "transf_function_enabled_false true;\ntransf_function_enabledAy_false true;\n",
+         {"plane_fold", "mandelbulb_multi", "add_c"},
+         [](const vec3& v, const vec3& c) {
+             const vec3 z(v.x, std::abs(v.y), v.z);
+             return mb2MultiBulb(z, z, 4.0, false, true, true, true, 1.0, 1.0, 0.0, 0.0) + c;
+         }},
+        {"formula_1 118;\nN 6;\n[fractal_1]\npower 3;\nsinTan2Trig_order_of_zyx 1;\n"
+         "transf_function_enabledK_false true;\ntransf_function_enabledD_false true;\ntransf_start_iterations_D 1;\n"
+         "transf_function_enabledBz_false true;\ntransf_addition_constant 0,1 0 0;\n"
+         "transf_function_enabledR_false true;\ntransf_rotation 0 0 30;\ntransf_stop_iterations_R 3;\n",
+         {"mandelbulb_multi", "rotate", "axis_scale", "axis_scale", "translate", "rotate", "add_c"},
+         nullptr,
+         1.5,
+         [](const vec3& v, const vec3& c, int i) {
+             vec3 z = mb2MultiBulb(v, vec3(v.z, v.x, v.y), 3.0, true, true, false, false, 1.0, 1.0, 0.0, 0.0);
+             if (i >= 1) std::swap(z.x, z.y);
+             z.z = -z.z;
+             z += vec3(0.1, 0.0, 0.0);
+             if (i < 3) z = mb2RotateVector(vec3(0.0, 0.0, 30.0), z);
+             return z + c;
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
+}
+
 // eiffie's msltoe, the smooth Menger sponge and its mod 1 (the corner and z's fold centre given
 // differently, the sorts weighted, the box offset after).
 TEST(FractImport, EiffieMsltoeAndTheSmoothMengersFollowMandelbulber2sOrbits) {

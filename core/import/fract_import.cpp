@@ -2621,6 +2621,8 @@ void absOfChosenAxes(Reader& r, NodeBuilder& b) {
         }
 }
 
+void multiBulbMultipleOfC(Reader& r, NodeBuilder& b);
+
 // Kali's multi Mandelbulb: the axes made positive first where transf_function_enabled_false and
 // enabledA{x,y,z}_false say (each a plane fold), the bulb of both measurements, then the formula's
 // own multiple of c in mandelbulbMulti_order_of_xyz_C (xyz, or yxz as add_c_axes' swap_xy).
@@ -2643,6 +2645,13 @@ void mapMandelbulbKaliMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
            N::f("theta_scale", r.number("transf_scaleA_1")), N::f("phi_scale", r.number("transf_scaleB_1")),
            N::f("theta_offset", r.number("beta_angle_offset")), N::f("phi_offset", r.number("alpha_angle_offset")),
            N::f("theta_offset_second", r.number("transf_beta_angle_offset"))});
+    multiBulbMultipleOfC(r, b);
+}
+
+// The multi bulbs' own multiple of c (transf_addCpixel_enabled_false): c times
+// transf_constant_multiplierC_111 in mandelbulbMulti_order_of_xyz_C (xyz, or yxz as add_c_axes'
+// swap_xy).
+void multiBulbMultipleOfC(Reader& r, NodeBuilder& b) {
     if (!r.boolean("transf_addCpixel_enabled_false")) return;
     r.mustBeDefault("transf_alternate_enabled_false", "c's axes reordered anew each iteration");
     const int orderC = axisOrder(r, "mandelbulbMulti_order_of_xyz_C");
@@ -2651,6 +2660,77 @@ void mapMandelbulbKaliMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&)
                              ": c's axes in an order other than xyz or yxz");
     b.add("add_c_axes", {N::v("weights", r.vector("transf_constant_multiplierC_111")), N::f("julia", 0.0),
                          N::f("swap_xy", orderC == 2 ? 1.0 : 0.0)});
+}
+
+// The multi bulb's sine or cosine form and its horizontal factor's theta (before the power with
+// option y_false in the cosine form, z_false in the sine form), with the angle options given.
+void multiBulb(Reader& r, NodeBuilder& b, int order, bool thetaAsin, bool phiAtan) {
+    const bool cosine = r.boolean("transf_function_enabledx_false");
+    b.add("mandelbulb_multi",
+          {N::f("power", r.number("power")), N::f("order", std::max(order, 0)), N::f("theta_asin", thetaAsin),
+           N::f("phi_atan", phiAtan), N::f("cosine", cosine),
+           N::f("latitude_unscaled",
+                r.boolean(cosine ? "transf_function_enabledy_false" : "transf_function_enabledz_false")),
+           N::f("theta_scale", r.number("transf_scaleA_1")), N::f("phi_scale", r.number("transf_scaleB_1")),
+           N::f("theta_offset", r.number("beta_angle_offset")), N::f("phi_offset", r.number("alpha_angle_offset"))});
+}
+
+// mandelbulb_multi (MandelbulbMultiIteration of 2.20): the abs of the chosen axes, the bulb measured
+// in mandelbulbMulti_order_of_xyz with its acos or asin and atan or atan2, then its own multiple of c.
+void mapMandelbulbMulti(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    absOfChosenAxes(r, b);
+    multiBulb(r, b, axisOrder(r, "mandelbulbMulti_order_of_xyz"),
+              secondChoice(r, "mandelbulbMulti_acos_or_asin", "asin"),
+              !secondChoice(r, "mandelbulbMulti_atan_or_atan2", "atan2"));
+    multiBulbMultipleOfC(r, b);
+}
+
+// An orthogonal map: a rotation, or a rotation and the mirror through the origin where it
+// reverses handedness.
+void orthogonalMap(NodeBuilder& b, const glm::dmat3& m) {
+    if (glm::determinant(m) > 0.0) return b.rotation(m);
+    b.rotation(-m);
+    b.add("axis_scale", {N::v("scale", vec3(-1.0))});
+}
+
+// mandelbulb_multi2 (MandelbulbMulti2Iteration of 2.20): with option "enabled_false" the abs of x,
+// y and z each in its window (X, Y, Z) where options Ax, Ay, Az_false say; the bulb measured in
+// sinTan2Trig_order_of_zyx (Mandelbulber2 numbers it zyx, zxy, yzx, yxz, xzy, xyz) with asin or
+// acos and atan2 or atan; with option K_false x and y exchanged (option D_false, window D), x and z
+// (E_false, window E) and the axes Bx, By, Bz_false negated; then transf_addition_constant, the
+// multiple of c and the rotation (option R_false, window R).
+void mapMandelbulbMulti2(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    if (r.boolean("transf_function_enabled_false"))
+        for (int k = 0; k < 3; ++k) {
+            const std::string axis(1, "xyz"[k]), upper(1, "XYZ"[k]);
+            if (r.boolean("transf_function_enabledA" + axis + "_false"))
+                inWindow(r, b, upper, upper, [&] { axisMirror(b, k); });
+        }
+    const std::string zyx = r.raw("sinTan2Trig_order_of_zyx");
+    int order = -1;
+    for (int k = 0; k < 6; ++k)
+        if (zyx == std::to_string(k)) order = 5 - k;
+    if (order < 0) order = axisOrder(r, "sinTan2Trig_order_of_zyx");
+    multiBulb(r, b, order, !secondChoice(r, "sinTan2Trig_asin_or_acos", "acos"),
+              secondChoice(r, "sinTan2Trig_atan2_or_atan", "atan"));
+    if (r.boolean("transf_function_enabledK_false")) {
+        auto exchange = [&](const char* option, const std::string& window, int a, int c) {
+            if (!r.boolean(option)) return;
+            glm::dmat3 m(1.0);
+            m[a][a] = m[c][c] = 0.0;
+            m[a][c] = m[c][a] = 1.0;
+            inWindow(r, b, window, window, [&] { orthogonalMap(b, m); });
+        };
+        exchange("transf_function_enabledD_false", "D", 0, 1);
+        exchange("transf_function_enabledE_false", "E", 0, 2);
+        const vec3 negate(r.boolean("transf_function_enabledBx_false") ? -1.0 : 1.0,
+                          r.boolean("transf_function_enabledBy_false") ? -1.0 : 1.0,
+                          r.boolean("transf_function_enabledBz_false") ? -1.0 : 1.0);
+        if (negate != vec3(1.0)) b.add("axis_scale", {N::v("scale", negate)});
+    }
+    additionConstant(r, b);
+    multiBulbMultipleOfC(r, b);
+    windowedRotation(r, b, "transf_function_enabledR_false", "_R");
 }
 
 // Kali's Mandelbulb (2.20's MandelbulbKaliIteration in fractal_formulas.cpp) is the multi bulb's
@@ -2759,12 +2839,7 @@ void mapTransfZvectorAxisSwap(Reader& r, NodeBuilder& b, std::vector<ImportItem>
     glm::dmat3 m(0.0);  // column-major: m[column][row]; row k reads axis kSource[order][k]
     for (int k = 0; k < 3; ++k)
         m[kSource[order][k]][k] = r.boolean(std::string("transf_function_enabled") + "xyz"[k] + "_false") ? -1.0 : 1.0;
-    if (glm::determinant(m) > 0.0) {
-        b.rotation(m);
-    } else {
-        b.rotation(-m);
-        b.add("axis_scale", {N::v("scale", vec3(-1.0))});
-    }
+    orthogonalMap(b, m);
     if (r.boolean("transf_function_enabled_false"))
         b.within(r.integer("transf_start_iterations"), r.integer("transf_stop_iterations"),
                  [&] { b.rotation(rotationZYX(45.0, 0.0, 0.0)); });
@@ -2912,6 +2987,8 @@ constexpr Mapping kMappings[] = {
     {67, mapBenesiT1PineTree},
     {86, mapMsltoeToroidal},
     {85, mapRiemannBulbMsltoeMod2},
+    {65, mapMandelbulbMulti},
+    {118, mapMandelbulbMulti2},
 };
 
 MapFn findMapping(int id) {
