@@ -3942,6 +3942,24 @@ TEST(FractImport, InteriorModeHitsTheInteriorWalls) {
     }
 }
 
+// Mandelbulber2 places its primitives in the world, fractal_rotation and fractal_position turn and
+// move the fractal alone: beside a placement the plane is an object, not a combine estimator
+// evaluated in the placed frame. Above the plane (world z = 50, far from the bulb) the estimate is
+// positive; the plane turned 135 degrees with the fractal put that point inside it.
+TEST(FractImport, PrimitivesStayInTheWorldBesideThePlacedFractal) {
+    const mb2::FractImport r =
+        importText("[main_parameters]\nfractal_rotation 0 -135 0;\nprimitive_plane_1_enabled true;\n");
+    ASSERT_TRUE(r.faithful()) << r.unsupported.front().text();
+    const Formula& f = r.preset.formula;
+    EXPECT_EQ(f.estimator.block->id.find("combine"), std::string_view::npos) << f.estimator.block->id;
+    ASSERT_EQ(f.objects.size(), 1u);
+    const Evaluation above = evaluate(f, vec3(0.0, 0.0, 50.0));
+    EXPECT_FALSE(above.inside);
+    EXPECT_GT(above.distance, 1.0);
+    const Evaluation below = evaluate(f, vec3(0.0, 0.0, -50.0));
+    EXPECT_LT(below.distance, 0.0);
+}
+
 TEST(FractImport, BulbAngleOffsetsAreTheSineBulbsOffsets) {
     const mb2::FractImport r =
         importText("[main_parameters]\n[fractal_1]\nalpha_angle_offset 90;\nbeta_angle_offset -45;\npower 2;\n");

@@ -3290,8 +3290,12 @@ void importObjects(const FractFile& file, Reader& main, FractImport& out) {
     const bool logPart = estimator == "escape_log" || estimator == "escape_gradient" || estimator == "escape_potential";
     const bool difs = estimator == "difs";
     // Interior mode changes the fractal's estimate alone, before the cut and the primitives: the
-    // objects come after it (evaluate()), where a combine estimator would mix them into it.
-    const bool combines = (linear || logPart) && f.hitRule != HitRule::InteriorWalls;
+    // objects come after it (evaluate()), where a combine estimator would mix them into it. A
+    // combine estimator is evaluated in the fractal's placed frame, where Mandelbulber2 places the
+    // primitives and the limit box in the world's (fractal_position and fractal_rotation move the
+    // fractal alone): beside a placement they are objects (ides1_001's plane, turned 135 degrees
+    // with the fractal, put the camera inside it: IoU 0.86, the view filled).
+    const bool combines = (linear || logPart) && f.hitRule != HitRule::InteriorWalls && f.placement.identity();
     const double offset = linear ? f.estimator.values[0].x : 0.0;
     auto combine = [&](std::string_view id, std::initializer_list<NodeBuilder::Value> values) {
         std::vector<Node> nodes;
