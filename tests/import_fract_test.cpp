@@ -3109,6 +3109,24 @@ TEST(FractImport, SphericalFoldParabFollowsMandelbulber2sOrbits) {
                   "slot 1 (transf_spherical_fold_parab)", "varied");
 }
 
+// c turned by transf_rotation on iterations 2 to 5 (window G) and times its multipliers, added by
+// transf_add_cpixel_rotated after the power-2 bulb (which adds its own c), against
+// TransfAddCpixelRotatedIteration written out.
+TEST(FractImport, AddCpixelRotatedFollowsMandelbulber2sOrbits) {
+    expectOrbitsFollowMandelbulber2(
+        {"hybrid_fractal_enable true;\nformula_1 2;\nformula_2 1078;\nN 8;\n[fractal_1]\npower 2;\n[fractal_2]\n"
+         "transf_rotation 20 -30 40;\ntransf_start_iterations_G 2;\ntransf_stop_iterations_G 6;\n"
+         "transf_constant_multiplier_111 0,8 1,2 0,5;\n",
+         {"mandelbulb_sine", "add_c", "add_c_axes", "add_c_axes", "add_c_axes"},
+         nullptr,
+         1.5,
+         [](const vec3& z, const vec3& c, int i) {
+             if (i % 2 == 0) return mb2MandelbulbPower2(z) + c;
+             const vec3 turned = i >= 2 && i < 6 ? mb2RotateVector(vec3(20.0, -30.0, 40.0), c) : c;
+             return z + turned * vec3(0.8, 1.2, 0.5);
+         }});
+}
+
 // Graeme McLaren's sine or cosine: the cosine on x and z, the sine on y, each axis multiplied,
 // scaled twice and over |v| + 1, alternating with a power-2 bulb, against Mandelbulber2's
 // TransfSinOrCosIteration and MandelbulbIteration written out; an axis left out becomes 0. The

@@ -1125,18 +1125,16 @@ void cparaSphereFold(Reader& r, NodeBuilder& b, bool varies, const vec3& offset)
 // mandelbulbMulti_order_of_xyz (xyz, or yxz as add_c_axes' swap_xy). Where `turnWindow` is given
 // and transf_rotation_enabled is on, c is turned by transf_rotation on that window's iterations
 // first (amazing_surf_mod2). Its "alternate" form, which keeps the reordered c for the next
-// iteration, is refused.
-void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window, const std::string& turnWindow = "") {
-    if (!r.boolean("transf_addCpixel_enabled_false")) return;
+// iteration, is refused. turnedMultipleOfC adds it on iterations [start, stop), turned in
+// `turnWindow` where `turns`; extraMultipleOfC where the option says.
+void turnedMultipleOfC(Reader& r, NodeBuilder& b, int start, int stop, const std::string& turnWindow, bool turns) {
     r.mustBeDefault("transf_alternate_enabled_false", "c's axes reordered anew each iteration");
     const std::string order = r.raw("mandelbulbMulti_order_of_xyz");
     const bool swapXy = order == "2" || order == "yxz";
     if (!swapXy && order != "0" && order != "xyz")
         return r.unsupported("mandelbulbMulti_order_of_xyz " + order + ": c's axes in an order other than xyz or yxz");
-    const bool turns = !turnWindow.empty() && r.boolean("transf_rotation_enabled");
     const AxisAngle turn = turns ? axisAngle(setRotation2(r.vector("transf_rotation"))) : AxisAngle{};
-    acrossWindows(r, r.integer("transf_start_iterations_" + window), r.integer("transf_stop_iterations_" + window),
-                  turns ? std::vector{turnWindow} : std::vector<std::string>{},
+    acrossWindows(r, start, stop, turns ? std::vector{turnWindow} : std::vector<std::string>{},
                   [&](int start, int stop, const std::vector<bool>& covered) {
                       const bool turned = !covered.empty() && covered[0];
                       b.within(start, stop, [&] {
@@ -1146,6 +1144,18 @@ void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window, cons
                                                N::f("turn_angle", turned ? turn.degrees : 0.0)});
                       });
                   });
+}
+void extraMultipleOfC(Reader& r, NodeBuilder& b, const std::string& window, const std::string& turnWindow = "") {
+    if (!r.boolean("transf_addCpixel_enabled_false")) return;
+    turnedMultipleOfC(r, b, r.integer("transf_start_iterations_" + window),
+                      r.integer("transf_stop_iterations_" + window), turnWindow,
+                      !turnWindow.empty() && r.boolean("transf_rotation_enabled"));
+}
+// transf_add_cpixel_rotated (TransfAddCpixelRotatedIteration of 2.20): c in its axis order, turned
+// by transf_rotation in window G, times transf_constant_multiplier_111, on every iteration of the
+// slot.
+void mapTransfAddCpixelRotated(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    turnedMultipleOfC(r, b, 0, kMaxIterations, "G", true);
 }
 
 // The multiple of c signed by the point (transf_addCpixel_enabled_false: Mandelbulber2's "add
@@ -2989,6 +2999,7 @@ constexpr Mapping kMappings[] = {
     {85, mapRiemannBulbMsltoeMod2},
     {65, mapMandelbulbMulti},
     {118, mapMandelbulbMulti2},
+    {1078, mapTransfAddCpixelRotated},
 };
 
 MapFn findMapping(int id) {
