@@ -18,6 +18,7 @@
 #include "formulas/box_fold_soft.hpp"
 #include "formulas/box_fold_value.hpp"
 #include "formulas/coastalbrot.hpp"
+#include "formulas/collatz.hpp"
 #include "formulas/conditional_shift.hpp"
 #include "formulas/deforms.hpp"
 #include "formulas/derivative_tweak.hpp"
@@ -172,6 +173,7 @@ constexpr std::array kBlocks{
     describe<MsltoeToroidal>(),
     describe<RiemannBulb>(),
     describe<MandelbulbMulti>(),
+    describe<Collatz>(),
     describe<BoxEstimator>(),
     describe<SphereEstimator>(),
     describe<TetrahedronEstimator>(),

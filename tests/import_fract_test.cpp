@@ -246,10 +246,10 @@ TEST(FractImport, NodeSchedulesFollowTheSequenceIterationByIteration) {
 
 TEST(FractImport, NamesWhatItCannotExpressWithItsSlot) {
     const mb2::FractImport r = importText(
-        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 88;\nformula_weight_1 0,5;\n"
+        "[main_parameters]\nhybrid_fractal_enable true;\nformula_1 8;\nformula_2 75;\nformula_weight_1 0,5;\n"
         "primitive_torus_1_enabled true;\nprimitive_torus_1_radius_lpow 2;\n[fractal_2]\n");
     EXPECT_FALSE(r.faithful());
-    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (collatz)", "no fraktal blocks")) << r.unsupported.size();
+    EXPECT_TRUE(mentions(r.unsupported, "slot 2 (abox_mod2)", "no fraktal blocks")) << r.unsupported.size();
     EXPECT_TRUE(mentions(r.unsupported, "slot 1 (mandelbox)", "formula_weight_1 0,5: a blend"));
     EXPECT_TRUE(mentions(r.unsupported, "main", "primitive torus 1: a torus measured in another norm"));
     // Values outside a block's range.
@@ -2245,7 +2245,7 @@ TEST(FractImport, MandelbulbVaryPowerFollowsMandelbulber2sOrbits) {
 // A hybrid's slot of weight 0 is an identity (compute_fractal.cpp of 2.20 calls no formula for it
 // and blends the point back to where the iteration started, c and all): the power-9 bulb (Mandelbulber2's default) and
 // c on even iterations, the point left as it is on odd ones, where the Mandelbox of weight 0 runs. Its formula needs no
-// blocks (a collatz of weight 0 is not refused), and the Mandelbox-Menger morph, whose Mandelbox and IFS slots are
+// blocks (an abox_mod2 of weight 0 is not refused), and the Mandelbox-Menger morph, whose Mandelbox and IFS slots are
 // at weight 0 between its keyframes, imports.
 TEST(FractImport, ASlotOfWeightZeroIsAnIdentity) {
     expectOrbitsFollowMandelbulber2(
@@ -2259,7 +2259,7 @@ TEST(FractImport, ASlotOfWeightZeroIsAnIdentity) {
              const double th = std::asin(z.z / r) * 9.0, ph = std::atan2(z.y, z.x) * 9.0;
              return std::pow(r, 9.0) * vec3(std::cos(th) * std::cos(ph), std::cos(th) * std::sin(ph), std::sin(th)) + c;
          }});
-    EXPECT_TRUE(importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 88;\n"
+    EXPECT_TRUE(importText("[main_parameters]\nhybrid_fractal_enable true;\nformula_1 2;\nformula_2 75;\n"
                            "formula_weight_2 0;\n")
                     .faithful());
     expectExampleImports("mandelbox_menger_morph.fract");
@@ -3107,6 +3107,35 @@ TEST(FractImport, SphericalFoldParabFollowsMandelbulber2sOrbits) {
                   "slot 1 (transf_spherical_fold_parab)", "reflected");
     expectRefused("formula_1 1073;\n[fractal_1]\ntransf_function_enabledX_false true;\ntransf_scale_vary_0 0,1;\n",
                   "slot 1 (transf_spherical_fold_parab)", "varied");
+}
+
+// CollatzIteration and CollatzModIteration written out (the axis not normalised in
+// RotateAroundVectorByAngle); Mandelbulber2 adds no c.
+vec3 mb2Collatz(const vec3& z, const vec3& b, double s4, const vec3& a, double s2, double angle, double s) {
+    const double t = 3.14159265358979 * angle;
+    const vec3 turned = z * std::cos(t) + glm::cross(a, z) * std::sin(t) + a * dot(a, z) * (1.0 - std::cos(t));
+    return (b + s4 * z - (a + s2 * z) * turned) * s;
+}
+
+TEST(FractImport, CollatzFollowsMandelbulber2sOrbits) {
+    const OrbitCase cases[] = {
+        {"formula_1 88;\nN 8;\n",
+         {"collatz", "derivative_tweak"},
+         [](const vec3& z, const vec3&) {
+             const vec3 xV(1.0);
+             vec3 temp = xV + z * 2.0;
+             const double pi = 3.14159265358979;
+             temp *= z * std::cos(pi) + glm::cross(xV, z) * std::sin(pi) + xV * dot(xV, z) * (1.0 - std::cos(pi));
+             return (xV + z * 4.0 - temp) / 4.0;
+         }},
+        {"formula_1 89;\nN 8;\n[fractal_1]\ntransf_constant_multiplierB_111 1 0,8 1,1;\ntransf_scale_4 3,5;\n"
+         "transf_constant_multiplier_111 1 1 0,6;\ntransf_scale_2 1,8;\ntransf_scale_1 0,5;\ntransf_scale_025 0,3;\n",
+         {"collatz", "derivative_tweak"},
+         [](const vec3& z, const vec3&) {
+             return mb2Collatz(z, vec3(1.0, 0.8, 1.1), 3.5, vec3(1.0, 1.0, 0.6), 1.8, 0.5, 0.3);
+         }},
+    };
+    for (const OrbitCase& c : cases) expectOrbitsFollowMandelbulber2(c);
 }
 
 // c turned by transf_rotation on iterations 2 to 5 (window G) and times its multipliers, added by

@@ -1639,6 +1639,25 @@ void mapRiemannBulbMsltoeMod2(Reader& r, NodeBuilder& b, std::vector<ImportItem>
            N::f("sine", r.boolean("transf_function_enabledx_false") ? 1.0 : 0.0),
            N::f("sine_scale", r.number("transf_scale_1"))});
 }
+// collatz and collatz_mod (CollatzIteration, CollatzModIteration of 2.20): the Collatz block with
+// Mandelbulber2's derivative, DE 4 analyticDE_scale_1 (collatz_mod's; collatz's 1) + 1, the 1 a
+// derivative_tweak (Mandelbulber2 adds no c). collatz_mod's values are its offset
+// transf_constant_multiplierB_111, transf_scale_4, its axis transf_constant_multiplier_111,
+// transf_scale_2, its angle transf_scale_1 (times pi) and transf_scale_025; its multiple of c with
+// the axes reversed (transf_addCpixel_enabled_false) is refused.
+void mapCollatz(Reader&, NodeBuilder& b, std::vector<ImportItem>&) {
+    b.add("collatz", {N::f("mb2_derivative", 1.0)});
+    b.add("derivative_tweak", {N::f("scale", 1.0), N::f("offset", 1.0)});
+}
+void mapCollatzMod(Reader& r, NodeBuilder& b, std::vector<ImportItem>&) {
+    r.mustBeDefault("transf_addCpixel_enabled_false", "a multiple of c with its axes reversed (zyx)");
+    b.add("collatz",
+          {N::v("offset", r.vector("transf_constant_multiplierB_111")), N::f("linear", r.number("transf_scale_4")),
+           N::v("axis", r.vector("transf_constant_multiplier_111")), N::f("quadratic", r.number("transf_scale_2")),
+           N::f("angle", r.number("transf_scale_1")), N::f("scale", r.number("transf_scale_025")),
+           N::f("mb2_derivative", 1.0)});
+    b.add("derivative_tweak", {N::f("scale", r.number("analyticDE_scale_1")), N::f("offset", 1.0)});
+}
 // Mandelbulb3Iteration takes 2 r DE and no 1 for c (derivativeTakesNoOneForC).
 void mapMandelbulb3(Reader&, NodeBuilder& b, std::vector<ImportItem>&) { b.add("mandelbulb3", {}); }
 // Mandelbulb4Iteration: its turns' offsets are alpha_angle_offset (about z), beta_angle_offset
@@ -3000,6 +3019,8 @@ constexpr Mapping kMappings[] = {
     {65, mapMandelbulbMulti},
     {118, mapMandelbulbMulti2},
     {1078, mapTransfAddCpixelRotated},
+    {88, mapCollatz},
+    {89, mapCollatzMod},
 };
 
 MapFn findMapping(int id) {
