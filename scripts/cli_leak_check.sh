@@ -53,14 +53,14 @@ run 0 encode -q "$work/f_####.exr" -o "$work/video.mp4"
 run 0 check presets/juliabulb.json --rays 16
 run 2 render tests/bad_presets/unknown_block.json -o "$work/bad.exr" -q
 run 2 render presets/menger.json -o "$work/no_such_folder/a.exr" -q
-# The Mandelbulber2 importer: a file it maps, one it refuses (an unmapped formula: mandelbulb3, id
-# 14), one it cannot read.
+# The Mandelbulber2 importer: a file it maps, one it refuses (a formula id Mandelbulber2 does not
+# have, 9999, which no mapping will ever take), one it cannot read.
 printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 7;\nN 6;\n' > "$work/sponge.fract"
-printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 14;\n' > "$work/mandelbulb3.fract"
+printf '# Mandelbulber settings file\n# version 2.20\n[main_parameters]\nformula_1 9999;\n' > "$work/unmapped.fract"
 printf 'Mandelbulber 1.21;\n' > "$work/old.fract"
 run 0 import "$work/sponge.fract" -o "$work/sponge.json" -q
 run 0 render "$work/sponge.fract" -o "$work/sponge.exr" --size 24x16 --spp 1 -q
-run 2 import "$work/mandelbulb3.fract" -o "$work/mandelbulb3.json" -q
+run 2 import "$work/unmapped.fract" -o "$work/unmapped.json" -q
 run 2 import "$work/old.fract" -o "$work/old.json" -q
 # The Fragmentarium importer: a frag it maps (rendered straight from the frag too), one it refuses.
 run 0 import tests/data/frag_import/menger.frag -o "$work/menger_frag.json" -q
