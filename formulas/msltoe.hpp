@@ -70,6 +70,15 @@ inline vec3 pulledAndScaled(const vec3& v, double offset, double scale) {
     return v * (1.0 - offset / std::max(length(v), 1e-30)) * scale;
 }
 
+// The family's shared parameters: the triplex's y factor, the constant added after the power, and
+// the pull and scale of pulledAndScaled.
+inline constexpr ParamDecl kTriplexYScale{
+    "y_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the triplex's y term."};
+inline constexpr ParamDecl kAddAfterPower{"add", ParamType::Vec3, {0.0, 0.0, 0.0}, -4.0, 4.0, "Added after the power."};
+inline constexpr ParamDecl kPullOffset{
+    "offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."};
+inline constexpr ParamDecl kPullScale{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."};
+
 // msltoe's sym2 mod (Mandelbulber2's msltoe_sym2_mod, from Mandelbulb3D; fractalforums.com
 // "choosing the squaring formula by location"): y and z swapped where |y| < |z|, x negated where
 // then y > z, White's power-2 triplex with the xy term times y_scale, plus `add`, then pulled
@@ -87,10 +96,10 @@ struct MsltoeSym2Mod {
     static constexpr std::string_view jump = "its map jumps where it swaps y and z (|y| = |z|) and negates x";
     static constexpr Degree degree{{}, 2.0};
     static constexpr std::array params{
-        ParamDecl{"y_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the triplex's y term."},
-        ParamDecl{"add", ParamType::Vec3, {0.0, 0.0, 0.0}, -4.0, 4.0, "Added after the power."},
-        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."},
-        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."},
+        kTriplexYScale,
+        kAddAfterPower,
+        kPullOffset,
+        kPullScale,
     };
 
     static constexpr std::string_view glsl = R"(
@@ -179,10 +188,10 @@ struct MsltoeSym3Mod {
         "its map jumps where it swaps y and z (|y| = |z|) and negates x and z, or at the sector edges";
     static constexpr Degree degree{{}, 2.0};
     static constexpr std::array params{
-        ParamDecl{"y_scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Multiplies the triplex's y term."},
-        ParamDecl{"add", ParamType::Vec3, {0.0, 0.0, 0.0}, -4.0, 4.0, "Added after the power."},
-        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."},
-        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."},
+        kTriplexYScale,
+        kAddAfterPower,
+        kPullOffset,
+        kPullScale,
         ParamDecl{"stretch", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Its square times y^2 z^2 joins r^2."},
         toggleParam("sector", false, "On: turn (y, z) into an eighth-turn sector (mod3) in place of the octant swap."),
     };
@@ -250,9 +259,9 @@ struct MsltoeSym3Mod2 {
     static constexpr Degree degree{{}, 2.0};
     static constexpr std::array params{
         ParamDecl{"stretch", ParamType::Float, {0.0, 0.0, 0.0}, 0.0, 4.0, "Times y^2 z^2, joins r^2 in the latitude."},
-        ParamDecl{"add", ParamType::Vec3, {0.0, 0.0, 0.0}, -4.0, 4.0, "Added after the power."},
-        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."},
-        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."},
+        kAddAfterPower,
+        kPullOffset,
+        kPullScale,
     };
 
     static constexpr std::string_view glsl = R"(
@@ -352,8 +361,8 @@ struct MsltoeToroidal {
         ParamDecl{"radial_power", ParamType::Float, {4.0, 0.0, 0.0}, 0.5, 16.0, "The squared distance's power."},
         ParamDecl{"latitude_power", ParamType::Float, {8.0, 0.0, 0.0}, -32.0, 32.0, "m: multiplies the latitude."},
         ParamDecl{"azimuth_power", ParamType::Float, {9.0, 0.0, 0.0}, -32.0, 32.0, "n: multiplies the azimuth."},
-        ParamDecl{"offset", ParamType::Float, {0.0, 0.0, 0.0}, -4.0, 4.0, "Pulls the point this far towards 0."},
-        ParamDecl{"scale", ParamType::Float, {1.0, 0.0, 0.0}, -4.0, 4.0, "Scales the result."},
+        kPullOffset,
+        kPullScale,
     };
 
     static constexpr std::string_view glsl = R"(
